@@ -1,0 +1,6 @@
+# Third-party packages, all from Debian (see scripts/setup.sh), found through their CMake config files.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(SUNDIALS 6.4 REQUIRED COMPONENTS cvode nvecserial sunmatrixdense sunlinsoldense
+             sunnonlinsolfixedpoint)
+find_package(tomlplusplus 3.3 REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)

@@ -1,0 +1,75 @@
+// hinf-sim: runs a scenario file without Python and writes the results file.
+//
+//   hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv]
+//
+// Exit status: 0 success, 2 bad input or usage, 3 numerical failure (solver, conjugate
+// point, coupling condition), 1 anything else. Errors are one line on stderr.
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include "hinf/errors.hpp"
+#include "hinf/scenario_io.hpp"
+
+namespace {
+
+const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv]";
+
+int fail(int status, const std::string& message) {
+  std::string line = message;
+  for (char& c : line)
+    if (c == '\n') c = ' ';
+  std::cerr << "hinf-sim: error: " << line << "\n";
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string scenario_path, json_path, csv_path;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* option) -> std::string {
+      if (i + 1 >= argc) throw hinf::InputError(std::string(option) + " needs a file name");
+      return argv[++i];
+    };
+    try {
+      if (arg == "-h" || arg == "--help") {
+        std::cout << kUsage << "\n";
+        return 0;
+      } else if (arg == "--json") {
+        json_path = value("--json");
+      } else if (arg == "--csv") {
+        csv_path = value("--csv");
+      } else if (!arg.empty() && arg[0] == '-') {
+        return fail(2, "unknown option '" + arg + "'; " + kUsage);
+      } else if (scenario_path.empty()) {
+        scenario_path = arg;
+      } else {
+        return fail(2, "more than one scenario file given; " + std::string(kUsage));
+      }
+    } catch (const hinf::InputError& e) {
+      return fail(2, e.what());
+    }
+  }
+  if (scenario_path.empty()) return fail(2, std::string("no scenario file given; ") + kUsage);
+
+  try {
+    const hinf::Scenario scenario = hinf::load_scenario_toml(scenario_path);
+    const hinf::RunResult result = hinf::run_scenario(scenario);
+    if (!json_path.empty()) hinf::write_text_file(json_path, hinf::results_json(result) + "\n");
+    if (!csv_path.empty()) hinf::write_text_file(csv_path, hinf::results_csv(result));
+    const hinf::Metrics& m = result.metrics;
+    std::cout << "scenario " << result.scenario_name << ": gamma = " << result.gamma
+              << ", final position error = " << m.final_position_error
+              << ", RMS position error (last half) = " << m.rms_position_error_last_half
+              << ", L2 gain = " << m.l2_gain << " (total " << result.timing.total * 1e3 << " ms)\n";
+    return 0;
+  } catch (const hinf::InputError& e) {
+    return fail(2, e.what());
+  } catch (const hinf::HinfError& e) {
+    return fail(3, e.what());
+  } catch (const std::exception& e) {
+    return fail(1, e.what());
+  }
+}

@@ -1,0 +1,73 @@
+// RAII wrapper of SUNDIALS CVODE (6.4) for dy/dt = rhs(t, y), y in R^dim.
+//
+// BDF uses Newton iteration with a dense direct linear solver (and the user Jacobian when one
+// is given); Adams uses fixed-point iteration. Exceptions thrown by rhs or jacobian are kept
+// and rethrown after CVODE returns; CVODE's own failures become SolverError carrying the
+// flag name and the time. CVODE integrates backward when the stop time is below t0.
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hinf/piecewise_polynomial.hpp"
+#include "hinf/solver_options.hpp"
+
+namespace hinf {
+
+class Cvode {
+ public:
+  using Rhs = std::function<void(double t, const double* y, double* ydot)>;
+  // J = d rhs / d y, dim x dim, column-major; f = rhs(t, y) is given for free.
+  using Jacobian = std::function<void(double t, const double* y, const double* f, double* J)>;
+
+  Cvode(int dim, Method method, double rtol, double atol, long max_steps, Rhs rhs,
+        Jacobian jacobian = nullptr);
+  ~Cvode();
+  Cvode(const Cvode&) = delete;
+  Cvode& operator=(const Cvode&) = delete;
+
+  // (Re)starts at (t0, y0); the solver never steps past t_stop.
+  void reset(double t0, const double* y0, double t_stop);
+  // Takes one internal step toward t_stop; returns the new time and stores y there.
+  double step(double* y);
+  // Integrates to tout (between the current time and t_stop), interpolating; returns tout.
+  double advance(double tout, double* y);
+  // Appends the interpolating polynomial of the last step (CVODE's Nordsieck history, the
+  // method's own order) to dense.
+  void append_last_step(PiecewisePolynomial& dense);
+
+  long num_steps() const;
+  long num_rhs_evals() const;
+  long num_jac_evals() const;
+  long num_error_test_failures() const;
+  const std::string& method_name() const { return method_name_; }
+
+ private:
+  void release();
+  void check(int flag, const char* call, double t);
+  void rethrow_pending();
+
+  int dim_;
+  Method method_;
+  std::string method_name_;
+  Rhs rhs_;
+  Jacobian jacobian_;
+  void* context_ = nullptr;  // SUNContext
+  void* mem_ = nullptr;      // CVODE memory
+  void* y_ = nullptr;        // N_Vector
+  void* dky_ = nullptr;      // N_Vector scratch for CVodeGetDky
+  void* matrix_ = nullptr;   // SUNMatrix (BDF)
+  void* linsol_ = nullptr;   // SUNLinearSolver (BDF)
+  void* nonlin_ = nullptr;   // SUNNonlinearSolver (Adams)
+  bool initialized_ = false;
+  double t_stop_ = 0.0;
+  std::exception_ptr pending_;
+  std::string last_message_;
+  std::vector<double> taylor_;
+
+  friend struct CvodeCallbacks;
+};
+
+}  // namespace hinf

@@ -1,0 +1,122 @@
+// The model interface and the built-in models.
+//
+// A model is the control-affine system of paper eq. (7):
+//     dq/dt = f(t, q) + B(t) u + D(t) w,
+// with state q (n), control u (m) and disturbance w (nw). Everything downstream
+// (trajectory, linearization A_e(t) = df/dq along q_d(t), the GRDE, the closed loop)
+// uses only this interface: the ship is one model among others.
+//
+// Conventions, fixed once for the project:
+//   * time t is absolute, in seconds;
+//   * the error is q_e = q - q_d (actual minus desired), likewise u_e = u - u_d;
+//   * matrices are column-major Eigen objects; B is n x m, D is n x nw.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hinf/errors.hpp"
+#include "hinf/types.hpp"
+
+namespace hinf {
+
+class Model {
+ public:
+  virtual ~Model() = default;
+
+  virtual std::string name() const = 0;
+  virtual int n() const = 0;   // states
+  virtual int m() const = 0;   // control inputs
+  virtual int nw() const = 0;  // disturbance channels
+
+  // Drift f(t, q) (n) and its Jacobian df/dq (n x n).
+  virtual void f(double t, const ConstVecRef& q, VecRef out) const = 0;
+  virtual void dfdq(double t, const ConstVecRef& q, MatRef out) const = 0;
+  // Input and disturbance matrices.
+  virtual Mat B(double t) const = 0;
+  virtual Mat D(double t) const = 0;
+  // True when B and D do not depend on t (lets solvers precompute B B' and D D').
+  virtual bool constant_input_matrices() const { return true; }
+
+  // Decomposition of the error dynamics (paper eqs. 26-31):
+  //     f_e(t, q_e) := f(t, q_d + q_e) - f(t, q_d) = A(t, q_e) q_e + alpha(t, q_e),
+  // with A(t, 0) = A_e(t). q_d is the desired state at t. The default is the always-valid
+  // split A = A_e(t), alpha = f_e - A_e q_e; models with structure (the ship) override it.
+  virtual void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+                           VecRef alpha) const;
+
+  // Names of the state components (for tables, CSV headers and plots).
+  virtual std::vector<std::string> state_names() const;
+  // Indices of the inertial position components used by the position-error metrics
+  // (empty: the model has no position, and those metrics are NaN).
+  virtual std::vector<int> position_indices() const { return {}; }
+  // Index of the heading angle (rad), or -1.
+  virtual int heading_index() const { return -1; }
+};
+
+using ModelPtr = std::shared_ptr<const Model>;
+
+// The underactuated surface ship of paper eqs. (1)-(6) (DESIGN.md):
+//   state q = [u, v, r, x, y, psi]: surge, sway (m/s), yaw rate (rad/s) in the body frame;
+//             inertial position x, y (m) and heading psi (rad);
+//   control [u1, u2]: surge force and yaw torque (per unit mass / inertia);
+//   disturbance w = [w1..w6]: w1..w3 act on the u, v, r equations (D = diag(1,1,1,0,0,0));
+//             w4..w6 are the measurement-noise channels of paper §4 (they enter through E).
+//     du/dt   = m_u v r - d_u u + u1 + w1
+//     dv/dt   = m_v u r - d_v v      + w2
+//     dr/dt   = m_r u v - d_r r + u2 + w3
+//     dx/dt   = u cos(psi) - v sin(psi)
+//     dy/dt   = u sin(psi) + v cos(psi)
+//     dpsi/dt = r
+struct ShipParameters {
+  double m_u = 0.5;
+  double m_v = -2.0;
+  double m_r = 0.5;
+  double d_u = 1.0;
+  double d_v = 2.0;
+  double d_r = 1.0;
+};
+
+class ShipModel final : public Model {
+ public:
+  explicit ShipModel(const ShipParameters& parameters = {});
+  const ShipParameters& parameters() const { return p_; }
+
+  std::string name() const override { return "ship"; }
+  int n() const override { return 6; }
+  int m() const override { return 2; }
+  int nw() const override { return 6; }
+  void f(double t, const ConstVecRef& q, VecRef out) const override;
+  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
+  Mat B(double t) const override;
+  Mat D(double t) const override;
+  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+                   VecRef alpha) const override;
+  std::vector<std::string> state_names() const override;
+  std::vector<int> position_indices() const override { return {3, 4}; }
+  int heading_index() const override { return 5; }
+
+ private:
+  ShipParameters p_;
+};
+
+// A linear time-invariant model dq/dt = A q + B u + D w (for LTI studies and tests).
+class LinearModel final : public Model {
+ public:
+  LinearModel(Mat A, Mat B, Mat D);
+  std::string name() const override { return "linear"; }
+  int n() const override { return static_cast<int>(A_.rows()); }
+  int m() const override { return static_cast<int>(B_.cols()); }
+  int nw() const override { return static_cast<int>(D_.cols()); }
+  void f(double t, const ConstVecRef& q, VecRef out) const override;
+  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
+  Mat B(double) const override { return B_; }
+  Mat D(double) const override { return D_; }
+  const Mat& A() const { return A_; }
+
+ private:
+  Mat A_, B_, D_;
+};
+
+}  // namespace hinf

@@ -1,0 +1,53 @@
+// Dense output of an ODE solve: one polynomial piece per integrator step.
+//
+// Piece k covers the step from t_k to t_k + h_k (h_k < 0 for backward integration) and is
+//     y(t) = sum_{j=0..d_k} c_kj theta^j,   theta = (t - t_k) / h_k in [0, 1],
+// with c_kj in R^p. The pieces come from the integrator's own interpolant (Dormand-Prince
+// dense output, CVODE's Nordsieck history), so y(t) has the integrator's accuracy at every t.
+// Lookups take an optional cursor (index of the last piece used) so that a sweep over sorted
+// times costs O(1) per lookup; without it a binary search is used. Const lookups without a
+// cursor are thread-safe.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace hinf {
+
+class PiecewisePolynomial {
+ public:
+  explicit PiecewisePolynomial(int dim = 0) : dim_(dim) {}
+
+  int dim() const { return dim_; }
+  std::size_t num_pieces() const { return t_start_.size(); }
+  bool empty() const { return t_start_.empty(); }
+  double t_min() const;
+  double t_max() const;
+
+  // Adds the piece for the step [t_start, t_start + h]; coeffs holds (degree + 1) * dim numbers,
+  // coefficient j of all components contiguous. Pieces must be appended in integration order.
+  void append(double t_start, double h, int degree, const double* coeffs);
+  // Orders the pieces by increasing time (needed after a backward integration).
+  void finalize();
+
+  void eval(double t, double* out, std::size_t* cursor = nullptr) const;
+  void eval_derivative(double t, double* out, std::size_t* cursor = nullptr) const;
+
+  // The ends of the pieces, increasing (num_pieces + 1 values).
+  std::vector<double> breakpoints() const;
+  std::size_t memory_bytes() const;
+
+ private:
+  std::size_t locate(double t, std::size_t* cursor) const;
+  double theta(std::size_t k, double t) const;
+
+  int dim_;
+  std::vector<double> t_start_, h_;
+  std::vector<int> degree_;
+  std::vector<std::size_t> offset_;
+  std::vector<double> coeffs_;
+  // lower_[k] = min(t_k, t_k + h_k), increasing once finalized.
+  std::vector<double> lower_;
+};
+
+}  // namespace hinf

@@ -1,0 +1,76 @@
+// A scenario: everything one run needs (shared/scenarios.md is the contract of its TOML form).
+// Both front ends (the Python package and the hinf-sim executable) build a Scenario and call
+// run_scenario(), so they give the same numbers.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "hinf/metrics.hpp"
+#include "hinf/riccati.hpp"
+#include "hinf/signal.hpp"
+#include "hinf/simulation.hpp"
+#include "hinf/solver_options.hpp"
+
+namespace hinf {
+
+// [measurement]: imperfect, noisy measurements (paper §4).
+struct MeasurementSpec {
+  double sigma = 0.0;           // std of the noise on each measured output
+  double sample_period = 0.01;  // noise held constant over each period (s)
+  std::uint64_t seed = 0;
+  Mat N;                        // filter weight N = E E' (empty: sigma^2 I)
+  Mat Q0;                       // Sigma(t0) = (Q0 - eta I)^-1 (empty: 2 I)
+  double eta = 1.0;
+  std::string filter_A = "estimate";  // "estimate": A(q_hat(t)); "desired": A_e(t)
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  ModelPtr model;
+  double t0 = 0.0;
+  double tf = 0.0;
+  Vec desired_q0;             // q_d(t0)
+  VectorSignal desired_u;     // u_d(t), m channels
+  double gamma = 0.0;         // > 0, may be +inf (LQR)
+  Mat Q;                      // empty: identity
+  Mat Qf;                     // empty: identity
+  Signal kappa = Signal(1.0);
+  VectorSignal disturbance;   // w(t), nw channels (dim 0: all zero)
+  Vec initial_q0;             // q(t0)
+  std::optional<MeasurementSpec> measurement;
+  SolverOptions solver;
+  double output_dt = 0.01;
+
+  // A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I, Q0 = 2 I).
+  Scenario resolved() const;
+  // Throws InputError naming the first problem found. Call on a resolved scenario.
+  void validate() const;
+};
+
+struct Timing {
+  double design = 0.0;    // desired trajectory + GRDE
+  double simulate = 0.0;  // closed loop
+  double analysis = 0.0;  // eigenvalue bounds, metrics
+  double total = 0.0;
+};
+
+struct RunResult {
+  std::string scenario_name;
+  std::string controller;
+  double gamma = 0.0;
+  TrajectoryPtr trajectory;
+  RiccatiSolutionPtr solution;
+  Mat Z0;
+  double Z_min_eig = NAN, Z_max_eig = NAN;  // m and M of paper eq. (22) over the output grid
+  std::optional<double> gamma_star;
+  SimulationResult simulation;
+  Metrics metrics;
+  Timing timing;
+};
+
+RunResult run_scenario(const Scenario& scenario);
+
+}  // namespace hinf

@@ -1,0 +1,40 @@
+// Closed-loop simulation of the nonlinear model under a tracking controller (paper eq. 7):
+//     dq/dt = f(t, q) + B(t) u + D(t) w(t),   u = controller(t, q),   q(t0) = q0,
+// integrated with the chosen method; the time series are sampled on the output grid.
+#pragma once
+
+#include <vector>
+
+#include "hinf/controller.hpp"
+#include "hinf/riccati.hpp"
+#include "hinf/signal.hpp"
+#include "hinf/solver_options.hpp"
+#include "hinf/trajectory.hpp"
+
+namespace hinf {
+
+// t0, t0 + dt, t0 + 2 dt, ..., ending exactly at tf (the last interval may be shorter).
+std::vector<double> output_grid(double t0, double tf, double dt);
+
+// Time series on the output grid, one row per time.
+struct SimulationResult {
+  Vec t;
+  RowMat q;    // actual state (n)
+  RowMat q_d;  // desired state (n)
+  RowMat u;    // applied control (m)
+  RowMat u_d;  // desired control (m)
+  RowMat w;    // applied disturbance (nw), noise channels included for output feedback
+  // Output feedback only (empty otherwise):
+  RowMat q_hat;           // estimate of the error q_e (n)
+  RowMat y;               // measurement y (p)
+  Vec sigma_min_eig;      // eigenvalue bounds of the filter Riccati Sigma(t)
+  Vec sigma_max_eig;
+  Vec rho_sigma_z;        // spectral radius of Sigma(t) Z(t)
+  SolveStats stats;
+};
+
+SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
+                                         const VectorSignal& disturbance, const Vec& q0,
+                                         double output_dt, const SolverOptions& options);
+
+}  // namespace hinf

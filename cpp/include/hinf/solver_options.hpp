@@ -1,0 +1,31 @@
+// Integrator choice and tolerances, shared by the GRDE, the filter Riccati equation and the
+// closed-loop simulations (scenario section [solver]).
+#pragma once
+
+#include <string>
+
+namespace hinf {
+
+enum class Method {
+  BDF,    // CVODE BDF with Newton iteration and a dense direct solver: for stiff problems
+  Adams,  // CVODE Adams-Moulton with fixed-point iteration: non-stiff, high order
+  ERK     // explicit Dormand-Prince 5(4) with its 4th-order dense output: non-stiff
+};
+
+std::string to_string(Method method);
+// "bdf", "adams" or "erk"; anything else is an InputError.
+Method method_from_string(const std::string& name);
+
+struct SolverOptions {
+  Method method = Method::BDF;
+  double rtol = 1e-8;        // relative tolerance
+  double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions)
+  long max_steps = 500000;   // per solve; exceeding it is a SolverError
+  // GRDE only: |Z|_max above escape_norm * max(1, |Qf|_max) is taken as a finite escape
+  // (conjugate point, paper eq. 14).
+  double escape_norm = 1e8;
+
+  void validate() const;  // InputError on non-positive tolerances or steps
+};
+
+}  // namespace hinf

@@ -1,0 +1,58 @@
+// The desired (feasible) trajectory of paper eq. (8):
+//     dq_d/dt = f(t, q_d) + B(t) u_d(t),   q_d(t0) = q_d0,
+// integrated forward once with Dormand-Prince 5(4) at tight tolerances and kept as its dense
+// output, so q_d(t), u_d(t) and the linearization A_e(t) = df/dq(t, q_d(t)) (paper eq. 10)
+// are available at any t in [t0, tf].
+#pragma once
+
+#include <memory>
+
+#include "hinf/dopri5.hpp"
+#include "hinf/model.hpp"
+#include "hinf/piecewise_polynomial.hpp"
+#include "hinf/signal.hpp"
+
+namespace hinf {
+
+struct TrajectoryOptions {
+  double rtol = 1e-11;
+  double atol = 1e-12;
+  long max_steps = 2000000;
+};
+
+class Trajectory {
+ public:
+  Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf,
+             const TrajectoryOptions& options = {});
+
+  const Model& model() const { return *model_; }
+  const ModelPtr& model_ptr() const { return model_; }
+  int n() const { return model_->n(); }
+  int m() const { return model_->m(); }
+  double t0() const { return t0_; }
+  double tf() const { return tf_; }
+  const Vec& q_d0() const { return q_d0_; }
+  const VectorSignal& u_d_signal() const { return u_d_; }
+
+  void q_d(double t, double* out, std::size_t* cursor = nullptr) const;
+  Vec q_d(double t) const;
+  void u_d(double t, double* out) const { u_d_.eval(t, out); }
+  Vec u_d(double t) const { return u_d_(t); }
+  // A_e(t) = df/dq at q_d(t).
+  Mat A_e(double t) const;
+
+  const PiecewisePolynomial& dense() const { return dense_; }
+  const StepStats& stats() const { return stats_; }
+
+ private:
+  ModelPtr model_;
+  Vec q_d0_;
+  VectorSignal u_d_;
+  double t0_, tf_;
+  PiecewisePolynomial dense_;
+  StepStats stats_;
+};
+
+using TrajectoryPtr = std::shared_ptr<const Trajectory>;
+
+}  // namespace hinf

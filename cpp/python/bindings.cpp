@@ -1,0 +1,513 @@
+// Python bindings of hinf_core: one block per type, argument names as in C++.
+// C++ InputError arrives as ValueError; numerical failures as hinf_cpp.HinfError subclasses
+// (SolverError, ConjugatePointError, CouplingConditionError) with their data as attributes.
+// Long calls release the GIL; Python callables and Python subclasses re-acquire it.
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "hinf/checks.hpp"
+#include "hinf/controller.hpp"
+#include "hinf/errors.hpp"
+#include "hinf/metrics.hpp"
+#include "hinf/model.hpp"
+#include "hinf/riccati.hpp"
+#include "hinf/scenario.hpp"
+#include "hinf/scenario_io.hpp"
+#include "hinf/simulation.hpp"
+#include "hinf/trajectory.hpp"
+
+namespace py = pybind11;
+using namespace hinf;
+
+namespace {
+
+// A Model implemented in Python: override n, m, nw, name, f(t, q), dfdq(t, q), B(t), D(t)
+// (and optionally error_split, state_names, position_indices, heading_index).
+class PyModel : public Model, public py::trampoline_self_life_support {
+ public:
+  std::string name() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function o = py::get_override(static_cast<const Model*>(this), "name")) return o().cast<std::string>();
+    return "python-model";
+  }
+  int n() const override { PYBIND11_OVERRIDE_PURE(int, Model, n, ); }
+  int m() const override { PYBIND11_OVERRIDE_PURE(int, Model, m, ); }
+  int nw() const override { PYBIND11_OVERRIDE_PURE(int, Model, nw, ); }
+  Mat B(double t) const override { PYBIND11_OVERRIDE_PURE(Mat, Model, B, t); }
+  Mat D(double t) const override { PYBIND11_OVERRIDE_PURE(Mat, Model, D, t); }
+  bool constant_input_matrices() const override {
+    PYBIND11_OVERRIDE(bool, Model, constant_input_matrices, );
+  }
+  std::vector<std::string> state_names() const override {
+    PYBIND11_OVERRIDE(std::vector<std::string>, Model, state_names, );
+  }
+  std::vector<int> position_indices() const override {
+    PYBIND11_OVERRIDE(std::vector<int>, Model, position_indices, );
+  }
+  int heading_index() const override { PYBIND11_OVERRIDE(int, Model, heading_index, ); }
+
+  void f(double t, const ConstVecRef& q, VecRef out) const override {
+    py::gil_scoped_acquire gil;
+    const Vec value = call("f", t, Vec(q)).cast<Vec>();
+    require(value.size() == out.size(), "Python model f(t, q) returned ", value.size(),
+            " numbers, expected ", out.size());
+    out = value;
+  }
+  void dfdq(double t, const ConstVecRef& q, MatRef out) const override {
+    py::gil_scoped_acquire gil;
+    const Mat value = call("dfdq", t, Vec(q)).cast<Mat>();
+    check_shape(value, static_cast<int>(out.rows()), static_cast<int>(out.cols()),
+                "the result of the Python model's dfdq(t, q)");
+    out = value;
+  }
+  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+                   VecRef alpha) const override {
+    py::gil_scoped_acquire gil;
+    py::function override = py::get_override(static_cast<const Model*>(this), "error_split");
+    if (!override) {
+      py::gil_scoped_release release;
+      Model::error_split(t, q_d, q_e, A, alpha);
+      return;
+    }
+    const py::tuple value = override(t, Vec(q_d), Vec(q_e));
+    require(value.size() == 2, "Python model error_split must return (A, alpha)");
+    const Mat A_value = value[0].cast<Mat>();
+    const Vec alpha_value = value[1].cast<Vec>();
+    check_shape(A_value, static_cast<int>(A.rows()), static_cast<int>(A.cols()), "error_split A");
+    require(alpha_value.size() == alpha.size(), "error_split alpha has the wrong length");
+    A = A_value;
+    alpha = alpha_value;
+  }
+
+ private:
+  template <class... Args>
+  py::object call(const char* method, Args&&... args) const {
+    py::function override = py::get_override(static_cast<const Model*>(this), method);
+    if (!override) throw InputError(str_cat("the Python model does not implement ", method, "(t, q)"));
+    return override(std::forward<Args>(args)...);
+  }
+};
+
+// A Controller implemented in Python: override name() (optional), m() and control(t, q) -> u.
+class PyController : public Controller, public py::trampoline_self_life_support {
+ public:
+  std::string name() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function o = py::get_override(static_cast<const Controller*>(this), "name"))
+      return o().cast<std::string>();
+    return "python-controller";
+  }
+  int m() const override { PYBIND11_OVERRIDE_PURE(int, Controller, m, ); }
+  void control(double t, const ConstVecRef& q, VecRef u) override {
+    py::gil_scoped_acquire gil;
+    py::function override = py::get_override(static_cast<const Controller*>(this), "control");
+    if (!override) throw InputError("the Python controller does not implement control(t, q)");
+    const Vec value = override(t, Vec(q)).cast<Vec>();
+    require(value.size() == u.size(), "Python controller control(t, q) returned ", value.size(),
+            " numbers, expected ", u.size());
+    u = value;
+  }
+};
+
+// f(t) for a scalar t gives one value; for an array of times, the values stacked on axis 0.
+template <class Fn>
+py::object vectorize(const py::object& t, int rows, int cols, Fn&& fn) {
+  if (py::isinstance<py::float_>(t) || py::isinstance<py::int_>(t)) {
+    const double tt = t.cast<double>();
+    if (cols == 0) {
+      Vec out(rows);
+      fn(tt, out.data());
+      return py::cast(out);
+    }
+    Mat out(rows, cols);
+    fn(tt, out.data());
+    return py::cast(out);
+  }
+  const py::array_t<double, py::array::c_style | py::array::forcecast> times(t);
+  if (times.ndim() != 1) throw InputError("times must be a number or a 1-D array");
+  const py::ssize_t count = times.shape(0);
+  std::vector<py::ssize_t> shape{count, rows};
+  if (cols > 0) shape.push_back(cols);
+  py::array_t<double> out(shape);
+  const double* tp = times.data();
+  double* op = out.mutable_data();
+  const py::ssize_t block = rows * std::max(cols, 1);
+  std::vector<double> colmajor(static_cast<std::size_t>(block));
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t k = 0; k < count; ++k) {
+      fn(tp[k], colmajor.data());
+      // Column-major (Eigen) to row-major (NumPy).
+      for (int i = 0; i < rows; ++i)
+        for (int j = 0; j < std::max(cols, 1); ++j)
+          op[k * block + i * std::max(cols, 1) + j] = colmajor[static_cast<std::size_t>(i + j * rows)];
+    }
+  }
+  return std::move(out);
+}
+
+void register_exceptions(py::module_& m) {
+  static py::exception<HinfError> hinf_error(m, "HinfError", PyExc_RuntimeError);
+  static py::exception<SolverError> solver_error(m, "SolverError", hinf_error.ptr());
+  static py::exception<ConjugatePointError> conjugate_error(m, "ConjugatePointError", hinf_error.ptr());
+  static py::exception<CouplingConditionError> coupling_error(m, "CouplingConditionError",
+                                                              hinf_error.ptr());
+  hinf_error.doc() = "Base class of the numerical failures of hinf_cpp.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    auto raise = [](const py::object& type, const char* what, const py::dict& attributes) {
+      py::object instance = type(what);
+      for (auto item : attributes) py::setattr(instance, item.first, item.second);
+      PyErr_SetObject(type.ptr(), instance.ptr());
+    };
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const ConjugatePointError& e) {
+      py::dict a;
+      a["t_escape"] = e.t_escape();
+      a["gamma"] = e.gamma();
+      raise(conjugate_error, e.what(), a);
+    } catch (const CouplingConditionError& e) {
+      py::dict a;
+      a["t"] = e.t();
+      a["rho"] = e.rho();
+      a["gamma"] = e.gamma();
+      raise(coupling_error, e.what(), a);
+    } catch (const SolverError& e) {
+      py::dict a;
+      a["t"] = e.t();
+      a["flag"] = e.flag();
+      raise(solver_error, e.what(), a);
+    } catch (const HinfError& e) {
+      raise(hinf_error, e.what(), py::dict());
+    }
+  });
+}
+
+std::string repr_options(const SolverOptions& o) {
+  return str_cat("SolverOptions(method='", to_string(o.method), "', rtol=", o.rtol, ", atol=", o.atol,
+                 ", max_steps=", o.max_steps, ", escape_norm=", o.escape_norm, ")");
+}
+
+py::dict metrics_dict(const Metrics& mt) {
+  py::dict d;
+  d["rms_position_error_last_half"] = mt.rms_position_error_last_half;
+  d["max_position_error"] = mt.max_position_error;
+  d["final_position_error"] = mt.final_position_error;
+  d["control_l2"] = mt.control_l2;
+  d["control_error_l2"] = mt.control_error_l2;
+  d["disturbance_l2"] = mt.disturbance_l2;
+  d["l2_gain"] = mt.l2_gain;
+  d["max_rho_sigma_z"] = mt.max_rho_sigma_z;
+  d["rms_estimation_error_last_half"] = mt.rms_estimation_error_last_half;
+  return d;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "hinf_cpp core: H-infinity tracking control of nonlinear underactuated vehicles";
+  m.attr("__version__") = HINF_VERSION;
+  register_exceptions(m);
+
+  // ---- signals ----
+  py::class_<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal")
+      .def(py::init([](double amplitude, double omega, double phase, bool cosine) {
+             return Harmonic{amplitude, omega, phase, cosine};
+           }),
+           py::arg("amplitude"), py::arg("omega"), py::arg("phase") = 0.0, py::arg("cosine") = false)
+      .def_readwrite("amplitude", &Harmonic::amplitude)
+      .def_readwrite("omega", &Harmonic::omega)
+      .def_readwrite("phase", &Harmonic::phase)
+      .def_readwrite("cosine", &Harmonic::cosine)
+      .def("__repr__", [](const Harmonic& h) {
+        return str_cat("Harmonic(amplitude=", h.amplitude, ", omega=", h.omega, ", phase=", h.phase,
+                       ", cosine=", h.cosine ? "True" : "False", ")");
+      });
+
+  py::class_<Signal>(m, "Signal", "A scalar signal of absolute time: offset + harmonics, or a table")
+      .def(py::init<>())
+      .def(py::init<double>(), py::arg("constant"))
+      .def(py::init<double, std::vector<Harmonic>>(), py::arg("offset"), py::arg("harmonics"))
+      .def_static("table", &Signal::table, py::arg("t"), py::arg("values"))
+      .def("__call__", [](const Signal& s, const py::object& t) {
+        return vectorize(t, 1, 0, [&s](double tt, double* out) { out[0] = s(tt); });
+      })
+      .def_property_readonly("offset", &Signal::offset)
+      .def_property_readonly("harmonics", &Signal::harmonics)
+      .def_property_readonly("is_table", &Signal::is_table)
+      .def_property_readonly("table_t", &Signal::table_t)
+      .def_property_readonly("table_values", &Signal::table_values)
+      .def("__repr__", [](const Signal& s) { return "Signal(" + s.describe() + ")"; });
+  py::implicitly_convertible<double, Signal>();
+
+  py::class_<VectorSignal>(m, "VectorSignal", "A vector signal: one Signal per channel, or a function of t")
+      .def(py::init<std::vector<Signal>>(), py::arg("channels"))
+      .def(py::init<int, VectorSignal::Function>(), py::arg("dim"), py::arg("function"))
+      .def_static("zeros", &VectorSignal::zeros, py::arg("dim"))
+      .def_property_readonly("dim", &VectorSignal::dim)
+      .def_property_readonly("is_function", &VectorSignal::is_function)
+      .def_property_readonly("channels", &VectorSignal::channels)
+      .def("__call__", [](const VectorSignal& s, const py::object& t) {
+        return vectorize(t, s.dim(), 0, [&s](double tt, double* out) { s.eval(tt, out); });
+      });
+
+  // ---- models ----
+  py::class_<Model, PyModel, py::smart_holder>(m, "Model", R"doc(
+Control-affine model dq/dt = f(t, q) + B(t) u + D(t) w (paper eq. 7).
+Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t).)doc")
+      .def(py::init<>())
+      .def("name", &Model::name)
+      .def("n", &Model::n)
+      .def("m", &Model::m)
+      .def("nw", &Model::nw)
+      .def("f", [](const Model& model, double t, const Vec& q) {
+        check_size(q, model.n(), "q");
+        Vec out(model.n());
+        model.f(t, q, out);
+        return out;
+      }, py::arg("t"), py::arg("q"))
+      .def("dfdq", [](const Model& model, double t, const Vec& q) {
+        check_size(q, model.n(), "q");
+        Mat out(model.n(), model.n());
+        model.dfdq(t, q, out);
+        return out;
+      }, py::arg("t"), py::arg("q"))
+      .def("B", &Model::B, py::arg("t"))
+      .def("D", &Model::D, py::arg("t"))
+      .def("constant_input_matrices", &Model::constant_input_matrices)
+      .def("error_split", [](const Model& model, double t, const Vec& q_d, const Vec& q_e) {
+        check_size(q_d, model.n(), "q_d");
+        check_size(q_e, model.n(), "q_e");
+        Mat A(model.n(), model.n());
+        Vec alpha(model.n());
+        model.error_split(t, q_d, q_e, A, alpha);
+        return py::make_tuple(A, alpha);
+      }, py::arg("t"), py::arg("q_d"), py::arg("q_e"))
+      .def("state_names", &Model::state_names)
+      .def("position_indices", &Model::position_indices)
+      .def("heading_index", &Model::heading_index);
+
+  py::class_<ShipParameters>(m, "ShipParameters")
+      .def(py::init([](double m_u, double m_v, double m_r, double d_u, double d_v, double d_r) {
+             return ShipParameters{m_u, m_v, m_r, d_u, d_v, d_r};
+           }),
+           py::arg("m_u") = 0.5, py::arg("m_v") = -2.0, py::arg("m_r") = 0.5, py::arg("d_u") = 1.0,
+           py::arg("d_v") = 2.0, py::arg("d_r") = 1.0)
+      .def_readwrite("m_u", &ShipParameters::m_u)
+      .def_readwrite("m_v", &ShipParameters::m_v)
+      .def_readwrite("m_r", &ShipParameters::m_r)
+      .def_readwrite("d_u", &ShipParameters::d_u)
+      .def_readwrite("d_v", &ShipParameters::d_v)
+      .def_readwrite("d_r", &ShipParameters::d_r)
+      .def("__repr__", [](const ShipParameters& p) {
+        return str_cat("ShipParameters(m_u=", p.m_u, ", m_v=", p.m_v, ", m_r=", p.m_r, ", d_u=", p.d_u,
+                       ", d_v=", p.d_v, ", d_r=", p.d_r, ")");
+      });
+
+  py::class_<ShipModel, Model, py::smart_holder>(m, "ShipModel", "The underactuated ship of paper eqs. (1)-(6)")
+      .def(py::init<const ShipParameters&>(), py::arg("parameters") = ShipParameters{})
+      .def_property_readonly("parameters", &ShipModel::parameters);
+
+  py::class_<LinearModel, Model, py::smart_holder>(m, "LinearModel", "dq/dt = A q + B u + D w")
+      .def(py::init<Mat, Mat, Mat>(), py::arg("A"), py::arg("B"), py::arg("D"))
+      .def_property_readonly("A", &LinearModel::A);
+
+  // ---- solver options ----
+  py::class_<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)")
+      .def(py::init([](const std::string& method, double rtol, double atol, long max_steps, double escape_norm) {
+             SolverOptions o;
+             o.method = method_from_string(method);
+             o.rtol = rtol;
+             o.atol = atol;
+             o.max_steps = max_steps;
+             o.escape_norm = escape_norm;
+             o.validate();
+             return o;
+           }),
+           py::arg("method") = "bdf", py::arg("rtol") = 1e-8, py::arg("atol") = 1e-10,
+           py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e8)
+      .def_property("method", [](const SolverOptions& o) { return to_string(o.method); },
+                    [](SolverOptions& o, const std::string& s) { o.method = method_from_string(s); })
+      .def_readwrite("rtol", &SolverOptions::rtol)
+      .def_readwrite("atol", &SolverOptions::atol)
+      .def_readwrite("max_steps", &SolverOptions::max_steps)
+      .def_readwrite("escape_norm", &SolverOptions::escape_norm)
+      .def("validate", &SolverOptions::validate)
+      .def("__repr__", &repr_options);
+
+  // ---- trajectory ----
+  py::class_<Trajectory, py::smart_holder>(m, "Trajectory", "Desired trajectory of paper eq. (8) with dense output")
+      .def(py::init([](ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf, double rtol,
+                       double atol) {
+             TrajectoryOptions options;
+             options.rtol = rtol;
+             options.atol = atol;
+             return std::make_shared<Trajectory>(std::move(model), std::move(q_d0), std::move(u_d), t0,
+                                                 tf, options);
+           }),
+           py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("tf"),
+           py::arg("rtol") = 1e-11, py::arg("atol") = 1e-12, py::call_guard<py::gil_scoped_release>())
+      .def_property_readonly("model", &Trajectory::model_ptr)
+      .def_property_readonly("t0", &Trajectory::t0)
+      .def_property_readonly("tf", &Trajectory::tf)
+      .def_property_readonly("n", &Trajectory::n)
+      .def_property_readonly("m", &Trajectory::m)
+      .def("q_d", [](const Trajectory& tr, const py::object& t) {
+        return vectorize(t, tr.n(), 0, [&tr](double tt, double* out) { tr.q_d(tt, out); });
+      }, py::arg("t"))
+      .def("u_d", [](const Trajectory& tr, const py::object& t) {
+        return vectorize(t, tr.m(), 0, [&tr](double tt, double* out) { tr.u_d(tt, out); });
+      }, py::arg("t"))
+      .def("A_e", [](const Trajectory& tr, const py::object& t) {
+        return vectorize(t, tr.n(), tr.n(), [&tr](double tt, double* out) {
+          Eigen::Map<Mat>(out, tr.n(), tr.n()) = tr.A_e(tt);
+        });
+      }, py::arg("t"))
+      .def_property_readonly("num_steps", [](const Trajectory& tr) { return tr.stats().steps; });
+
+  // ---- GRDE ----
+  py::class_<SolveStats>(m, "SolveStats")
+      .def_readonly("steps", &SolveStats::steps)
+      .def_readonly("rejected", &SolveStats::rejected)
+      .def_readonly("rhs_evals", &SolveStats::rhs_evals)
+      .def_readonly("jac_evals", &SolveStats::jac_evals)
+      .def_readonly("memory_bytes", &SolveStats::memory_bytes)
+      .def("__repr__", [](const SolveStats& s) {
+        return str_cat("SolveStats(steps=", s.steps, ", rejected=", s.rejected, ", rhs_evals=", s.rhs_evals,
+                       ", jac_evals=", s.jac_evals, ", memory_bytes=", s.memory_bytes, ")");
+      });
+
+  py::class_<RiccatiSolution, py::smart_holder>(m, "RiccatiSolution", "Z(t) of the GRDE (13) on [t0, tf]")
+      .def_property_readonly("trajectory", &RiccatiSolution::trajectory_ptr)
+      .def_property_readonly("gamma", &RiccatiSolution::gamma)
+      .def_property_readonly("t0", &RiccatiSolution::t0)
+      .def_property_readonly("tf", &RiccatiSolution::tf)
+      .def_property_readonly("n", &RiccatiSolution::n)
+      .def_property_readonly("m", &RiccatiSolution::m)
+      .def_property_readonly("stats", &RiccatiSolution::stats)
+      .def("Z", [](const RiccatiSolution& s, const py::object& t) {
+        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
+          Eigen::Map<Mat>(out, s.n(), s.n()) = s.Z(tt);
+        });
+      }, py::arg("t"), "Z(t): (n, n) for a number, (len(t), n, n) for an array")
+      .def("dZdt", [](const RiccatiSolution& s, const py::object& t) {
+        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
+          Eigen::Map<Mat>(out, s.n(), s.n()) = s.dZdt(tt);
+        });
+      }, py::arg("t"))
+      .def("gain", [](const RiccatiSolution& s, const py::object& t) {
+        return vectorize(t, s.m(), s.n(), [&s](double tt, double* out) { s.gain(tt, out); });
+      }, py::arg("t"), "K(t) = B' Z(t): (m, n) for a number, (len(t), m, n) for an array")
+      .def("step_times", [](const RiccatiSolution& s) { return s.dense().breakpoints(); })
+      .def("eigenvalue_range", [](const RiccatiSolution& s, const std::vector<double>& times) {
+        double lo = 0, hi = 0;
+        s.eigenvalue_range(times, lo, hi);
+        return py::make_tuple(lo, hi);
+      }, py::arg("times"));
+
+  m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
+        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
+        "Solve the GRDE (13) backward from Z(tf) = Qf; raises ConjugatePointError when gamma <= gamma*");
+
+  // ---- controllers and simulation ----
+  py::class_<Controller, PyController, py::smart_holder>(m, "Controller",
+                                                         "Tracking controller u = control(t, q)")
+      .def(py::init<>())
+      .def("name", &Controller::name)
+      .def("m", &Controller::m)
+      .def("control", [](Controller& c, double t, const Vec& q) {
+        Vec u(c.m());
+        c.control(t, q, u);
+        return u;
+      }, py::arg("t"), py::arg("q"));
+
+  py::class_<HinfStateFeedback, Controller, py::smart_holder>(m, "HinfStateFeedback",
+                                                              "u = u_d - kappa B' Z (q - q_d), paper (17)/(18)")
+      .def(py::init<RiccatiSolutionPtr, Signal>(), py::arg("solution"), py::arg("kappa") = Signal(1.0))
+      .def_property_readonly("kappa", &HinfStateFeedback::kappa);
+
+  py::class_<SimulationResult>(m, "SimulationResult", "Time series on the output grid, one row per time")
+      .def_readonly("t", &SimulationResult::t)
+      .def_readonly("q", &SimulationResult::q)
+      .def_readonly("q_d", &SimulationResult::q_d)
+      .def_readonly("u", &SimulationResult::u)
+      .def_readonly("u_d", &SimulationResult::u_d)
+      .def_readonly("w", &SimulationResult::w)
+      .def_readonly("q_hat", &SimulationResult::q_hat)
+      .def_readonly("y", &SimulationResult::y)
+      .def_readonly("sigma_min_eig", &SimulationResult::sigma_min_eig)
+      .def_readonly("sigma_max_eig", &SimulationResult::sigma_max_eig)
+      .def_readonly("rho_sigma_z", &SimulationResult::rho_sigma_z)
+      .def_readonly("stats", &SimulationResult::stats)
+      .def_property_readonly("q_e", [](const SimulationResult& r) { return RowMat(r.q - r.q_d); });
+
+  m.def("simulate_state_feedback",
+        &simulate_state_feedback, py::call_guard<py::gil_scoped_release>(),
+        py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
+        py::arg("output_dt") = 0.01, py::arg("options") = SolverOptions{});
+  m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
+  m.def("compute_metrics", [](const Model& model, const SimulationResult& run, const Mat& Q) {
+    return metrics_dict(compute_metrics(model, run, Q));
+  }, py::arg("model"), py::arg("run"), py::arg("Q"));
+
+  // ---- scenarios ----
+  py::class_<MeasurementSpec>(m, "MeasurementSpec", "[measurement] of a scenario (paper §4)")
+      .def(py::init<>())
+      .def_readwrite("sigma", &MeasurementSpec::sigma)
+      .def_readwrite("sample_period", &MeasurementSpec::sample_period)
+      .def_readwrite("seed", &MeasurementSpec::seed)
+      .def_readwrite("N", &MeasurementSpec::N)
+      .def_readwrite("Q0", &MeasurementSpec::Q0)
+      .def_readwrite("eta", &MeasurementSpec::eta)
+      .def_readwrite("filter_A", &MeasurementSpec::filter_A);
+
+  py::class_<Scenario>(m, "Scenario", "Everything one run needs (shared/scenarios.md)")
+      .def(py::init<>())
+      .def_readwrite("name", &Scenario::name)
+      .def_readwrite("description", &Scenario::description)
+      .def_readwrite("model", &Scenario::model)
+      .def_readwrite("t0", &Scenario::t0)
+      .def_readwrite("tf", &Scenario::tf)
+      .def_readwrite("desired_q0", &Scenario::desired_q0)
+      .def_readwrite("desired_u", &Scenario::desired_u)
+      .def_readwrite("gamma", &Scenario::gamma)
+      .def_readwrite("Q", &Scenario::Q)
+      .def_readwrite("Qf", &Scenario::Qf)
+      .def_readwrite("kappa", &Scenario::kappa)
+      .def_readwrite("disturbance", &Scenario::disturbance)
+      .def_readwrite("initial_q0", &Scenario::initial_q0)
+      .def_readwrite("measurement", &Scenario::measurement)
+      .def_readwrite("solver", &Scenario::solver)
+      .def_readwrite("output_dt", &Scenario::output_dt)
+      .def("resolved", &Scenario::resolved)
+      .def("validate", &Scenario::validate);
+
+  py::class_<Timing>(m, "Timing")
+      .def_readonly("design", &Timing::design)
+      .def_readonly("simulate", &Timing::simulate)
+      .def_readonly("analysis", &Timing::analysis)
+      .def_readonly("total", &Timing::total);
+
+  py::class_<RunResult>(m, "RunResult", "Result of run_scenario")
+      .def_readonly("scenario_name", &RunResult::scenario_name)
+      .def_readonly("controller", &RunResult::controller)
+      .def_readonly("gamma", &RunResult::gamma)
+      .def_readonly("trajectory", &RunResult::trajectory)
+      .def_readonly("solution", &RunResult::solution)
+      .def_readonly("Z0", &RunResult::Z0)
+      .def_readonly("Z_min_eig", &RunResult::Z_min_eig)
+      .def_readonly("Z_max_eig", &RunResult::Z_max_eig)
+      .def_readwrite("gamma_star", &RunResult::gamma_star)
+      .def_readonly("simulation", &RunResult::simulation)
+      .def_readonly("timing", &RunResult::timing)
+      .def_property_readonly("metrics", [](const RunResult& r) { return metrics_dict(r.metrics); })
+      .def("to_json", &results_json, py::arg("indent") = 2)
+      .def("to_csv", &results_csv);
+
+  m.def("run_scenario", &run_scenario, py::arg("scenario"), py::call_guard<py::gil_scoped_release>());
+  m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
+        "The C++ scenario parser (the one hinf-sim uses)");
+}

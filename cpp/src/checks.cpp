@@ -1,0 +1,56 @@
+#include "hinf/checks.hpp"
+
+#include <cmath>
+
+#include "hinf/errors.hpp"
+
+namespace hinf {
+
+void check_finite(double value, const std::string& name) {
+  require(std::isfinite(value), name, " must be finite, got ", value);
+}
+
+void check_finite(const ConstMatRef& M, const std::string& name) {
+  for (Eigen::Index j = 0; j < M.cols(); ++j)
+    for (Eigen::Index i = 0; i < M.rows(); ++i)
+      require(std::isfinite(M(i, j)), name, " has a non-finite entry ", M(i, j), " at (", i, ", ",
+              j, ")");
+}
+
+void check_shape(const ConstMatRef& M, int rows, int cols, const std::string& name) {
+  require(M.rows() == rows && M.cols() == cols, "Incompatible dimensions of ", name,
+          ": expected (", rows, ", ", cols, ") but found (", M.rows(), ", ", M.cols(), ")");
+}
+
+void check_size(const ConstVecRef& v, int size, const std::string& name) {
+  require(v.size() == size, "Incompatible length of ", name, ": expected ", size, " but found ",
+          v.size());
+  check_finite(v, name);
+}
+
+void check_symmetric_weight(const ConstMatRef& M, int n, const std::string& name,
+                            bool definite) {
+  check_shape(M, n, n, name);
+  check_finite(M, name);
+  const double scale = std::max(1.0, M.cwiseAbs().maxCoeff());
+  const double asym = (M - M.transpose()).cwiseAbs().maxCoeff();
+  require(asym <= 1e-10 * scale, name, " must be symmetric: max |", name, " - ", name,
+          "'| = ", asym, "; pass (M + M')/2 if the asymmetry is round-off");
+  Eigen::SelfAdjointEigenSolver<Mat> eig(0.5 * (M + M.transpose()), Eigen::EigenvaluesOnly);
+  const double lambda_min = eig.eigenvalues()(0);
+  if (definite) {
+    require(lambda_min > 1e-12 * scale, name,
+            " must be positive definite: its smallest eigenvalue is ", lambda_min);
+  } else {
+    require(lambda_min >= -1e-12 * scale, name,
+            " must be positive semidefinite: its smallest eigenvalue is ", lambda_min);
+  }
+}
+
+void check_horizon(double t0, double tf) {
+  check_finite(t0, "t0");
+  check_finite(tf, "tf");
+  require(tf > t0, "the horizon needs tf > t0, got t0 = ", t0, ", tf = ", tf);
+}
+
+}  // namespace hinf

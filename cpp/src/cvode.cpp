@@ -1,0 +1,215 @@
+#include "hinf/cvode.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+#include "hinf/errors.hpp"
+
+namespace hinf {
+
+struct CvodeCallbacks {
+  static int rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
+    auto* self = static_cast<Cvode*>(user_data);
+    try {
+      self->rhs_(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+      const double* f = N_VGetArrayPointer(ydot);
+      for (int i = 0; i < self->dim_; ++i)
+        if (!std::isfinite(f[i])) return 1;  // recoverable: CVODE retries with a smaller step
+      return 0;
+    } catch (...) {
+      self->pending_ = std::current_exception();
+      return -1;
+    }
+  }
+
+  static int jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user_data,
+                      N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Cvode*>(user_data);
+    try {
+      self->jacobian_(t, N_VGetArrayPointer(y), N_VGetArrayPointer(fy), SUNDenseMatrix_Data(J));
+      return 0;
+    } catch (...) {
+      self->pending_ = std::current_exception();
+      return -1;
+    }
+  }
+
+  static void error_handler(int, const char* module, const char* function, char* msg,
+                            void* user_data) {
+    auto* self = static_cast<Cvode*>(user_data);
+    self->last_message_ = str_cat(module, "/", function, ": ", msg);
+  }
+};
+
+namespace {
+
+std::string flag_name(long flag) {
+  char* name = CVodeGetReturnFlagName(flag);
+  std::string result = name != nullptr ? name : "UNKNOWN";
+  std::free(name);
+  return result;
+}
+
+}  // namespace
+
+Cvode::Cvode(int dim, Method method, double rtol, double atol, long max_steps, Rhs rhs,
+             Jacobian jacobian)
+    : dim_(dim), method_(method), method_name_(to_string(method)), rhs_(std::move(rhs)),
+      jacobian_(std::move(jacobian)) {
+  if (method != Method::BDF && method != Method::Adams)
+    throw InputError("Cvode supports the methods \"bdf\" and \"adams\"");
+  SUNContext ctx = nullptr;
+  if (SUNContext_Create(nullptr, &ctx) != 0) throw SolverError("SUNContext_Create failed", 0.0, "");
+  context_ = ctx;
+  y_ = N_VNew_Serial(dim, ctx);
+  dky_ = N_VNew_Serial(dim, ctx);
+  mem_ = CVodeCreate(method == Method::BDF ? CV_BDF : CV_ADAMS, ctx);
+  if (y_ == nullptr || dky_ == nullptr || mem_ == nullptr) {
+    release();
+    throw SolverError("CVODE: out of memory creating the solver", 0.0, "CV_MEM_FAIL");
+  }
+  N_VConst(0.0, static_cast<N_Vector>(y_));
+  try {
+    check(CVodeInit(mem_, CvodeCallbacks::rhs, 0.0, static_cast<N_Vector>(y_)), "CVodeInit", 0.0);
+    check(CVodeSetErrHandlerFn(mem_, CvodeCallbacks::error_handler, this), "CVodeSetErrHandlerFn", 0.0);
+    check(CVodeSetUserData(mem_, this), "CVodeSetUserData", 0.0);
+    check(CVodeSStolerances(mem_, rtol, atol), "CVodeSStolerances", 0.0);
+    check(CVodeSetMaxNumSteps(mem_, max_steps), "CVodeSetMaxNumSteps", 0.0);
+    if (method == Method::BDF) {
+      matrix_ = SUNDenseMatrix(dim, dim, ctx);
+      linsol_ = SUNLinSol_Dense(static_cast<N_Vector>(y_), static_cast<SUNMatrix>(matrix_), ctx);
+      check(CVodeSetLinearSolver(mem_, static_cast<SUNLinearSolver>(linsol_),
+                                 static_cast<SUNMatrix>(matrix_)),
+            "CVodeSetLinearSolver", 0.0);
+      if (jacobian_) check(CVodeSetJacFn(mem_, CvodeCallbacks::jacobian), "CVodeSetJacFn", 0.0);
+    } else {
+      nonlin_ = SUNNonlinSol_FixedPoint(static_cast<N_Vector>(y_), 0, ctx);
+      check(CVodeSetNonlinearSolver(mem_, static_cast<SUNNonlinearSolver>(nonlin_)),
+            "CVodeSetNonlinearSolver", 0.0);
+    }
+  } catch (...) {
+    release();
+    throw;
+  }
+  taylor_.assign(static_cast<std::size_t>(13 * dim), 0.0);
+}
+
+Cvode::~Cvode() { release(); }
+
+void Cvode::release() {
+  if (mem_ != nullptr) CVodeFree(&mem_);
+  if (nonlin_ != nullptr) SUNNonlinSolFree(static_cast<SUNNonlinearSolver>(nonlin_));
+  if (linsol_ != nullptr) SUNLinSolFree(static_cast<SUNLinearSolver>(linsol_));
+  if (matrix_ != nullptr) SUNMatDestroy(static_cast<SUNMatrix>(matrix_));
+  if (dky_ != nullptr) N_VDestroy(static_cast<N_Vector>(dky_));
+  if (y_ != nullptr) N_VDestroy(static_cast<N_Vector>(y_));
+  if (context_ != nullptr) {
+    SUNContext ctx = static_cast<SUNContext>(context_);
+    SUNContext_Free(&ctx);
+  }
+  mem_ = nonlin_ = linsol_ = matrix_ = dky_ = y_ = context_ = nullptr;
+}
+
+void Cvode::check(int flag, const char* call, double t) {
+  rethrow_pending();
+  if (flag >= 0) return;
+  const std::string name = flag_name(flag);
+  throw SolverError(str_cat("CVODE ", method_name_, ": ", call, " failed at t = ", t, " with ",
+                            name, last_message_.empty() ? "" : ": ", last_message_),
+                    t, name);
+}
+
+void Cvode::rethrow_pending() {
+  if (pending_) {
+    std::exception_ptr error = pending_;
+    pending_ = nullptr;
+    std::rethrow_exception(error);
+  }
+}
+
+void Cvode::reset(double t0, const double* y0, double t_stop) {
+  double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
+  for (int i = 0; i < dim_; ++i) y[i] = y0[i];
+  check(CVodeReInit(mem_, t0, static_cast<N_Vector>(y_)), "CVodeReInit", t0);
+  // The stop time is cleared once reached and after a re-init: set it every time.
+  check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime", t0);
+  t_stop_ = t_stop;
+  last_message_.clear();
+  initialized_ = true;
+}
+
+double Cvode::step(double* y_out) {
+  if (!initialized_) throw InputError("Cvode::step before reset");
+  double t = 0.0;
+  const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
+  check(flag, "CVode", t);
+  const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
+  for (int i = 0; i < dim_; ++i) y_out[i] = y[i];
+  return t;
+}
+
+double Cvode::advance(double tout, double* y_out) {
+  if (!initialized_) throw InputError("Cvode::advance before reset");
+  double t = 0.0;
+  const int flag = CVode(mem_, tout, static_cast<N_Vector>(y_), &t, CV_NORMAL);
+  check(flag, "CVode", t);
+  const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
+  for (int i = 0; i < dim_; ++i) y_out[i] = y[i];
+  return t;
+}
+
+void Cvode::append_last_step(PiecewisePolynomial& dense) {
+  int order = 0;
+  double h_last = 0.0, t_now = 0.0;
+  check(CVodeGetLastOrder(mem_, &order), "CVodeGetLastOrder", 0.0);
+  check(CVodeGetLastStep(mem_, &h_last), "CVodeGetLastStep", 0.0);
+  check(CVodeGetCurrentTime(mem_, &t_now), "CVodeGetCurrentTime", 0.0);
+  // y(t) = sum_k y^(k)(t_n)/k! (t - t_n)^k on [t_n - h_last, t_n]. As a piece starting at t_n
+  // with signed length -h_last: theta = (t - t_n) / (-h_last), c_k = y^(k)(t_n)/k! (-h_last)^k.
+  double scale = 1.0, factorial = 1.0;
+  for (int k = 0; k <= order; ++k) {
+    if (k > 0) {
+      factorial *= k;
+      scale *= -h_last;
+    }
+    check(CVodeGetDky(mem_, t_now, k, static_cast<N_Vector>(dky_)), "CVodeGetDky", t_now);
+    const double* d = N_VGetArrayPointer(static_cast<N_Vector>(dky_));
+    for (int i = 0; i < dim_; ++i)
+      taylor_[static_cast<std::size_t>(k * dim_ + i)] = d[i] * scale / factorial;
+  }
+  dense.append(t_now, -h_last, order, taylor_.data());
+}
+
+long Cvode::num_steps() const {
+  long value = 0;
+  CVodeGetNumSteps(mem_, &value);
+  return value;
+}
+
+long Cvode::num_rhs_evals() const {
+  long value = 0;
+  CVodeGetNumRhsEvals(mem_, &value);
+  return value;
+}
+
+long Cvode::num_jac_evals() const {
+  long value = 0;
+  if (method_ == Method::BDF) CVodeGetNumJacEvals(mem_, &value);
+  return value;
+}
+
+long Cvode::num_error_test_failures() const {
+  long value = 0;
+  CVodeGetNumErrTestFails(mem_, &value);
+  return value;
+}
+
+}  // namespace hinf

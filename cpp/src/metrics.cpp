@@ -1,0 +1,73 @@
+#include "hinf/metrics.hpp"
+
+#include <cmath>
+
+namespace hinf {
+
+namespace {
+
+double trapezoid(const Vec& t, const Vec& values) {
+  double sum = 0.0;
+  for (Eigen::Index k = 1; k < t.size(); ++k)
+    sum += 0.5 * (t[k] - t[k - 1]) * (values[k] + values[k - 1]);
+  return sum;
+}
+
+// sqrt of the plain mean of squared[k] over the grid points with t >= (t0 + tf) / 2.
+double rms_over_last_half(const Vec& t, const Vec& squared) {
+  const double t_half = 0.5 * (t[0] + t[t.size() - 1]);
+  double sum = 0.0;
+  long used = 0;
+  for (Eigen::Index k = 0; k < t.size(); ++k)
+    if (t[k] >= t_half) {
+      sum += squared[k];
+      ++used;
+    }
+  return used > 0 ? std::sqrt(sum / used) : NAN;
+}
+
+}  // namespace
+
+double l2_norm(const Vec& t, const RowMat& series) {
+  return std::sqrt(trapezoid(t, series.rowwise().squaredNorm()));
+}
+
+Metrics compute_metrics(const Model& model, const SimulationResult& run, const Mat& Q) {
+  Metrics metrics;
+  const Eigen::Index count = run.t.size();
+  if (count == 0) return metrics;
+  const RowMat q_e = run.q - run.q_d;
+  const RowMat u_e = run.u - run.u_d;
+
+  const std::vector<int> position = model.position_indices();
+  if (!position.empty()) {
+    Vec error(count);
+    for (Eigen::Index k = 0; k < count; ++k) {
+      double s = 0.0;
+      for (int i : position) s += q_e(k, i) * q_e(k, i);
+      error[k] = std::sqrt(s);
+    }
+    metrics.rms_position_error_last_half = rms_over_last_half(run.t, error.array().square().matrix());
+    metrics.max_position_error = error.maxCoeff();
+    metrics.final_position_error = error[count - 1];
+  }
+  metrics.control_l2 = l2_norm(run.t, run.u);
+  metrics.control_error_l2 = l2_norm(run.t, u_e);
+  metrics.disturbance_l2 = l2_norm(run.t, run.w);
+  Vec performance(count);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    const Vec e = q_e.row(k).transpose();
+    performance[k] = e.dot(Q * e) + u_e.row(k).squaredNorm();
+  }
+  const double output_l2 = std::sqrt(std::max(0.0, trapezoid(run.t, performance)));
+  metrics.l2_gain = metrics.disturbance_l2 > 0.0 ? output_l2 / metrics.disturbance_l2 : NAN;
+
+  if (run.rho_sigma_z.size() > 0) metrics.max_rho_sigma_z = run.rho_sigma_z.maxCoeff();
+  if (run.q_hat.rows() == count) {
+    const Vec squared = (run.q_hat - q_e).rowwise().squaredNorm();
+    metrics.rms_estimation_error_last_half = rms_over_last_half(run.t, squared);
+  }
+  return metrics;
+}
+
+}  // namespace hinf

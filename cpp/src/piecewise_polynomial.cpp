@@ -1,0 +1,111 @@
+#include "hinf/piecewise_polynomial.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "hinf/errors.hpp"
+
+namespace hinf {
+
+double PiecewisePolynomial::t_min() const {
+  if (empty()) throw InputError("dense output is empty");
+  return lower_.front();
+}
+
+double PiecewisePolynomial::t_max() const {
+  if (empty()) throw InputError("dense output is empty");
+  return lower_.back() + std::abs(h_.back());
+}
+
+void PiecewisePolynomial::append(double t_start, double h, int degree, const double* coeffs) {
+  t_start_.push_back(t_start);
+  h_.push_back(h);
+  degree_.push_back(degree);
+  offset_.push_back(coeffs_.size());
+  coeffs_.insert(coeffs_.end(), coeffs, coeffs + static_cast<std::size_t>((degree + 1) * dim_));
+  lower_.push_back(std::min(t_start, t_start + h));
+}
+
+void PiecewisePolynomial::finalize() {
+  for (auto* v : {&t_start_, &h_, &lower_, &coeffs_}) v->shrink_to_fit();
+  degree_.shrink_to_fit();
+  offset_.shrink_to_fit();
+  if (num_pieces() < 2 || lower_.front() < lower_.back()) return;
+  std::reverse(t_start_.begin(), t_start_.end());
+  std::reverse(h_.begin(), h_.end());
+  std::reverse(degree_.begin(), degree_.end());
+  std::reverse(offset_.begin(), offset_.end());
+  std::reverse(lower_.begin(), lower_.end());
+}
+
+std::size_t PiecewisePolynomial::locate(double t, std::size_t* cursor) const {
+  const std::size_t count = num_pieces();
+  if (count == 0) throw InputError("dense output is empty");
+  const double lo = t_min(), hi = t_max();
+  const double slack = 1e-12 * std::max({1.0, std::abs(lo), std::abs(hi)});
+  if (!(t >= lo - slack && t <= hi + slack))
+    throw InputError(str_cat("t = ", t, " is outside the solved interval [", lo, ", ", hi, "]"));
+  if (cursor != nullptr && *cursor < count) {
+    std::size_t k = *cursor;
+    // Sweeps over sorted times move by at most a few pieces.
+    for (int tries = 0; tries < 4; ++tries) {
+      const double a = lower_[k], b = a + std::abs(h_[k]);
+      if (t < a && k > 0) --k;
+      else if (t > b && k + 1 < count) ++k;
+      else {
+        *cursor = k;
+        return k;
+      }
+    }
+  }
+  std::size_t k = static_cast<std::size_t>(std::upper_bound(lower_.begin(), lower_.end(), t) -
+                                           lower_.begin());
+  k = k == 0 ? 0 : k - 1;
+  if (cursor != nullptr) *cursor = k;
+  return k;
+}
+
+double PiecewisePolynomial::theta(std::size_t k, double t) const {
+  return (t - t_start_[k]) / h_[k];
+}
+
+void PiecewisePolynomial::eval(double t, double* out, std::size_t* cursor) const {
+  const std::size_t k = locate(t, cursor);
+  const double th = theta(k, t);
+  const int d = degree_[k];
+  const double* c = coeffs_.data() + offset_[k];
+  const double* top = c + static_cast<std::size_t>(d * dim_);
+  for (int i = 0; i < dim_; ++i) out[i] = top[i];
+  for (int j = d - 1; j >= 0; --j) {
+    const double* cj = c + static_cast<std::size_t>(j * dim_);
+    for (int i = 0; i < dim_; ++i) out[i] = out[i] * th + cj[i];
+  }
+}
+
+void PiecewisePolynomial::eval_derivative(double t, double* out, std::size_t* cursor) const {
+  const std::size_t k = locate(t, cursor);
+  const double th = theta(k, t);
+  const int d = degree_[k];
+  const double* c = coeffs_.data() + offset_[k];
+  for (int i = 0; i < dim_; ++i) out[i] = 0.0;
+  for (int j = d; j >= 1; --j) {
+    const double* cj = c + static_cast<std::size_t>(j * dim_);
+    for (int i = 0; i < dim_; ++i) out[i] = out[i] * th + j * cj[i];
+  }
+  const double inv_h = 1.0 / h_[k];
+  for (int i = 0; i < dim_; ++i) out[i] *= inv_h;
+}
+
+std::vector<double> PiecewisePolynomial::breakpoints() const {
+  std::vector<double> points(lower_);
+  if (!empty()) points.push_back(t_max());
+  return points;
+}
+
+std::size_t PiecewisePolynomial::memory_bytes() const {
+  return sizeof(double) * (coeffs_.capacity() + t_start_.capacity() + h_.capacity() +
+                           lower_.capacity()) +
+         sizeof(int) * degree_.capacity() + sizeof(std::size_t) * offset_.capacity();
+}
+
+}  // namespace hinf

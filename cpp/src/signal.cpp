@@ -1,0 +1,138 @@
+#include "hinf/signal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "hinf/checks.hpp"
+#include "hinf/errors.hpp"
+
+namespace hinf {
+
+Signal::Signal(double constant) : offset_(constant) { check_finite(constant, "signal constant"); }
+
+Signal::Signal(double offset, std::vector<Harmonic> harmonics)
+    : offset_(offset), harmonics_(std::move(harmonics)) {
+  check_finite(offset, "signal offset");
+  for (const Harmonic& h : harmonics_) {
+    check_finite(h.amplitude, "harmonic amplitude");
+    check_finite(h.omega, "harmonic omega");
+    check_finite(h.phase, "harmonic phase");
+  }
+}
+
+Signal Signal::table(std::vector<double> t, std::vector<double> values) {
+  require(t.size() >= 2, "a tabulated signal needs at least two points, got ", t.size());
+  require(t.size() == values.size(), "a tabulated signal needs as many values as times: ",
+          t.size(), " times, ", values.size(), " values");
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    check_finite(t[i], "table time");
+    check_finite(values[i], "table value");
+    if (i > 0)
+      require(t[i] > t[i - 1], "table times must be strictly increasing: t[", i - 1,
+              "] = ", t[i - 1], ", t[", i, "] = ", t[i]);
+  }
+  // Natural cubic spline: second derivatives m with m_0 = m_{n-1} = 0 (Thomas algorithm).
+  const std::size_t n = t.size();
+  std::vector<double> m2(n, 0.0);
+  if (n > 2) {
+    std::vector<double> diag(n - 2), rhs(n - 2), upper(n - 2);
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
+      diag[i - 1] = 2.0 * (h0 + h1);
+      upper[i - 1] = h1;
+      rhs[i - 1] = 6.0 * ((values[i + 1] - values[i]) / h1 - (values[i] - values[i - 1]) / h0);
+    }
+    for (std::size_t k = 1; k < n - 2; ++k) {
+      const double lower = t[k + 1] - t[k];  // h_{k} couples unknown k-1 and k
+      const double factor = lower / diag[k - 1];
+      diag[k] -= factor * upper[k - 1];
+      rhs[k] -= factor * rhs[k - 1];
+    }
+    for (std::size_t k = n - 2; k-- > 0;) {
+      double value = rhs[k];
+      if (k + 1 < n - 2) value -= upper[k] * m2[k + 2];
+      m2[k + 1] = value / diag[k];
+    }
+  }
+  Signal s;
+  s.table_t_ = std::move(t);
+  s.table_v_ = std::move(values);
+  s.table_m2_ = std::move(m2);
+  return s;
+}
+
+double Signal::operator()(double t) const {
+  if (is_table()) {
+    const std::vector<double>& T = table_t_;
+    const double span = T.back() - T.front();
+    const double slack = 1e-12 * std::max(1.0, std::abs(T.front()) + std::abs(T.back()));
+    if (!(t >= T.front() - slack && t <= T.back() + slack))
+      throw InputError(str_cat("tabulated signal evaluated at t = ", t, ", outside its table [",
+                               T.front(), ", ", T.back(), "] (span ", span,
+                               "): extend the table to cover the horizon"));
+    std::size_t i = static_cast<std::size_t>(
+        std::upper_bound(T.begin(), T.end(), t) - T.begin());
+    i = std::min(std::max<std::size_t>(i, 1), T.size() - 1);
+    const double h = T[i] - T[i - 1];
+    const double a = (T[i] - t) / h, b = (t - T[i - 1]) / h;
+    return a * table_v_[i - 1] + b * table_v_[i] +
+           ((a * a * a - a) * table_m2_[i - 1] + (b * b * b - b) * table_m2_[i]) * h * h / 6.0;
+  }
+  double value = offset_;
+  for (const Harmonic& h : harmonics_) {
+    const double arg = h.omega * t + h.phase;
+    value += h.amplitude * (h.cosine ? std::cos(arg) : std::sin(arg));
+  }
+  return value;
+}
+
+std::string Signal::describe() const {
+  std::ostringstream os;
+  if (is_table()) {
+    os << "table of " << table_t_.size() << " points on [" << table_t_.front() << ", "
+       << table_t_.back() << "]";
+    return os.str();
+  }
+  os << offset_;
+  for (const Harmonic& h : harmonics_)
+    os << " + " << h.amplitude << (h.cosine ? " cos(" : " sin(") << h.omega << " t + "
+       << h.phase << ")";
+  return os.str();
+}
+
+VectorSignal::VectorSignal(std::vector<Signal> channels)
+    : dim_(static_cast<int>(channels.size())), channels_(std::move(channels)) {}
+
+VectorSignal::VectorSignal(int dim, Function function) : dim_(dim), function_(std::move(function)) {
+  require(dim >= 0, "a vector signal needs dim >= 0, got ", dim);
+  require(static_cast<bool>(function_), "a vector signal needs a callable");
+}
+
+VectorSignal VectorSignal::zeros(int dim) {
+  return VectorSignal(std::vector<Signal>(static_cast<std::size_t>(dim)));
+}
+
+void VectorSignal::eval(double t, double* out) const {
+  if (function_) {
+    const Vec v = function_(t);
+    if (v.size() != dim_)
+      throw InputError(str_cat("a signal function returned a vector of length ", v.size(),
+                               " at t = ", t, ", expected ", dim_));
+    for (int i = 0; i < dim_; ++i) {
+      if (!std::isfinite(v[i]))
+        throw InputError(str_cat("a signal function returned a non-finite value at t = ", t));
+      out[i] = v[i];
+    }
+    return;
+  }
+  for (int i = 0; i < dim_; ++i) out[i] = channels_[static_cast<std::size_t>(i)](t);
+}
+
+Vec VectorSignal::operator()(double t) const {
+  Vec out(dim_);
+  eval(t, out.data());
+  return out;
+}
+
+}  // namespace hinf

@@ -1,0 +1,64 @@
+#include "hinf/trajectory.hpp"
+
+#include "hinf/checks.hpp"
+#include "hinf/errors.hpp"
+
+namespace hinf {
+
+Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf,
+                       const TrajectoryOptions& options)
+    : model_(std::move(model)), q_d0_(std::move(q_d0)), u_d_(std::move(u_d)), t0_(t0), tf_(tf) {
+  require(model_ != nullptr, "Trajectory needs a model");
+  check_horizon(t0, tf);
+  const int n = model_->n();
+  const int m = model_->m();
+  check_size(q_d0_, n, "the desired initial state q_d0");
+  require(u_d_.dim() == m, "the desired input u_d has ", u_d_.dim(), " channels, the model '",
+          model_->name(), "' has ", m, " inputs");
+  require(options.rtol > 0 && options.atol > 0 && options.max_steps > 0,
+          "trajectory tolerances and max_steps must be > 0");
+
+  const bool constant_B = model_->constant_input_matrices();
+  Mat B = model_->B(t0);
+  check_shape(B, n, m, "B");
+  Vec u(m), f(n);
+  auto rhs = [&](double t, const double* y, double* dydt) {
+    Eigen::Map<const Vec> q(y, n);
+    Eigen::Map<Vec> out(dydt, n);
+    model_->f(t, q, f);
+    u_d_.eval(t, u.data());
+    if (!constant_B) B = model_->B(t);
+    out.noalias() = f + B * u;
+  };
+  dense_ = PiecewisePolynomial(n);
+  Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
+  Vec y = q_d0_;
+  try {
+    stepper.integrate(rhs, t0, tf, y.data(), [&](double t_start, double h, const double* c, const double*) {
+      dense_.append(t_start, h, 4, c);
+    });
+  } catch (const SolverError& e) {
+    throw SolverError(str_cat("the desired trajectory could not be integrated: ", e.what()),
+                      e.t(), e.flag());
+  }
+  dense_.finalize();
+  stats_ = stepper.stats();
+}
+
+void Trajectory::q_d(double t, double* out, std::size_t* cursor) const {
+  dense_.eval(t, out, cursor);
+}
+
+Vec Trajectory::q_d(double t) const {
+  Vec out(n());
+  dense_.eval(t, out.data());
+  return out;
+}
+
+Mat Trajectory::A_e(double t) const {
+  Mat A(n(), n());
+  model_->dfdq(t, q_d(t), A);
+  return A;
+}
+
+}  // namespace hinf

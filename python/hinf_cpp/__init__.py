@@ -1,0 +1,89 @@
+"""hinf_cpp: H-infinity tracking control of nonlinear underactuated vehicles.
+
+The numerics (models, desired trajectories, the GRDE, the closed loop) live in the C++
+core ``hinf_cpp._core``; this package adds scenario files, plots and the command line.
+
+Conventions (docs/conventions.md): state order of the ship q = [u, v, r, x, y, psi];
+errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved
+backward in time from Z(tf) = Qf; the control is u = u_d - kappa B' Z q_e.
+"""
+
+from importlib import resources as _resources
+import pathlib as _pathlib
+
+from ._core import (
+    ConjugatePointError,
+    Controller,
+    CouplingConditionError,
+    Harmonic,
+    HinfError,
+    HinfStateFeedback,
+    LinearModel,
+    MeasurementSpec,
+    Model,
+    RiccatiSolution,
+    RunResult,
+    Scenario,
+    ShipModel,
+    ShipParameters,
+    Signal,
+    SimulationResult,
+    SolverError,
+    SolverOptions,
+    SolveStats,
+    Trajectory,
+    VectorSignal,
+    __version__,
+    compute_metrics,
+    output_grid,
+    parse_scenario_toml,
+    run_scenario,
+    simulate_state_feedback,
+    solve_grde,
+)
+from .scenario import load_scenario, scenario_from_dict, signal_from_spec
+
+
+def scenario_path(name: str) -> _pathlib.Path:
+    """Path of a shipped scenario, e.g. ``scenario_path("paper_fig1")``."""
+    path = _pathlib.Path(str(_resources.files(__name__) / "scenarios" / f"{name}.toml"))
+    if not path.exists():
+        shipped = sorted(p.stem for p in path.parent.glob("*.toml"))
+        raise ValueError(f"no shipped scenario '{name}' (shipped: {', '.join(shipped)})")
+    return path
+
+
+__all__ = [
+    "ConjugatePointError",
+    "Controller",
+    "CouplingConditionError",
+    "Harmonic",
+    "HinfError",
+    "HinfStateFeedback",
+    "LinearModel",
+    "MeasurementSpec",
+    "Model",
+    "RiccatiSolution",
+    "RunResult",
+    "Scenario",
+    "ShipModel",
+    "ShipParameters",
+    "Signal",
+    "SimulationResult",
+    "SolveStats",
+    "SolverError",
+    "SolverOptions",
+    "Trajectory",
+    "VectorSignal",
+    "__version__",
+    "compute_metrics",
+    "load_scenario",
+    "output_grid",
+    "parse_scenario_toml",
+    "run_scenario",
+    "scenario_from_dict",
+    "scenario_path",
+    "signal_from_spec",
+    "simulate_state_feedback",
+    "solve_grde",
+]

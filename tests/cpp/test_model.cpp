@@ -1,0 +1,100 @@
+// The ship model: analytic Jacobian and error decomposition against independent truth.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "hinf/model.hpp"
+
+namespace {
+
+using hinf::Mat;
+using hinf::Vec;
+
+Vec random_state(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> d(-2.0, 2.0);
+  Vec q(6);
+  for (int i = 0; i < 6; ++i) q[i] = d(rng);
+  q[5] *= 3.0;  // headings over more than a full turn
+  return q;
+}
+
+TEST(ShipModel, JacobianMatchesCentralDifferences) {
+  const hinf::ShipModel ship;
+  std::mt19937_64 rng(12345);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vec q = random_state(rng);
+    Mat J(6, 6), J_fd(6, 6);
+    ship.dfdq(0.0, q, J);
+    for (int j = 0; j < 6; ++j) {
+      const double h = 1e-6;
+      Vec qp = q, qm = q, fp(6), fm(6);
+      qp[j] += h;
+      qm[j] -= h;
+      ship.f(0.0, qp, fp);
+      ship.f(0.0, qm, fm);
+      J_fd.col(j) = (fp - fm) / (2 * h);
+    }
+    EXPECT_LT((J - J_fd).cwiseAbs().maxCoeff(), 1e-8) << "at q = " << q.transpose();
+  }
+}
+
+TEST(ShipModel, DriftIsThePaperEquations) {
+  // Equations (1)-(6) written out independently, non-default parameters.
+  hinf::ShipParameters p{0.7, -1.3, 0.4, 1.1, 2.5, 0.9};
+  const hinf::ShipModel ship(p);
+  std::mt19937_64 rng(7);
+  const Vec q = random_state(rng);
+  const double u = q[0], v = q[1], r = q[2], psi = q[5];
+  Vec expected(6);
+  expected << 0.7 * v * r - 1.1 * u, -1.3 * u * r - 2.5 * v, 0.4 * u * v - 0.9 * r,
+      u * std::cos(psi) - v * std::sin(psi), u * std::sin(psi) + v * std::cos(psi), r;
+  Vec f(6);
+  ship.f(0.0, q, f);
+  EXPECT_LT((f - expected).cwiseAbs().maxCoeff(), 1e-15);
+  const Mat B = ship.B(0.0), D = ship.D(0.0);
+  EXPECT_EQ(B.rows(), 6);
+  EXPECT_EQ(B.cols(), 2);
+  EXPECT_EQ(B(0, 0), 1.0);
+  EXPECT_EQ(B(2, 1), 1.0);
+  EXPECT_EQ(B.sum(), 2.0);
+  EXPECT_EQ(D.diagonal().head(3).sum(), 3.0);
+  EXPECT_EQ(D.sum(), 3.0);
+}
+
+// A(q) q + alpha(q) = f_e(q) exactly and A(0) = A_e, for the ship's own split and for the
+// generic fallback of the Model base class.
+template <class M>
+void check_split(const M& model, const hinf::Model& as_base) {
+  std::mt19937_64 rng(99);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vec q_d = random_state(rng), q_e = random_state(rng);
+    Mat A(6, 6), A0(6, 6), A_e(6, 6);
+    Vec alpha(6), alpha0(6), f_act(6), f_des(6);
+    as_base.error_split(0.3, q_d, q_e, A, alpha);
+    model.f(0.3, q_d + q_e, f_act);
+    model.f(0.3, q_d, f_des);
+    const Vec f_e = f_act - f_des;
+    EXPECT_LT((A * q_e + alpha - f_e).cwiseAbs().maxCoeff(), 1e-13);
+    as_base.error_split(0.3, q_d, Vec::Zero(6), A0, alpha0);
+    model.dfdq(0.3, q_d, A_e);
+    EXPECT_LT((A0 - A_e).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_LT(alpha0.cwiseAbs().maxCoeff(), 1e-15);
+  }
+}
+
+TEST(ShipModel, ErrorSplitIsExact) {
+  const hinf::ShipModel ship;
+  check_split(ship, ship);
+}
+
+TEST(LinearModel, RejectsWrongShapes) {
+  EXPECT_THROW(hinf::LinearModel(Mat::Zero(2, 3), Mat::Zero(2, 1), Mat::Zero(2, 1)),
+               hinf::InputError);
+  EXPECT_THROW(hinf::LinearModel(Mat::Zero(2, 2), Mat::Zero(3, 1), Mat::Zero(2, 1)),
+               hinf::InputError);
+  Mat A = Mat::Zero(2, 2);
+  A(0, 1) = NAN;
+  EXPECT_THROW(hinf::LinearModel(A, Mat::Zero(2, 1), Mat::Zero(2, 1)), hinf::InputError);
+}
+
+}  // namespace
