@@ -149,6 +149,33 @@ py::object vectorize(const py::object& t, int rows, int cols, Fn&& fn) {
   return std::move(out);
 }
 
+// A VectorSignal of `dim` channels from a VectorSignal, a callable f(t) -> array, a list of
+// Signals or numbers, or None (all zero).
+VectorSignal to_vector_signal(const py::object& value, int dim, const char* what) {
+  if (value.is_none()) return VectorSignal::zeros(dim);
+  if (py::isinstance<VectorSignal>(value)) {
+    VectorSignal signal = value.cast<VectorSignal>();
+    require(signal.dim() == dim, what, " has ", signal.dim(), " channels, expected ", dim);
+    return signal;
+  }
+  if (PyCallable_Check(value.ptr()) && !py::isinstance<Signal>(value)) {
+    py::function fn = value.cast<py::function>();
+    return VectorSignal(dim, [fn](double t) {
+      py::gil_scoped_acquire gil;
+      return fn(t).cast<Vec>();
+    });
+  }
+  if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
+    std::vector<Signal> channels;
+    for (const py::handle item : value) channels.push_back(item.cast<Signal>());
+    require(static_cast<int>(channels.size()) == dim, what, " has ", channels.size(),
+            " channels, expected ", dim);
+    return VectorSignal(std::move(channels));
+  }
+  throw InputError(str_cat(what, " must be a VectorSignal, a callable f(t) -> array, a list of ",
+                           dim, " Signals or numbers, or None"));
+}
+
 void register_exceptions(py::module_& m) {
   static py::exception<HinfError> hinf_error(m, "HinfError", PyExc_RuntimeError);
   static py::exception<SolverError> solver_error(m, "SolverError", hinf_error.ptr());
@@ -340,16 +367,20 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
 
   // ---- trajectory ----
   py::class_<Trajectory, py::smart_holder>(m, "Trajectory", "Desired trajectory of paper eq. (8) with dense output")
-      .def(py::init([](ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf, double rtol,
+      .def(py::init([](ModelPtr model, Vec q_d0, const py::object& u_d, double t0, double tf, double rtol,
                        double atol) {
+             require(model != nullptr, "Trajectory needs a model");
+             VectorSignal inputs = to_vector_signal(u_d, model->m(), "u_d");
              TrajectoryOptions options;
              options.rtol = rtol;
              options.atol = atol;
-             return std::make_shared<Trajectory>(std::move(model), std::move(q_d0), std::move(u_d), t0,
+             py::gil_scoped_release release;
+             return std::make_shared<Trajectory>(std::move(model), std::move(q_d0), std::move(inputs), t0,
                                                  tf, options);
            }),
            py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("tf"),
-           py::arg("rtol") = 1e-11, py::arg("atol") = 1e-12, py::call_guard<py::gil_scoped_release>())
+           py::arg("rtol") = 1e-11, py::arg("atol") = 1e-12,
+           "u_d: a VectorSignal, a callable u_d(t) -> array, or a list of Signals/numbers")
       .def_property_readonly("model", &Trajectory::model_ptr)
       .def_property_readonly("t0", &Trajectory::t0)
       .def_property_readonly("tf", &Trajectory::tf)
@@ -445,7 +476,12 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_property_readonly("q_e", [](const SimulationResult& r) { return RowMat(r.q - r.q_d); });
 
   m.def("simulate_state_feedback",
-        &simulate_state_feedback, py::call_guard<py::gil_scoped_release>(),
+        [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance,
+           const Vec& q0, double output_dt, const SolverOptions& options) {
+          const VectorSignal w = to_vector_signal(disturbance, trajectory.model().nw(), "disturbance");
+          py::gil_scoped_release release;
+          return simulate_state_feedback(trajectory, controller, w, q0, output_dt, options);
+        },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
         py::arg("output_dt") = 0.01, py::arg("options") = SolverOptions{});
   m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
@@ -472,12 +508,20 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readwrite("t0", &Scenario::t0)
       .def_readwrite("tf", &Scenario::tf)
       .def_readwrite("desired_q0", &Scenario::desired_q0)
-      .def_readwrite("desired_u", &Scenario::desired_u)
+      .def_property("desired_u", [](const Scenario& s) { return s.desired_u; },
+                    [](Scenario& s, const py::object& v) {
+                      require(s.model != nullptr, "set Scenario.model before desired_u");
+                      s.desired_u = to_vector_signal(v, s.model->m(), "desired_u");
+                    })
       .def_readwrite("gamma", &Scenario::gamma)
       .def_readwrite("Q", &Scenario::Q)
       .def_readwrite("Qf", &Scenario::Qf)
       .def_readwrite("kappa", &Scenario::kappa)
-      .def_readwrite("disturbance", &Scenario::disturbance)
+      .def_property("disturbance", [](const Scenario& s) { return s.disturbance; },
+                    [](Scenario& s, const py::object& v) {
+                      require(s.model != nullptr, "set Scenario.model before disturbance");
+                      s.disturbance = to_vector_signal(v, s.model->nw(), "disturbance");
+                    })
       .def_readwrite("initial_q0", &Scenario::initial_q0)
       .def_readwrite("measurement", &Scenario::measurement)
       .def_readwrite("solver", &Scenario::solver)
