@@ -13,6 +13,7 @@
 #include "hinf/errors.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/model.hpp"
+#include "hinf/output_feedback.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/scenario.hpp"
 #include "hinf/scenario_io.hpp"
@@ -48,6 +49,10 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     PYBIND11_OVERRIDE(std::vector<int>, Model, position_indices, );
   }
   int heading_index() const override { PYBIND11_OVERRIDE(int, Model, heading_index, ); }
+  Mat C(double t) const override { PYBIND11_OVERRIDE(Mat, Model, C, t); }
+  std::vector<int> noise_channels() const override {
+    PYBIND11_OVERRIDE(std::vector<int>, Model, noise_channels, );
+  }
 
   void f(double t, const ConstVecRef& q, VecRef out) const override {
     py::gil_scoped_acquire gil;
@@ -112,38 +117,37 @@ class PyController : public Controller, public py::trampoline_self_life_support 
   }
 };
 
-// f(t) for a scalar t gives one value; for an array of times, the values stacked on axis 0.
+// f(t) for a scalar t (any number, NumPy scalars and 0-d arrays included) gives one value;
+// for a 1-D array of times, the values stacked on axis 0. rows = 0 means a scalar value,
+// cols = 0 a vector of `rows`, otherwise a rows x cols matrix (fn writes column-major).
 template <class Fn>
 py::object vectorize(const py::object& t, int rows, int cols, Fn&& fn) {
-  if (py::isinstance<py::float_>(t) || py::isinstance<py::int_>(t)) {
-    const double tt = t.cast<double>();
-    if (cols == 0) {
-      Vec out(rows);
-      fn(tt, out.data());
-      return py::cast(out);
-    }
-    Mat out(rows, cols);
-    fn(tt, out.data());
-    return py::cast(out);
-  }
   const py::array_t<double, py::array::c_style | py::array::forcecast> times(t);
-  if (times.ndim() != 1) throw InputError("times must be a number or a 1-D array");
+  if (times.ndim() > 1) throw InputError("times must be a number or a 1-D array");
+  const int r = std::max(rows, 1), c = std::max(cols, 1);
+  const py::ssize_t block = r * c;
+  std::vector<double> colmajor(static_cast<std::size_t>(block));
+  if (times.ndim() == 0) {
+    const double tt = *times.data();
+    fn(tt, colmajor.data());
+    if (rows == 0) return py::float_(colmajor[0]);
+    if (cols == 0) return py::cast(Eigen::Map<Vec>(colmajor.data(), rows).eval());
+    return py::cast(Eigen::Map<Mat>(colmajor.data(), rows, cols).eval());
+  }
   const py::ssize_t count = times.shape(0);
-  std::vector<py::ssize_t> shape{count, rows};
+  std::vector<py::ssize_t> shape{count};
+  if (rows > 0) shape.push_back(rows);
   if (cols > 0) shape.push_back(cols);
   py::array_t<double> out(shape);
   const double* tp = times.data();
   double* op = out.mutable_data();
-  const py::ssize_t block = rows * std::max(cols, 1);
-  std::vector<double> colmajor(static_cast<std::size_t>(block));
   {
     py::gil_scoped_release release;
     for (py::ssize_t k = 0; k < count; ++k) {
       fn(tp[k], colmajor.data());
       // Column-major (Eigen) to row-major (NumPy).
-      for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < std::max(cols, 1); ++j)
-          op[k * block + i * std::max(cols, 1) + j] = colmajor[static_cast<std::size_t>(i + j * rows)];
+      for (int i = 0; i < r; ++i)
+        for (int j = 0; j < c; ++j) op[k * block + i * c + j] = colmajor[static_cast<std::size_t>(i + j * r)];
     }
   }
   return std::move(out);
@@ -260,7 +264,7 @@ PYBIND11_MODULE(_core, m) {
       .def(py::init<double, std::vector<Harmonic>>(), py::arg("offset"), py::arg("harmonics"))
       .def_static("table", &Signal::table, py::arg("t"), py::arg("values"))
       .def("__call__", [](const Signal& s, const py::object& t) {
-        return vectorize(t, 1, 0, [&s](double tt, double* out) { out[0] = s(tt); });
+        return vectorize(t, 0, 0, [&s](double tt, double* out) { out[0] = s(tt); });
       })
       .def_property_readonly("offset", &Signal::offset)
       .def_property_readonly("harmonics", &Signal::harmonics)
@@ -313,6 +317,8 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         model.error_split(t, q_d, q_e, A, alpha);
         return py::make_tuple(A, alpha);
       }, py::arg("t"), py::arg("q_d"), py::arg("q_e"))
+      .def("C", &Model::C, py::arg("t"), "measurement matrix of y = C q + E w (paper eq. 25)")
+      .def("noise_channels", &Model::noise_channels, "the w channels that carry measurement noise")
       .def("state_names", &Model::state_names)
       .def("position_indices", &Model::position_indices)
       .def("heading_index", &Model::heading_index);
@@ -338,8 +344,13 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def(py::init<const ShipParameters&>(), py::arg("parameters") = ShipParameters{})
       .def_property_readonly("parameters", &ShipModel::parameters);
 
-  py::class_<LinearModel, Model, py::smart_holder>(m, "LinearModel", "dq/dt = A q + B u + D w")
-      .def(py::init<Mat, Mat, Mat>(), py::arg("A"), py::arg("B"), py::arg("D"))
+  py::class_<LinearModel, Model, py::smart_holder>(
+      m, "LinearModel",
+      "dq/dt = A q + B u + D w; with C (p x n), y = C q + noise on p extra w channels")
+      .def(py::init([](Mat A, Mat B, Mat D, const std::optional<Mat>& C) {
+             return std::make_shared<LinearModel>(std::move(A), std::move(B), std::move(D), C.value_or(Mat()));
+           }),
+           py::arg("A"), py::arg("B"), py::arg("D"), py::arg("C") = py::none())
       .def_property_readonly("A", &LinearModel::A);
 
   // ---- solver options ----
@@ -355,7 +366,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
              return o;
            }),
            py::arg("method") = "bdf", py::arg("rtol") = 1e-8, py::arg("atol") = 1e-10,
-           py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e8)
+           py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e6)
       .def_property("method", [](const SolverOptions& o) { return to_string(o.method); },
                     [](SolverOptions& o, const std::string& s) { o.method = method_from_string(s); })
       .def_readwrite("rtol", &SolverOptions::rtol)
@@ -439,6 +450,36 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         return py::make_tuple(lo, hi);
       }, py::arg("times"));
 
+  py::class_<FilterRiccatiSolution, py::smart_holder>(m, "FilterRiccatiSolution",
+                                                      "Sigma(t) of the filter Riccati equation (36), A = A_e(t)")
+      .def_property_readonly("trajectory", &FilterRiccatiSolution::trajectory_ptr)
+      .def_property_readonly("gamma", &FilterRiccatiSolution::gamma)
+      .def_property_readonly("t0", &FilterRiccatiSolution::t0)
+      .def_property_readonly("tf", &FilterRiccatiSolution::tf)
+      .def_property_readonly("n", &FilterRiccatiSolution::n)
+      .def_property_readonly("stats", &FilterRiccatiSolution::stats)
+      .def("Sigma", [](const FilterRiccatiSolution& s, const py::object& t) {
+        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
+          Eigen::Map<Mat>(out, s.n(), s.n()) = s.Sigma(tt);
+        });
+      }, py::arg("t"))
+      .def("dSigma_dt", [](const FilterRiccatiSolution& s, const py::object& t) {
+        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
+          Eigen::Map<Mat>(out, s.n(), s.n()) = s.dSigma_dt(tt);
+        });
+      }, py::arg("t"))
+      .def("step_times", [](const FilterRiccatiSolution& s) { return s.dense().breakpoints(); })
+      .def("eigenvalue_range", [](const FilterRiccatiSolution& s, const std::vector<double>& times) {
+        double lo = 0, hi = 0;
+        s.eigenvalue_range(times, lo, hi);
+        return py::make_tuple(lo, hi);
+      }, py::arg("times"));
+
+  m.def("solve_filter_riccati", &solve_filter_riccati, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
+        py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
+        py::call_guard<py::gil_scoped_release>(),
+        "Solve the filter Riccati equation (36) forward from Sigma(t0) = Sigma0 with A = A_e(t)");
+
   m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
         py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
         "Solve the GRDE (13) backward from Z(tf) = Qf; raises ConjugatePointError when gamma <= gamma*");
@@ -472,6 +513,8 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readonly("sigma_min_eig", &SimulationResult::sigma_min_eig)
       .def_readonly("sigma_max_eig", &SimulationResult::sigma_max_eig)
       .def_readonly("rho_sigma_z", &SimulationResult::rho_sigma_z)
+      .def_readonly("coupling_violation_t", &SimulationResult::coupling_violation_t)
+      .def_readonly("integrator", &SimulationResult::integrator)
       .def_readonly("stats", &SimulationResult::stats)
       .def_property_readonly("q_e", [](const SimulationResult& r) { return RowMat(r.q - r.q_d); });
 
@@ -484,6 +527,50 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
         py::arg("output_dt") = 0.01, py::arg("options") = SolverOptions{});
+  py::class_<OutputFeedbackOptions>(m, "OutputFeedbackOptions", "Set-up of the output-feedback loop (paper §4)")
+      .def(py::init([](double sigma, double sample_period, Mat N, Mat Sigma0, Mat Q, const std::string& filter_A,
+                       bool stop_on_coupling_violation) {
+             OutputFeedbackOptions o;
+             o.sigma = sigma;
+             o.sample_period = sample_period;
+             o.N = std::move(N);
+             o.Sigma0 = std::move(Sigma0);
+             o.Q = std::move(Q);
+             require(filter_A == "estimate" || filter_A == "desired",
+                     "filter_A must be \"estimate\" or \"desired\", got \"", filter_A, "\"");
+             o.filter_uses_estimate = filter_A == "estimate";
+             o.stop_on_coupling_violation = stop_on_coupling_violation;
+             return o;
+           }),
+           py::arg("sigma"), py::arg("sample_period"), py::arg("N"), py::arg("Sigma0"), py::arg("Q"),
+           py::arg("filter_A") = "estimate", py::arg("stop_on_coupling_violation") = true)
+      .def_readwrite("sigma", &OutputFeedbackOptions::sigma)
+      .def_readwrite("sample_period", &OutputFeedbackOptions::sample_period)
+      .def_readwrite("N", &OutputFeedbackOptions::N)
+      .def_readwrite("Sigma0", &OutputFeedbackOptions::Sigma0)
+      .def_readwrite("Q", &OutputFeedbackOptions::Q)
+      .def_property("filter_A",
+                    [](const OutputFeedbackOptions& o) { return o.filter_uses_estimate ? "estimate" : "desired"; },
+                    [](OutputFeedbackOptions& o, const std::string& v) {
+                      require(v == "estimate" || v == "desired", "filter_A must be \"estimate\" or \"desired\"");
+                      o.filter_uses_estimate = v == "estimate";
+                    })
+      .def_readwrite("stop_on_coupling_violation", &OutputFeedbackOptions::stop_on_coupling_violation);
+
+  m.def("noise_sample_count", &noise_sample_count, py::arg("t0"), py::arg("tf"), py::arg("period"));
+  m.def("standard_normal_samples", &standard_normal_samples, py::arg("seed"), py::arg("count"),
+        py::arg("channels"), "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
+  m.def("simulate_output_feedback",
+        [](const RiccatiSolution& grde, const Signal& kappa, const py::object& disturbance, const Vec& q0,
+           const RowMat& noise, const OutputFeedbackOptions& options, double output_dt,
+           const SolverOptions& solver) {
+          const VectorSignal w = to_vector_signal(disturbance, grde.trajectory().model().nw(), "disturbance");
+          py::gil_scoped_release release;
+          return simulate_output_feedback(grde, kappa, w, q0, noise, options, output_dt, solver);
+        },
+        py::arg("grde"), py::arg("kappa"), py::arg("disturbance"), py::arg("q0"), py::arg("noise"),
+        py::arg("options"), py::arg("output_dt") = 0.01, py::arg("solver") = SolverOptions{},
+        "Output-feedback closed loop (paper 34-36); noise: standard normal samples, one row per hold interval");
   m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
   m.def("compute_metrics", [](const Model& model, const SimulationResult& run, const Mat& Q) {
     return metrics_dict(compute_metrics(model, run, Q));
@@ -498,7 +585,8 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readwrite("N", &MeasurementSpec::N)
       .def_readwrite("Q0", &MeasurementSpec::Q0)
       .def_readwrite("eta", &MeasurementSpec::eta)
-      .def_readwrite("filter_A", &MeasurementSpec::filter_A);
+      .def_readwrite("filter_A", &MeasurementSpec::filter_A)
+      .def_readwrite("on_coupling_violation", &MeasurementSpec::on_coupling_violation);
 
   py::class_<Scenario>(m, "Scenario", "Everything one run needs (shared/scenarios.md)")
       .def(py::init<>())
@@ -551,7 +639,16 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def("to_json", &results_json, py::arg("indent") = 2)
       .def("to_csv", &results_csv);
 
-  m.def("run_scenario", &run_scenario, py::arg("scenario"), py::call_guard<py::gil_scoped_release>());
+  m.def("run_scenario",
+        [](const Scenario& scenario, const std::optional<RowMat>& noise) {
+          py::gil_scoped_release release;
+          return noise ? run_scenario_with_noise(scenario, *noise) : run_scenario(scenario);
+        },
+        py::arg("scenario"), py::arg("noise") = py::none(),
+        "Run a scenario; with [measurement], noise (standard normal samples, one row per hold interval)"
+        " replaces the seeded noise so that a run can be replayed exactly");
+  m.def("scenario_noise", &scenario_noise, py::arg("scenario"),
+        "The seeded standard normal noise samples of a scenario with [measurement]");
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
         "The C++ scenario parser (the one hinf-sim uses)");
 }

@@ -36,12 +36,19 @@ void HinfStateFeedback::control(double t, const ConstVecRef& q, VecRef u) {
   q_e_ = q - q_e_;
   trajectory.u_d(t, u.data());
   solution_->gain(t, K_.data(), &k_cursor_);
-  u.noalias() -= kappa_(t) * (K_ * q_e_);
+  u.noalias() -= checked_kappa(t) * (K_ * q_e_);
+}
+
+double HinfStateFeedback::checked_kappa(double t) const {
+  const double kappa = kappa_(t);
+  if (!(kappa > 0.0) || !std::isfinite(kappa))
+    throw InputError(str_cat("kappa(t) must be > 0 (paper eq. 18), got kappa(", t, ") = ", kappa));
+  return kappa;
 }
 
 void HinfStateFeedback::control_jacobian(double t, const ConstVecRef&, MatRef dudq) {
   solution_->gain(t, K_.data(), &k_cursor_);
-  dudq = -kappa_(t) * K_;
+  dudq = -checked_kappa(t) * K_;
 }
 
 }  // namespace hinf

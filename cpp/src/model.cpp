@@ -16,6 +16,11 @@ void Model::error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e
   alpha = f_actual - f_desired - A * q_e;
 }
 
+Mat Model::C(double) const {
+  throw InputError(str_cat("the model '", name(), "' defines no measurement (C): imperfect",
+                           " measurements need a model with C(t) and noise_channels()"));
+}
+
 std::vector<std::string> Model::state_names() const {
   std::vector<std::string> names;
   for (int i = 0; i < n(); ++i) names.push_back("q" + std::to_string(i));
@@ -125,11 +130,18 @@ void ShipModel::error_split(double, const ConstVecRef& q_d, const ConstVecRef& q
   alpha[5] = 0.0;
 }
 
+Mat ShipModel::C(double) const {
+  Mat C = Mat::Zero(3, 6);
+  C(0, 3) = C(1, 4) = C(2, 5) = 1.0;
+  return C;
+}
+
 std::vector<std::string> ShipModel::state_names() const {
   return {"u", "v", "r", "x", "y", "psi"};
 }
 
-LinearModel::LinearModel(Mat A, Mat B, Mat D) : A_(std::move(A)), B_(std::move(B)), D_(std::move(D)) {
+LinearModel::LinearModel(Mat A, Mat B, Mat D, Mat C)
+    : A_(std::move(A)), B_(std::move(B)), D_(std::move(D)), C_(std::move(C)) {
   const int n = static_cast<int>(A_.rows());
   require(n >= 1, "LinearModel needs at least one state");
   check_shape(A_, n, n, "A");
@@ -140,6 +152,26 @@ LinearModel::LinearModel(Mat A, Mat B, Mat D) : A_(std::move(A)), B_(std::move(B
           D_.rows());
   check_finite(B_, "B");
   check_finite(D_, "D");
+  if (C_.size() > 0) {
+    require(C_.cols() == n, "Incompatible dimensions of C: expected ", n, " columns but found ",
+            C_.cols());
+    check_finite(C_, "C");
+    const Eigen::Index processes = D_.cols();
+    D_.conservativeResize(n, processes + C_.rows());
+    D_.rightCols(C_.rows()).setZero();
+  }
+}
+
+Mat LinearModel::C(double t) const {
+  if (C_.size() == 0) return Model::C(t);
+  return C_;
+}
+
+std::vector<int> LinearModel::noise_channels() const {
+  std::vector<int> channels;
+  for (Eigen::Index i = 0; i < C_.rows(); ++i)
+    channels.push_back(static_cast<int>(D_.cols() - C_.rows() + i));
+  return channels;
 }
 
 void LinearModel::f(double, const ConstVecRef& q, VecRef out) const { out.noalias() = A_ * q; }

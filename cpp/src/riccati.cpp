@@ -8,88 +8,94 @@
 #include "hinf/cvode.hpp"
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
+#include "riccati_kernel.hpp"
+#include "symmetric_extremes.hpp"
 
 namespace hinf {
 
 namespace {
 
-// Right-hand side and Jacobian of the GRDE in packed form, dZ/dt = F(t, Z) with
-//     F = Z S Z - Z A - A' Z - Q = G + G',   G = Z (S Z / 2 - A) - Q / 2,
-//     S = B B' - gamma^-2 D D',
-// which needs only two n x n products. N is the state dimension when known at compile time
-// (fixed-size Eigen types), Eigen::Dynamic otherwise.
+enum class RiccatiKind { Control, Filter };
+
+// dX/dt = sign (M(t)' X + X M(t) + R(t) - X S(t) X) along a trajectory:
+//   Control (GRDE 13):  sign = -1, M = A_e, R = Q,    S = B B' - gamma^-2 D D';
+//   Filter  (eq. 36):   sign = +1, M = A_e', R = D D', S = C' N^-1 C - gamma^-2 Q.
+// With inverted = true the problem is the one of W = X^-1, which passes smoothly through a
+// finite escape of X (W becomes singular there):
+//   dW/dt = -W (dX/dt) W = (-sign) (M'' W + W M' + (-S) - W (-R) W).
+// N is the state dimension when known at compile time (fixed-size Eigen types), else Dynamic.
 template <int N>
-class GrdeKernel {
+class RiccatiProblem {
  public:
   using MatN = Eigen::Matrix<double, N, N>;
   using VecN = Eigen::Matrix<double, N, 1>;
 
-  GrdeKernel(const Trajectory& trajectory, const Mat& Q, double gamma)
-      : trajectory_(trajectory), model_(trajectory.model()), n_(trajectory.n()),
+  RiccatiProblem(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
+                 const Mat& N_inv, bool inverted = false)
+      : trajectory_(trajectory), model_(trajectory.model()), kind_(kind), inverted_(inverted),
+        n_(trajectory.n()), sign_((kind == RiccatiKind::Control ? -1.0 : 1.0) * (inverted ? -1.0 : 1.0)),
         inv_gamma2_(std::isinf(gamma) ? 0.0 : 1.0 / (gamma * gamma)),
-        constant_S_(model_.constant_input_matrices()) {
-    for (auto* M : {&Q_, &S_, &A_, &Z_, &G_, &T_}) M->resize(n_, n_);
+        constant_(model_.constant_input_matrices()), Q_(Q), N_inv_(N_inv) {
+    for (auto* M : {&M_, &R_, &S_, &X_, &T_, &G_}) M->resize(n_, n_);
     q_d_.resize(n_);
-    Q_ = Q;
-    if (constant_S_) S_at(trajectory.t0(), S_);
+    if (constant_) set_matrices(trajectory.t0());
   }
 
-  void rhs(double t, const double* z, double* dz) {
+  int n() const { return n_; }
+
+  void rhs(double t, const double* x, double* dx) {
     linearize(t);
-    unpack_symmetric(z, Z_);
-    T_.noalias() = S_ * Z_;
-    T_ = 0.5 * T_ - A_;
-    G_.noalias() = Z_ * T_;
-    G_ -= 0.5 * Q_;
-    int k = 0;
-    for (int j = 0; j < n_; ++j)
-      for (int i = 0; i <= j; ++i) dz[k++] = G_(i, j) + G_(j, i);
+    unpack_symmetric(x, X_);
+    detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx);
   }
 
-  // dF/dZ in packed coordinates: for a unit symmetric perturbation E of entry (i, j),
-  // dF = E M + M' E = P + P' with P = E M, M = S Z - A.
-  void jacobian(double t, const double* z, double* J) {
+  void jacobian(double t, const double* x, double* J) {
     linearize(t);
-    unpack_symmetric(z, Z_);
-    T_.noalias() = S_ * Z_;
-    T_ -= A_;  // M
-    const int p = packed_size(n_);
-    G_.setZero();  // P
-    int column = 0;
-    for (int j = 0; j < n_; ++j)
-      for (int i = 0; i <= j; ++i, ++column) {
-        G_.row(i) = T_.row(j);
-        if (i != j) G_.row(j) = T_.row(i);
-        double* Jc = J + static_cast<std::size_t>(column) * p;
-        int row = 0;
-        for (int l = 0; l < n_; ++l)
-          for (int k = 0; k <= l; ++k) Jc[row++] = G_(k, l) + G_(l, k);
-        G_.row(i).setZero();
-        G_.row(j).setZero();
-      }
+    unpack_symmetric(x, X_);
+    detail::riccati_jacobian(sign_, M_, S_, X_, T_, G_, J);
   }
 
  private:
-  void S_at(double t, MatN& S) const {
-    const Mat B = model_.B(t), D = model_.D(t);
-    S = B * B.transpose();
-    if (inv_gamma2_ > 0.0) S -= inv_gamma2_ * (D * D.transpose());
+  void set_matrices(double t) {
+    const Mat D = model_.D(t);
+    MatN R(n_, n_), S(n_, n_);
+    if (kind_ == RiccatiKind::Control) {
+      const Mat B = model_.B(t);
+      R = Q_;
+      S = B * B.transpose();
+      if (inv_gamma2_ > 0.0) S -= inv_gamma2_ * (D * D.transpose());
+    } else {
+      const Mat C = model_.C(t);
+      R = D * D.transpose();
+      S = C.transpose() * N_inv_ * C;
+      if (inv_gamma2_ > 0.0) S -= inv_gamma2_ * Q_;
+    }
+    R_ = inverted_ ? MatN(-S) : R;
+    S_ = inverted_ ? MatN(-R) : S;
   }
 
   void linearize(double t) {
     trajectory_.q_d(t, q_d_.data(), &cursor_);
-    model_.dfdq(t, q_d_, A_);
-    if (!constant_S_) S_at(t, S_);
+    model_.dfdq(t, q_d_, T_);
+    // M = A_e (control) or A_e' (filter); the inverse problem uses M'.
+    const bool transpose = (kind_ == RiccatiKind::Filter) != inverted_;
+    if (transpose) M_ = T_.transpose();
+    else M_ = T_;
+    if (!constant_) set_matrices(t);
   }
 
   const Trajectory& trajectory_;
   const Model& model_;
+  RiccatiKind kind_;
+  bool inverted_;
   int n_;
+  double sign_;
   double inv_gamma2_;
-  bool constant_S_;
+  bool constant_;
+  Mat Q_, N_inv_;
   std::size_t cursor_ = 0;
   VecN q_d_;
-  MatN Q_, S_, A_, Z_, G_, T_;
+  MatN M_, R_, S_, X_, T_, G_;
 };
 
 double max_abs(const double* y, int p) {
@@ -101,60 +107,132 @@ double max_abs(const double* y, int p) {
   return value;
 }
 
-double norm2(const double* y, int p) {
-  double s = 0.0;
-  for (int i = 0; i < p; ++i) s += y[i] * y[i];
-  return std::sqrt(s);
-}
-
-[[noreturn]] void throw_conjugate_point(double t_escape, double gamma, double t0, double tf,
-                                        const std::string& detail) {
+[[noreturn]] void throw_escape(RiccatiKind kind, double t_escape, double gamma, double t0,
+                               double tf, const std::string& detail) {
+  if (kind == RiccatiKind::Control)
+    throw ConjugatePointError(
+        str_cat("conjugate point: Z(t) of the GRDE (13) escapes to infinity at t = ", t_escape,
+                " (integrating backward from tf = ", tf, " toward t0 = ", t0, "); gamma = ", gamma,
+                " is at or below gamma* for this trajectory, horizon and weights. Increase gamma"
+                " (gamma_star() gives the smallest admissible value)",
+                detail),
+        t_escape, gamma);
   throw ConjugatePointError(
-      str_cat("conjugate point: Z(t) of the GRDE escapes to infinity near t = ", t_escape,
-              " (integrating backward from tf = ", tf, " toward t0 = ", t0, "); gamma = ", gamma,
-              " is at or below gamma* for this trajectory, horizon and weights. Increase gamma"
-              " (gamma_star() gives the smallest admissible value)",
-              detail),
+      str_cat("the filter Riccati equation (36) escapes to infinity at t = ", t_escape,
+              " (integrating forward from t0 = ", t0, " toward tf = ", tf, "); gamma = ", gamma,
+              " is too small for this filter. Increase gamma or Q0 - eta I", detail),
       t_escape, gamma);
 }
 
 template <int N>
-RiccatiSolutionPtr solve_impl(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
-                              double gamma, const SolverOptions& options) {
-  GrdeKernel<N> kernel(*trajectory, Q, gamma);
-  const int n = trajectory->n();
+double smallest_eigenvalue(const double* packed, int n) {
+  Eigen::Matrix<double, N, N> W(n, n);
+  unpack_symmetric(packed, W);
+  double lo = 0.0, hi = 0.0;
+  detail::symmetric_eigen_extremes(W, lo, hi);
+  return lo;
+}
+
+// Where, between t_start and t_end, does the solution X of the Riccati problem escape to
+// infinity? Integrates W = X^-1 from W(t_start) = X_start^-1 (X_start large, positive
+// definite) and returns the first time the smallest eigenvalue of W reaches zero, located by
+// bisection on the dense output; NaN if W stays positive definite (X is large but finite).
+template <int N>
+double escape_time(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
+                   const Mat& N_inv, const Mat& X_start, double t_start, double t_end,
+                   const SolverOptions& options) {
+  RiccatiProblem<N> inverse(trajectory, kind, Q, gamma, N_inv, /*inverted=*/true);
+  const int n = inverse.n();
   const int p = packed_size(n);
-  const double t0 = trajectory->t0(), tf = trajectory->tf();
-  std::vector<double> z(static_cast<std::size_t>(p)), rate(static_cast<std::size_t>(p));
-  pack_symmetric(Qf, z.data());
+  const Eigen::LLT<Mat> llt(X_start);
+  if (llt.info() != Eigen::Success) return t_start;  // X already lost positive definiteness
+  const Mat W0 = llt.solve(Mat::Identity(n, n));
+  std::vector<double> w(static_cast<std::size_t>(p)), at(static_cast<std::size_t>(p));
+  pack_symmetric(0.5 * (W0 + W0.transpose()), w.data());
+  const double scale = max_abs(w.data(), p);
+  Dopri5 stepper(p, options.rtol, std::min(options.atol, 1e-3 * options.rtol * scale), options.max_steps);
+  auto rhs = [&inverse](double t, const double* y, double* dy) { inverse.rhs(t, y, dy); };
+  struct Found {
+    double t;
+  };
+  try {
+    stepper.integrate(rhs, t_start, t_end, w.data(), [&](double ts, double h, const double* c, const double* y) {
+      if (smallest_eigenvalue<N>(y, n) > 0.0) return;
+      double lo = 0.0, hi = 1.0;  // lambda_min(W) > 0 at theta = lo, <= 0 at theta = hi
+      for (int i = 0; i < 60 && (hi - lo) * std::abs(h) > 1e-14 * std::max(1.0, std::abs(ts)); ++i) {
+        const double mid = 0.5 * (lo + hi);
+        for (int k = 0; k < p; ++k) {
+          double v = c[4 * p + k];
+          for (int j = 3; j >= 0; --j) v = v * mid + c[j * p + k];
+          at[static_cast<std::size_t>(k)] = v;
+        }
+        (smallest_eigenvalue<N>(at.data(), n) > 0.0 ? lo : hi) = mid;
+      }
+      throw Found{ts + hi * h};
+    });
+  } catch (const Found& found) {
+    return found.t;
+  } catch (const SolverError& e) {
+    return e.t();  // W could not be continued: treat the failure point as the escape
+  }
+  return NAN;
+}
 
-  auto rhs = [&kernel](double t, const double* y, double* dy) { kernel.rhs(t, y, dy); };
-  const double limit = options.escape_norm * std::max(1.0, max_abs(z.data(), p));
-  double largest = 0.0;
-  // Near a conjugate point Z ~ C / (t - t_c), so |Z| / |dZ/dt| estimates t - t_c.
+// Integrates the Riccati problem from (t_start, X_start) to t_end with the chosen method and
+// returns its dense output. When |X|_max passes escape_norm * max(1, |X_start|_max), the
+// inverse W = X^-1 decides whether X really escapes (ConjugatePointError at the escape
+// time) or is only large; in the latter case the integration goes on.
+template <int N>
+std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& problem,
+                                                             const Trajectory& trajectory, RiccatiKind kind,
+                                                             const Mat& Q, const Mat& N_inv,
+                                                             const Mat& X_start, double t_start,
+                                                             double t_end, double gamma,
+                                                             const SolverOptions& options) {
+  const int n = static_cast<int>(X_start.rows());
+  const int p = packed_size(n);
+  std::vector<double> x(static_cast<std::size_t>(p));
+  pack_symmetric(X_start, x.data());
+  const double t0 = std::min(t_start, t_end), tf = std::max(t_start, t_end);
+  const double direction = t_end > t_start ? 1.0 : -1.0;
+
+  auto rhs = [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); };
+  double limit = options.escape_norm * std::max(1.0, max_abs(x.data(), p));
+  bool probed = false;
   auto check_escape = [&](double t, const double* y) {
-    largest = max_abs(y, p);
+    const double largest = max_abs(y, p);
     if (largest <= limit) return;
-    kernel.rhs(t, y, rate.data());
-    double t_escape = t - norm2(y, p) / norm2(rate.data(), p);
-    if (!std::isfinite(t_escape)) t_escape = t;
-    throw_conjugate_point(std::clamp(t_escape, t0, t), gamma, t0, tf, "");
+    if (!std::isfinite(largest)) throw_escape(kind, t, gamma, t0, tf, " (the solution became non-finite)");
+    Mat X(n, n);
+    unpack_symmetric(y, X);
+    const double t_escape = escape_time<N>(trajectory, kind, Q, gamma, N_inv, X, t, t_end, options);
+    if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
+    limit = std::numeric_limits<double>::infinity();  // large but finite: carry on
+    probed = true;
   };
+  // A failure while X is large may be an escape the threshold has not caught yet.
+  const double initial_scale = std::max(1.0, max_abs(x.data(), p));
   auto on_failure = [&](const SolverError& e) {
-    if (largest > std::sqrt(limit))
-      throw_conjugate_point(e.t(), gamma, t0, tf, str_cat(" [the integrator stopped: ", e.what(), "]"));
-    throw SolverError(str_cat("GRDE backward solve failed: ", e.what()), e.t(), e.flag());
+    if (!probed && max_abs(x.data(), p) > 1e3 * initial_scale) {
+      Mat X(n, n);
+      unpack_symmetric(x.data(), X);
+      const double t_escape = escape_time<N>(trajectory, kind, Q, gamma, N_inv, X, e.t(), t_end, options);
+      if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
+    }
+    throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)",
+                              " solve failed: ", e.what(),
+                              probed ? " (the solution is very large but has no finite escape)" : ""),
+                      e.t(), e.flag());
   };
-
   PiecewisePolynomial dense(p);
   SolveStats stats;
   if (options.method == Method::ERK) {
     Dopri5 stepper(p, options.rtol, options.atol, options.max_steps);
     try {
-      stepper.integrate(rhs, tf, t0, z.data(),
-                        [&](double t_start, double h, const double* c, const double* y) {
-                          dense.append(t_start, h, 4, c);
-                          check_escape(t_start + h, y);
+      stepper.integrate(rhs, t_start, t_end, x.data(),
+                        [&](double t_step, double h, const double* c, const double* y) {
+                          dense.append(t_step, h, 4, c);
+                          check_escape(t_step + h, y);
                         });
     } catch (const ConjugatePointError&) {
       throw;
@@ -167,20 +245,20 @@ RiccatiSolutionPtr solve_impl(const TrajectoryPtr& trajectory, const Mat& Q, con
   } else {
     Cvode::Jacobian jacobian = nullptr;
     if (options.method == Method::BDF)
-      jacobian = [&kernel](double t, const double* y, const double*, double* J) {
-        kernel.jacobian(t, y, J);
+      jacobian = [&problem](double t, const double* y, const double*, double* J) {
+        problem.jacobian(t, y, J);
       };
     Cvode solver(p, options.method, options.rtol, options.atol, options.max_steps, rhs, jacobian);
-    solver.reset(tf, z.data(), t0);
-    double t = tf;
-    while (t > t0) {
+    solver.reset(t_start, x.data(), t_end);
+    double t = t_start;
+    while ((t_end - t) * direction > 0.0) {
       try {
-        t = solver.step(z.data());
+        t = solver.step(x.data());
       } catch (const SolverError& e) {
         on_failure(e);
       }
       solver.append_last_step(dense);
-      check_escape(t, z.data());
+      check_escape(t, x.data());
     }
     stats.steps = solver.num_steps();
     stats.rejected = solver.num_error_test_failures();
@@ -189,15 +267,88 @@ RiccatiSolutionPtr solve_impl(const TrajectoryPtr& trajectory, const Mat& Q, con
   }
   dense.finalize();
   stats.memory_bytes = dense.memory_bytes();
-  return std::make_shared<const RiccatiSolution>(trajectory, gamma, std::move(dense), stats);
+  return {std::move(dense), stats};
+}
+
+template <int N>
+std::pair<PiecewisePolynomial, SolveStats> solve_kind(const Trajectory& trajectory, RiccatiKind kind,
+                                                      const Mat& Q, double gamma, const Mat& N_inv,
+                                                      const Mat& X_start, const SolverOptions& options) {
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv);
+  const double t0 = trajectory.t0(), tf = trajectory.tf();
+  if (kind == RiccatiKind::Control)
+    return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, tf, t0, gamma, options);
+  return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, t0, tf, gamma, options);
+}
+
+std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind,
+                                                 const Mat& Q, double gamma, const Mat& N_inv,
+                                                 const Mat& X_start, const SolverOptions& options) {
+  if (trajectory.n() == 6) return solve_kind<6>(trajectory, kind, Q, gamma, N_inv, X_start, options);
+  return solve_kind<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options);
+}
+
+void check_gamma(double gamma) {
+  require(!std::isnan(gamma) && gamma > 0.0, "gamma must be > 0 (or inf), got ", gamma);
+}
+
+Mat symmetrized(const Mat& M) { return 0.5 * (M + M.transpose()); }
+
+template <int N>
+void extremes_over(const PiecewisePolynomial& X, const std::vector<double>& times, double& lambda_min,
+                   double& lambda_max) {
+  const int n = static_cast<int>(std::lround((std::sqrt(8.0 * X.dim() + 1.0) - 1.0) / 2.0));
+  std::vector<double> p(static_cast<std::size_t>(X.dim()));
+  Eigen::Matrix<double, N, N> Xt(n, n);
+  std::size_t cursor = 0;
+  for (double t : times) {
+    X.eval(t, p.data(), &cursor);
+    unpack_symmetric(p.data(), Xt);
+    double lo = 0.0, hi = 0.0;
+    detail::symmetric_eigen_extremes(Xt, lo, hi);
+    lambda_min = std::min(lambda_min, lo);
+    lambda_max = std::max(lambda_max, hi);
+  }
 }
 
 }  // namespace
 
+SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X,
+                                     SolveStats stats)
+    : trajectory_(std::move(trajectory)), n_(trajectory_->n()), gamma_(gamma), X_(std::move(X)),
+      stats_(stats) {}
+
+Mat SymmetricSolution::value(double t) const {
+  std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
+  X_.eval(t, p.data());
+  Mat out(n_, n_);
+  unpack_symmetric(p.data(), out);
+  return out;
+}
+
+Mat SymmetricSolution::derivative(double t) const {
+  std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
+  X_.eval_derivative(t, p.data());
+  Mat out(n_, n_);
+  unpack_symmetric(p.data(), out);
+  return out;
+}
+
+void SymmetricSolution::packed(double t, double* out, std::size_t* cursor) const {
+  X_.eval(t, out, cursor);
+}
+
+void SymmetricSolution::eigenvalue_range(const std::vector<double>& times, double& lambda_min,
+                                         double& lambda_max) const {
+  lambda_min = std::numeric_limits<double>::infinity();
+  lambda_max = -std::numeric_limits<double>::infinity();
+  if (n_ == 6) extremes_over<6>(X_, times, lambda_min, lambda_max);
+  else extremes_over<Eigen::Dynamic>(X_, times, lambda_min, lambda_max);
+}
+
 RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z,
                                  SolveStats stats)
-    : trajectory_(std::move(trajectory)), n_(trajectory_->n()), m_(trajectory_->m()),
-      gamma_(gamma), Z_(std::move(Z)), stats_(stats) {
+    : SymmetricSolution(std::move(trajectory), gamma, std::move(Z), stats), m_(trajectory_->m()) {
   const Model& model = trajectory_->model();
   constant_B_ = model.constant_input_matrices();
   if (constant_B_) {
@@ -206,26 +357,6 @@ RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, Piecewi
       for (int i = 0; i < B.rows(); ++i)
         if (B(i, j) != 0.0) B_nonzeros_.emplace_back(i, j, B(i, j));
   }
-}
-
-Mat RiccatiSolution::Z(double t) const {
-  std::vector<double> packed(static_cast<std::size_t>(packed_size(n_)));
-  Z_.eval(t, packed.data());
-  Mat out(n_, n_);
-  unpack_symmetric(packed.data(), out);
-  return out;
-}
-
-Mat RiccatiSolution::dZdt(double t) const {
-  std::vector<double> packed(static_cast<std::size_t>(packed_size(n_)));
-  Z_.eval_derivative(t, packed.data());
-  Mat out(n_, n_);
-  unpack_symmetric(packed.data(), out);
-  return out;
-}
-
-void RiccatiSolution::Z_packed(double t, double* out, std::size_t* cursor) const {
-  Z_.eval(t, out, cursor);
 }
 
 Mat RiccatiSolution::gain(double t) const {
@@ -237,14 +368,14 @@ Mat RiccatiSolution::gain(double t) const {
 void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
   if (constant_B_) {
     // K(j, c) = sum_i B(i, j) Z(i, c), column-major m x n.
-    double packed[kMaxPackedOnStack];
+    double packed_stack[kMaxPackedOnStack];
     std::vector<double> heap;
-    double* z = packed;
+    double* z = packed_stack;
     if (packed_size(n_) > kMaxPackedOnStack) {
       heap.resize(static_cast<std::size_t>(packed_size(n_)));
       z = heap.data();
     }
-    Z_.eval(t, z, cursor);
+    X_.eval(t, z, cursor);
     for (int k = 0; k < m_ * n_; ++k) out[k] = 0.0;
     for (const auto& [i, j, b] : B_nonzeros_)
       for (int c = 0; c < n_; ++c) out[j + c * m_] += b * z[packed_index(i, c)];
@@ -253,35 +384,35 @@ void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
   Eigen::Map<Mat>(out, m_, n_) = trajectory_->model().B(t).transpose() * Z(t);
 }
 
-void RiccatiSolution::eigenvalue_range(const std::vector<double>& times, double& lambda_min,
-                                       double& lambda_max) const {
-  lambda_min = std::numeric_limits<double>::infinity();
-  lambda_max = -std::numeric_limits<double>::infinity();
-  std::vector<double> packed(static_cast<std::size_t>(packed_size(n_)));
-  Mat Zt(n_, n_);
-  Eigen::SelfAdjointEigenSolver<Mat> eig(n_);
-  std::size_t cursor = 0;
-  for (double t : times) {
-    Z_.eval(t, packed.data(), &cursor);
-    unpack_symmetric(packed.data(), Zt);
-    eig.compute(Zt, Eigen::EigenvaluesOnly);
-    lambda_min = std::min(lambda_min, eig.eigenvalues()(0));
-    lambda_max = std::max(lambda_max, eig.eigenvalues()(n_ - 1));
-  }
-}
-
 RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                               double gamma, const SolverOptions& options) {
   require(trajectory != nullptr, "solve_grde needs a trajectory");
   const int n = trajectory->n();
   check_symmetric_weight(Q, n, "Q", false);
   check_symmetric_weight(Qf, n, "Qf", true);
-  require(!std::isnan(gamma) && gamma > 0.0, "gamma must be > 0 (or inf for LQR), got ", gamma);
+  check_gamma(gamma);
   options.validate();
-  const Mat Q_sym = 0.5 * (Q + Q.transpose());
-  const Mat Qf_sym = 0.5 * (Qf + Qf.transpose());
-  if (n == 6) return solve_impl<6>(trajectory, Q_sym, Qf_sym, gamma, options);
-  return solve_impl<Eigen::Dynamic>(trajectory, Q_sym, Qf_sym, gamma, options);
+  auto [dense, stats] = solve(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(),
+                              symmetrized(Qf), options);
+  return std::make_shared<const RiccatiSolution>(trajectory, gamma, std::move(dense), stats);
+}
+
+FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, const Mat& N,
+                                              const Mat& Q, double gamma, const Mat& Sigma0,
+                                              const SolverOptions& options) {
+  require(trajectory != nullptr, "solve_filter_riccati needs a trajectory");
+  const Model& model = trajectory->model();
+  const int n = trajectory->n();
+  const int p = static_cast<int>(model.C(trajectory->t0()).rows());
+  check_symmetric_weight(N, p, "N", true);
+  check_symmetric_weight(Q, n, "Q", false);
+  check_symmetric_weight(Sigma0, n, "Sigma0", true);
+  check_gamma(gamma);
+  options.validate();
+  const Mat N_inv = symmetrized(N).inverse();
+  auto [dense, stats] = solve(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv,
+                              symmetrized(Sigma0), options);
+  return std::make_shared<const FilterRiccatiSolution>(trajectory, gamma, std::move(dense), stats);
 }
 
 }  // namespace hinf

@@ -6,6 +6,7 @@
 #include "hinf/checks.hpp"
 #include "hinf/controller.hpp"
 #include "hinf/errors.hpp"
+#include "hinf/output_feedback.hpp"
 
 namespace hinf {
 
@@ -19,6 +20,13 @@ Scenario Scenario::resolved() const {
   if (s.measurement) {
     MeasurementSpec& ms = *s.measurement;
     if (ms.Q0.size() == 0) ms.Q0 = 2.0 * Mat::Identity(n, n);
+    const int p = static_cast<int>(model->C(s.t0).rows());
+    if (ms.N.size() == 0) {
+      require(ms.sigma > 0.0, "[measurement] N must be given when sigma = 0 (the default N is sigma^2 I)");
+      ms.N = ms.sigma * ms.sigma * Mat::Identity(p, p);
+    } else if (ms.N.rows() == 1 && ms.N.cols() == 1 && p != 1) {
+      ms.N = ms.N(0, 0) * Mat::Identity(p, p);
+    }
   }
   return s;
 }
@@ -42,6 +50,37 @@ void Scenario::validate() const {
     require(std::isfinite(k) && k > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(", t,
             ") = ", k);
   }
+  if (measurement) {
+    const MeasurementSpec& ms = *measurement;
+    const int p = static_cast<int>(model->C(t0).rows());
+    require(std::isfinite(ms.sigma) && ms.sigma >= 0.0, "[measurement] sigma must be >= 0, got ", ms.sigma);
+    require(std::isfinite(ms.sample_period) && ms.sample_period > 0.0,
+            "[measurement] sample_period must be > 0, got ", ms.sample_period);
+    check_symmetric_weight(ms.N, p, "[measurement] N", true);
+    require(std::isfinite(ms.eta) && ms.eta > 0.0, "[measurement] eta must be > 0 (paper §4), got ", ms.eta);
+    check_symmetric_weight(ms.Q0, n, "[measurement] Q0", false);
+    const Mat shifted = ms.Q0 - ms.eta * Mat::Identity(n, n);
+    Eigen::SelfAdjointEigenSolver<Mat> eig(0.5 * (shifted + shifted.transpose()), Eigen::EigenvaluesOnly);
+    require(eig.eigenvalues()(0) > 0.0,
+            "[measurement] Q0 - eta I must be positive definite (Sigma(t0) = (Q0 - eta I)^-1): its smallest"
+            " eigenvalue is ", eig.eigenvalues()(0), "; increase Q0 or decrease eta");
+    require(ms.filter_A == "estimate" || ms.filter_A == "desired",
+            "[measurement] filter_A must be \"estimate\" or \"desired\", got \"", ms.filter_A, "\"");
+    require(ms.on_coupling_violation == "error" || ms.on_coupling_violation == "flag",
+            "[measurement] on_coupling_violation must be \"error\" or \"flag\", got \"",
+            ms.on_coupling_violation, "\"");
+    require(static_cast<int>(model->noise_channels().size()) == p, "the model '", model->name(),
+            "' has no noise channel for each of its ", p, " measured outputs");
+  }
+}
+
+RowMat scenario_noise(const Scenario& scenario) {
+  require(scenario.measurement.has_value(), "the scenario has no [measurement]");
+  require(scenario.model != nullptr, "the scenario has no model");
+  const MeasurementSpec& ms = *scenario.measurement;
+  const long samples = noise_sample_count(scenario.t0, scenario.tf, ms.sample_period);
+  const int p = static_cast<int>(scenario.model->C(scenario.t0).rows());
+  return standard_normal_samples(ms.seed, samples, p);
 }
 
 namespace {
@@ -52,12 +91,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-RunResult run_scenario(const Scenario& scenario) {
+namespace {
+
+RunResult run(const Scenario& scenario, const RowMat* noise) {
   const auto start = std::chrono::steady_clock::now();
   const Scenario s = scenario.resolved();
   s.validate();
-  if (s.measurement)
-    throw InputError("[measurement] (output feedback, paper §4) is not supported by this build");
 
   RunResult result;
   result.scenario_name = s.name;
@@ -69,8 +108,26 @@ RunResult run_scenario(const Scenario& scenario) {
   const auto simulate_start = std::chrono::steady_clock::now();
   HinfStateFeedback controller(result.solution, s.kappa);
   result.controller = controller.name();
-  result.simulation = simulate_state_feedback(*result.trajectory, controller, s.disturbance,
-                                              s.initial_q0, s.output_dt, s.solver);
+  if (s.measurement) {
+    const MeasurementSpec& ms = *s.measurement;
+    OutputFeedbackOptions o;
+    o.sigma = ms.sigma;
+    o.sample_period = ms.sample_period;
+    o.N = ms.N;
+    o.Sigma0 = (ms.Q0 - ms.eta * Mat::Identity(s.model->n(), s.model->n())).inverse();
+    o.Sigma0 = 0.5 * (o.Sigma0 + o.Sigma0.transpose());
+    o.Q = s.Q;
+    o.filter_uses_estimate = ms.filter_A == "estimate";
+    o.stop_on_coupling_violation = ms.on_coupling_violation == "error";
+    result.controller += "-output-feedback";
+    const RowMat seeded = noise == nullptr ? scenario_noise(s) : RowMat();
+    result.simulation = simulate_output_feedback(*result.solution, s.kappa, s.disturbance, s.initial_q0,
+                                                 noise == nullptr ? seeded : *noise, o, s.output_dt,
+                                                 s.solver);
+  } else {
+    result.simulation = simulate_state_feedback(*result.trajectory, controller, s.disturbance,
+                                                s.initial_q0, s.output_dt, s.solver);
+  }
   result.timing.simulate = seconds_since(simulate_start);
 
   const auto analysis_start = std::chrono::steady_clock::now();
@@ -82,6 +139,16 @@ RunResult run_scenario(const Scenario& scenario) {
   result.timing.analysis = seconds_since(analysis_start);
   result.timing.total = seconds_since(start);
   return result;
+}
+
+}  // namespace
+
+RunResult run_scenario(const Scenario& scenario) { return run(scenario, nullptr); }
+
+RunResult run_scenario_with_noise(const Scenario& scenario, const RowMat& noise) {
+  require(scenario.measurement.has_value(),
+          "explicit noise needs a scenario with [measurement] (imperfect measurements)");
+  return run(scenario, &noise);
 }
 
 }  // namespace hinf

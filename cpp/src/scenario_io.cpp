@@ -135,7 +135,14 @@ class TableReader {
     return as_signal(*node, key);
   }
   Signal as_signal(const toml::node& node, const std::string& key) const {
-    if (node.is_integer() || node.is_floating_point()) return Signal(as_number(node, key));
+    if (node.is_integer() || node.is_floating_point()) {
+      try {
+        return Signal(as_number(node, key));
+      } catch (const InputError& e) {
+        if (std::string(e.what()).rfind(source_, 0) == 0) throw;
+        fail(key, e.what());
+      }
+    }
     const toml::table* table = node.as_table();
     if (table == nullptr)
       fail(key, "expected a signal { offset = ..., harmonics = [...] } or { table = {...} }, got " +
@@ -315,7 +322,8 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   }
   if (const toml::table* table = section(root, "measurement", source, false)) {
     TableReader r(*table, "[measurement]", source,
-                  {"sigma", "sample_period", "seed", "N", "Q0", "eta", "filter_A"});
+                  {"sigma", "sample_period", "seed", "N", "Q0", "eta", "filter_A",
+                   "on_coupling_violation"});
     MeasurementSpec ms;
     ms.sigma = r.number("sigma");
     ms.sample_period = r.number_or("sample_period", ms.sample_period);
@@ -331,12 +339,14 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     if (r.has("Q0")) ms.Q0 = r.matrix("Q0", n, n, true);
     ms.eta = r.number_or("eta", ms.eta);
     ms.filter_A = r.string_or("filter_A", ms.filter_A);
+    ms.on_coupling_violation = r.string_or("on_coupling_violation", ms.on_coupling_violation);
     s.measurement = ms;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
     TableReader r(*table, "[solver]", source, {"method", "rtol", "atol", "max_steps"});
+    const std::string method = r.string_or("method", "bdf");
     try {
-      s.solver.method = method_from_string(r.string_or("method", "bdf"));
+      s.solver.method = method_from_string(method);
     } catch (const InputError& e) {
       r.fail("method", e.what());
     }
@@ -387,6 +397,7 @@ std::string results_json(const RunResult& r, int indent) {
   j["Z_min_eig"] = number(r.Z_min_eig);
   j["Z_max_eig"] = number(r.Z_max_eig);
   j["gamma_star"] = r.gamma_star ? number(*r.gamma_star) : nlohmann::json(nullptr);
+  j["coupling_violation_t"] = number(r.simulation.coupling_violation_t);
   j["metrics"] = {
       {"rms_position_error_last_half", number(mt.rms_position_error_last_half)},
       {"max_position_error", number(mt.max_position_error)},

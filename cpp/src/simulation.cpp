@@ -14,7 +14,8 @@ std::vector<double> output_grid(double t0, double tf, double dt) {
   require(std::isfinite(dt) && dt > 0.0, "the output step dt must be > 0, got ", dt);
   const double intervals = (tf - t0) / dt;
   require(intervals <= 1e8, "the output grid would have ", intervals, " points: use a larger dt");
-  const long count = static_cast<long>(std::ceil(intervals - 1e-9));
+  // A last interval shorter than 1e-6 dt is merged into the one before.
+  const long count = std::max(1L, static_cast<long>(std::ceil(intervals - 1e-6)));
   std::vector<double> grid;
   grid.reserve(static_cast<std::size_t>(count + 1));
   for (long k = 0; k < count; ++k) grid.push_back(t0 + static_cast<double>(k) * dt);

@@ -43,6 +43,9 @@ def summary(result: _core.RunResult) -> str:
     lines = [f"scenario {result.scenario_name}: controller {result.controller}, "
              f"gamma = {result.gamma:g}",
              f"  Z(t) eigenvalues in [{result.Z_min_eig:.4g}, {result.Z_max_eig:.4g}]"]
+    if math.isfinite(result.simulation.coupling_violation_t):
+        lines.append(f"  coupling condition rho(Sigma Z) < gamma^2 violated from "
+                     f"t = {result.simulation.coupling_violation_t:g}")
     if result.gamma_star is not None:
         lines.append(f"  gamma* = {result.gamma_star:.6g}")
     width = max(len(name) for name in METRIC_NAMES)
@@ -93,7 +96,7 @@ def cmd_paper(args: argparse.Namespace) -> int:
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = []
-    for figure, name in [("Figure 1", "paper_fig1")]:
+    for figure, name in [("Figure 1", "paper_fig1"), ("Figure 2", "paper_fig2")]:
         result = _core.run_scenario(load_scenario(scenario_path(name)))
         stem = name.replace("paper_", "")
         _write(out / f"{stem}.json", result.to_json() + "\n")

@@ -122,7 +122,10 @@ class _Table:
 
     def as_signal(self, value: Any, key: str) -> _core.Signal:
         if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return _core.Signal(float(value))
+            try:
+                return _core.Signal(float(value))
+            except ValueError as error:
+                self.fail(key, str(error))
         if not isinstance(value, dict):
             self.fail(key, "expected a signal { offset = ..., harmonics = [...] } or { table = {...} }, "
                            f"got {_type_name(value)}")
@@ -263,7 +266,8 @@ def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
     table = _section(root, "measurement", source, False)
     if table is not None:
         r = _Table(table, "[measurement]", source,
-                   ["sigma", "sample_period", "seed", "N", "Q0", "eta", "filter_A"])
+                   ["sigma", "sample_period", "seed", "N", "Q0", "eta", "filter_A",
+                    "on_coupling_violation"])
         ms = _core.MeasurementSpec()
         ms.sigma = r.number("sigma")
         ms.sample_period = r.number("sample_period", ms.sample_period)
@@ -281,17 +285,17 @@ def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
             ms.Q0 = r.matrix("Q0", n, n, True)
         ms.eta = r.number("eta", ms.eta)
         ms.filter_A = r.string("filter_A", ms.filter_A)
+        ms.on_coupling_violation = r.string("on_coupling_violation", ms.on_coupling_violation)
         s.measurement = ms
 
     table = _section(root, "solver", source, False)
     if table is not None:
         r = _Table(table, "[solver]", source, ["method", "rtol", "atol", "max_steps"])
         options = _core.SolverOptions()
+        method = r.string("method", "bdf")
         try:
-            options.method = r.string("method", "bdf")
+            options.method = method
         except ValueError as error:
-            if str(error).startswith(source):
-                raise
             r.fail("method", str(error))
         options.rtol = r.number("rtol", options.rtol)
         options.atol = r.number("atol", options.atol)

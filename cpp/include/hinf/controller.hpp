@@ -39,6 +39,8 @@ class HinfStateFeedback final : public Controller {
   const Signal& kappa() const { return kappa_; }
 
  private:
+  double checked_kappa(double t) const;
+
   RiccatiSolutionPtr solution_;
   Signal kappa_;
   std::size_t q_cursor_ = 0, k_cursor_ = 0;

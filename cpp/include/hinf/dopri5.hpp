@@ -7,7 +7,9 @@
 //     y(t_start + theta h) = sum_j c_j theta^j,   theta in [0, 1].
 // Errors: SolverError on step-size underflow, non-finite values or too many steps.
 // A Dopri5 keeps its workspace and its last step size, so consecutive integrate() calls (e.g.
-// one per hold interval of a sampled noise) restart cheaply.
+// one per hold interval of a sampled noise) restart cheaply. It also runs Hairer's stiffness
+// test (h lambda estimated from the last two stages, both at t + h): stiff() turns true after
+// 15 accepted steps in a row with h |lambda| > 3.25, i.e. steps limited by stability.
 #pragma once
 
 #include <algorithm>
@@ -40,6 +42,7 @@ class Dopri5 {
   double next_step() const { return h_next_; }
   void set_next_step(double h) { h_next_ = std::abs(h); }
   void set_max_step(double h) { h_max_ = std::abs(h); }
+  bool stiff() const { return stiff_; }
 
   template <class Rhs, class OnStep>
   void integrate(Rhs&& rhs, double t0, double t1, double* y, OnStep&& on_step) {
@@ -80,6 +83,7 @@ class Dopri5 {
         std::swap(k1_, k7_);  // FSAL: f(t_new, y_new) is k1 of the next step
         k1 = k1_.data();
         ++stats_.steps;
+        update_stiffness(hs);
         on_step(t_start, hs, static_cast<const double*>(dense_.data()), static_cast<const double*>(y));
         double fac = std::pow(std::max(err, 1e-16), kExpo1) / std::pow(facold_, kBeta);
         fac = std::clamp(fac / kSafe, 1.0 / kFacMax, 1.0 / kFacMin);
@@ -184,6 +188,22 @@ class Dopri5 {
     return std::isfinite(err) ? err : std::numeric_limits<double>::infinity();
   }
 
+  // Hairer's test on the accepted step (k1_ now holds f(t + h, y_new), k6_ the 6th stage at
+  // t + h from ytmp_, ynew_ was copied to y: compare with the stage-6 argument).
+  void update_stiffness(double hs) {
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < dim_; ++i) {
+      num += (k1_[i] - k6_[i]) * (k1_[i] - k6_[i]);
+      den += (ynew_[i] - ytmp_[i]) * (ynew_[i] - ytmp_[i]);
+    }
+    if (den > 0.0 && std::abs(hs) * std::sqrt(num / den) > 3.25) {
+      nonstiff_steps_ = 0;
+      if (++stiff_steps_ >= 15) stiff_ = true;
+    } else if (++nonstiff_steps_ >= 6) {
+      stiff_steps_ = 0;
+    }
+  }
+
   // Dense output of the accepted step as monomial coefficients in theta.
   void build_dense(double hs, const double* y) {
     constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700410799.0,
@@ -211,6 +231,8 @@ class Dopri5 {
   double h_next_ = 0.0;
   double h_max_ = 0.0;
   double facold_ = 1e-4;
+  int stiff_steps_ = 0, nonstiff_steps_ = 0;
+  bool stiff_ = false;
   StepStats stats_;
   std::vector<double> k1_, k2_, k3_, k4_, k5_, k6_, k7_, ytmp_, ynew_, dense_;
 };

@@ -46,6 +46,12 @@ class Model {
   virtual void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
                            VecRef alpha) const;
 
+  // Measurement y = C(t) q + E w (paper eq. 25), C is p x n. The measurement noise is carried
+  // by the w channels noise_channels() (p of them): E = sigma [those unit columns], so
+  // N = E E' = sigma^2 I. The default model has no measurement (C throws InputError).
+  virtual Mat C(double t) const;
+  virtual std::vector<int> noise_channels() const { return {}; }
+
   // Names of the state components (for tables, CSV headers and plots).
   virtual std::vector<std::string> state_names() const;
   // Indices of the inertial position components used by the position-error metrics
@@ -93,6 +99,9 @@ class ShipModel final : public Model {
   Mat D(double t) const override;
   void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
                    VecRef alpha) const override;
+  // Position and heading are measured: C = [0 I3], noise on w4..w6.
+  Mat C(double t) const override;
+  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
   std::vector<std::string> state_names() const override;
   std::vector<int> position_indices() const override { return {3, 4}; }
   int heading_index() const override { return 5; }
@@ -102,9 +111,11 @@ class ShipModel final : public Model {
 };
 
 // A linear time-invariant model dq/dt = A q + B u + D w (for LTI studies and tests).
+// With a measurement matrix C (p x n), w gets p more channels for the measurement noise:
+// w = [process disturbance (D.cols()), measurement noise (p)], and D is padded with zeros.
 class LinearModel final : public Model {
  public:
-  LinearModel(Mat A, Mat B, Mat D);
+  LinearModel(Mat A, Mat B, Mat D, Mat C = Mat());
   std::string name() const override { return "linear"; }
   int n() const override { return static_cast<int>(A_.rows()); }
   int m() const override { return static_cast<int>(B_.cols()); }
@@ -113,10 +124,12 @@ class LinearModel final : public Model {
   void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
   Mat B(double) const override { return B_; }
   Mat D(double) const override { return D_; }
+  Mat C(double t) const override;
+  std::vector<int> noise_channels() const override;
   const Mat& A() const { return A_; }
 
  private:
-  Mat A_, B_, D_;
+  Mat A_, B_, D_, C_;
 };
 
 }  // namespace hinf

@@ -1,15 +1,19 @@
-// The generalized Riccati differential equation (GRDE) of paper eq. (13), solved backward:
+// The matrix Riccati differential equations of the paper, solved along a desired trajectory.
 //
-//     -dZ/dt = A_e' Z + Z A_e + Q - Z (B B' - gamma^-2 D D') Z,    Z(tf) = Qf,
+// GRDE, paper eq. (13), solved BACKWARD from Z(tf) = Qf:
+//     -dZ/dt = A_e' Z + Z A_e + Q - Z (B B' - gamma^-2 D D') Z.
+// Sign convention: Z > 0 is the cost-to-go matrix, V(t, q_e) = q_e' Z(t) q_e; the
+// state-feedback law (17)/(18) is u = u_d - kappa B' Z q_e. gamma = +inf gives LQR.
 //
-// with A_e(t) the linearization along the desired trajectory (paper eq. 10). Sign
-// convention: Z > 0 is the cost-to-go matrix, V(t, q_e) = q_e' Z(t) q_e; the state-feedback
-// law (17)/(18) is u = u_d - kappa B' Z q_e. gamma = +inf gives the LQR Riccati equation.
+// Filter Riccati equation, paper eq. (36), solved FORWARD from Sigma(t0) = (Q0 - eta I)^-1:
+//     dSigma/dt = A Sigma + Sigma A' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D D',
+// here with A = A_e(t) (the linearization along the desired path; the output-feedback
+// simulation also offers A(q_hat(t)), see output_feedback.hpp).
 //
-// Z(t) is kept as the integrator's dense output (symmetric half, see types.hpp), so Z(t) and
-// the gain K(t) = B(t)' Z(t) are available at any t in [t0, tf] with the integrator's
-// accuracy. A finite escape of Z (a conjugate point: gamma <= gamma*, eq. 14) raises
-// ConjugatePointError with the estimated escape time.
+// Both solutions are kept as the integrator's dense output (symmetric half, types.hpp), so
+// they are available at any t in [t0, tf] with the integrator's accuracy. A finite escape
+// (a conjugate point: gamma <= gamma*, eq. 14) raises ConjugatePointError with the
+// estimated escape time.
 #pragma once
 
 #include <memory>
@@ -30,51 +34,82 @@ struct SolveStats {
   std::size_t memory_bytes = 0;  // stored dense output
 };
 
-class RiccatiSolution {
+// A symmetric-matrix-valued solution X(t) on [t0, tf] kept as dense output.
+class SymmetricSolution {
  public:
-  RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z, SolveStats stats);
+  SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X, SolveStats stats);
+  virtual ~SymmetricSolution() = default;
 
   const Trajectory& trajectory() const { return *trajectory_; }
   const TrajectoryPtr& trajectory_ptr() const { return trajectory_; }
   int n() const { return n_; }
-  int m() const { return m_; }
   double gamma() const { return gamma_; }
   double t0() const { return trajectory_->t0(); }
   double tf() const { return trajectory_->tf(); }
 
-  Mat Z(double t) const;
-  Mat dZdt(double t) const;
-  // Packed symmetric half of Z(t) (types.hpp).
-  void Z_packed(double t, double* out, std::size_t* cursor = nullptr) const;
+  Mat value(double t) const;
+  Mat derivative(double t) const;
+  // Packed symmetric half of X(t) (types.hpp).
+  void packed(double t, double* out, std::size_t* cursor = nullptr) const;
+  // Smallest and largest eigenvalue of X over the given times.
+  void eigenvalue_range(const std::vector<double>& times, double& lambda_min, double& lambda_max) const;
+
+  const PiecewisePolynomial& dense() const { return X_; }
+  const SolveStats& stats() const { return stats_; }
+
+ protected:
+  TrajectoryPtr trajectory_;
+  int n_;
+  double gamma_;
+  PiecewisePolynomial X_;
+  SolveStats stats_;
+};
+
+// Z(t) of the GRDE (13).
+class RiccatiSolution final : public SymmetricSolution {
+ public:
+  RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z, SolveStats stats);
+
+  int m() const { return m_; }
+  Mat Z(double t) const { return value(t); }
+  Mat dZdt(double t) const { return derivative(t); }
+  void Z_packed(double t, double* out, std::size_t* cursor = nullptr) const { packed(t, out, cursor); }
   // K(t) = B(t)' Z(t) (m x n), the gain of the state-feedback law (17).
   Mat gain(double t) const;
   // K(t) column-major into out (m * n numbers).
   void gain(double t, double* out, std::size_t* cursor = nullptr) const;
-  // Smallest and largest eigenvalue of Z at each time (paper eq. 22).
-  void eigenvalue_range(const std::vector<double>& times, double& lambda_min, double& lambda_max) const;
-
-  const PiecewisePolynomial& dense() const { return Z_; }
-  const SolveStats& stats() const { return stats_; }
 
  private:
   static constexpr int kMaxPackedOnStack = 136;  // n <= 16 without heap use
-  TrajectoryPtr trajectory_;
-  int n_, m_;
-  double gamma_;
-  PiecewisePolynomial Z_;
+  int m_;
   // Constant B as (row, column, value) triplets of its nonzeros: K = B' Z costs one
   // multiply-add per nonzero and column of Z, computed from the packed Z.
   bool constant_B_ = false;
   std::vector<std::tuple<int, int, double>> B_nonzeros_;
-  SolveStats stats_;
+};
+
+// Sigma(t) of the filter Riccati equation (36) with A = A_e(t).
+class FilterRiccatiSolution final : public SymmetricSolution {
+ public:
+  using SymmetricSolution::SymmetricSolution;
+  Mat Sigma(double t) const { return value(t); }
+  Mat dSigma_dt(double t) const { return derivative(t); }
 };
 
 using RiccatiSolutionPtr = std::shared_ptr<const RiccatiSolution>;
+using FilterRiccatiSolutionPtr = std::shared_ptr<const FilterRiccatiSolution>;
 
 // Solves the GRDE (13) backward from Z(tf) = Qf over the trajectory's horizon.
 // Q (n x n) symmetric positive semidefinite, Qf symmetric positive definite, gamma > 0
 // (may be +inf). Throws InputError, SolverError or ConjugatePointError.
 RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                               double gamma, const SolverOptions& options = {});
+
+// Solves the filter Riccati equation (36) forward from Sigma(t0) = Sigma0, with the model's
+// measurement matrix C (Model::C), N (p x p) positive definite, Q (n x n) positive
+// semidefinite, gamma > 0 (may be +inf: the Kalman-Bucy filter), A = A_e(t).
+FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, const Mat& N,
+                                              const Mat& Q, double gamma, const Mat& Sigma0,
+                                              const SolverOptions& options = {});
 
 }  // namespace hinf

@@ -24,6 +24,7 @@ struct MeasurementSpec {
   Mat Q0;                       // Sigma(t0) = (Q0 - eta I)^-1 (empty: 2 I)
   double eta = 1.0;
   std::string filter_A = "estimate";  // "estimate": A(q_hat(t)); "desired": A_e(t)
+  std::string on_coupling_violation = "error";  // "error" or "flag" (continue, report the time)
 };
 
 struct Scenario {
@@ -44,7 +45,8 @@ struct Scenario {
   SolverOptions solver;
   double output_dt = 0.01;
 
-  // A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I, Q0 = 2 I).
+  // A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I (a 1 x 1
+  // N is that many times I), Q0 = 2 I).
   Scenario resolved() const;
   // Throws InputError naming the first problem found. Call on a resolved scenario.
   void validate() const;
@@ -72,5 +74,11 @@ struct RunResult {
 };
 
 RunResult run_scenario(const Scenario& scenario);
+
+// The standard normal noise samples of a scenario with [measurement] (from its seed).
+RowMat scenario_noise(const Scenario& scenario);
+// As run_scenario, with explicit noise samples (one row per hold interval, one column per
+// measured output; see output_feedback.hpp) instead of the seeded ones.
+RunResult run_scenario_with_noise(const Scenario& scenario, const RowMat& noise);
 
 }  // namespace hinf

@@ -3,6 +3,8 @@
 // integrated with the chosen method; the time series are sampled on the output grid.
 #pragma once
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "hinf/controller.hpp"
@@ -13,7 +15,8 @@
 
 namespace hinf {
 
-// t0, t0 + dt, t0 + 2 dt, ..., ending exactly at tf (the last interval may be shorter).
+// t0, t0 + dt, t0 + 2 dt, ..., ending exactly at tf: the last interval may be shorter, or up
+// to 1e-6 dt longer (rather than leave a sliver of an interval).
 std::vector<double> output_grid(double t0, double tf, double dt);
 
 // Time series on the output grid, one row per time.
@@ -30,6 +33,8 @@ struct SimulationResult {
   Vec sigma_min_eig;      // eigenvalue bounds of the filter Riccati Sigma(t)
   Vec sigma_max_eig;
   Vec rho_sigma_z;        // spectral radius of Sigma(t) Z(t)
+  double coupling_violation_t = NAN;  // first output time with rho(Sigma Z) >= gamma^2, if any
+  std::string integrator;  // how the closed loop was integrated
   SolveStats stats;
 };
 

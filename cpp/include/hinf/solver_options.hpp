@@ -21,9 +21,10 @@ struct SolverOptions {
   double rtol = 1e-8;        // relative tolerance
   double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions)
   long max_steps = 500000;   // per solve; exceeding it is a SolverError
-  // GRDE only: |Z|_max above escape_norm * max(1, |Qf|_max) is taken as a finite escape
-  // (conjugate point, paper eq. 14).
-  double escape_norm = 1e8;
+  // Riccati solves: when |X|_max passes escape_norm * max(1, |X(start)|_max), the inverse
+  // W = X^-1 is integrated to decide whether X escapes to infinity (a conjugate point,
+  // paper eq. 14) or is only large. Only the cost depends on it.
+  double escape_norm = 1e6;
 
   void validate() const;  // InputError on non-positive tolerances or steps
 };

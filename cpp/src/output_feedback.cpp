@@ -1,0 +1,375 @@
+#include "hinf/output_feedback.hpp"
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "hinf/checks.hpp"
+#include "hinf/cvode.hpp"
+#include "hinf/dopri5.hpp"
+#include "hinf/errors.hpp"
+#include "hinf/sdirk4.hpp"
+#include "riccati_kernel.hpp"
+#include "symmetric_extremes.hpp"
+
+namespace hinf {
+
+long noise_sample_count(double t0, double tf, double period) {
+  check_horizon(t0, tf);
+  require(std::isfinite(period) && period > 0.0, "the noise sample period must be > 0, got ", period);
+  const double intervals = (tf - t0) / period;
+  require(intervals <= 1e8, "the noise would need ", intervals, " samples: use a longer sample period");
+  return std::max<long>(1, static_cast<long>(std::ceil(intervals - 1e-9)));
+}
+
+RowMat standard_normal_samples(std::uint64_t seed, long count, int channels) {
+  require(count >= 0 && channels >= 0, "noise sample counts must be >= 0");
+  std::mt19937_64 engine(seed);
+  // Uniform in (-1, 1) from the top 53 bits; Marsaglia's polar method gives pairs.
+  auto uniform = [&engine]() { return 2.0 * static_cast<double>(engine() >> 11) * 0x1.0p-53 - 1.0; };
+  RowMat samples(count, channels);
+  double* out = samples.data();
+  const long total = count * channels;
+  for (long i = 0; i < total; i += 2) {
+    double a, b, s;
+    do {
+      a = uniform();
+      b = uniform();
+      s = a * a + b * b;
+    } while (s >= 1.0 || s == 0.0);
+    const double factor = std::sqrt(-2.0 * std::log(s) / s);
+    out[i] = a * factor;
+    if (i + 1 < total) out[i + 1] = b * factor;
+  }
+  return samples;
+}
+
+namespace {
+
+// The closed loop of plant, estimator (35) and filter Riccati (36); state
+// x = [q (n), q_hat (n), Sigma (packed, n(n+1)/2)].
+template <int N>
+class OutputFeedbackSystem {
+ public:
+  using MatN = Eigen::Matrix<double, N, N>;
+  using VecN = Eigen::Matrix<double, N, 1>;
+
+  OutputFeedbackSystem(const RiccatiSolution& grde, const Signal& kappa, const VectorSignal& disturbance,
+                       const OutputFeedbackOptions& o)
+      : grde_(grde), trajectory_(grde.trajectory()), model_(trajectory_.model()), kappa_(kappa),
+        disturbance_(disturbance), options_(o), n_(grde.n()), m_(model_.m()), nw_(model_.nw()),
+        noise_channels_(model_.noise_channels()), constant_(model_.constant_input_matrices()),
+        inv_gamma2_(std::isinf(grde.gamma()) ? 0.0 : 1.0 / (grde.gamma() * grde.gamma())) {
+    for (auto* M : {&Z_, &Sigma_, &A_, &A_f_, &T_, &G_, &DDt_, &S_f_, &gain_lhs_}) M->resize(n_, n_);
+    for (auto* v : {&q_d_, &q_hat_, &Zq_, &alpha_, &dq_hat_}) v->resize(n_);
+    C_ = model_.C(trajectory_.t0());
+    p_ = static_cast<int>(C_.rows());
+    N_inv_ = o.N.inverse();
+    CtNinv_ = C_.transpose() * N_inv_;
+    u_d_.resize(m_);
+    u_.resize(m_);
+    w_.resize(nw_);
+    f_.resize(n_);
+    noise_.setZero(p_);
+    innovation_.resize(p_);
+    z_packed_.resize(static_cast<std::size_t>(packed_size(n_)));
+    set_matrices(trajectory_.t0());
+  }
+
+  int n() const { return n_; }
+  int p() const { return p_; }
+  int dim() const { return 2 * n_ + packed_size(n_); }
+  void set_noise(const double* v) {
+    for (int i = 0; i < p_; ++i) noise_[i] = v[i];
+  }
+
+  void rhs(double t, const double* x, double* dx) {
+    evaluate_signals(t, x);
+    Eigen::Map<const Vec> q(x, n_);
+    Eigen::Map<Vec> dq(dx, n_), dq_hat(dx + n_, n_);
+    // Plant, with the control (34) u = u_d - kappa B' Z q_hat.
+    model_.f(t, q, f_);
+    dq.noalias() = f_ + B_ * u_ + D_ * w_;
+    // Estimator (35).
+    model_.error_split(t, q_d_, q_hat_, A_, alpha_);
+    innovation_.noalias() = C_ * (q - q_d_ - q_hat_);
+    innovation_ += options_.sigma * noise_;
+    gain_lhs_ = MatN::Identity(n_, n_);
+    gain_lhs_.noalias() -= inv_gamma2_ * (Sigma_ * Z_);
+    dq_hat_.noalias() = Sigma_ * (CtNinv_ * innovation_);
+    dq_hat = gain_lhs_.partialPivLu().solve(dq_hat_);
+    dq_hat.noalias() += A_ * q_hat_;
+    dq_hat += alpha_;
+    dq_hat.noalias() += B_ * (u_ - u_d_);
+    if (inv_gamma2_ > 0.0) dq_hat.noalias() += inv_gamma2_ * (DDt_ * Zq_);
+    // Filter Riccati (36): sign +1, M = A_f', R = D D', S = C' N^-1 C - gamma^-2 Q.
+    if (options_.filter_uses_estimate) {
+      A_f_ = A_.transpose();
+    } else {
+      model_.dfdq(t, q_d_, T_);
+      A_f_ = T_.transpose();
+    }
+    detail::riccati_rhs(1.0, A_f_, DDt_, S_f_, Sigma_, T_, G_, dx + 2 * n_);
+  }
+
+  // Values on the output grid at (t, x): u, w (noise channels included), y, the extreme
+  // eigenvalues of Sigma and rho(Sigma Z).
+  void outputs(double t, const double* x, double* u, double* w, double* y, double& sigma_min,
+               double& sigma_max, double& rho) {
+    evaluate_signals(t, x);
+    for (int i = 0; i < m_; ++i) u[i] = u_[i];
+    for (int i = 0; i < nw_; ++i) w[i] = w_[i];
+    Eigen::Map<const Vec> q(x, n_);
+    Eigen::Map<Vec>(y, p_) = C_ * q + options_.sigma * noise_;
+    detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
+    // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L'.
+    Eigen::LLT<MatN> llt(Sigma_);
+    if (llt.info() != Eigen::Success) {
+      rho = NAN;
+      return;
+    }
+    T_ = llt.matrixL();
+    A_f_.noalias() = Z_ * T_;
+    G_.noalias() = T_.transpose() * A_f_;
+    double smallest = 0.0;
+    detail::symmetric_eigen_extremes(G_, smallest, rho);
+  }
+
+ private:
+  void set_matrices(double t) {
+    B_ = model_.B(t);
+    D_ = model_.D(t);
+    DDt_ = D_ * D_.transpose();
+    S_f_ = C_.transpose() * N_inv_ * C_;
+    if (inv_gamma2_ > 0.0) S_f_ -= inv_gamma2_ * options_.Q;
+  }
+
+  // q_d, u_d, Z, Sigma, q_hat, Z q_hat, u and w at (t, x).
+  void evaluate_signals(double t, const double* x) {
+    if (!constant_) set_matrices(t);
+    trajectory_.q_d(t, q_d_.data(), &q_cursor_);
+    trajectory_.u_d(t, u_d_.data());
+    grde_.packed(t, z_packed_.data(), &z_cursor_);
+    unpack_symmetric(z_packed_.data(), Z_);
+    unpack_symmetric(x + 2 * n_, Sigma_);
+    for (int i = 0; i < n_; ++i) q_hat_[i] = x[n_ + i];
+    Zq_.noalias() = Z_ * q_hat_;
+    u_ = u_d_;
+    u_.noalias() -= kappa_(t) * (B_.transpose() * Zq_);
+    disturbance_.eval(t, w_.data());
+    for (int i = 0; i < p_; ++i) w_[noise_channels_[static_cast<std::size_t>(i)]] = noise_[i];
+  }
+
+  const RiccatiSolution& grde_;
+  const Trajectory& trajectory_;
+  const Model& model_;
+  const Signal& kappa_;
+  const VectorSignal& disturbance_;
+  const OutputFeedbackOptions& options_;
+  int n_, m_, nw_, p_ = 0;
+  std::vector<int> noise_channels_;
+  bool constant_;
+  double inv_gamma2_;
+  std::size_t q_cursor_ = 0, z_cursor_ = 0;
+  Mat B_, D_, C_, N_inv_, CtNinv_;
+  MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_;
+  VecN q_d_, q_hat_, Zq_, alpha_, dq_hat_;
+  Vec u_d_, u_, w_, f_, noise_, innovation_;
+  std::vector<double> z_packed_;
+};
+
+template <int N>
+SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
+                               const VectorSignal& disturbance, const Vec& q0, const RowMat& noise,
+                               const OutputFeedbackOptions& options, double output_dt,
+                               const SolverOptions& solver) {
+  OutputFeedbackSystem<N> system(grde, kappa, disturbance, options);
+  const Trajectory& trajectory = grde.trajectory();
+  const Model& model = trajectory.model();
+  const int n = system.n(), p = system.p(), dim = system.dim();
+  const double t0 = trajectory.t0(), tf = trajectory.tf(), T = options.sample_period;
+  const long samples = noise_sample_count(t0, tf, T);
+  const std::vector<double> grid = output_grid(t0, tf, output_dt);
+  const long count = static_cast<long>(grid.size());
+  const double gamma2 = grde.gamma() * grde.gamma();
+
+  SimulationResult r;
+  r.t = Eigen::Map<const Vec>(grid.data(), count);
+  r.q.resize(count, n);
+  r.q_hat.resize(count, n);
+  r.q_d.resize(count, n);
+  r.u.resize(count, model.m());
+  r.u_d.resize(count, model.m());
+  r.w.resize(count, model.nw());
+  r.y.resize(count, p);
+  r.sigma_min_eig.resize(count);
+  r.sigma_max_eig.resize(count);
+  r.rho_sigma_z.resize(count);
+
+  // Records output time k from the state x; the noise sample is the one held at grid[k].
+  std::size_t cursor = 0;
+  auto record = [&](long k, const double* x) {
+    const double t = grid[static_cast<std::size_t>(k)];
+    const long sample = std::min(samples - 1, static_cast<long>(std::floor((t - t0) / T + 1e-9)));
+    system.set_noise(noise.row(sample).data());
+    for (int i = 0; i < n; ++i) {
+      r.q(k, i) = x[i];
+      r.q_hat(k, i) = x[n + i];
+    }
+    trajectory.q_d(t, r.q_d.row(k).data(), &cursor);
+    trajectory.u_d(t, r.u_d.row(k).data());
+    system.outputs(t, x, r.u.row(k).data(), r.w.row(k).data(), r.y.row(k).data(), r.sigma_min_eig[k],
+                   r.sigma_max_eig[k], r.rho_sigma_z[k]);
+    const double rho = r.rho_sigma_z[k];
+    if (!(r.sigma_min_eig[k] > 0.0))
+      throw SolverError(str_cat("the filter Riccati solution Sigma(t) lost positive definiteness at t = ",
+                                t, " (smallest eigenvalue ", r.sigma_min_eig[k],
+                                "); tighten the solver tolerances or increase gamma"),
+                        t, "SIGMA_NOT_POSITIVE_DEFINITE");
+    if (!(rho < gamma2) && std::isnan(r.coupling_violation_t)) {
+      r.coupling_violation_t = t;
+      if (options.stop_on_coupling_violation)
+        throw CouplingConditionError(
+            str_cat("coupling condition violated at t = ", t, ": rho(Sigma Z) = ", rho,
+                    " >= gamma^2 = ", gamma2, " (paper §4: I - gamma^-2 Sigma Z must stay invertible)."
+                    " Increase gamma, or make Sigma(t0) = (Q0 - eta I)^-1 smaller (larger Q0 - eta I);"
+                    " or ask to continue and only flag it"),
+            t, rho, grde.gamma());
+    }
+  };
+
+  std::vector<double> x(static_cast<std::size_t>(dim), 0.0);
+  for (int i = 0; i < n; ++i) x[static_cast<std::size_t>(i)] = q0[i];
+  pack_symmetric(options.Sigma0, x.data() + 2 * n);
+  record(0, x.data());
+  long next = 1;  // next output time to record
+  auto rhs = [&system](double t, const double* y, double* dy) { system.rhs(t, y, dy); };
+
+  auto interval_end = [&](long k) {
+    return k + 1 == samples ? tf : std::min(tf, t0 + static_cast<double>(k + 1) * T);
+  };
+  // Records the output times in (t_start, t_start + h] of one accepted step of hold interval
+  // k; interpolate(theta, out) evaluates the step's dense output.
+  std::vector<double> at_grid(static_cast<std::size_t>(dim));
+  auto emit = [&](double t_start, double h, long k, auto&& interpolate) {
+    const double t_end = t_start + h;
+    const double slack = 1e-12 * std::max(1.0, std::abs(t_end));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= t_end + slack) {
+      interpolate(std::min(1.0, (grid[static_cast<std::size_t>(next)] - t_start) / h), at_grid.data());
+      record(next, at_grid.data());
+      system.set_noise(noise.row(k).data());
+      ++next;
+    }
+  };
+  auto add_stats = [&r](const StepStats& s) {
+    r.stats.steps += s.steps;
+    r.stats.rejected += s.rejected;
+    r.stats.rhs_evals += s.rhs_evals;
+  };
+
+  try {
+    if (solver.method == Method::ERK || solver.method == Method::BDF) {
+      // Dormand-Prince per hold interval; for "bdf", a switch to the L-stable SDIRK4 once
+      // Dormand-Prince's stiffness test fires.
+      Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, solver.max_steps);
+      std::unique_ptr<Sdirk4> implicit_stepper;
+      r.integrator = "dormand-prince 5(4) per hold interval";
+      for (long k = 0; k < samples; ++k) {
+        const double ta = t0 + static_cast<double>(k) * T, tb = interval_end(k);
+        system.set_noise(noise.row(k).data());
+        if (solver.method == Method::BDF && !implicit_stepper && explicit_stepper.stiff()) {
+          implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol, solver.max_steps);
+          r.integrator += str_cat(", then SDIRK4 from t = ", ta, " (stiffness detected)");
+        }
+        if (implicit_stepper) {
+          implicit_stepper->integrate(
+              rhs, ta, tb, x.data(),
+              [&](double ts, double h, const double* y0, const double* f0, const double* y1, const double* f1) {
+                emit(ts, h, k, [&](double s, double* out) {
+                  // Cubic Hermite between the step's ends.
+                  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
+                  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
+                  for (int i = 0; i < dim; ++i)
+                    out[i] = h00 * y0[i] + h * h10 * f0[i] + h01 * y1[i] + h * h11 * f1[i];
+                });
+              });
+        } else {
+          explicit_stepper.integrate(rhs, ta, tb, x.data(), [&](double ts, double h, const double* c, const double*) {
+            emit(ts, h, k, [&](double theta, double* out) {
+              for (int i = 0; i < dim; ++i) {
+                double v = c[4 * dim + i];
+                for (int j = 3; j >= 0; --j) v = v * theta + c[j * dim + i];
+                out[i] = v;
+              }
+            });
+          });
+        }
+      }
+      add_stats(explicit_stepper.stats());
+      if (implicit_stepper) {
+        add_stats(implicit_stepper->stats());
+        r.stats.jac_evals = implicit_stepper->jacobian_evals();
+      }
+    } else {
+      // Adams: CVODE restarted at every sample (a multistep method restarts at first order).
+      r.integrator = "CVODE Adams restarted per hold interval";
+      Cvode cvode(dim, solver.method, solver.rtol, solver.atol, solver.max_steps, rhs);
+      for (long k = 0; k < samples; ++k) {
+        const double ta = t0 + static_cast<double>(k) * T, tb = interval_end(k);
+        system.set_noise(noise.row(k).data());
+        cvode.reset(ta, x.data(), tb);
+        const double slack = 1e-12 * std::max(1.0, std::abs(tb));
+        while (next < count && grid[static_cast<std::size_t>(next)] <= tb + slack) {
+          cvode.advance(std::min(grid[static_cast<std::size_t>(next)], tb), x.data());
+          record(next, x.data());
+          system.set_noise(noise.row(k).data());
+          ++next;
+        }
+        cvode.advance(tb, x.data());
+        r.stats.steps += cvode.num_steps();
+        r.stats.rhs_evals += cvode.num_rhs_evals();
+        r.stats.rejected += cvode.num_error_test_failures();
+      }
+    }
+  } catch (const SolverError& e) {
+    throw SolverError(str_cat("output-feedback closed loop: ", e.what()), e.t(), e.flag());
+  }
+  return r;
+}
+
+}  // namespace
+
+SimulationResult simulate_output_feedback(const RiccatiSolution& grde, const Signal& kappa,
+                                          const VectorSignal& disturbance, const Vec& q0,
+                                          const RowMat& noise, const OutputFeedbackOptions& options,
+                                          double output_dt, const SolverOptions& solver) {
+  const Trajectory& trajectory = grde.trajectory();
+  const Model& model = trajectory.model();
+  const int n = model.n();
+  const Mat C = model.C(trajectory.t0());
+  const int p = static_cast<int>(C.rows());
+  const std::vector<int> channels = model.noise_channels();
+  require(static_cast<int>(channels.size()) == p, "the model '", model.name(), "' measures ", p,
+          " outputs but has ", channels.size(), " noise channels");
+  for (int c : channels)
+    require(c >= 0 && c < model.nw(), "noise channel ", c, " is not a disturbance channel of the model");
+  check_size(q0, n, "the initial state q0");
+  require(disturbance.dim() == model.nw(), "the disturbance has ", disturbance.dim(),
+          " channels, the model '", model.name(), "' has ", model.nw());
+  require(std::isfinite(options.sigma) && options.sigma >= 0.0, "[measurement] sigma must be >= 0, got ",
+          options.sigma);
+  check_symmetric_weight(options.N, p, "N", true);
+  check_symmetric_weight(options.Sigma0, n, "Sigma0", true);
+  check_symmetric_weight(options.Q, n, "Q", false);
+  solver.validate();
+  const long samples = noise_sample_count(trajectory.t0(), trajectory.tf(), options.sample_period);
+  require(noise.rows() == samples && noise.cols() == p, "the noise must have ", samples, " rows (one per ",
+          options.sample_period, " s sample) and ", p, " columns, got (", noise.rows(), ", ",
+          noise.cols(), ")");
+  check_finite(noise, "noise");
+  if (n == 6)
+    return simulate_impl<6>(grde, kappa, disturbance, q0, noise, options, output_dt, solver);
+  return simulate_impl<Eigen::Dynamic>(grde, kappa, disturbance, q0, noise, options, output_dt, solver);
+}
+
+}  // namespace hinf

@@ -1,0 +1,211 @@
+"""The closed loop (paper eqs. 17/18): u = u_d - kappa B' Z (q - q_d), simulated on the ship."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import hinf_cpp as hc
+from _support import (
+    PAPER_Q0,
+    PAPER_Q_D0,
+    SHIP_B,
+    SHIP_D,
+    max_rel,
+    paper_disturbance,
+    ship_drift,
+)
+
+INITIAL_POSITION_ERROR = math.sqrt(2.0)  # 1 m behind and 1 m aside
+
+
+def paper_disturbance_signals():
+    """0.1 cos(2 pi 0.2 t) on w1..w3 (paper §5), as library Signals."""
+    w = hc.Signal(0.0, [hc.Harmonic(0.1, 2.0 * math.pi * 0.2, 0.0, True)])
+    return [w, w, w, 0.0, 0.0, 0.0]
+
+
+def test_zero_error_stays_on_the_desired_trajectory(paper_trajectory, paper_solutions, method):
+    """q0 = q_d0 and w = 0: u = u_d and q(t) = q_d(t) up to the integrators' accuracy.
+    Measured max |q - q_d|: bdf 3.9e-7, adams 2.3e-7, erk 1.9e-9."""
+    options = hc.SolverOptions(method=method)
+    controller = hc.HinfStateFeedback(paper_solutions[method])
+    run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0, 0.01, options)
+    assert run.t.shape == (4001,) and run.q.shape == (4001, 6) and run.u.shape == (4001, 2)
+    np.testing.assert_allclose(run.t, np.linspace(0.0, 40.0, 4001), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(run.q_d, paper_trajectory.q_d(run.t), rtol=0, atol=0)
+    assert np.max(np.abs(run.q - run.q_d)) < 1e-6
+    assert np.max(np.abs(run.u - run.u_d)) < 1e-5
+    np.testing.assert_array_equal(run.w, 0.0)
+    np.testing.assert_array_equal(run.q_e, run.q - run.q_d)
+
+
+def test_closed_loop_matches_an_independent_integration(paper_trajectory, paper_solutions):
+    """The simulator integrates f + B u + D w with the law (17): compare with SciPy on the
+    DESIGN.md equations, the law written in NumPy from the solution's gain and the
+    trajectory, and the paper's disturbance written in NumPy."""
+    sol = paper_solutions["erk"]
+    kappa = 0.75
+
+    def law(t, q):
+        return paper_trajectory.u_d(t) - kappa * sol.gain(t) @ (q - paper_trajectory.q_d(t))
+
+    def rhs(t, q):
+        return ship_drift(q) + SHIP_B @ law(t, q) + SHIP_D @ paper_disturbance(t)
+
+    t_end = 20.0  # enough to cover the transient, keeps the Python integration short
+    ref = solve_ivp(rhs, (0.0, t_end), PAPER_Q0, method="DOP853", rtol=1e-11, atol=1e-12,
+                    dense_output=True)
+    assert ref.success
+    controller = hc.HinfStateFeedback(sol, kappa=hc.Signal(kappa))
+    run = hc.simulate_state_feedback(paper_trajectory, controller, paper_disturbance_signals(),
+                                     PAPER_Q0, 0.05, hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-12))
+    keep = run.t <= t_end
+    np.testing.assert_allclose(run.q[keep], ref.sol(run.t[keep]).T, rtol=0, atol=1e-7)
+    # The recorded u and w are the law and the disturbance at the recorded states.
+    for k in np.flatnonzero(keep)[::20]:
+        np.testing.assert_allclose(run.u[k], law(run.t[k], run.q[k]), rtol=0, atol=1e-12)
+        np.testing.assert_allclose(run.w[k], paper_disturbance(run.t[k]), rtol=0, atol=1e-15)
+
+
+def test_kappa_scales_the_feedback(paper_trajectory, paper_solutions):
+    sol = paper_solutions["bdf"]
+    for kappa in (0.5, 1.0, 2.0):
+        run = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol, hc.Signal(kappa)),
+                                         None, PAPER_Q0, 0.5)
+        K = sol.gain(run.t)
+        expected = run.u_d - kappa * np.einsum("kij,kj->ki", K, run.q - run.q_d)
+        np.testing.assert_allclose(run.u, expected, rtol=0, atol=1e-12)
+
+
+# ---- the paper's Figure 1 ----
+
+def position_error(run) -> np.ndarray:
+    return np.hypot(run.q_e[:, 3], run.q_e[:, 4])
+
+
+def test_paper_figure1_position_error_decays(paper_run):
+    run = paper_run.simulation
+    error = position_error(run)
+    assert error[0] == pytest.approx(INITIAL_POSITION_ERROR, rel=1e-15)
+    assert error[-1] < 0.1 * INITIAL_POSITION_ERROR
+    # scenarios.md: a few centimetres after about 10 s; stays small over the last half.
+    assert np.max(error[run.t >= 20.0]) < 0.2 * INITIAL_POSITION_ERROR
+    assert np.max(error) == pytest.approx(INITIAL_POSITION_ERROR, rel=1e-12)
+    assert paper_run.controller == "hinf" and paper_run.gamma == 5.0
+    assert paper_run.scenario_name == "paper-fig1"
+
+
+def test_paper_figure1_methods_agree(paper_scenario_path, paper_run):
+    """Measured max |q_bdf - q_erk| 8.8e-8, |q_adams - q_erk| 2.8e-8."""
+    runs = {"bdf": paper_run}
+    for method in ("adams", "erk"):
+        scenario = hc.load_scenario(paper_scenario_path)
+        scenario.solver = hc.SolverOptions(method=method)
+        runs[method] = hc.run_scenario(scenario)
+    for method in ("bdf", "adams"):
+        np.testing.assert_allclose(runs[method].simulation.q, runs["erk"].simulation.q, rtol=0, atol=1e-6)
+        np.testing.assert_allclose(runs[method].simulation.u, runs["erk"].simulation.u, rtol=0, atol=1e-5)
+        assert max_rel(runs[method].Z0, runs["erk"].Z0) < 1e-6
+
+
+def test_paper_figure1_metrics_recomputed(paper_run):
+    """Every metric of scenarios.md recomputed in NumPy from the returned time series."""
+    run = paper_run.simulation
+    t = run.t
+    q_e, u_e = run.q - run.q_d, run.u - run.u_d
+    Q = np.eye(6)
+    pos2 = q_e[:, 3] ** 2 + q_e[:, 4] ** 2
+    half = t >= 0.5 * (t[0] + t[-1])
+
+    def l2(values):
+        return math.sqrt(np.trapezoid(values, t))
+
+    disturbance_l2 = l2(np.sum(run.w**2, axis=1))
+    expected = {
+        "rms_position_error_last_half": math.sqrt(np.mean(pos2[half])),
+        "max_position_error": math.sqrt(np.max(pos2)),
+        "final_position_error": math.sqrt(pos2[-1]),
+        "control_l2": l2(np.sum(run.u**2, axis=1)),
+        "control_error_l2": l2(np.sum(u_e**2, axis=1)),
+        "disturbance_l2": disturbance_l2,
+        "l2_gain": l2(np.einsum("ki,ij,kj->k", q_e, Q, q_e) + np.sum(u_e**2, axis=1)) / disturbance_l2,
+    }
+    metrics = paper_run.metrics
+    for name, value in expected.items():
+        assert metrics[name] == pytest.approx(value, rel=1e-12), name
+    # Output feedback metrics are absent (NaN) for state feedback.
+    assert math.isnan(metrics["max_rho_sigma_z"])
+    assert math.isnan(metrics["rms_estimation_error_last_half"])
+    # Closed form: 3 channels of 0.1 cos(2 pi 0.2 t) over 8 whole periods: integral 3 * 0.01 * 20.
+    assert metrics["disturbance_l2"] == pytest.approx(math.sqrt(0.6), rel=1e-10)
+    # The same numbers from compute_metrics on the same run.
+    again = hc.compute_metrics(paper_run.trajectory.model, run, Q)
+    for name, value in expected.items():
+        assert again[name] == pytest.approx(value, rel=1e-12), name
+    # Z(t) bounds over the output grid (paper eq. 22).
+    eig = np.linalg.eigvalsh(paper_run.solution.Z(t))
+    assert paper_run.Z_min_eig == pytest.approx(eig.min(), rel=1e-12)
+    assert paper_run.Z_max_eig == pytest.approx(eig.max(), rel=1e-12)
+    np.testing.assert_array_equal(paper_run.Z0, paper_run.solution.Z(0.0))
+
+
+class PythonHinfLaw(hc.Controller):
+    """u = u_d(t) - K(t) (q - q_d(t)) written in Python from the solution and the trajectory."""
+
+    def __init__(self, solution, trajectory):
+        hc.Controller.__init__(self)
+        self.solution, self.trajectory = solution, trajectory
+
+    def m(self):
+        return 2
+
+    def control(self, t, q):
+        return self.trajectory.u_d(t) - self.solution.gain(t) @ (q - self.trajectory.q_d(t))
+
+
+def test_python_controller_matches_hinf_state_feedback(paper_trajectory, paper_solutions, method):
+    """Measured max |difference|: bdf 1e-11 (its Newton Jacobian is a finite difference for the
+    Python controller, analytic for HinfStateFeedback), adams 5e-13, erk 2e-14."""
+    options = hc.SolverOptions(method=method)
+    sol = paper_solutions[method]
+    w = paper_disturbance_signals()
+    builtin = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), w, PAPER_Q0, 0.01, options)
+    python = hc.simulate_state_feedback(paper_trajectory, PythonHinfLaw(sol, paper_trajectory), w,
+                                        PAPER_Q0, 0.01, options)
+    tolerance = 1e-6 if method == "bdf" else 1e-9
+    np.testing.assert_allclose(python.q, builtin.q, rtol=0, atol=tolerance)
+    np.testing.assert_allclose(python.u, builtin.u, rtol=0, atol=tolerance)
+    np.testing.assert_array_equal(python.w, builtin.w)
+
+
+def test_disturbance_as_a_callable(paper_trajectory, paper_solutions):
+    """A callable disturbance w(t) gives the same run as the equivalent Signals."""
+    sol = paper_solutions["erk"]
+    options = hc.SolverOptions(method="erk")
+    a = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), paper_disturbance_signals(),
+                                   PAPER_Q0, 0.1, options)
+    b = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), paper_disturbance,
+                                   PAPER_Q0, 0.1, options)
+    np.testing.assert_allclose(b.q, a.q, rtol=0, atol=1e-13)
+
+
+def test_python_controller_exception_propagates(paper_trajectory, method):
+    class Failing(hc.Controller):
+        def __init__(self):
+            hc.Controller.__init__(self)
+
+        def m(self):
+            return 2
+
+        def control(self, t, q):
+            if t > 1.0:
+                raise LookupError("controller failed")
+            return np.array([1.0, 0.0])
+
+    with pytest.raises(LookupError, match="controller failed"):
+        hc.simulate_state_feedback(paper_trajectory, Failing(), None, PAPER_Q_D0, 0.1,
+                                   hc.SolverOptions(method=method))
