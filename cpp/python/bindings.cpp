@@ -390,7 +390,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
                                                  tf, options);
            }),
            py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("tf"),
-           py::arg("rtol") = 1e-11, py::arg("atol") = 1e-12,
+           py::arg("rtol") = 1e-10, py::arg("atol") = 1e-12,
            "u_d: a VectorSignal, a callable u_d(t) -> array, or a list of Signals/numbers")
       .def_property_readonly("model", &Trajectory::model_ptr)
       .def_property_readonly("t0", &Trajectory::t0)
@@ -444,6 +444,11 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         return vectorize(t, s.m(), s.n(), [&s](double tt, double* out) { s.gain(tt, out); });
       }, py::arg("t"), "K(t) = B' Z(t): (m, n) for a number, (len(t), m, n) for an array")
       .def("step_times", [](const RiccatiSolution& s) { return s.dense().breakpoints(); })
+      .def("eigenvalue_bounds", [](const RiccatiSolution& s) {
+        double lo = 0, hi = 0;
+        s.eigenvalue_bounds(lo, hi);
+        return py::make_tuple(lo, hi);
+      }, "(m, M) with m I <= Z(t) <= M I on [t0, tf] (paper eq. 22)")
       .def("eigenvalue_range", [](const RiccatiSolution& s, const std::vector<double>& times) {
         double lo = 0, hi = 0;
         s.eigenvalue_range(times, lo, hi);
@@ -469,6 +474,11 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         });
       }, py::arg("t"))
       .def("step_times", [](const FilterRiccatiSolution& s) { return s.dense().breakpoints(); })
+      .def("eigenvalue_bounds", [](const FilterRiccatiSolution& s) {
+        double lo = 0, hi = 0;
+        s.eigenvalue_bounds(lo, hi);
+        return py::make_tuple(lo, hi);
+      }, "the extreme eigenvalues of Sigma(t) on [t0, tf]")
       .def("eigenvalue_range", [](const FilterRiccatiSolution& s, const std::vector<double>& times) {
         double lo = 0, hi = 0;
         s.eigenvalue_range(times, lo, hi);

@@ -36,7 +36,10 @@ void HinfStateFeedback::control(double t, const ConstVecRef& q, VecRef u) {
   q_e_ = q - q_e_;
   trajectory.u_d(t, u.data());
   solution_->gain(t, K_.data(), &k_cursor_);
-  u.noalias() -= checked_kappa(t) * (K_ * q_e_);
+  const double kappa = checked_kappa(t);
+  const Eigen::Index m = K_.rows(), n = K_.cols();
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < m; ++i) u[i] -= kappa * K_(i, j) * q_e_[j];
 }
 
 double HinfStateFeedback::checked_kappa(double t) const {

@@ -9,6 +9,7 @@
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
 #include "hinf/sdirk4.hpp"
+#include "hinf/sparse_matrix.hpp"
 #include "riccati_kernel.hpp"
 #include "symmetric_extremes.hpp"
 
@@ -60,18 +61,18 @@ class OutputFeedbackSystem {
         disturbance_(disturbance), options_(o), n_(grde.n()), m_(model_.m()), nw_(model_.nw()),
         noise_channels_(model_.noise_channels()), constant_(model_.constant_input_matrices()),
         inv_gamma2_(std::isinf(grde.gamma()) ? 0.0 : 1.0 / (grde.gamma() * grde.gamma())) {
-    for (auto* M : {&Z_, &Sigma_, &A_, &A_f_, &T_, &G_, &DDt_, &S_f_, &gain_lhs_}) M->resize(n_, n_);
-    for (auto* v : {&q_d_, &q_hat_, &Zq_, &alpha_, &dq_hat_}) v->resize(n_);
+    for (auto* M : {&Z_, &Sigma_, &A_, &A_f_, &T_, &G_, &DDt_, &S_f_, &gain_lhs_, &CtNinvC_}) M->resize(n_, n_);
+    for (auto* v : {&q_d_, &q_hat_, &Zq_, &alpha_, &dq_hat_, &error_, &noise_term_}) v->resize(n_);
     C_ = model_.C(trajectory_.t0());
     p_ = static_cast<int>(C_.rows());
     N_inv_ = o.N.inverse();
     CtNinv_ = C_.transpose() * N_inv_;
     u_d_.resize(m_);
     u_.resize(m_);
+    u_e_.resize(m_);
     w_.resize(nw_);
-    f_.resize(n_);
     noise_.setZero(p_);
-    innovation_.resize(p_);
+    noise_term_.setZero();
     z_packed_.resize(static_cast<std::size_t>(packed_size(n_)));
     set_matrices(trajectory_.t0());
   }
@@ -79,28 +80,35 @@ class OutputFeedbackSystem {
   int n() const { return n_; }
   int p() const { return p_; }
   int dim() const { return 2 * n_ + packed_size(n_); }
+  // The noise sample v held now: y = C q + sigma v.
   void set_noise(const double* v) {
     for (int i = 0; i < p_; ++i) noise_[i] = v[i];
+    noise_term_.noalias() = options_.sigma * (CtNinv_ * noise_);  // sigma C' N^-1 v
   }
 
   void rhs(double t, const double* x, double* dx) {
     evaluate_signals(t, x);
-    Eigen::Map<const Vec> q(x, n_);
-    Eigen::Map<Vec> dq(dx, n_), dq_hat(dx + n_, n_);
+    Eigen::Map<const VecN> q(x, n_);
+    Eigen::Map<VecN> dq(dx, n_), dq_hat(dx + n_, n_);
     // Plant, with the control (34) u = u_d - kappa B' Z q_hat.
-    model_.f(t, q, f_);
-    dq.noalias() = f_ + B_ * u_ + D_ * w_;
-    // Estimator (35).
+    model_.f(t, q, dq);
+    add_inputs(dx);
+    // Estimator (35); the innovation enters as C' N^-1 (y_e - C q_hat)
+    //   = C' N^-1 C (q - q_d - q_hat) + sigma C' N^-1 v.
     model_.error_split(t, q_d_, q_hat_, A_, alpha_);
-    innovation_.noalias() = C_ * (q - q_d_ - q_hat_);
-    innovation_ += options_.sigma * noise_;
-    gain_lhs_ = MatN::Identity(n_, n_);
+    error_ = q - q_d_ - q_hat_;
+    dq_hat_.noalias() = CtNinvC_ * error_;
+    dq_hat_ += noise_term_;
+    error_.noalias() = Sigma_ * dq_hat_;
+    gain_lhs_.setIdentity();
     gain_lhs_.noalias() -= inv_gamma2_ * (Sigma_ * Z_);
-    dq_hat_.noalias() = Sigma_ * (CtNinv_ * innovation_);
-    dq_hat = gain_lhs_.partialPivLu().solve(dq_hat_);
+    dq_hat = gain_lhs_.partialPivLu().solve(error_);
     dq_hat.noalias() += A_ * q_hat_;
     dq_hat += alpha_;
-    dq_hat.noalias() += B_ * (u_ - u_d_);
+    // + B (u - u_d) + gamma^-2 D D' Z q_hat: the control applied and the worst-case disturbance.
+    for (int i = 0; i < m_; ++i) u_e_[i] = u_[i] - u_d_[i];
+    if (constant_) B_sparse_.add_product(u_e_.data(), dx + n_);
+    else dq_hat.noalias() += B_ * (u_ - u_d_);
     if (inv_gamma2_ > 0.0) dq_hat.noalias() += inv_gamma2_ * (DDt_ * Zq_);
     // Filter Riccati (36): sign +1, M = A_f', R = D D', S = C' N^-1 C - gamma^-2 Q.
     if (options_.filter_uses_estimate) {
@@ -131,17 +139,29 @@ class OutputFeedbackSystem {
     T_ = llt.matrixL();
     A_f_.noalias() = Z_ * T_;
     G_.noalias() = T_.transpose() * A_f_;
-    double smallest = 0.0;
-    detail::symmetric_eigen_extremes(G_, smallest, rho);
+    rho = detail::symmetric_eigen_max(G_);
   }
 
  private:
   void set_matrices(double t) {
     B_ = model_.B(t);
     D_ = model_.D(t);
+    B_sparse_ = SparseMatrix(B_);
+    D_sparse_ = SparseMatrix(D_);
     DDt_ = D_ * D_.transpose();
-    S_f_ = C_.transpose() * N_inv_ * C_;
+    CtNinvC_ = C_.transpose() * N_inv_ * C_;
+    S_f_ = CtNinvC_;
     if (inv_gamma2_ > 0.0) S_f_ -= inv_gamma2_ * options_.Q;
+  }
+
+  // dx[0:n] += B u + D w.
+  void add_inputs(double* dx) {
+    if (constant_) {
+      B_sparse_.add_product(u_.data(), dx);
+      D_sparse_.add_product(w_.data(), dx);
+    } else {
+      Eigen::Map<Vec>(dx, n_) += B_ * u_ + D_ * w_;
+    }
   }
 
   // q_d, u_d, Z, Sigma, q_hat, Z q_hat, u and w at (t, x).
@@ -154,8 +174,12 @@ class OutputFeedbackSystem {
     unpack_symmetric(x + 2 * n_, Sigma_);
     for (int i = 0; i < n_; ++i) q_hat_[i] = x[n_ + i];
     Zq_.noalias() = Z_ * q_hat_;
-    u_ = u_d_;
-    u_.noalias() -= kappa_(t) * (B_.transpose() * Zq_);
+    // u = u_d - kappa B' Z q_hat
+    const double kappa = kappa_(t);
+    for (int i = 0; i < m_; ++i) u_[i] = 0.0;
+    if (constant_) B_sparse_.add_transpose_product(Zq_.data(), u_.data());
+    else u_.noalias() = B_.transpose() * Zq_;
+    for (int i = 0; i < m_; ++i) u_[i] = u_d_[i] - kappa * u_[i];
     disturbance_.eval(t, w_.data());
     for (int i = 0; i < p_; ++i) w_[noise_channels_[static_cast<std::size_t>(i)]] = noise_[i];
   }
@@ -172,9 +196,10 @@ class OutputFeedbackSystem {
   double inv_gamma2_;
   std::size_t q_cursor_ = 0, z_cursor_ = 0;
   Mat B_, D_, C_, N_inv_, CtNinv_;
-  MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_;
-  VecN q_d_, q_hat_, Zq_, alpha_, dq_hat_;
-  Vec u_d_, u_, w_, f_, noise_, innovation_;
+  SparseMatrix B_sparse_, D_sparse_;
+  MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_, CtNinvC_;
+  VecN q_d_, q_hat_, Zq_, alpha_, dq_hat_, error_, noise_term_;
+  Vec u_d_, u_, u_e_ = Vec(0), w_, noise_;
   std::vector<double> z_packed_;
 };
 

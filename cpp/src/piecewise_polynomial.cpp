@@ -17,19 +17,29 @@ double PiecewisePolynomial::t_max() const {
   return lower_.back() + std::abs(h_.back());
 }
 
+PiecewisePolynomial::PiecewisePolynomial(int dim) : dim_(dim) {
+  // A block holds at least 16 pieces of the highest degree (12, CVODE Adams).
+  while ((std::size_t{1} << block_shift_) < static_cast<std::size_t>(16 * 13 * std::max(dim, 1))) ++block_shift_;
+}
+
 void PiecewisePolynomial::append(double t_start, double h, int degree, const double* coeffs) {
+  const std::size_t count = static_cast<std::size_t>((degree + 1) * dim_);
+  const std::size_t block_size = std::size_t{1} << block_shift_;
+  if (blocks_.empty() || blocks_.back().size() + count > block_size) {
+    blocks_.emplace_back();
+    blocks_.back().reserve(block_size);
+  }
+  std::vector<double>& block = blocks_.back();
+  offset_.push_back(((blocks_.size() - 1) << block_shift_) | block.size());
+  block.insert(block.end(), coeffs, coeffs + count);
+  used_ += count;
   t_start_.push_back(t_start);
   h_.push_back(h);
   degree_.push_back(degree);
-  offset_.push_back(coeffs_.size());
-  coeffs_.insert(coeffs_.end(), coeffs, coeffs + static_cast<std::size_t>((degree + 1) * dim_));
   lower_.push_back(std::min(t_start, t_start + h));
 }
 
 void PiecewisePolynomial::finalize() {
-  for (auto* v : {&t_start_, &h_, &lower_, &coeffs_}) v->shrink_to_fit();
-  degree_.shrink_to_fit();
-  offset_.shrink_to_fit();
   if (num_pieces() < 2 || lower_.front() < lower_.back()) return;
   std::reverse(t_start_.begin(), t_start_.end());
   std::reverse(h_.begin(), h_.end());
@@ -73,7 +83,7 @@ void PiecewisePolynomial::eval(double t, double* out, std::size_t* cursor) const
   const std::size_t k = locate(t, cursor);
   const double th = theta(k, t);
   const int d = degree_[k];
-  const double* c = coeffs_.data() + offset_[k];
+  const double* c = coefficients(k);
   const double* top = c + static_cast<std::size_t>(d * dim_);
   for (int i = 0; i < dim_; ++i) out[i] = top[i];
   for (int j = d - 1; j >= 0; --j) {
@@ -86,7 +96,7 @@ void PiecewisePolynomial::eval_derivative(double t, double* out, std::size_t* cu
   const std::size_t k = locate(t, cursor);
   const double th = theta(k, t);
   const int d = degree_[k];
-  const double* c = coeffs_.data() + offset_[k];
+  const double* c = coefficients(k);
   for (int i = 0; i < dim_; ++i) out[i] = 0.0;
   for (int j = d; j >= 1; --j) {
     const double* cj = c + static_cast<std::size_t>(j * dim_);
@@ -103,9 +113,8 @@ std::vector<double> PiecewisePolynomial::breakpoints() const {
 }
 
 std::size_t PiecewisePolynomial::memory_bytes() const {
-  return sizeof(double) * (coeffs_.capacity() + t_start_.capacity() + h_.capacity() +
-                           lower_.capacity()) +
-         sizeof(int) * degree_.capacity() + sizeof(std::size_t) * offset_.capacity();
+  return sizeof(double) * (used_ + t_start_.size() + h_.size() + lower_.size()) +
+         sizeof(int) * degree_.size() + sizeof(std::size_t) * offset_.size();
 }
 
 }  // namespace hinf

@@ -188,7 +188,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
                                                              const Mat& Q, const Mat& N_inv,
                                                              const Mat& X_start, double t_start,
                                                              double t_end, double gamma,
-                                                             const SolverOptions& options) {
+                                                             const SolverOptions& options, bool store) {
   const int n = static_cast<int>(X_start.rows());
   const int p = packed_size(n);
   std::vector<double> x(static_cast<std::size_t>(p));
@@ -231,7 +231,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     try {
       stepper.integrate(rhs, t_start, t_end, x.data(),
                         [&](double t_step, double h, const double* c, const double* y) {
-                          dense.append(t_step, h, 4, c);
+                          if (store) dense.append(t_step, h, 4, c);
                           check_escape(t_step + h, y);
                         });
     } catch (const ConjugatePointError&) {
@@ -257,7 +257,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
       } catch (const SolverError& e) {
         on_failure(e);
       }
-      solver.append_last_step(dense);
+      if (store) solver.append_last_step(dense);
       check_escape(t, x.data());
     }
     stats.steps = solver.num_steps();
@@ -273,19 +273,34 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
 template <int N>
 std::pair<PiecewisePolynomial, SolveStats> solve_kind(const Trajectory& trajectory, RiccatiKind kind,
                                                       const Mat& Q, double gamma, const Mat& N_inv,
-                                                      const Mat& X_start, const SolverOptions& options) {
+                                                      const Mat& X_start, const SolverOptions& options,
+                                                      bool store) {
   RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv);
   const double t0 = trajectory.t0(), tf = trajectory.tf();
   if (kind == RiccatiKind::Control)
-    return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, tf, t0, gamma, options);
-  return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, t0, tf, gamma, options);
+    return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, tf, t0, gamma, options, store);
+  return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, t0, tf, gamma, options, store);
 }
 
+// Solves (store = true: keeps the dense output) or only integrates (store = false: enough to
+// find escapes) the Riccati problem of `kind` over the trajectory's horizon.
 std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind,
                                                  const Mat& Q, double gamma, const Mat& N_inv,
-                                                 const Mat& X_start, const SolverOptions& options) {
-  if (trajectory.n() == 6) return solve_kind<6>(trajectory, kind, Q, gamma, N_inv, X_start, options);
-  return solve_kind<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options);
+                                                 const Mat& X_start, const SolverOptions& options,
+                                                 bool store = true) {
+  if (trajectory.n() == 6) return solve_kind<6>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+  return solve_kind<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+}
+
+// Escape time of an integration without storage, NaN when there is none.
+double escape_or_nan(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
+                     const Mat& N_inv, const Mat& X_start, const SolverOptions& options) {
+  try {
+    solve(trajectory, kind, Q, gamma, N_inv, X_start, options, /*store=*/false);
+  } catch (const ConjugatePointError& e) {
+    return e.t_escape();
+  }
+  return NAN;
 }
 
 void check_gamma(double gamma) {
@@ -311,7 +326,89 @@ void extremes_over(const PiecewisePolynomial& X, const std::vector<double>& time
   }
 }
 
+template <int N>
+void extremes_at(const PiecewisePolynomial& X, double t, double& lo, double& hi) {
+  const int n = static_cast<int>(std::lround((std::sqrt(8.0 * X.dim() + 1.0) - 1.0) / 2.0));
+  double packed[136];
+  std::vector<double> heap;
+  double* p = packed;
+  if (X.dim() > 136) {
+    heap.resize(static_cast<std::size_t>(X.dim()));
+    p = heap.data();
+  }
+  X.eval(t, p);
+  Eigen::Matrix<double, N, N> Xt(n, n);
+  unpack_symmetric(p, Xt);
+  detail::symmetric_eigen_extremes(Xt, lo, hi);
+}
+
+// Minimizes sign * f over [a, b] by golden-section search (f unimodal there).
+template <class F>
+double golden_section(F&& f, double a, double b, double sign) {
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - ratio * (b - a), d = a + ratio * (b - a);
+  double fc = sign * f(c), fd = sign * f(d);
+  double best = std::min(fc, fd);
+  for (int i = 0; i < 60 && (b - a) > 1e-10 * std::max(1.0, std::abs(a) + std::abs(b)); ++i) {
+    if (fc < fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - ratio * (b - a);
+      fc = sign * f(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + ratio * (b - a);
+      fd = sign * f(d);
+    }
+    best = std::min({best, fc, fd});
+  }
+  return sign * best;
+}
+
+template <int N>
+void continuous_bounds(const PiecewisePolynomial& X, double& lambda_min, double& lambda_max) {
+  const std::vector<double> ends = X.breakpoints();
+  std::vector<double> times;
+  for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+    times.push_back(ends[k]);
+    times.push_back(0.5 * (ends[k] + ends[k + 1]));
+  }
+  times.push_back(ends.back());
+  std::size_t arg_min = 0, arg_max = 0;
+  lambda_min = std::numeric_limits<double>::infinity();
+  lambda_max = -lambda_min;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    double lo = 0.0, hi = 0.0;
+    extremes_at<N>(X, times[k], lo, hi);
+    if (lo < lambda_min) lambda_min = lo, arg_min = k;
+    if (hi > lambda_max) lambda_max = hi, arg_max = k;
+  }
+  auto bracket = [&](std::size_t k) {
+    return std::make_pair(times[k == 0 ? 0 : k - 1], times[std::min(k + 1, times.size() - 1)]);
+  };
+  const auto [a_min, b_min] = bracket(arg_min);
+  lambda_min = std::min(lambda_min, golden_section([&](double t) {
+    double lo = 0.0, hi = 0.0;
+    extremes_at<N>(X, t, lo, hi);
+    return lo;
+  }, a_min, b_min, 1.0));
+  const auto [a_max, b_max] = bracket(arg_max);
+  lambda_max = std::max(lambda_max, golden_section([&](double t) {
+    double lo = 0.0, hi = 0.0;
+    extremes_at<N>(X, t, lo, hi);
+    return hi;
+  }, a_max, b_max, -1.0));
+}
+
 }  // namespace
+
+void SymmetricSolution::eigenvalue_bounds(double& lambda_min, double& lambda_max) const {
+  if (n_ == 6) continuous_bounds<6>(X_, lambda_min, lambda_max);
+  else continuous_bounds<Eigen::Dynamic>(X_, lambda_min, lambda_max);
+}
 
 SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X,
                                      SolveStats stats)
@@ -351,12 +448,7 @@ RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, Piecewi
     : SymmetricSolution(std::move(trajectory), gamma, std::move(Z), stats), m_(trajectory_->m()) {
   const Model& model = trajectory_->model();
   constant_B_ = model.constant_input_matrices();
-  if (constant_B_) {
-    const Mat B = model.B(trajectory_->t0());
-    for (int j = 0; j < B.cols(); ++j)
-      for (int i = 0; i < B.rows(); ++i)
-        if (B(i, j) != 0.0) B_nonzeros_.emplace_back(i, j, B(i, j));
-  }
+  if (constant_B_) B_ = SparseMatrix(model.B(trajectory_->t0()));
 }
 
 Mat RiccatiSolution::gain(double t) const {
@@ -377,30 +469,31 @@ void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
     }
     X_.eval(t, z, cursor);
     for (int k = 0; k < m_ * n_; ++k) out[k] = 0.0;
-    for (const auto& [i, j, b] : B_nonzeros_)
-      for (int c = 0; c < n_; ++c) out[j + c * m_] += b * z[packed_index(i, c)];
+    const int n = n_, m = m_;
+    B_.for_each([&](int i, int j, double b) {
+      for (int c = 0; c < n; ++c) out[j + c * m] += b * z[packed_index(i, c)];
+    });
     return;
   }
   Eigen::Map<Mat>(out, m_, n_) = trajectory_->model().B(t).transpose() * Z(t);
 }
 
-RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
-                              double gamma, const SolverOptions& options) {
-  require(trajectory != nullptr, "solve_grde needs a trajectory");
+namespace {
+
+void check_grde_input(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
+                      const SolverOptions& options) {
+  require(trajectory != nullptr, "the GRDE needs a trajectory");
   const int n = trajectory->n();
   check_symmetric_weight(Q, n, "Q", false);
   check_symmetric_weight(Qf, n, "Qf", true);
   check_gamma(gamma);
   options.validate();
-  auto [dense, stats] = solve(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(),
-                              symmetrized(Qf), options);
-  return std::make_shared<const RiccatiSolution>(trajectory, gamma, std::move(dense), stats);
 }
 
-FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, const Mat& N,
-                                              const Mat& Q, double gamma, const Mat& Sigma0,
-                                              const SolverOptions& options) {
-  require(trajectory != nullptr, "solve_filter_riccati needs a trajectory");
+// The inverse of N, after the checks of the filter Riccati equation's input.
+Mat check_filter_input(const TrajectoryPtr& trajectory, const Mat& N, const Mat& Q, double gamma,
+                       const Mat& Sigma0, const SolverOptions& options) {
+  require(trajectory != nullptr, "the filter Riccati equation needs a trajectory");
   const Model& model = trajectory->model();
   const int n = trajectory->n();
   const int p = static_cast<int>(model.C(trajectory->t0()).rows());
@@ -409,10 +502,41 @@ FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, c
   check_symmetric_weight(Sigma0, n, "Sigma0", true);
   check_gamma(gamma);
   options.validate();
-  const Mat N_inv = symmetrized(N).inverse();
+  return symmetrized(N).inverse();
+}
+
+}  // namespace
+
+RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
+                              double gamma, const SolverOptions& options) {
+  check_grde_input(trajectory, Q, Qf, gamma, options);
+  auto [dense, stats] = solve(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(),
+                              symmetrized(Qf), options);
+  return std::make_shared<const RiccatiSolution>(trajectory, gamma, std::move(dense), stats);
+}
+
+
+FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, const Mat& N,
+                                              const Mat& Q, double gamma, const Mat& Sigma0,
+                                              const SolverOptions& options) {
+  const Mat N_inv = check_filter_input(trajectory, N, Q, gamma, Sigma0, options);
   auto [dense, stats] = solve(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv,
                               symmetrized(Sigma0), options);
   return std::make_shared<const FilterRiccatiSolution>(trajectory, gamma, std::move(dense), stats);
+}
+
+double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
+                        const SolverOptions& options) {
+  check_grde_input(trajectory, Q, Qf, gamma, options);
+  return escape_or_nan(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
+                       options);
+}
+
+double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const Mat& Q, double gamma,
+                          const Mat& Sigma0, const SolverOptions& options) {
+  const Mat N_inv = check_filter_input(trajectory, N, Q, gamma, Sigma0, options);
+  return escape_or_nan(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv, symmetrized(Sigma0),
+                       options);
 }
 
 }  // namespace hinf

@@ -45,11 +45,10 @@ void Scenario::validate() const {
   check_size(initial_q0, n, "[initial] q0");
   solver.validate();
   require(std::isfinite(output_dt) && output_dt > 0.0, "[output] dt must be > 0, got ", output_dt);
-  for (double t : output_grid(t0, tf, output_dt)) {
-    const double k = kappa(t);
-    require(std::isfinite(k) && k > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(", t,
-            ") = ", k);
-  }
+  const auto [kappa_min, kappa_min_t] = kappa.minimum(t0, tf);
+  require(std::isfinite(kappa_min) && kappa_min > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(",
+          kappa_min_t, ") = ", kappa_min);
+  output_grid(t0, tf, output_dt);  // checks dt
   if (measurement) {
     const MeasurementSpec& ms = *measurement;
     const int p = static_cast<int>(model->C(t0).rows());
@@ -132,9 +131,7 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
 
   const auto analysis_start = std::chrono::steady_clock::now();
   result.Z0 = result.solution->Z(s.t0);
-  const std::vector<double> grid(result.simulation.t.data(),
-                                 result.simulation.t.data() + result.simulation.t.size());
-  result.solution->eigenvalue_range(grid, result.Z_min_eig, result.Z_max_eig);
+  result.solution->eigenvalue_bounds(result.Z_min_eig, result.Z_max_eig);
   result.metrics = compute_metrics(*s.model, result.simulation, s.Q);
   result.timing.analysis = seconds_since(analysis_start);
   result.timing.total = seconds_since(start);

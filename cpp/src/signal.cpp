@@ -87,6 +87,62 @@ double Signal::operator()(double t) const {
   return value;
 }
 
+std::pair<double, double> Signal::minimum(double t0, double tf) const {
+  require(tf >= t0, "Signal::minimum needs t0 <= tf");
+  if (is_constant()) return {offset_, t0};
+  double best = (*this)(t0), best_t = t0;
+  auto consider = [&](double t) {
+    const double v = (*this)(t);
+    if (v < best) best = v, best_t = t;
+  };
+  consider(tf);
+  if (is_table()) {
+    // On each spline piece the signal is a cubic: its minimum is at an end or where the
+    // derivative (a quadratic) vanishes.
+    const std::vector<double>& T = table_t_;
+    for (std::size_t i = 1; i < T.size(); ++i) {
+      const double a = std::max(T[i - 1], t0), b = std::min(T[i], tf);
+      if (a > b) continue;
+      consider(a);
+      consider(b);
+      const double h = T[i] - T[i - 1];
+      // s(t) with u = t - T[i-1]: derivative = c1 + 2 c2 u + 3 c3 u^2.
+      const double m0 = table_m2_[i - 1], m1 = table_m2_[i];
+      const double c1 = (table_v_[i] - table_v_[i - 1]) / h - h * (2.0 * m0 + m1) / 6.0;
+      const double c2 = m0 / 2.0, c3 = (m1 - m0) / (6.0 * h);
+      std::vector<double> roots;
+      if (std::abs(c3) > 1e-300) {
+        const double disc = 4.0 * c2 * c2 - 12.0 * c3 * c1;
+        if (disc >= 0.0) {
+          roots.push_back((-2.0 * c2 + std::sqrt(disc)) / (6.0 * c3));
+          roots.push_back((-2.0 * c2 - std::sqrt(disc)) / (6.0 * c3));
+        }
+      } else if (std::abs(c2) > 1e-300) {
+        roots.push_back(-c1 / (2.0 * c2));
+      }
+      for (double u : roots)
+        if (T[i - 1] + u >= a && T[i - 1] + u <= b) consider(T[i - 1] + u);
+    }
+    return {best, best_t};
+  }
+  double omega_max = 0.0;
+  for (const Harmonic& h : harmonics_) omega_max = std::max(omega_max, std::abs(h.omega));
+  if (omega_max == 0.0) return {best, best_t};
+  const double step = 2.0 * M_PI / omega_max / 64.0;
+  const long count = std::min<long>(10'000'000, static_cast<long>(std::ceil((tf - t0) / step)));
+  for (long k = 0; k <= count; ++k) consider(std::min(tf, t0 + static_cast<double>(k) * step));
+  // Golden-section refinement around the best sample.
+  double a = std::max(t0, best_t - step), b = std::min(tf, best_t + step);
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int i = 0; i < 80 && b - a > 1e-13 * std::max(1.0, std::abs(best_t)); ++i) {
+    const double c = b - ratio * (b - a), d = a + ratio * (b - a);
+    if ((*this)(c) < (*this)(d)) b = d;
+    else a = c;
+  }
+  consider(0.5 * (a + b));
+  return {best, best_t};
+}
+
 std::string Signal::describe() const {
   std::ostringstream os;
   if (is_table()) {

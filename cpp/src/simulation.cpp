@@ -6,6 +6,7 @@
 #include "hinf/cvode.hpp"
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
+#include "hinf/sparse_matrix.hpp"
 
 namespace hinf {
 
@@ -50,19 +51,21 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
 
   const bool constant_BD = model.constant_input_matrices();
   Mat B = model.B(t0), D = model.D(t0);
-  Vec f(n), u(m), w(nw);
+  const SparseMatrix B_sparse(B), D_sparse(D);
+  Vec u(m), w(nw);
   Mat J(n, n), dudq(m, n);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
     Eigen::Map<Vec> out(dydt, n);
-    if (!constant_BD) {
-      B = model.B(t);
-      D = model.D(t);
-    }
-    model.f(t, q, f);
+    model.f(t, q, out);
     controller.control(t, q, u);
     disturbance.eval(t, w.data());
-    out.noalias() = f + B * u + D * w;
+    if (constant_BD) {
+      B_sparse.add_product(u.data(), dydt);
+      D_sparse.add_product(w.data(), dydt);
+    } else {
+      out.noalias() += model.B(t) * u + model.D(t) * w;
+    }
   };
 
   SimulationResult result;

@@ -43,9 +43,7 @@ double laguerre_extreme_root(const VecD& d, const VecE& e, double x0, double sca
       dq_prev = dq;
       ddq_prev = ddq;
     }
-    // Here G = sum 1/(x - lambda_i) up to sign convention of g: g(x) = prod (x - lambda_i)
-    // has g'/g = -sum q_i'/q_i ... q_i' = dq_i/dx and prod q_i = det(T - x I) = (-1)^n g(x),
-    // so g'/g = sum q_i'/q_i = G and -(g'/g)' = H.
+    // prod q_i = det(T - x I) = (-1)^n g(x), so g'/g = sum q_i'/q_i = G and -(g'/g)' = H.
     const double radicand = std::max(0.0, (n - 1) * (n * H - G * G));
     const double root = std::sqrt(radicand);
     const double denominator = G >= 0.0 ? G + root : G - root;
@@ -60,27 +58,45 @@ double laguerre_extreme_root(const VecD& d, const VecE& e, double x0, double sca
   return x;
 }
 
+// Tridiagonal form (d, e) of A and the Gershgorin bounds of its spectrum.
+template <class MatN>
+struct TridiagonalForm {
+  explicit TridiagonalForm(const MatN& A) : tri(A), n(static_cast<int>(A.rows())) {
+    const auto d = tri.diagonal();
+    const auto e = tri.subDiagonal();
+    for (int i = 0; i < n; ++i) {
+      const double radius = (i > 0 ? std::abs(e[i - 1]) : 0.0) + (i + 1 < n ? std::abs(e[i]) : 0.0);
+      lo = std::min(lo, d[i] - radius);
+      hi = std::max(hi, d[i] + radius);
+      scale = std::max(scale, std::abs(d[i]) + radius);
+    }
+    // Start strictly outside the spectrum.
+    margin = 1e-12 * std::max(scale, std::numeric_limits<double>::min());
+  }
+  double largest() const { return laguerre_extreme_root(tri.diagonal(), tri.subDiagonal(), hi + margin, scale); }
+  double smallest() const { return laguerre_extreme_root(tri.diagonal(), tri.subDiagonal(), lo - margin, scale); }
+
+  Eigen::Tridiagonalization<MatN> tri;
+  int n;
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  double scale = 0.0, margin = 0.0;
+};
+
 template <class MatN>
 void symmetric_eigen_extremes(const MatN& A, double& lambda_min, double& lambda_max) {
-  const int n = static_cast<int>(A.rows());
-  if (n == 1) {
+  if (A.rows() == 1) {
     lambda_min = lambda_max = A(0, 0);
     return;
   }
-  Eigen::Tridiagonalization<MatN> tri(A);
-  const auto d = tri.diagonal();
-  const auto e = tri.subDiagonal();
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo, scale = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const double radius = (i > 0 ? std::abs(e[i - 1]) : 0.0) + (i + 1 < n ? std::abs(e[i]) : 0.0);
-    lo = std::min(lo, d[i] - radius);
-    hi = std::max(hi, d[i] + radius);
-    scale = std::max(scale, std::abs(d[i]) + radius);
-  }
-  // Start strictly outside the spectrum.
-  const double margin = 1e-12 * std::max(scale, std::numeric_limits<double>::min());
-  lambda_max = laguerre_extreme_root(d, e, hi + margin, scale);
-  lambda_min = laguerre_extreme_root(d, e, lo - margin, scale);
+  const TridiagonalForm<MatN> form(A);
+  lambda_max = form.largest();
+  lambda_min = form.smallest();
+}
+
+template <class MatN>
+double symmetric_eigen_max(const MatN& A) {
+  if (A.rows() == 1) return A(0, 0);
+  return TridiagonalForm<MatN>(A).largest();
 }
 
 }  // namespace hinf::detail

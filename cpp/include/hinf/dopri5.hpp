@@ -85,11 +85,11 @@ class Dopri5 {
         ++stats_.steps;
         update_stiffness(hs);
         on_step(t_start, hs, static_cast<const double*>(dense_.data()), static_cast<const double*>(y));
-        double fac = std::pow(std::max(err, 1e-16), kExpo1) / std::pow(facold_, kBeta);
+        double fac = std::pow(std::max(err, 1e-16), kExpo1) / facold_beta_;
         fac = std::clamp(fac / kSafe, 1.0 / kFacMax, 1.0 / kFacMin);
         double h_new = h / fac;
         if (last_rejected) h_new = std::min(h_new, h);
-        facold_ = std::max(err, 1e-4);
+        facold_beta_ = std::pow(std::max(err, 1e-4), kBeta);  // Lund stabilization (PI control)
         last_rejected = false;
         h_next_ = h_new;
         if (last) return;
@@ -230,7 +230,7 @@ class Dopri5 {
   long max_steps_;
   double h_next_ = 0.0;
   double h_max_ = 0.0;
-  double facold_ = 1e-4;
+  double facold_beta_ = 0.69183097091893657;  // (1e-4)^beta
   int stiff_steps_ = 0, nonstiff_steps_ = 0;
   bool stiff_ = false;
   StepStats stats_;

@@ -16,7 +16,7 @@ namespace hinf {
 
 class PiecewisePolynomial {
  public:
-  explicit PiecewisePolynomial(int dim = 0) : dim_(dim) {}
+  explicit PiecewisePolynomial(int dim = 0);
 
   int dim() const { return dim_; }
   std::size_t num_pieces() const { return t_start_.size(); }
@@ -35,17 +35,26 @@ class PiecewisePolynomial {
 
   // The ends of the pieces, increasing (num_pieces + 1 values).
   std::vector<double> breakpoints() const;
+  // Bytes of the stored solution (coefficients and piece data).
   std::size_t memory_bytes() const;
 
  private:
   std::size_t locate(double t, std::size_t* cursor) const;
   double theta(std::size_t k, double t) const;
+  const double* coefficients(std::size_t k) const {
+    return blocks_[offset_[k] >> block_shift_].data() + (offset_[k] & ((std::size_t{1} << block_shift_) - 1));
+  }
 
   int dim_;
   std::vector<double> t_start_, h_;
   std::vector<int> degree_;
+  // Coefficients live in fixed-size blocks that never move once allocated, so appending never
+  // copies what is stored (a solve of unknown length grows without reallocation); offset_ is
+  // block << block_shift_ | position in the block.
+  int block_shift_ = 14;
+  std::vector<std::vector<double>> blocks_;
+  std::size_t used_ = 0;  // numbers stored
   std::vector<std::size_t> offset_;
-  std::vector<double> coeffs_;
   // lower_[k] = min(t_k, t_k + h_k), increasing once finalized.
   std::vector<double> lower_;
 };

@@ -17,11 +17,11 @@
 #pragma once
 
 #include <memory>
-#include <tuple>
 #include <vector>
 
 #include "hinf/piecewise_polynomial.hpp"
 #include "hinf/solver_options.hpp"
+#include "hinf/sparse_matrix.hpp"
 #include "hinf/trajectory.hpp"
 
 namespace hinf {
@@ -53,6 +53,10 @@ class SymmetricSolution {
   void packed(double t, double* out, std::size_t* cursor = nullptr) const;
   // Smallest and largest eigenvalue of X over the given times.
   void eigenvalue_range(const std::vector<double>& times, double& lambda_min, double& lambda_max) const;
+  // m and M with m I <= X(t) <= M I on the whole interval (paper eq. 22): the extremes over
+  // the ends and midpoints of the solver's steps, each refined by a golden-section search
+  // over the neighbouring steps.
+  void eigenvalue_bounds(double& lambda_min, double& lambda_max) const;
 
   const PiecewisePolynomial& dense() const { return X_; }
   const SolveStats& stats() const { return stats_; }
@@ -82,10 +86,10 @@ class RiccatiSolution final : public SymmetricSolution {
  private:
   static constexpr int kMaxPackedOnStack = 136;  // n <= 16 without heap use
   int m_;
-  // Constant B as (row, column, value) triplets of its nonzeros: K = B' Z costs one
-  // multiply-add per nonzero and column of Z, computed from the packed Z.
+  // Constant B as its nonzeros: K = B' Z costs one multiply-add per nonzero and column of Z,
+  // computed from the packed Z.
   bool constant_B_ = false;
-  std::vector<std::tuple<int, int, double>> B_nonzeros_;
+  SparseMatrix B_;
 };
 
 // Sigma(t) of the filter Riccati equation (36) with A = A_e(t).
@@ -111,5 +115,15 @@ RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, con
 FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, const Mat& N,
                                               const Mat& Q, double gamma, const Mat& Sigma0,
                                               const SolverOptions& options = {});
+
+// The first finite escape of Z (integrating the GRDE backward from tf): a conjugate point
+// on [t0, tf] (paper eq. 14), or NaN when there is none. Nothing is stored; the same input
+// checks as solve_grde. The escape is located on the inverse W = Z^-1, which is smooth
+// there, so no escape between solver steps is missed.
+double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
+                        const SolverOptions& options = {});
+// The same for the filter Riccati equation (36) (forward from Sigma0, A = A_e(t)).
+double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const Mat& Q, double gamma,
+                          const Mat& Sigma0, const SolverOptions& options = {});
 
 }  // namespace hinf

@@ -66,7 +66,7 @@ struct RunResult {
   TrajectoryPtr trajectory;
   RiccatiSolutionPtr solution;
   Mat Z0;
-  double Z_min_eig = NAN, Z_max_eig = NAN;  // m and M of paper eq. (22) over the output grid
+  double Z_min_eig = NAN, Z_max_eig = NAN;  // m and M of paper eq. (22) over [t0, tf]
   std::optional<double> gamma_star;
   SimulationResult simulation;
   Metrics metrics;

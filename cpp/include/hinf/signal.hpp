@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ class Signal {
   static Signal table(std::vector<double> t, std::vector<double> values);
 
   double operator()(double t) const;
+  // The smallest value on [t0, tf] and where it is taken: exact for constants and tables
+  // (cubic pieces); for harmonics, sampled at 64 points per period of the fastest term and
+  // refined by golden-section search.
+  std::pair<double, double> minimum(double t0, double tf) const;
 
   bool is_table() const { return !table_t_.empty(); }
   bool is_constant() const { return !is_table() && harmonics_.empty(); }

@@ -15,7 +15,7 @@
 namespace hinf {
 
 struct TrajectoryOptions {
-  double rtol = 1e-11;
+  double rtol = 1e-10;
   double atol = 1e-12;
   long max_steps = 2000000;
 };

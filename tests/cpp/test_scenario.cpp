@@ -1,0 +1,554 @@
+// Scenario files (shared/scenarios.md is the contract): the shipped paper scenario parses to
+// the documented values, defaults, errors that name the key, Scenario::validate, and the
+// results files (JSON keys; metrics recomputed from the CSV by the test).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hinf/errors.hpp"
+#include "hinf/model.hpp"
+#include "hinf/scenario.hpp"
+#include "hinf/scenario_io.hpp"
+#include "hinf/simulation.hpp"
+
+namespace {
+
+using hinf::Mat;
+using hinf::Scenario;
+using hinf::Vec;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const std::string kSourceDir = HINF_SOURCE_DIR;
+const std::string kFig1 = kSourceDir + "/scenarios/paper_fig1.toml";
+
+// The paper's constants as shared/scenarios.md states them.
+const double kOmegaW = 2.0 * M_PI * 0.2;  // disturbance 0.1 cos(2 pi 0.2 t)
+
+void expect_paper_ship(const Scenario& s) {
+  ASSERT_NE(s.model, nullptr);
+  EXPECT_EQ(s.model->name(), "ship");
+  EXPECT_EQ(s.model->n(), 6);
+  EXPECT_EQ(s.model->m(), 2);
+  EXPECT_EQ(s.model->nw(), 6);
+  const auto* ship = dynamic_cast<const hinf::ShipModel*>(s.model.get());
+  ASSERT_NE(ship, nullptr);
+  EXPECT_EQ(ship->parameters().m_u, 0.5);
+  EXPECT_EQ(ship->parameters().m_v, -2.0);
+  EXPECT_EQ(ship->parameters().m_r, 0.5);
+  EXPECT_EQ(ship->parameters().d_u, 1.0);
+  EXPECT_EQ(ship->parameters().d_v, 2.0);
+  EXPECT_EQ(ship->parameters().d_r, 1.0);
+}
+
+TEST(ScenarioFile, PaperFig1HasTheDocumentedValues) {
+  const Scenario s = hinf::load_scenario_toml(kFig1);
+  EXPECT_EQ(s.name, "paper-fig1");
+  expect_paper_ship(s);
+  EXPECT_EQ(s.t0, 0.0);
+  EXPECT_EQ(s.tf, 40.0);
+  // Desired trajectory: q_d0 = [1, 0, 0, 0, 0, 0], u_d = [1, 0.3 sin(0.2 t)].
+  Vec q_d0 = Vec::Zero(6);
+  q_d0[0] = 1.0;
+  EXPECT_EQ(s.desired_q0, q_d0);
+  ASSERT_EQ(s.desired_u.dim(), 2);
+  for (double t : {0.0, 1.3, 7.85, 25.0, 40.0}) {
+    const Vec u = s.desired_u(t);
+    EXPECT_EQ(u[0], 1.0);
+    EXPECT_NEAR(u[1], 0.3 * std::sin(0.2 * t), 1e-15) << t;
+  }
+  // Controller: gamma = 5, Q = Qf = I, kappa = 1.
+  EXPECT_EQ(s.gamma, 5.0);
+  EXPECT_EQ(s.Q, Mat::Identity(6, 6));
+  EXPECT_EQ(s.Qf, Mat::Identity(6, 6));
+  for (double t : {0.0, 13.0, 40.0}) EXPECT_EQ(s.kappa(t), 1.0);
+  // Disturbance 0.1 cos(2 pi 0.2 t) on w1..w3, nothing on w4..w6.
+  ASSERT_EQ(s.disturbance.dim(), 6);
+  for (double t : {0.0, 0.4, 1.25, 2.5, 17.3, 40.0}) {
+    const Vec w = s.disturbance(t);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(w[i], 0.1 * std::cos(kOmegaW * t), 1e-15) << t;
+    for (int i = 3; i < 6; ++i) EXPECT_EQ(w[i], 0.0);
+  }
+  // Initial state: q_d0 + [0, 0, 0, -1, -1, pi/4].
+  Vec q0 = q_d0;
+  q0[3] -= 1.0;
+  q0[4] -= 1.0;
+  q0[5] += M_PI / 4;
+  ASSERT_EQ(s.initial_q0.size(), 6);
+  EXPECT_LT((s.initial_q0 - q0).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_FALSE(s.measurement.has_value()) << "Figure 1 is state feedback";
+  EXPECT_EQ(s.solver.method, hinf::Method::BDF);
+  EXPECT_EQ(s.solver.rtol, 1e-8);
+  EXPECT_EQ(s.solver.atol, 1e-10);
+  EXPECT_EQ(s.output_dt, 0.01);
+  EXPECT_NO_THROW(s.resolved().validate());
+}
+
+TEST(ScenarioFile, PaperFig2MeasurementSection) {
+  // Figure 2 = Figure 1 + [measurement]: sigma = 0.5 over 0.01 s, N = sigma^2 I3, Q0 = 2 I,
+  // eta = 1 (scenarios.md).
+  const Scenario s = hinf::load_scenario_toml(kSourceDir + "/scenarios/paper_fig2.toml");
+  expect_paper_ship(s);
+  EXPECT_EQ(s.gamma, 5.0);
+  ASSERT_TRUE(s.measurement.has_value());
+  const Scenario r = s.resolved();
+  EXPECT_EQ(r.measurement->sigma, 0.5);
+  EXPECT_EQ(r.measurement->sample_period, 0.01);
+  EXPECT_EQ(r.measurement->eta, 1.0);
+  EXPECT_EQ(r.measurement->filter_A, "estimate");
+  EXPECT_EQ(r.measurement->N, 0.25 * Mat::Identity(3, 3));
+  EXPECT_EQ(r.measurement->Q0, 2.0 * Mat::Identity(6, 6));
+  // Same path, start and disturbances as Figure 1.
+  const Scenario f1 = hinf::load_scenario_toml(kFig1);
+  EXPECT_EQ(s.initial_q0, f1.initial_q0);
+  EXPECT_EQ(s.desired_q0, f1.desired_q0);
+  EXPECT_EQ(s.disturbance(3.3), f1.disturbance(3.3));
+  EXPECT_EQ(s.tf, f1.tf);
+}
+
+// ======================================================================= defaults
+
+// The required keys only.
+const std::string kMinimal = R"(
+[model]
+kind = "ship"
+
+[horizon]
+tf = 10.0
+
+[desired]
+q0 = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+u1 = { offset = 1.0 }
+u2 = { harmonics = [ { amplitude = 0.3, omega = 0.2 } ] }
+
+[controller]
+gamma = 5.0
+
+[initial]
+q0 = [1.0, 0.0, 0.0, 0.0, 0.5, 0.0]
+)";
+
+Scenario parse(const std::string& text, const std::string& source = "tests/my_case.toml") {
+  return hinf::parse_scenario_toml(text, source);
+}
+
+TEST(ScenarioFile, DefaultsOfTheContract) {
+  const Scenario s = parse(kMinimal);
+  EXPECT_EQ(s.name, "my_case") << "the name defaults to the file's stem";
+  expect_paper_ship(s);  // [model] defaults are the paper's values
+  EXPECT_EQ(s.t0, 0.0);
+  EXPECT_EQ(s.tf, 10.0);
+  const Scenario r = s.resolved();
+  EXPECT_EQ(r.Q, Mat::Identity(6, 6));
+  EXPECT_EQ(r.Qf, Mat::Identity(6, 6));
+  EXPECT_EQ(r.kappa(3.0), 1.0);
+  ASSERT_EQ(r.disturbance.dim(), 6);
+  EXPECT_EQ(r.disturbance(2.0), Vec::Zero(6));
+  EXPECT_FALSE(r.measurement.has_value());
+  EXPECT_EQ(r.solver.method, hinf::Method::BDF);
+  EXPECT_EQ(r.solver.rtol, 1e-8);
+  EXPECT_EQ(r.solver.atol, 1e-10);
+  EXPECT_EQ(r.output_dt, 0.01);
+  // Harmonic defaults: phase 0, shape sin; offset 0.
+  EXPECT_NEAR(r.desired_u(2.0)[1], 0.3 * std::sin(0.4), 1e-15);
+  EXPECT_NO_THROW(r.validate());
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the text";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(ScenarioFile, SignalsFrequencyPhaseCosTableAndInfGamma) {
+  std::string text = replace(kMinimal, "u2 = { harmonics = [ { amplitude = 0.3, omega = 0.2 } ] }",
+                             "u2 = { offset = -0.1, harmonics = [ { amplitude = 0.3, frequency_hz = 0.5, "
+                             "phase = 0.25, shape = \"cos\" }, { amplitude = 2, omega = 1 } ] }");
+  text = replace(text, "gamma = 5.0", "gamma = inf\nkappa = { table = { t = [0.0, 5.0, 10.0], value = [1.0, 2.0, 1.0] } }");
+  text += "\n[disturbance]\nw2 = 0.25\nw5 = { harmonics = [ { amplitude = 1.0, omega = 3.0 } ] }\n";
+  const Scenario s = parse(text);
+  for (double t : {0.0, 0.7, 3.0, 9.9}) {
+    EXPECT_NEAR(s.desired_u(t)[1],
+                -0.1 + 0.3 * std::cos(2 * M_PI * 0.5 * t + 0.25) + 2.0 * std::sin(t), 1e-14);
+    const Vec w = s.disturbance(t);
+    EXPECT_EQ(w[0], 0.0);
+    EXPECT_EQ(w[1], 0.25);
+    EXPECT_NEAR(w[4], std::sin(3.0 * t), 1e-15);
+  }
+  EXPECT_TRUE(std::isinf(s.gamma) && s.gamma > 0) << "gamma = inf is the LQR limit";
+  EXPECT_NEAR(s.kappa(5.0), 2.0, 1e-15);
+  EXPECT_NO_THROW(s.resolved().validate());
+}
+
+// ======================================================================= errors naming the key
+
+// Parsing (and, when it parses, resolving + validating) must throw an InputError whose
+// message contains every one of the given pieces.
+void expect_error(const std::string& text, const std::vector<std::string>& pieces,
+                  const std::string& what_case) {
+  try {
+    const Scenario s = parse(text);
+    s.resolved().validate();
+    ADD_FAILURE() << what_case << ": accepted";
+  } catch (const hinf::InputError& e) {
+    const std::string msg = e.what();
+    for (const std::string& piece : pieces)
+      EXPECT_NE(msg.find(piece), std::string::npos)
+          << what_case << ": message does not name '" << piece << "': " << msg;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << what_case << ": not an InputError: " << e.what();
+  }
+}
+
+TEST(ScenarioFile, ErrorsNameTheKey) {
+  expect_error(replace(kMinimal, "gamma = 5.0", "gama = 5.0"), {"gama"}, "unknown key in [controller]");
+  expect_error("colour = \"red\"\n" + kMinimal, {"colour"}, "unknown top-level key");
+  expect_error(kMinimal + "\n[plotting]\nx = 1\n", {"plotting"}, "unknown section");
+  expect_error(replace(kMinimal, "omega = 0.2 }", "omega = 0.2, phse = 1.0 }"), {"phse"},
+               "unknown key inside a harmonic");
+  expect_error(kMinimal + "\n[disturbance]\nw7 = 0.1\n", {"w7"}, "a ship has no w7");
+  expect_error(replace(kMinimal, "gamma = 5.0", "gamma = \"5\""), {"gamma"}, "string for a number");
+  expect_error(replace(kMinimal, "tf = 10.0", "tf = \"ten\""), {"tf"}, "string for tf");
+  expect_error(replace(kMinimal, "q0 = [1.0, 0.0, 0.0, 0.0, 0.5, 0.0]", "q0 = [1.0, 0.0, 0.0, 0.0, 0.5]"),
+               {"q0", "6"}, "wrong vector length");
+  expect_error(replace(kMinimal, "q0 = [1.0, 0.0, 0.0, 0.0, 0.5, 0.0]",
+                       "q0 = [1.0, 0.0, \"x\", 0.0, 0.5, 0.0]"),
+               {"q0"}, "string inside a vector");
+  expect_error(replace(kMinimal, "omega = 0.2 }", "omega = 0.2, frequency_hz = 0.1 }"),
+               {"omega", "frequency_hz"}, "both omega and frequency_hz");
+  expect_error(replace(kMinimal, "{ amplitude = 0.3, omega = 0.2 }", "{ amplitude = 0.3 }"),
+               {"omega"}, "neither omega nor frequency_hz");
+  expect_error(replace(kMinimal, "omega = 0.2 }", "omega = 0.2, shape = \"tan\" }"), {"shape"},
+               "unknown shape");
+  expect_error(replace(kMinimal, "[initial]\nq0 = [1.0, 0.0, 0.0, 0.0, 0.5, 0.0]", ""), {"initial"},
+               "missing [initial]");
+  expect_error(replace(kMinimal, "[controller]\ngamma = 5.0", ""), {"controller"},
+               "missing [controller]");
+  expect_error(replace(kMinimal, "kind = \"ship\"", "kind = \"boat\""), {"kind", "boat"},
+               "unknown model kind");
+  expect_error(replace(kMinimal, "kind = \"ship\"", ""), {"kind"}, "missing model kind");
+  expect_error(kMinimal + "\n[solver]\nmethod = \"rk45\"\n", {"method", "rk45"}, "unknown solver method");
+  expect_error(kMinimal + "\n[solver]\nrtol = \"tight\"\n", {"rtol"}, "string for rtol");
+  expect_error(replace(kMinimal, "gamma = 5.0", "gamma = 5.0\nQ = [[1.0, 0.0], [0.0, 1.0]]"), {"Q"},
+               "Q of the wrong size");
+  expect_error(replace(kMinimal, "u1 = { offset = 1.0 }",
+                       "u1 = { table = { t = [0.0, 2.0, 1.0], value = [1.0, 1.0, 1.0] } }"),
+               {"u1"}, "table with decreasing times");
+  // Invalid TOML: the message points at the source.
+  expect_error(replace(kMinimal, "gamma = 5.0", "gamma = = 5.0"), {"my_case.toml"}, "invalid TOML");
+  expect_error(kMinimal + "\n[controller]\ngamma = 6.0\n", {"my_case.toml"}, "duplicate table");
+}
+
+TEST(ScenarioFile, LinearModelKind) {
+  const std::string text = R"(
+[model]
+kind = "linear"
+A = [[0.0, 1.0], [-2.0, -0.5]]
+B = [[0.0], [1.0]]
+
+[horizon]
+t0 = 1.0
+tf = 3.0
+
+[desired]
+q0 = [0.5, 0.0]
+u1 = 0.0
+
+[controller]
+gamma = 4.0
+Q = [[2.0, 0.5], [0.5, 1.0]]
+
+[initial]
+q0 = [0.0, 0.0]
+)";
+  const Scenario s = parse(text);
+  ASSERT_NE(s.model, nullptr);
+  EXPECT_EQ(s.model->n(), 2);
+  EXPECT_EQ(s.model->m(), 1);
+  const auto* lin = dynamic_cast<const hinf::LinearModel*>(s.model.get());
+  ASSERT_NE(lin, nullptr);
+  Mat A(2, 2);
+  A << 0.0, 1.0, -2.0, -0.5;
+  EXPECT_EQ(lin->A(), A);
+  Mat B(2, 1);
+  B << 0.0, 1.0;
+  EXPECT_EQ(lin->B(0.0), B);
+  EXPECT_EQ(s.t0, 1.0);
+  Mat Q(2, 2);
+  Q << 2.0, 0.5, 0.5, 1.0;
+  EXPECT_EQ(s.Q, Q);
+  EXPECT_NO_THROW(s.resolved().validate());
+  expect_error(replace(text, "kind = \"linear\"", "kind = \"linear\"\nm_u = 0.5"), {"m_u"},
+               "ship parameter in a linear model");
+  expect_error(replace(text, "B = [[0.0], [1.0]]", ""), {"B"}, "linear model without B");
+  expect_error(replace(text, "Q = [[2.0, 0.5], [0.5, 1.0]]", "Q = [[2.0, 0.5], [0.0, 1.0]]"), {"Q"},
+               "non-symmetric Q in the file");
+}
+
+TEST(ScenarioFile, MissingFileIsAnInputError) {
+  EXPECT_THROW(hinf::load_scenario_toml(kSourceDir + "/scenarios/does_not_exist.toml"), hinf::InputError);
+}
+
+// ======================================================================= Scenario::validate
+
+void expect_invalid(const Scenario& s, const std::string& piece, const std::string& what_case) {
+  try {
+    s.validate();
+    ADD_FAILURE() << what_case << ": accepted";
+  } catch (const hinf::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(piece), std::string::npos)
+        << what_case << ": message does not name '" << piece << "': " << e.what();
+  }
+}
+
+TEST(ScenarioValidate, RejectsBadResolvedScenarios) {
+  const Scenario base = hinf::load_scenario_toml(kFig1).resolved();
+  ASSERT_NO_THROW(base.validate());
+  {
+    Scenario s = base;
+    s.Q(1, 2) = 0.3;  // non-symmetric
+    expect_invalid(s, "Q", "non-symmetric Q");
+  }
+  {
+    Scenario s = base;
+    s.Q(4, 4) = -0.1;
+    expect_invalid(s, "Q", "indefinite Q");
+  }
+  {
+    Scenario s = base;
+    s.Q(4, 4) = 0.0;  // semidefinite: allowed
+    EXPECT_NO_THROW(s.validate());
+  }
+  {
+    Scenario s = base;
+    s.Qf(2, 2) = 0.0;
+    expect_invalid(s, "Qf", "singular Qf");
+  }
+  {
+    Scenario s = base;
+    s.Qf = Mat::Identity(5, 5);
+    expect_invalid(s, "Qf", "Qf of the wrong size");
+  }
+  for (double gamma : {0.0, -5.0, kNaN}) {
+    Scenario s = base;
+    s.gamma = gamma;
+    expect_invalid(s, "gamma", "gamma <= 0 or NaN");
+  }
+  {
+    Scenario s = base;
+    s.gamma = std::numeric_limits<double>::infinity();
+    EXPECT_NO_THROW(s.validate()) << "gamma = inf is the LQR limit";
+  }
+  for (double tf : {0.0, -1.0}) {
+    Scenario s = base;
+    s.tf = tf;
+    expect_invalid(s, "tf", "tf <= t0");
+  }
+  {
+    // kappa = 0.5 + sin(0.5 t) is negative on (7 pi/3, 11 pi/3) / ... inside [0, 40].
+    Scenario s = base;
+    s.kappa = hinf::Signal(0.5, {hinf::Harmonic{1.0, 0.5, 0.0, false}});
+    expect_invalid(s, "kappa", "kappa < 0 somewhere");
+  }
+  {
+    Scenario s = base;
+    s.kappa = hinf::Signal(0.0);
+    expect_invalid(s, "kappa", "kappa = 0");
+  }
+  {
+    Scenario s = base;  // positive everywhere: 0.6 + 0.5 sin(...)
+    s.kappa = hinf::Signal(0.6, {hinf::Harmonic{0.5, 0.5, 0.0, false}});
+    EXPECT_NO_THROW(s.validate());
+  }
+  {
+    // A tabulated kappa that stops before tf: its evaluation outside the table is an error.
+    Scenario s = base;
+    s.kappa = hinf::Signal::table({0.0, 20.0}, {1.0, 1.0});
+    EXPECT_THROW(s.validate(), hinf::InputError);
+  }
+  {
+    Scenario s = base;
+    s.output_dt = 0.0;
+    expect_invalid(s, "dt", "dt = 0");
+  }
+  {
+    Scenario s = base;
+    s.initial_q0 = Vec::Zero(5);
+    expect_invalid(s, "q0", "initial q0 of the wrong length");
+  }
+  {
+    Scenario s = base;
+    s.disturbance = hinf::VectorSignal::zeros(3);
+    expect_invalid(s, "disturbance", "3 disturbance channels for the ship");
+  }
+}
+
+TEST(ScenarioValidate, KappaNegativeBetweenOutputTimes) {
+  // kappa(t) = 0.2 + sin(2 pi t) is negative on (0.53, 0.97) + k, but equals 0.2 (up to
+  // round-off) at every point of the output grid t = 0.5 k. The contract ("kappa must be > 0
+  // on [t0, tf]") is about the horizon, not about the output grid, and the closed loop
+  // evaluates kappa at every integrator time.
+  Scenario s = hinf::load_scenario_toml(kFig1).resolved();
+  s.output_dt = 0.5;
+  s.kappa = hinf::Signal(0.2, {hinf::Harmonic{1.0, 2.0 * M_PI, 0.0, false}});
+  ASSERT_LT(s.kappa(0.75), 0.0);
+  for (double t : hinf::output_grid(s.t0, s.tf, s.output_dt)) ASSERT_GT(s.kappa(t), 0.0);
+  expect_invalid(s, "kappa", "kappa < 0 between the output times");
+}
+
+// ======================================================================= results files
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string item;
+  while (std::getline(ss, item, sep)) out.push_back(item);
+  return out;
+}
+
+class PaperRun : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    scenario_ = new Scenario(hinf::load_scenario_toml(kFig1));
+    result_ = new hinf::RunResult(hinf::run_scenario(*scenario_));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete scenario_;
+    result_ = nullptr;
+    scenario_ = nullptr;
+  }
+  static Scenario* scenario_;
+  static hinf::RunResult* result_;
+};
+Scenario* PaperRun::scenario_ = nullptr;
+hinf::RunResult* PaperRun::result_ = nullptr;
+
+TEST_F(PaperRun, JsonHasTheKeysOfTheContract) {
+  const nlohmann::json j = nlohmann::json::parse(hinf::results_json(*result_));
+  ASSERT_TRUE(j.is_object());
+  for (const char* key : {"scenario", "gamma", "Z0", "Z_min_eig", "Z_max_eig", "gamma_star", "metrics", "timing_s"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["scenario"], "paper-fig1");
+  EXPECT_EQ(j["gamma"].get<double>(), 5.0);
+  EXPECT_TRUE(j["gamma_star"].is_null()) << "gamma* was not asked for";
+  // Z0: 6x6 nested row-major list, symmetric, eigenvalues inside [Z_min_eig, Z_max_eig].
+  ASSERT_TRUE(j["Z0"].is_array());
+  ASSERT_EQ(j["Z0"].size(), 6u);
+  Mat Z0(6, 6);
+  for (int i = 0; i < 6; ++i) {
+    ASSERT_EQ(j["Z0"][i].size(), 6u);
+    for (int k = 0; k < 6; ++k) Z0(i, k) = j["Z0"][i][k].get<double>();
+  }
+  EXPECT_LT((Z0 - Z0.transpose()).cwiseAbs().maxCoeff(), 1e-12);
+  const double m = j["Z_min_eig"].get<double>(), M = j["Z_max_eig"].get<double>();
+  const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Mat>(Z0).eigenvalues();
+  EXPECT_GT(m, 0.0);
+  EXPECT_LE(m, eig[0] + 1e-12);
+  EXPECT_GE(M, eig[5] - 1e-12);
+  // Z(tf) = Qf = I lies on the output grid too: m <= 1 <= M.
+  EXPECT_LE(m, 1.0 + 1e-9);
+  EXPECT_GE(M, 1.0 - 1e-9);
+  // Metrics.
+  const nlohmann::json& mt = j["metrics"];
+  for (const char* key : {"rms_position_error_last_half", "max_position_error", "final_position_error",
+                          "control_l2", "control_error_l2", "disturbance_l2", "l2_gain"}) {
+    ASSERT_TRUE(mt.contains(key)) << key;
+    EXPECT_TRUE(mt[key].is_number()) << key;
+  }
+  for (const char* key : {"max_rho_sigma_z", "rms_estimation_error_last_half"}) {
+    ASSERT_TRUE(mt.contains(key)) << key;
+    EXPECT_TRUE(mt[key].is_null()) << key << ": state feedback has no filter";
+  }
+  const nlohmann::json& timing = j["timing_s"];
+  for (const char* key : {"design", "simulate", "total"}) {
+    ASSERT_TRUE(timing.contains(key)) << key;
+    EXPECT_GE(timing[key].get<double>(), 0.0);
+  }
+  EXPECT_GE(timing["total"].get<double>(),
+            timing["design"].get<double>() + timing["simulate"].get<double>() - 1e-9);
+  // disturbance_l2 is known in closed form: 3 channels of 0.1 cos(2 pi 0.2 t) over 8 full
+  // periods, integral = 3 * 0.01 * 40 / 2 = 0.6 (the trapezoid rule is exact here).
+  EXPECT_NEAR(mt["disturbance_l2"].get<double>(), std::sqrt(0.6), 1e-9);
+}
+
+TEST_F(PaperRun, CsvHasOneLinePerOutputTimeAndReproducesTheMetrics) {
+  const std::string csv = hinf::results_csv(*result_);
+  std::vector<std::string> lines = split(csv, '\n');
+  while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  const std::vector<double> grid = hinf::output_grid(0.0, 40.0, 0.01);
+  ASSERT_EQ(lines.size(), grid.size() + 1) << "one header line and one line per output time";
+  const std::vector<std::string> header = split(lines[0], ',');
+  std::map<std::string, std::size_t> col;
+  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  EXPECT_EQ(header.size(), col.size()) << "duplicate column names";
+  EXPECT_EQ(header[0], "t");
+  for (const char* name : {"x", "y", "x_d", "y_d", "u1", "u2", "u1_d", "u2_d", "w1", "w6"})
+    ASSERT_TRUE(col.count(name)) << "column " << name;
+  // Parse; every row has the header's width and the grid's time.
+  std::vector<std::vector<double>> rows;
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const std::vector<std::string> cells = split(lines[k], ',');
+    ASSERT_EQ(cells.size(), header.size()) << "line " << k;
+    std::vector<double> row;
+    for (const std::string& c : cells) row.push_back(std::stod(c));
+    EXPECT_NEAR(row[0], grid[k - 1], 1e-12) << "line " << k;
+    rows.push_back(row);
+  }
+  EXPECT_EQ(rows.back()[0], 40.0);
+  // Metrics recomputed from the CSV by their definitions in scenarios.md.
+  auto pos_err = [&](const std::vector<double>& r) {
+    return std::hypot(r[col["x"]] - r[col["x_d"]], r[col["y"]] - r[col["y_d"]]);
+  };
+  double max_err = 0.0, sum_sq_last_half = 0.0, u_int = 0.0, ue_int = 0.0;
+  long last_half = 0;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    max_err = std::max(max_err, pos_err(rows[k]));
+    if (rows[k][0] >= 20.0) {
+      sum_sq_last_half += pos_err(rows[k]) * pos_err(rows[k]);
+      ++last_half;
+    }
+    if (k > 0) {
+      auto u2 = [&](const std::vector<double>& r) {
+        return r[col["u1"]] * r[col["u1"]] + r[col["u2"]] * r[col["u2"]];
+      };
+      auto ue2 = [&](const std::vector<double>& r) {
+        const double a = r[col["u1"]] - r[col["u1_d"]], b = r[col["u2"]] - r[col["u2_d"]];
+        return a * a + b * b;
+      };
+      const double h = rows[k][0] - rows[k - 1][0];
+      u_int += 0.5 * h * (u2(rows[k]) + u2(rows[k - 1]));
+      ue_int += 0.5 * h * (ue2(rows[k]) + ue2(rows[k - 1]));
+    }
+  }
+  const hinf::Metrics& mt = result_->metrics;
+  EXPECT_NEAR(pos_err(rows.front()), std::sqrt(2.0), 1e-12) << "starts 1 m behind and 1 m aside";
+  EXPECT_NEAR(mt.max_position_error, max_err, 1e-12);
+  EXPECT_NEAR(mt.final_position_error, pos_err(rows.back()), 1e-12);
+  EXPECT_NEAR(mt.rms_position_error_last_half, std::sqrt(sum_sq_last_half / last_half), 1e-12);
+  EXPECT_NEAR(mt.control_l2, std::sqrt(u_int), 1e-10);
+  EXPECT_NEAR(mt.control_error_l2, std::sqrt(ue_int), 1e-10);
+  // The controller tracks: the final error is a small fraction of the initial sqrt(2).
+  EXPECT_LT(mt.final_position_error, 0.1 * std::sqrt(2.0));
+}
+
+TEST_F(PaperRun, JsonRoundTripsThroughAFile) {
+  const std::string path = ::testing::TempDir() + "hinf_results_test.json";
+  hinf::write_text_file(path, hinf::results_json(*result_, 0));
+  std::ifstream in(path);
+  ASSERT_TRUE(in.good());
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["scenario"], "paper-fig1");
+  std::remove(path.c_str());
+  EXPECT_THROW(hinf::write_text_file("/nonexistent_dir_hinf/x.json", "{}"), hinf::InputError);
+}
+
+}  // namespace

@@ -1,0 +1,275 @@
+// Signals: harmonics against std::sin/cos, the natural cubic spline against hand-solved and
+// independently assembled splines, finite differences, and the input checks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "hinf/errors.hpp"
+#include "hinf/signal.hpp"
+
+namespace {
+
+using hinf::Harmonic;
+using hinf::Signal;
+using hinf::Vec;
+using hinf::VectorSignal;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------- harmonic signals
+
+TEST(Signal, ZeroAndConstant) {
+  const Signal zero;
+  const Signal c(2.5);
+  for (double t : {-3.0, 0.0, 0.7, 1e4}) {
+    EXPECT_EQ(zero(t), 0.0);
+    EXPECT_EQ(c(t), 2.5);
+  }
+  EXPECT_TRUE(c.is_constant());
+  EXPECT_FALSE(c.is_table());
+}
+
+TEST(Signal, HarmonicsMatchStdSinCos) {
+  // 0.5 + 2 sin(3 t + 0.25) - 1.5 cos(0.7 t - 1) + 0.1 sin(2 pi 0.2 t)
+  std::vector<Harmonic> h(3);
+  h[0] = {2.0, 3.0, 0.25, false};
+  h[1] = {-1.5, 0.7, -1.0, true};
+  h[2] = {0.1, 2.0 * M_PI * 0.2, 0.0, false};
+  const Signal s(0.5, h);
+  EXPECT_FALSE(s.is_constant());
+  for (double t : {-12.3, -1.0, 0.0, 0.1, 1.0, 2.718, 17.0, 40.0, 1234.5}) {
+    const double expected = 0.5 + 2.0 * std::sin(3.0 * t + 0.25) - 1.5 * std::cos(0.7 * t - 1.0) +
+                            0.1 * std::sin(2.0 * M_PI * 0.2 * t);
+    EXPECT_NEAR(s(t), expected, 1e-13 * std::max(1.0, std::abs(t))) << "t = " << t;
+  }
+}
+
+TEST(Signal, PhaseShiftsSinIntoCos) {
+  // sin(w t + pi/2) = cos(w t): the phase is added to w t (not to t).
+  const Signal s(0.0, {Harmonic{1.0, 2.0, M_PI / 2, false}});
+  const Signal c(0.0, {Harmonic{1.0, 2.0, 0.0, true}});
+  for (double t = -3.0; t <= 3.0; t += 0.37) EXPECT_NEAR(s(t), c(t), 1e-14);
+  // Absolute time: a cos with zero phase is 1 at t = 0 and -1 at t = pi / w.
+  EXPECT_NEAR(c(0.0), 1.0, 1e-15);
+  EXPECT_NEAR(c(M_PI / 2.0), -1.0, 1e-15);
+}
+
+TEST(Signal, RejectsNonFiniteParameters) {
+  EXPECT_THROW((void)Signal(kNaN), hinf::InputError);
+  EXPECT_THROW((void)Signal(kInf), hinf::InputError);
+  EXPECT_THROW(Signal(kNaN, {}), hinf::InputError);
+  EXPECT_THROW(Signal(0.0, {Harmonic{kNaN, 1.0, 0.0, false}}), hinf::InputError);
+  EXPECT_THROW(Signal(0.0, {Harmonic{1.0, kInf, 0.0, false}}), hinf::InputError);
+  EXPECT_THROW(Signal(0.0, {Harmonic{1.0, 1.0, kNaN, true}}), hinf::InputError);
+}
+
+// ---------------------------------------------------------------- natural cubic spline
+
+// Natural cubic spline through (t, v), assembled as a full (n x n) linear system for the
+// second derivatives and solved densely: independent of the library's Thomas algorithm.
+struct ReferenceSpline {
+  std::vector<double> t, v, m2;
+  ReferenceSpline(std::vector<double> tt, std::vector<double> vv) : t(std::move(tt)), v(std::move(vv)) {
+    const int n = static_cast<int>(t.size());
+    hinf::Mat M = hinf::Mat::Zero(n, n);
+    Vec r = Vec::Zero(n);
+    M(0, 0) = 1.0;
+    M(n - 1, n - 1) = 1.0;
+    for (int i = 1; i + 1 < n; ++i) {
+      const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
+      M(i, i - 1) = h0 / 6.0;
+      M(i, i) = (h0 + h1) / 3.0;
+      M(i, i + 1) = h1 / 6.0;
+      r[i] = (v[i + 1] - v[i]) / h1 - (v[i] - v[i - 1]) / h0;
+    }
+    const Vec m = M.fullPivLu().solve(r);
+    m2.assign(m.data(), m.data() + n);
+  }
+  // On [t_i, t_{i+1}] the cubic with end values v_i, v_{i+1} and second derivatives m_i,
+  // m_{i+1}, written in powers of s = x - t_i.
+  double operator()(double x) const {
+    std::size_t i = 0;
+    while (i + 2 < t.size() && x > t[i + 1]) ++i;
+    const double h = t[i + 1] - t[i], s = x - t[i];
+    const double c2 = m2[i] / 2.0;
+    const double c3 = (m2[i + 1] - m2[i]) / (6.0 * h);
+    const double c1 = (v[i + 1] - v[i]) / h - h * (2.0 * m2[i] + m2[i + 1]) / 6.0;
+    return v[i] + s * (c1 + s * (c2 + s * c3));
+  }
+};
+
+TEST(SignalTable, ExactForLinearData) {
+  const std::vector<double> t{-1.0, 0.0, 0.5, 2.0, 2.25, 5.0};
+  std::vector<double> v;
+  for (double x : t) v.push_back(2.0 - 3.0 * x);
+  const Signal s = Signal::table(t, v);
+  EXPECT_TRUE(s.is_table());
+  for (double x = -1.0; x <= 5.0; x += 0.0625) EXPECT_NEAR(s(x), 2.0 - 3.0 * x, 1e-13) << x;
+}
+
+TEST(SignalTable, TwoPointsIsTheStraightLine) {
+  const Signal s = Signal::table({1.0, 3.0}, {4.0, 0.0});
+  for (double x = 1.0; x <= 3.0; x += 0.25) EXPECT_NEAR(s(x), 4.0 - 2.0 * (x - 1.0), 1e-14);
+}
+
+TEST(SignalTable, HandSolvedThreePoints) {
+  // (0,0), (1,1), (2,0): 4 m1 = 6 (-1 - 1), m1 = -3, so on [0, 1] S(x) = 1.5 x - 0.5 x^3
+  // and S(x) = S(2 - x).
+  const Signal s = Signal::table({0.0, 1.0, 2.0}, {0.0, 1.0, 0.0});
+  for (double x = 0.0; x <= 2.0; x += 0.05) {
+    const double y = x <= 1.0 ? x : 2.0 - x;
+    EXPECT_NEAR(s(x), 1.5 * y - 0.5 * y * y * y, 1e-14) << x;
+  }
+  EXPECT_NEAR(s(0.5), 0.6875, 1e-15);
+}
+
+TEST(SignalTable, HandSolvedFourPointsUnequalSpacing) {
+  // t = [0, 1, 3, 4], v = [0, 2, 1, 3]; h = [1, 2, 1]. Natural: m0 = m3 = 0 and
+  //   6 m1 + 2 m2 = 6 ((1 - 2)/2 - (2 - 0)/1) = -15
+  //   2 m1 + 6 m2 = 6 ((3 - 1)/1 - (1 - 2)/2) =  15   =>  m1 = -3.75, m2 = 3.75.
+  // On [t_i, t_i + h] with d = x - t_i the cubic with end values v_i, v_{i+1} and second
+  // derivatives m_i, m_{i+1} is v_i + c1 d + m_i/2 d^2 + (m_{i+1} - m_i)/(6h) d^3,
+  // c1 = (v_{i+1} - v_i)/h - h (2 m_i + m_{i+1})/6:
+  //   [0,1]: c1 = 2 + 3.75/6 = 2.625,          c2 = 0,      c3 = -0.625
+  //   [1,3]: c1 = -0.5 - 2 (-7.5 + 3.75)/6 = 0.75, c2 = -1.875, c3 = 7.5/12 = 0.625
+  //   [3,4]: c1 = 2 - 7.5/6 = 0.75,             c2 = 1.875,  c3 = -0.625
+  const Signal s = Signal::table({0.0, 1.0, 3.0, 4.0}, {0.0, 2.0, 1.0, 3.0});
+  auto truth = [](double x) {
+    if (x <= 1.0) return 2.625 * x - 0.625 * x * x * x;
+    if (x <= 3.0) {
+      const double d = x - 1.0;
+      return 2.0 + 0.75 * d - 1.875 * d * d + 0.625 * d * d * d;
+    }
+    const double d = x - 3.0;
+    return 1.0 + 0.75 * d + 1.875 * d * d - 0.625 * d * d * d;
+  };
+  // The hand-made pieces really are a natural spline: knots, C1 at 1 and 3.
+  EXPECT_NEAR(truth(1.0), 2.0, 1e-15);
+  EXPECT_NEAR(truth(3.0), 1.0, 1e-15);
+  EXPECT_NEAR(truth(4.0), 3.0, 1e-15);
+  for (double x = 0.0; x <= 4.0; x += 0.03125) EXPECT_NEAR(s(x), truth(x), 1e-13) << x;
+}
+
+TEST(SignalTable, MatchesIndependentlySolvedSplineAndIsC2Natural) {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> step(0.05, 1.5), value(-3.0, 3.0);
+  std::vector<double> t{-0.7}, v{value(rng)};
+  for (int i = 1; i < 9; ++i) {
+    t.push_back(t.back() + step(rng));
+    v.push_back(value(rng));
+  }
+  const Signal s = Signal::table(t, v);
+  const ReferenceSpline ref(t, v);
+  // Interpolates the knots.
+  for (std::size_t i = 0; i < t.size(); ++i) EXPECT_NEAR(s(t[i]), v[i], 1e-13) << i;
+  // Matches the dense-solve reference everywhere.
+  std::uniform_real_distribution<double> where(t.front(), t.back());
+  for (int k = 0; k < 500; ++k) {
+    const double x = where(rng);
+    EXPECT_NEAR(s(x), ref(x), 1e-12) << x;
+  }
+  // One-sided 4-point differences, exact for cubics (so only round-off remains): the
+  // first and second derivative at x from the side dir = +1 (right) or -1 (left), using
+  // points inside one spline piece (3 e < the shortest interval, 0.05).
+  const double e = 0.01;
+  auto d1 = [&](double x, double dir) {
+    const double h = dir * e;
+    return (-11 * s(x) + 18 * s(x + h) - 9 * s(x + 2 * h) + 2 * s(x + 3 * h)) / (6 * h);
+  };
+  auto d2 = [&](double x, double dir) {
+    return (2 * s(x) - 5 * s(x + dir * e) + 4 * s(x + 2 * dir * e) - s(x + 3 * dir * e)) / (e * e);
+  };
+  // Natural: second derivative zero at both ends (a clamped or not-a-knot end would have
+  // |S''| of order |v| / h^2 ~ 1..1000 here).
+  EXPECT_LT(std::abs(d2(t.front(), +1.0)), 1e-7);
+  EXPECT_LT(std::abs(d2(t.back(), -1.0)), 1e-7);
+  // C1 and C2 at the interior knots: the derivatives from each side agree.
+  for (std::size_t i = 1; i + 1 < t.size(); ++i) {
+    EXPECT_NEAR(d1(t[i], -1.0), d1(t[i], +1.0), 1e-8) << "knot " << i;
+    EXPECT_NEAR(d2(t[i], -1.0), d2(t[i], +1.0), 1e-6) << "knot " << i;
+  }
+}
+
+TEST(SignalTable, OutsideTheTableThrows) {
+  const Signal s = Signal::table({1.0, 2.0, 4.0}, {0.0, 1.0, 0.5});
+  EXPECT_NO_THROW(s(1.0));
+  EXPECT_NO_THROW(s(4.0));
+  EXPECT_THROW(s(0.999), hinf::InputError);
+  EXPECT_THROW(s(4.001), hinf::InputError);
+  EXPECT_THROW(s(-100.0), hinf::InputError);
+  EXPECT_THROW(s(kNaN), hinf::InputError);
+  // Inside a VectorSignal as well.
+  const VectorSignal vs(std::vector<Signal>{Signal(1.0), s});
+  EXPECT_THROW(vs(5.0), hinf::InputError);
+}
+
+TEST(SignalTable, BadTablesThrow) {
+  EXPECT_THROW(Signal::table({}, {}), hinf::InputError);
+  EXPECT_THROW(Signal::table({1.0}, {2.0}), hinf::InputError);
+  EXPECT_THROW(Signal::table({0.0, 1.0, 1.0}, {0.0, 1.0, 2.0}), hinf::InputError);   // repeated t
+  EXPECT_THROW(Signal::table({0.0, 2.0, 1.0}, {0.0, 1.0, 2.0}), hinf::InputError);   // decreasing
+  EXPECT_THROW(Signal::table({0.0, kNaN, 2.0}, {0.0, 1.0, 2.0}), hinf::InputError);  // NaN time
+  EXPECT_THROW(Signal::table({0.0, 1.0, 2.0}, {0.0, kNaN, 2.0}), hinf::InputError);  // NaN value
+  EXPECT_THROW(Signal::table({0.0, 1.0, kInf}, {0.0, 1.0, 2.0}), hinf::InputError);
+  EXPECT_THROW(Signal::table({0.0, 1.0, 2.0}, {0.0, 1.0}), hinf::InputError);        // lengths
+}
+
+// ---------------------------------------------------------------- vector signals
+
+TEST(VectorSignal, StacksChannels) {
+  const VectorSignal vs(std::vector<Signal>{
+      Signal(1.0), Signal(0.0, {Harmonic{0.3, 0.2, 0.0, false}}), Signal()});
+  EXPECT_EQ(vs.dim(), 3);
+  EXPECT_FALSE(vs.is_function());
+  for (double t : {0.0, 1.5, 39.0}) {
+    const Vec v = vs(t);
+    ASSERT_EQ(v.size(), 3);
+    EXPECT_EQ(v[0], 1.0);
+    EXPECT_NEAR(v[1], 0.3 * std::sin(0.2 * t), 1e-15);
+    EXPECT_EQ(v[2], 0.0);
+    double raw[3];
+    vs.eval(t, raw);
+    EXPECT_EQ(raw[1], v[1]);
+  }
+  const VectorSignal z = VectorSignal::zeros(4);
+  EXPECT_EQ(z.dim(), 4);
+  EXPECT_EQ(z(3.0).cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST(VectorSignal, WrapsAFunction) {
+  const VectorSignal vs(2, [](double t) {
+    Vec v(2);
+    v << std::exp(-t), t * t;
+    return v;
+  });
+  EXPECT_TRUE(vs.is_function());
+  EXPECT_EQ(vs.dim(), 2);
+  const Vec v = vs(1.5);
+  EXPECT_EQ(v[0], std::exp(-1.5));
+  EXPECT_EQ(v[1], 2.25);
+}
+
+TEST(VectorSignal, FunctionWithWrongLengthOrNonFiniteValueThrows) {
+  const VectorSignal too_short(3, [](double) { return Vec::Ones(2); });
+  EXPECT_THROW(too_short(0.0), hinf::InputError);
+  const VectorSignal too_long(1, [](double) { return Vec::Ones(2); });
+  double out[2];
+  EXPECT_THROW(too_long.eval(0.0, out), hinf::InputError);
+  const VectorSignal nan_after_one(2, [](double t) {
+    Vec v = Vec::Zero(2);
+    if (t > 1.0) v[1] = kNaN;
+    return v;
+  });
+  EXPECT_NO_THROW(nan_after_one(0.5));
+  EXPECT_THROW(nan_after_one(1.5), hinf::InputError);
+  const VectorSignal inf_value(1, [](double) { return Vec::Constant(1, kInf); });
+  EXPECT_THROW(inf_value(0.0), hinf::InputError);
+  EXPECT_THROW(VectorSignal(2, VectorSignal::Function()), hinf::InputError);  // no callable
+  EXPECT_THROW(VectorSignal(-1, [](double) { return Vec(); }), hinf::InputError);
+}
+
+}  // namespace

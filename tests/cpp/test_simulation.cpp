@@ -1,0 +1,431 @@
+// Closed-loop simulation and metrics: the output grid, the desired trajectory against an
+// independent RK4 integration, the closed loop on the desired trajectory (zero error stays
+// zero), convergence from the paper's initial error, metrics against hand computations on
+// synthetic runs, and the input checks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hinf/controller.hpp"
+#include "hinf/errors.hpp"
+#include "hinf/metrics.hpp"
+#include "hinf/model.hpp"
+#include "hinf/riccati.hpp"
+#include "hinf/signal.hpp"
+#include "hinf/simulation.hpp"
+#include "hinf/trajectory.hpp"
+
+namespace {
+
+using hinf::Mat;
+using hinf::Method;
+using hinf::RowMat;
+using hinf::SolverOptions;
+using hinf::Vec;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const Method kMethods[] = {Method::BDF, Method::Adams, Method::ERK};
+
+// ======================================================================= output grid
+
+TEST(OutputGrid, EndsExactlyAtTfWithTheRequestedSpacing) {
+  struct Case {
+    double t0, tf, dt;
+    std::size_t count;
+  };
+  const Case cases[] = {
+      {0.0, 1.0, 0.25, 5},      // exact multiple
+      {0.0, 1.0, 0.3, 5},       // 0, .3, .6, .9, 1 (last interval 0.1)
+      {2.0, 3.0, 0.1, 11},      // (tf - t0)/dt = 10.000000000000002 in floating point
+      {0.0, 40.0, 0.01, 4001},  // the paper's grid
+      {-1.0, 0.5, 0.7, 4},      // -1, -0.3, 0.4, 0.5
+      {0.0, 1.0, 5.0, 2},       // dt longer than the horizon: just the ends
+  };
+  for (const Case& c : cases) {
+    const std::vector<double> g = hinf::output_grid(c.t0, c.tf, c.dt);
+    ASSERT_EQ(g.size(), c.count) << c.t0 << " " << c.tf << " " << c.dt;
+    EXPECT_EQ(g.front(), c.t0);
+    EXPECT_EQ(g.back(), c.tf) << "must end exactly at tf";
+    for (std::size_t k = 1; k + 1 < g.size(); ++k) {
+      EXPECT_NEAR(g[k] - g[k - 1], c.dt, 1e-12 * std::max(1.0, std::abs(g[k])));
+      EXPECT_NEAR(g[k], c.t0 + static_cast<double>(k) * c.dt, 1e-12 * std::max(1.0, std::abs(g[k])));
+    }
+    // The last interval is (0, dt]: never a duplicate or near-duplicate of tf.
+    const double last = g[g.size() - 1] - g[g.size() - 2];
+    EXPECT_GT(last, 1e-6 * c.dt);
+    EXPECT_LE(last, c.dt * (1 + 1e-9));
+  }
+  // The partial interval of {0, 1, 0.3}.
+  const std::vector<double> g = hinf::output_grid(0.0, 1.0, 0.3);
+  EXPECT_NEAR(g[3], 0.9, 1e-15);
+  EXPECT_NEAR(g[4] - g[3], 0.1, 1e-15);
+}
+
+TEST(OutputGrid, BadInputsThrow) {
+  EXPECT_THROW(hinf::output_grid(0.0, 1.0, 0.0), hinf::InputError);
+  EXPECT_THROW(hinf::output_grid(0.0, 1.0, -0.1), hinf::InputError);
+  EXPECT_THROW(hinf::output_grid(0.0, 1.0, kNaN), hinf::InputError);
+  EXPECT_THROW(hinf::output_grid(1.0, 1.0, 0.1), hinf::InputError);
+  EXPECT_THROW(hinf::output_grid(2.0, 1.0, 0.1), hinf::InputError);
+  EXPECT_THROW(hinf::output_grid(kNaN, 1.0, 0.1), hinf::InputError);
+}
+
+// ======================================================================= the paper's ship
+
+hinf::VectorSignal paper_u_d() {
+  return hinf::VectorSignal(std::vector<hinf::Signal>{
+      hinf::Signal(1.0), hinf::Signal(0.0, {hinf::Harmonic{0.3, 0.2, 0.0, false}})});
+}
+
+Vec paper_q_d0() {
+  Vec q = Vec::Zero(6);
+  q[0] = 1.0;
+  return q;
+}
+
+// 0.1 cos(2 pi 0.2 t) on w1..w3, zero on w4..w6.
+hinf::VectorSignal paper_disturbance() {
+  const hinf::Signal w(0.0, {hinf::Harmonic{0.1, 2.0 * M_PI * 0.2, 0.0, true}});
+  return hinf::VectorSignal(std::vector<hinf::Signal>{w, w, w, hinf::Signal(), hinf::Signal(), hinf::Signal()});
+}
+
+class PaperShip : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    trajectory_ = std::make_shared<const hinf::Trajectory>(std::make_shared<const hinf::ShipModel>(),
+                                                           paper_q_d0(), paper_u_d(), 0.0, 40.0);
+    solution_ = hinf::solve_grde(trajectory_, Mat::Identity(6, 6), Mat::Identity(6, 6), 5.0);
+  }
+  static void TearDownTestSuite() {
+    solution_.reset();
+    trajectory_.reset();
+  }
+  static SolverOptions options(Method method) {
+    SolverOptions o;
+    o.method = method;
+    return o;
+  }
+  static hinf::TrajectoryPtr trajectory_;
+  static hinf::RiccatiSolutionPtr solution_;
+};
+hinf::TrajectoryPtr PaperShip::trajectory_;
+hinf::RiccatiSolutionPtr PaperShip::solution_;
+
+TEST_F(PaperShip, DesiredTrajectoryMatchesIndependentRk4) {
+  // Classical RK4 with h = 1e-3 (global error ~ 1e-12 here) on the ship's equations written
+  // out in the test, with u_d = [1, 0.3 sin(0.2 t)].
+  auto f = [](double t, const Eigen::Matrix<double, 6, 1>& q) {
+    const double u = q[0], v = q[1], r = q[2], psi = q[5];
+    Eigen::Matrix<double, 6, 1> d;
+    d << 0.5 * v * r - u + 1.0, -2.0 * u * r - 2.0 * v, 0.5 * u * v - r + 0.3 * std::sin(0.2 * t),
+        u * std::cos(psi) - v * std::sin(psi), u * std::sin(psi) + v * std::cos(psi), r;
+    return d;
+  };
+  Eigen::Matrix<double, 6, 1> q = paper_q_d0();
+  const double h = 1e-3;
+  double max_err = 0.0;
+  for (int k = 0; k < 40000; ++k) {
+    const double t = k * h;
+    const auto k1 = f(t, q), k2 = f(t + h / 2, q + h / 2 * k1), k3 = f(t + h / 2, q + h / 2 * k2),
+               k4 = f(t + h, q + h * k3);
+    q += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+    if ((k + 1) % 250 == 0) {
+      const double tn = (k + 1) * h;
+      max_err = std::max(max_err, (trajectory_->q_d(tn) - Vec(q)).cwiseAbs().maxCoeff());
+    }
+  }
+  std::printf("[trajectory] q_d vs RK4 (h = 1e-3): max abs difference %.2e\n", max_err);
+  EXPECT_LT(max_err, 1e-8);
+  // u_d and A_e are the documented functions of q_d(t).
+  const Vec ud = trajectory_->u_d(7.0);
+  EXPECT_EQ(ud[0], 1.0);
+  EXPECT_NEAR(ud[1], 0.3 * std::sin(1.4), 1e-15);
+  Mat J(6, 6);
+  hinf::ShipModel().dfdq(7.0, trajectory_->q_d(7.0), J);
+  EXPECT_EQ(trajectory_->A_e(7.0), J);
+}
+
+TEST_F(PaperShip, ZeroErrorAndZeroDisturbanceStaysOnTheDesiredTrajectory) {
+  // Exactly, q = q_d and u = u_d; numerically the deviation is the integration error, which
+  // is proportional to the tolerance (about 4e-7 at the default rtol 1e-8, over positions
+  // of tens of metres): rtol 1e-9 leaves a wide margin below 1e-6.
+  const std::vector<double> grid = hinf::output_grid(0.0, 40.0, 0.05);
+  for (Method method : kMethods) {
+    hinf::HinfStateFeedback controller(solution_);
+    SolverOptions o = options(method);
+    o.rtol = 1e-9;
+    o.atol = 1e-11;
+    const hinf::SimulationResult run = hinf::simulate_state_feedback(
+        *trajectory_, controller, hinf::VectorSignal::zeros(6), paper_q_d0(), 0.05, o);
+    ASSERT_EQ(run.t.size(), static_cast<Eigen::Index>(grid.size()));
+    for (std::size_t k = 0; k < grid.size(); ++k) ASSERT_EQ(run.t[static_cast<Eigen::Index>(k)], grid[k]);
+    ASSERT_EQ(run.q.rows(), run.t.size());
+    ASSERT_EQ(run.q.cols(), 6);
+    ASSERT_EQ(run.u.cols(), 2);
+    ASSERT_EQ(run.w.cols(), 6);
+    const double max_dev = (run.q - run.q_d).cwiseAbs().maxCoeff();
+    const double max_du = (run.u - run.u_d).cwiseAbs().maxCoeff();
+    std::printf("[closed loop] %-5s q0 = q_d0, w = 0: max |q - q_d| %.2e, max |u - u_d| %.2e\n",
+                hinf::to_string(method).c_str(), max_dev, max_du);
+    EXPECT_LT(max_dev, 1e-6) << hinf::to_string(method);
+    EXPECT_LT(max_du, 1e-5) << hinf::to_string(method);
+    EXPECT_EQ(run.w.cwiseAbs().maxCoeff(), 0.0);
+    // The desired state on the grid is the trajectory's.
+    EXPECT_EQ(Vec(run.q_d.row(200).transpose()), trajectory_->q_d(run.t[200]));
+  }
+}
+
+TEST_F(PaperShip, InitialErrorDecays) {
+  Vec q0 = paper_q_d0();
+  q0[3] -= 1.0;
+  q0[4] -= 1.0;
+  q0[5] += M_PI / 4;
+  std::vector<hinf::SimulationResult> runs;
+  for (Method method : kMethods) {
+    hinf::HinfStateFeedback controller(solution_);
+    runs.push_back(hinf::simulate_state_feedback(*trajectory_, controller, paper_disturbance(), q0,
+                                                 0.05, options(method)));
+    const hinf::SimulationResult& run = runs.back();
+    auto position_error = [&](Eigen::Index k) {
+      return std::hypot(run.q(k, 3) - run.q_d(k, 3), run.q(k, 4) - run.q_d(k, 4));
+    };
+    const Eigen::Index last = run.t.size() - 1;
+    EXPECT_NEAR(position_error(0), std::sqrt(2.0), 1e-14);
+    std::printf("[closed loop] %-5s from the paper's initial error: |p_e| = %.3f at t = 10, %.4f "
+                "at tf\n",
+                hinf::to_string(method).c_str(), position_error(200), position_error(last));
+    EXPECT_LT(position_error(last), 0.1 * std::sqrt(2.0)) << hinf::to_string(method);
+    // The applied disturbance is the paper's.
+    EXPECT_NEAR(run.w(20, 0), 0.1 * std::cos(2 * M_PI * 0.2 * 1.0), 1e-15);
+    EXPECT_EQ(run.w(20, 4), 0.0);
+    // u = u_d - B'Z(t) (q - q_d) on the grid.
+    const Eigen::Index k = 37;
+    const Vec qe = (run.q.row(k) - run.q_d.row(k)).transpose();
+    const Vec u_expected = run.u_d.row(k).transpose() - solution_->gain(run.t[k]) * qe;
+    EXPECT_LT((Vec(run.u.row(k).transpose()) - u_expected).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  // The three integrators agree on the closed loop.
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    const double diff = (runs[i].q - runs[0].q).cwiseAbs().maxCoeff();
+    std::printf("[closed loop] %s vs bdf: max |q difference| %.2e\n", hinf::to_string(kMethods[i]).c_str(), diff);
+    EXPECT_LT(diff, 1e-5);
+  }
+}
+
+TEST_F(PaperShip, KappaScalesTheGainAndTheJacobianIsExact) {
+  // u = u_d - kappa(t) B'Z(t) (q - q_d), kappa(t) = 0.75 + 0.25 sin(t).
+  const hinf::Signal kappa(0.75, {hinf::Harmonic{0.25, 1.0, 0.0, false}});
+  hinf::HinfStateFeedback controller(solution_, kappa);
+  EXPECT_EQ(controller.m(), 2);
+  for (double t : {0.0, 3.3, 17.0, 39.9}) {
+    Vec qt = trajectory_->q_d(t);
+    qt[1] += 0.2;
+    qt[3] -= 0.5;
+    qt[5] += 0.3;
+    Vec u(2);
+    controller.control(t, qt, u);
+    const Vec expected = trajectory_->u_d(t) - kappa(t) * solution_->gain(t) * (qt - trajectory_->q_d(t));
+    EXPECT_LT((u - expected).cwiseAbs().maxCoeff(), 1e-13) << t;
+    // du/dq = -kappa K: against central differences of control() (u is affine in q).
+    Mat J(2, 6), J_fd(2, 6);
+    controller.control_jacobian(t, qt, J);
+    for (int j = 0; j < 6; ++j) {
+      Vec qp = qt, qm = qt, up(2), um(2);
+      qp[j] += 1e-4;
+      qm[j] -= 1e-4;
+      controller.control(t, qp, up);
+      controller.control(t, qm, um);
+      J_fd.col(j) = (up - um) / 2e-4;
+    }
+    EXPECT_LT((J - J_fd).cwiseAbs().maxCoeff(), 1e-9) << t;
+    EXPECT_LT((J + kappa(t) * solution_->gain(t)).cwiseAbs().maxCoeff(), 1e-13) << t;
+  }
+}
+
+// ======================================================================= time-varying B
+
+// dq/dt = b(t) u (+ d w), b(t) = 1 + 0.5 sin t; B depends on t.
+class TimeVaryingScalar final : public hinf::Model {
+ public:
+  std::string name() const override { return "tv-scalar"; }
+  int n() const override { return 1; }
+  int m() const override { return 1; }
+  int nw() const override { return 1; }
+  void f(double, const hinf::ConstVecRef&, hinf::VecRef out) const override { out[0] = 0.0; }
+  void dfdq(double, const hinf::ConstVecRef&, hinf::MatRef J) const override { J(0, 0) = 0.0; }
+  Mat B(double t) const override { return Mat::Constant(1, 1, 1.0 + 0.5 * std::sin(t)); }
+  Mat D(double) const override { return Mat::Constant(1, 1, 0.6); }
+  bool constant_input_matrices() const override { return false; }
+};
+
+TEST(SimulationTimeVarying, ClosedLoopErrorHasTheClosedForm) {
+  // gamma = inf, Q = 0, Qf = qf, q_d = 2 (u_d = 0, f = 0). Then w := 1/z obeys
+  // dw/dt = -b^2, so w(t) = 1/qf + int_t^tf b^2, and the error e = q - q_d under
+  // u = -kappa b z e obeys de/dt = -kappa b^2 z e, which makes e z^kappa constant:
+  //     e(t) = e0 (w(t) / w(t0))^kappa.
+  const double qf = 0.8, t0 = 0.0, tf = 6.0, e0 = 0.5;
+  auto model = std::make_shared<const TimeVaryingScalar>();
+  const auto trajectory = std::make_shared<const hinf::Trajectory>(
+      model, Vec::Constant(1, 2.0), hinf::VectorSignal::zeros(1), t0, tf);
+  const auto solution = hinf::solve_grde(trajectory, Mat::Zero(1, 1), Mat::Constant(1, 1, qf),
+                                         std::numeric_limits<double>::infinity());
+  auto w_of = [&](double t) {
+    return 1.0 / qf + 1.125 * (tf - t) + std::cos(t) - std::cos(tf) -
+           0.0625 * (std::sin(2 * tf) - std::sin(2 * t));
+  };
+  for (double kappa : {1.0, 0.7}) {
+    for (Method method : kMethods) {
+      hinf::HinfStateFeedback controller(solution, hinf::Signal(kappa));
+      SolverOptions o;
+      o.method = method;
+      o.rtol = 1e-10;
+      o.atol = 1e-12;
+      const hinf::SimulationResult run = hinf::simulate_state_feedback(
+          *trajectory, controller, hinf::VectorSignal::zeros(1), Vec::Constant(1, 2.0 + e0), 0.1, o);
+      double max_err = 0.0, max_u_err = 0.0;
+      for (Eigen::Index k = 0; k < run.t.size(); ++k) {
+        const double t = run.t[k];
+        const double e = e0 * std::pow(w_of(t) / w_of(t0), kappa);
+        max_err = std::max(max_err, std::abs(run.q(k, 0) - 2.0 - e));
+        max_u_err = std::max(max_u_err, std::abs(run.u(k, 0) + kappa * (1.0 + 0.5 * std::sin(t)) / w_of(t) * e));
+      }
+      std::printf("[closed loop] tv-B kappa %.1f %-5s: max |e - e_exact| %.2e, max |u - u_exact| %.2e\n",
+                  kappa, hinf::to_string(method).c_str(), max_err, max_u_err);
+      EXPECT_LT(max_err, 1e-7) << hinf::to_string(method);
+      EXPECT_LT(max_u_err, 1e-7) << hinf::to_string(method);
+    }
+  }
+}
+
+TEST_F(PaperShip, BadInputsThrow) {
+  hinf::HinfStateFeedback controller(solution_);
+  const hinf::VectorSignal w = hinf::VectorSignal::zeros(6);
+  const SolverOptions ok;
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, Vec::Zero(5), 0.1, ok),
+               hinf::InputError);
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, Vec::Zero(7), 0.1, ok),
+               hinf::InputError);
+  Vec nan_q0 = paper_q_d0();
+  nan_q0[2] = kNaN;
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, nan_q0, 0.1, ok),
+               hinf::InputError);
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, hinf::VectorSignal::zeros(3),
+                                             paper_q_d0(), 0.1, ok),
+               hinf::InputError);
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, hinf::VectorSignal::zeros(7),
+                                             paper_q_d0(), 0.1, ok),
+               hinf::InputError);
+  for (double dt : {0.0, -0.01, kNaN})
+    EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, paper_q_d0(), dt, ok),
+                 hinf::InputError)
+        << "dt = " << dt;
+  SolverOptions bad = ok;
+  bad.rtol = 0.0;
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, paper_q_d0(), 0.1, bad),
+               hinf::InputError);
+}
+
+// ======================================================================= metrics
+
+// A synthetic run: every row of each series is given by the callers.
+hinf::SimulationResult synthetic(const std::vector<double>& t, int n, int m, int nw) {
+  hinf::SimulationResult r;
+  r.t = Eigen::Map<const Vec>(t.data(), static_cast<Eigen::Index>(t.size()));
+  const Eigen::Index N = r.t.size();
+  r.q = RowMat::Zero(N, n);
+  r.q_d = RowMat::Zero(N, n);
+  r.u = RowMat::Zero(N, m);
+  r.u_d = RowMat::Zero(N, m);
+  r.w = RowMat::Zero(N, nw);
+  return r;
+}
+
+TEST(Metrics, ConstantSignalsHaveExactIntegrals) {
+  // Grid with a partial last interval: T = 2.5.
+  hinf::SimulationResult r = synthetic({0.0, 1.0, 2.0, 2.5}, 6, 2, 6);
+  Vec q_d(6), q_e(6), u(2), u_d(2), w(6);
+  q_d << 1.0, 0.0, 0.0, 10.0, 20.0, 0.3;
+  q_e << 1.0, 0.0, 2.0, 3.0, -4.0, 0.5;  // position error (3, -4): |p_e| = 5
+  u << 2.0, -1.0;
+  u_d << 1.0, 1.0;                        // u_e = (1, -2)
+  w << 0.1, 0.2, 0.3, 0.0, 0.0, 0.0;      // |w|^2 = 0.14
+  for (Eigen::Index k = 0; k < 4; ++k) {
+    r.q_d.row(k) = q_d.transpose();
+    r.q.row(k) = (q_d + q_e).transpose();
+    r.u.row(k) = u.transpose();
+    r.u_d.row(k) = u_d.transpose();
+    r.w.row(k) = w.transpose();
+  }
+  Mat Q = Mat::Zero(6, 6);
+  Q.diagonal() << 1, 2, 3, 4, 5, 6;
+  // |q_e|_Q^2 = 1 + 0 + 3*4 + 4*9 + 5*16 + 6*0.25 = 130.5, |u_e|^2 = 5.
+  const hinf::Metrics mt = hinf::compute_metrics(hinf::ShipModel(), r, Q);
+  const double T = 2.5;
+  EXPECT_NEAR(mt.rms_position_error_last_half, 5.0, 1e-14);
+  EXPECT_NEAR(mt.max_position_error, 5.0, 1e-14);
+  EXPECT_NEAR(mt.final_position_error, 5.0, 1e-14);
+  EXPECT_NEAR(mt.control_l2, std::sqrt(5.0 * T), 1e-14);
+  EXPECT_NEAR(mt.control_error_l2, std::sqrt(5.0 * T), 1e-14);
+  EXPECT_NEAR(mt.disturbance_l2, std::sqrt(0.14 * T), 1e-14);
+  EXPECT_NEAR(mt.l2_gain, std::sqrt((130.5 + 5.0) * T) / std::sqrt(0.14 * T), 1e-12);
+  EXPECT_TRUE(std::isnan(mt.max_rho_sigma_z)) << "state feedback: no Sigma";
+  EXPECT_TRUE(std::isnan(mt.rms_estimation_error_last_half));
+  // The plain L2 norm.
+  EXPECT_NEAR(hinf::l2_norm(r.t, r.u), std::sqrt(5.0 * T), 1e-14);
+}
+
+TEST(Metrics, LastHalfMaxFinalTrapezoidAndOutputFeedbackByHand) {
+  // t = 0..4; x_e = [0, 3, 1, 2, 0.5], y_e = 0; u_e = [0, 1, 2, 1, 0] on channel 1 only;
+  // no disturbance.
+  hinf::SimulationResult r = synthetic({0.0, 1.0, 2.0, 3.0, 4.0}, 6, 2, 6);
+  const double xe[] = {0.0, 3.0, 1.0, 2.0, 0.5};
+  const double ue[] = {0.0, 1.0, 2.0, 1.0, 0.0};
+  r.rho_sigma_z = Vec(5);
+  r.rho_sigma_z << 0.1, 0.7, 0.3, 0.2, 0.4;
+  r.q_hat = RowMat::Zero(5, 6);
+  for (Eigen::Index k = 0; k < 5; ++k) {
+    r.q(k, 3) = 5.0 + xe[k];
+    r.q_d(k, 3) = 5.0;
+    r.u(k, 0) = 1.0 + ue[k];
+    r.u_d(k, 0) = 1.0;
+    // Estimate: q_e + (k, 0, ..., 0, 1): |q_hat - q_e|^2 = k^2 + 1.
+    r.q_hat.row(k) = (r.q.row(k) - r.q_d.row(k));
+    r.q_hat(k, 0) += static_cast<double>(k);
+    r.q_hat(k, 5) += 1.0;
+  }
+  const hinf::Metrics mt = hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6));
+  // Last half: t >= 2, i.e. points 2, 3, 4.
+  EXPECT_NEAR(mt.rms_position_error_last_half, std::sqrt((1.0 + 4.0 + 0.25) / 3.0), 1e-14);
+  EXPECT_EQ(mt.max_position_error, 3.0);
+  EXPECT_EQ(mt.final_position_error, 0.5);
+  // Trapezoid of u_e^2 = [0, 1, 4, 1, 0]: (0+1)/2 + (1+4)/2 + (4+1)/2 + (1+0)/2 = 6.
+  EXPECT_NEAR(mt.control_error_l2, std::sqrt(6.0), 1e-14);
+  // |u|^2 = [1, 4, 9, 4, 1]: 2.5 + 6.5 + 6.5 + 2.5 = 18.
+  EXPECT_NEAR(mt.control_l2, std::sqrt(18.0), 1e-14);
+  EXPECT_EQ(mt.disturbance_l2, 0.0);
+  EXPECT_TRUE(std::isnan(mt.l2_gain)) << "no disturbance: the gain is undefined";
+  EXPECT_EQ(mt.max_rho_sigma_z, 0.7);
+  // Points 2, 3, 4: (4 + 1, 9 + 1, 16 + 1) -> sqrt(32 / 3).
+  EXPECT_NEAR(mt.rms_estimation_error_last_half, std::sqrt(32.0 / 3.0), 1e-14);
+}
+
+TEST(Metrics, ModelWithoutPositionGivesNaNPositionMetrics) {
+  const hinf::LinearModel model(Mat::Identity(2, 2), Mat::Identity(2, 1), Mat::Identity(2, 2));
+  hinf::SimulationResult r = synthetic({0.0, 0.5, 1.0}, 2, 1, 2);
+  r.u.setConstant(2.0);
+  r.w.setConstant(1.0);
+  const hinf::Metrics mt = hinf::compute_metrics(model, r, Mat::Identity(2, 2));
+  EXPECT_TRUE(std::isnan(mt.rms_position_error_last_half));
+  EXPECT_TRUE(std::isnan(mt.max_position_error));
+  EXPECT_TRUE(std::isnan(mt.final_position_error));
+  EXPECT_NEAR(mt.control_l2, 2.0, 1e-15);
+  EXPECT_NEAR(mt.disturbance_l2, std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(mt.l2_gain, std::sqrt(4.0) / std::sqrt(2.0), 1e-15);  // u_e = 2 (u_d = 0), q_e = 0
+}
+
+}  // namespace
