@@ -1,7 +1,9 @@
 // hinf-sim: runs a scenario file without Python and writes the results file.
 //
-//   hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv]
+//   hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]
 //
+// --gamma-star also computes gamma* (paper eq. 14) of the state-feedback design and puts it in
+// the results file.
 // Exit status: 0 success, 2 bad input or usage, 3 numerical failure (solver, conjugate
 // point, coupling condition), 1 anything else. Errors are one line on stderr.
 #include <cstring>
@@ -13,7 +15,7 @@
 
 namespace {
 
-const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv]";
+const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]";
 
 int fail(int status, const std::string& message) {
   std::string line = message;
@@ -27,6 +29,7 @@ int fail(int status, const std::string& message) {
 
 int main(int argc, char** argv) {
   std::string scenario_path, json_path, csv_path;
+  bool with_gamma_star = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&](const char* option) -> std::string {
@@ -41,6 +44,8 @@ int main(int argc, char** argv) {
         json_path = value("--json");
       } else if (arg == "--csv") {
         csv_path = value("--csv");
+      } else if (arg == "--gamma-star") {
+        with_gamma_star = true;
       } else if (!arg.empty() && arg[0] == '-') {
         return fail(2, "unknown option '" + arg + "'; " + kUsage);
       } else if (scenario_path.empty()) {
@@ -56,14 +61,17 @@ int main(int argc, char** argv) {
 
   try {
     const hinf::Scenario scenario = hinf::load_scenario_toml(scenario_path);
-    const hinf::RunResult result = hinf::run_scenario(scenario);
+    hinf::RunResult result = hinf::run_scenario(scenario);
+    if (with_gamma_star) result.gamma_star = hinf::scenario_gamma_star(scenario).gamma_star;
     if (!json_path.empty()) hinf::write_text_file(json_path, hinf::results_json(result) + "\n");
     if (!csv_path.empty()) hinf::write_text_file(csv_path, hinf::results_csv(result));
     const hinf::Metrics& m = result.metrics;
     std::cout << "scenario " << result.scenario_name << ": gamma = " << result.gamma
               << ", final position error = " << m.final_position_error
               << ", RMS position error (last half) = " << m.rms_position_error_last_half
-              << ", L2 gain = " << m.l2_gain << " (total " << result.timing.total * 1e3 << " ms)\n";
+              << ", L2 gain = " << m.l2_gain;
+    if (result.gamma_star) std::cout << ", gamma* = " << *result.gamma_star;
+    std::cout << " (total " << result.timing.total * 1e3 << " ms)\n";
     return 0;
   } catch (const hinf::InputError& e) {
     return fail(2, e.what());

@@ -8,6 +8,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "hinf/analysis.hpp"
 #include "hinf/checks.hpp"
 #include "hinf/controller.hpp"
 #include "hinf/errors.hpp"
@@ -490,6 +491,14 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         py::call_guard<py::gil_scoped_release>(),
         "Solve the filter Riccati equation (36) forward from Sigma(t0) = Sigma0 with A = A_e(t)");
 
+  m.def("grde_escape_time", &grde_escape_time, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
+        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
+        "Time of the first conjugate point of the GRDE on [t0, tf] (integrating backward), NaN if none");
+  m.def("filter_escape_time", &filter_escape_time, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
+        py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
+        py::call_guard<py::gil_scoped_release>(),
+        "Time of the first escape of the filter Riccati equation (36) on [t0, tf], NaN if none");
+
   m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
         py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
         "Solve the GRDE (13) backward from Z(tf) = Qf; raises ConjugatePointError when gamma <= gamma*");
@@ -586,6 +595,85 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
     return metrics_dict(compute_metrics(model, run, Q));
   }, py::arg("model"), py::arg("run"), py::arg("Q"));
 
+  // ---- gamma* and certificates (paper §3) ----
+  py::class_<GammaStarOptions>(m, "GammaStarOptions", "Options of the gamma* search")
+      .def(py::init([](double lower, double upper, double rtol, int max_evaluations, int threads,
+                       const SolverOptions& solver) {
+             GammaStarOptions o;
+             o.lower = lower;
+             o.upper = upper;
+             o.rtol = rtol;
+             o.max_evaluations = max_evaluations;
+             o.threads = threads;
+             o.solver = solver;
+             o.validate();
+             return o;
+           }),
+           py::arg("lower") = 0.0, py::arg("upper") = 0.0, py::arg("rtol") = 1e-6, py::arg("max_evaluations") = 200,
+           py::arg("threads") = 2, py::arg("solver") = SolverOptions{})
+      .def_readwrite("lower", &GammaStarOptions::lower)
+      .def_readwrite("upper", &GammaStarOptions::upper)
+      .def_readwrite("rtol", &GammaStarOptions::rtol)
+      .def_readwrite("max_evaluations", &GammaStarOptions::max_evaluations)
+      .def_readwrite("threads", &GammaStarOptions::threads)
+      .def_readwrite("solver", &GammaStarOptions::solver)
+      .def("__repr__", [](const GammaStarOptions& o) {
+        return str_cat("GammaStarOptions(lower=", o.lower, ", upper=", o.upper, ", rtol=", o.rtol,
+                       ", max_evaluations=", o.max_evaluations, ", threads=", o.threads, ")");
+      });
+
+  py::class_<GammaTrial>(m, "GammaTrial", "One gamma tried by the gamma* search")
+      .def_readonly("gamma", &GammaTrial::gamma)
+      .def_readonly("passed", &GammaTrial::passed)
+      .def_readonly("t_escape", &GammaTrial::t_escape)
+      .def_readonly("condition", &GammaTrial::condition)
+      .def("__repr__", [](const GammaTrial& t) {
+        return str_cat("GammaTrial(gamma=", t.gamma, ", passed=", t.passed ? "True" : "False",
+                       t.passed ? "" : str_cat(", condition='", t.condition, "', t=", t.t_escape), ")");
+      });
+
+  py::class_<GammaStarResult>(m, "GammaStarResult", "gamma*, the final bracket and every gamma tried")
+      .def_readonly("gamma_star", &GammaStarResult::gamma_star)
+      .def_readonly("lower", &GammaStarResult::lower)
+      .def_readonly("upper", &GammaStarResult::upper)
+      .def_readonly("t_escape_lower", &GammaStarResult::t_escape_lower)
+      .def_readonly("binding", &GammaStarResult::binding)
+      .def_readonly("converged", &GammaStarResult::converged)
+      .def_readonly("trials", &GammaStarResult::trials)
+      .def("__repr__", [](const GammaStarResult& r) {
+        return str_cat("GammaStarResult(gamma_star=", r.gamma_star, ", bracket=[", r.lower, ", ", r.upper,
+                       "], binding='", r.binding, "', t_escape_lower=", r.t_escape_lower, ", evaluations=",
+                       r.trials.size(), ")");
+      });
+
+  m.def("gamma_star", &gamma_star, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+        "gamma* (paper eq. 14): the smallest gamma without a conjugate point of the GRDE on [t0, tf]");
+  m.def("gamma_star_output_feedback", &gamma_star_output_feedback, py::arg("trajectory"), py::arg("Q"),
+        py::arg("Qf"), py::arg("N"), py::arg("Sigma0"), py::arg("options") = GammaStarOptions{},
+        py::call_guard<py::gil_scoped_release>(),
+        "The smallest gamma for output feedback: GRDE, filter (36) with A_e and rho(Sigma Z) < gamma^2");
+  m.def("max_rho_sigma_z", &max_rho_sigma_z, py::arg("Z"), py::arg("Sigma"),
+        py::call_guard<py::gil_scoped_release>(), "(max over [t0, tf] of rho(Sigma Z), where)");
+
+  py::class_<Certificates>(m, "Certificates", "The stability certificates of paper §3 (eqs. 22-24)")
+      .def_readonly("m", &Certificates::m)
+      .def_readonly("M", &Certificates::M)
+      .def_readonly("kappa_min", &Certificates::kappa_min)
+      .def_readonly("p_min", &Certificates::p_min)
+      .def_readonly("p_min_t", &Certificates::p_min_t)
+      .def_readonly("remainder_L", &Certificates::remainder_L)
+      .def_readonly("remainder_method", &Certificates::remainder_method)
+      .def_readonly("remainder_is_bound", &Certificates::remainder_is_bound)
+      .def_readonly("epsilon", &Certificates::epsilon)
+      .def_readonly("epsilon_t", &Certificates::epsilon_t)
+      .def_readonly("attraction_radius", &Certificates::attraction_radius)
+      .def_readonly("decay_rate", &Certificates::decay_rate);
+  m.def("certify",
+        [](const RiccatiSolution& solution, const Mat& Q, const Signal& kappa) { return certify(solution, kappa, Q); },
+        py::arg("solution"), py::arg("Q"), py::arg("kappa") = Signal(1.0), py::call_guard<py::gil_scoped_release>(),
+        "The certificates of paper §3 for a design Z (its gamma), the weight Q and kappa(t)");
+
   // ---- scenarios ----
   py::class_<MeasurementSpec>(m, "MeasurementSpec", "[measurement] of a scenario (paper §4)")
       .def(py::init<>())
@@ -625,7 +713,9 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readwrite("solver", &Scenario::solver)
       .def_readwrite("output_dt", &Scenario::output_dt)
       .def("resolved", &Scenario::resolved)
-      .def("validate", &Scenario::validate);
+      .def("validate", &Scenario::validate)
+      .def("copy", [](const Scenario& s) { return Scenario(s); }, "an independent copy (signals and model shared)")
+      .def("__copy__", [](const Scenario& s) { return Scenario(s); });
 
   py::class_<Timing>(m, "Timing")
       .def_readonly("design", &Timing::design)
@@ -657,6 +747,13 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         py::arg("scenario"), py::arg("noise") = py::none(),
         "Run a scenario; with [measurement], noise (standard normal samples, one row per hold interval)"
         " replaces the seeded noise so that a run can be replayed exactly");
+  m.def("scenario_gamma_star", &scenario_gamma_star, py::arg("scenario"), py::arg("options") = GammaStarOptions{},
+        py::call_guard<py::gil_scoped_release>(), "gamma* of a scenario's state-feedback design");
+  m.def("scenario_gamma_star_output_feedback", &scenario_gamma_star_output_feedback, py::arg("scenario"),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+        "The smallest gamma of a scenario's output-feedback design");
+  m.def("scenario_certificates", &scenario_certificates, py::arg("scenario"),
+        py::call_guard<py::gil_scoped_release>(), "The certificates of paper §3 for a scenario's design");
   m.def("scenario_noise", &scenario_noise, py::arg("scenario"),
         "The seeded standard normal noise samples of a scenario with [measurement]");
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),

@@ -8,6 +8,7 @@
 #include "hinf/cvode.hpp"
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
+#include "extremum.hpp"
 #include "riccati_kernel.hpp"
 #include "symmetric_extremes.hpp"
 
@@ -342,65 +343,21 @@ void extremes_at(const PiecewisePolynomial& X, double t, double& lo, double& hi)
   detail::symmetric_eigen_extremes(Xt, lo, hi);
 }
 
-// Minimizes sign * f over [a, b] by golden-section search (f unimodal there).
-template <class F>
-double golden_section(F&& f, double a, double b, double sign) {
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double c = b - ratio * (b - a), d = a + ratio * (b - a);
-  double fc = sign * f(c), fd = sign * f(d);
-  double best = std::min(fc, fd);
-  for (int i = 0; i < 60 && (b - a) > 1e-10 * std::max(1.0, std::abs(a) + std::abs(b)); ++i) {
-    if (fc < fd) {
-      b = d;
-      d = c;
-      fd = fc;
-      c = b - ratio * (b - a);
-      fc = sign * f(c);
-    } else {
-      a = c;
-      c = d;
-      fc = fd;
-      d = a + ratio * (b - a);
-      fd = sign * f(d);
-    }
-    best = std::min({best, fc, fd});
-  }
-  return sign * best;
-}
-
 template <int N>
 void continuous_bounds(const PiecewisePolynomial& X, double& lambda_min, double& lambda_max) {
-  const std::vector<double> ends = X.breakpoints();
-  std::vector<double> times;
-  for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
-    times.push_back(ends[k]);
-    times.push_back(0.5 * (ends[k] + ends[k + 1]));
-  }
-  times.push_back(ends.back());
-  std::size_t arg_min = 0, arg_max = 0;
-  lambda_min = std::numeric_limits<double>::infinity();
-  lambda_max = -lambda_min;
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    double lo = 0.0, hi = 0.0;
-    extremes_at<N>(X, times[k], lo, hi);
-    if (lo < lambda_min) lambda_min = lo, arg_min = k;
-    if (hi > lambda_max) lambda_max = hi, arg_max = k;
-  }
-  auto bracket = [&](std::size_t k) {
-    return std::make_pair(times[k == 0 ? 0 : k - 1], times[std::min(k + 1, times.size() - 1)]);
-  };
-  const auto [a_min, b_min] = bracket(arg_min);
-  lambda_min = std::min(lambda_min, golden_section([&](double t) {
+  const std::vector<double> times = detail::step_samples(X.breakpoints());
+  auto smallest = [&X](double t) {
     double lo = 0.0, hi = 0.0;
     extremes_at<N>(X, t, lo, hi);
     return lo;
-  }, a_min, b_min, 1.0));
-  const auto [a_max, b_max] = bracket(arg_max);
-  lambda_max = std::max(lambda_max, golden_section([&](double t) {
+  };
+  auto largest = [&X](double t) {
     double lo = 0.0, hi = 0.0;
     extremes_at<N>(X, t, lo, hi);
     return hi;
-  }, a_max, b_max, -1.0));
+  };
+  lambda_min = detail::extremum_over(times, smallest, 1.0).first;
+  lambda_max = detail::extremum_over(times, largest, -1.0).first;
 }
 
 }  // namespace

@@ -92,6 +92,21 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 namespace {
 
+Mat initial_sigma(const Scenario& s) {
+  const MeasurementSpec& ms = *s.measurement;
+  const int n = s.model->n();
+  const Mat Sigma0 = (ms.Q0 - ms.eta * Mat::Identity(n, n)).inverse();
+  return 0.5 * (Sigma0 + Sigma0.transpose());
+}
+
+TrajectoryPtr trajectory_of(const Scenario& s) {
+  return std::make_shared<const Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
+}
+
+}  // namespace
+
+namespace {
+
 RunResult run(const Scenario& scenario, const RowMat* noise) {
   const auto start = std::chrono::steady_clock::now();
   const Scenario s = scenario.resolved();
@@ -100,7 +115,7 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
   RunResult result;
   result.scenario_name = s.name;
   result.gamma = s.gamma;
-  result.trajectory = std::make_shared<const Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
+  result.trajectory = trajectory_of(s);
   result.solution = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
   result.timing.design = seconds_since(start);
 
@@ -113,8 +128,7 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
     o.sigma = ms.sigma;
     o.sample_period = ms.sample_period;
     o.N = ms.N;
-    o.Sigma0 = (ms.Q0 - ms.eta * Mat::Identity(s.model->n(), s.model->n())).inverse();
-    o.Sigma0 = 0.5 * (o.Sigma0 + o.Sigma0.transpose());
+    o.Sigma0 = initial_sigma(s);
     o.Q = s.Q;
     o.filter_uses_estimate = ms.filter_A == "estimate";
     o.stop_on_coupling_violation = ms.on_coupling_violation == "error";
@@ -141,6 +155,29 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
 }  // namespace
 
 RunResult run_scenario(const Scenario& scenario) { return run(scenario, nullptr); }
+
+
+GammaStarResult scenario_gamma_star(const Scenario& scenario, GammaStarOptions options) {
+  const Scenario s = scenario.resolved();
+  s.validate();
+  options.solver = s.solver;
+  return gamma_star(trajectory_of(s), s.Q, s.Qf, options);
+}
+
+GammaStarResult scenario_gamma_star_output_feedback(const Scenario& scenario, GammaStarOptions options) {
+  const Scenario s = scenario.resolved();
+  s.validate();
+  require(s.measurement.has_value(), "the output-feedback gamma* needs a scenario with [measurement]");
+  options.solver = s.solver;
+  return gamma_star_output_feedback(trajectory_of(s), s.Q, s.Qf, s.measurement->N, initial_sigma(s), options);
+}
+
+Certificates scenario_certificates(const Scenario& scenario) {
+  const Scenario s = scenario.resolved();
+  s.validate();
+  const RiccatiSolutionPtr Z = solve_grde(trajectory_of(s), s.Q, s.Qf, s.gamma, s.solver);
+  return certify(*Z, s.kappa, s.Q);
+}
 
 RunResult run_scenario_with_noise(const Scenario& scenario, const RowMat& noise) {
   require(scenario.measurement.has_value(),

@@ -1,6 +1,9 @@
 """The ``hinf-cpp`` command line.
 
-    hinf-cpp run SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--plot OUT.png]
+    hinf-cpp run SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--plot OUT.png] [--gamma-star]
+    hinf-cpp gamma-star SCENARIO.toml [--output-feedback] [--json OUT.json] [bracket options]
+    hinf-cpp certify SCENARIO.toml [--json OUT.json]
+    hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N]
     hinf-cpp paper [--out DIR]
 
 Exit status: 0 success, 2 bad input, 3 numerical failure (solver, conjugate point,
@@ -10,6 +13,7 @@ coupling condition). Errors are one line on stderr.
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import pathlib
 import sys
@@ -64,9 +68,20 @@ def _write(path: str | pathlib.Path, text: str) -> None:
     path.write_text(text)
 
 
+def _gamma_star_options(args: argparse.Namespace) -> _core.GammaStarOptions:
+    return _core.GammaStarOptions(lower=args.lower, upper=args.upper, rtol=args.rtol,
+                                  max_evaluations=args.max_evaluations, threads=args.threads)
+
+
+def _number(x):
+    return float(x) if x is not None and math.isfinite(x) else None
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     scenario = load_scenario(args.scenario)
     result = _core.run_scenario(scenario)
+    if args.gamma_star:
+        result.gamma_star = _core.scenario_gamma_star(scenario).gamma_star
     if args.json:
         _write(args.json, result.to_json() + "\n")
     if args.csv:
@@ -74,6 +89,82 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.plot:
         save_figure(xy_figure(result), args.plot)
     print(summary(result))
+    return 0
+
+
+def gamma_star_dict(result: _core.GammaStarResult) -> dict:
+    return {
+        "gamma_star": _number(result.gamma_star),
+        "lower": _number(result.lower),
+        "upper": _number(result.upper),
+        "t_escape_lower": _number(result.t_escape_lower),
+        "binding": result.binding,
+        "converged": result.converged,
+        "evaluations": len(result.trials),
+        "trials": [{"gamma": t.gamma, "passed": t.passed, "t_escape": _number(t.t_escape),
+                    "condition": t.condition} for t in result.trials],
+    }
+
+
+def cmd_gamma_star(args: argparse.Namespace) -> int:
+    scenario = load_scenario(args.scenario)
+    options = _gamma_star_options(args)
+    if args.output_feedback:
+        result = _core.scenario_gamma_star_output_feedback(scenario, options)
+        what = "output-feedback gamma (GRDE, filter (36) with A_e, rho(Sigma Z) < gamma^2)"
+    else:
+        result = _core.scenario_gamma_star(scenario, options)
+        what = "gamma* (eq. 14, no conjugate point of the GRDE on [t0, tf])"
+    print(f"scenario {scenario.name}: {what}")
+    print(f"  gamma* = {result.gamma_star:.8g}")
+    print(f"  bracket [{result.lower:.8g}, {result.upper:.8g}]"
+          + ("" if result.converged else "  (not converged: max_evaluations reached)"))
+    if math.isfinite(result.t_escape_lower):
+        print(f"  at gamma = {result.lower:.8g}: {result.binding} fails at t = {result.t_escape_lower:.6g}")
+    elif result.binding:
+        print(f"  at gamma = {result.lower:.8g}: {result.binding} fails")
+    print(f"  {len(result.trials)} evaluations")
+    if args.json:
+        _write(args.json, json.dumps({"scenario": scenario.name, **gamma_star_dict(result)}, indent=2) + "\n")
+    return 0
+
+
+def cmd_certify(args: argparse.Namespace) -> int:
+    from .analysis import certificates_dict
+
+    scenario = load_scenario(args.scenario)
+    c = _core.scenario_certificates(scenario)
+    print(f"scenario {scenario.name}: certificates of paper §3 at gamma = {scenario.gamma:g}")
+    print(f"  (22)  m = {c.m:.6g}, M = {c.M:.6g}   (m I <= Z(t) <= M I on [t0, tf])")
+    print(f"        kappa >= {c.kappa_min:.6g}" + ("" if c.kappa_min >= 0.5 else
+                                                    "  (below 1/2: the proof of eq. 23 does not apply)"))
+    print(f"  (23)  lambda_min(Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z) = {c.p_min:.6g}"
+          f" at t = {c.p_min_t:.6g}")
+    print(f"        remainder |f_e - A_e q_e| <= L |q_e|^2 with L = {c.remainder_L:.6g}: {c.remainder_method}")
+    print(f"  (24)  epsilon = {c.epsilon:.6g} (at t = {c.epsilon_t:.6g}): dV/dt <= -(p/2)|q_e|^2 for |q_e| < epsilon")
+    print(f"        errors with |q_e(t0)| < {c.attraction_radius:.6g} stay in that ball and decay:"
+          f" V(t) <= V(t0) exp(-{c.decay_rate:.6g} (t - t0))")
+    if args.json:
+        _write(args.json, json.dumps({"scenario": scenario.name, "gamma": scenario.gamma,
+                                      **certificates_dict(c)}, indent=2) + "\n")
+    return 0
+
+
+def cmd_sweep_gamma(args: argparse.Namespace) -> int:
+    from .analysis import sweep_figure, sweep_gamma
+
+    scenario = load_scenario(args.scenario)
+    sweep = sweep_gamma(scenario, count=args.count, upper=args.upper,
+                        zero_initial_error=not args.keep_initial_error, threads=args.threads)
+    print(f"scenario {scenario.name}: gamma* = {sweep.gamma_star:.6g}")
+    print(f"  {'gamma':>10}  {'L2 gain':>10}  {'L_gamma':>12}")
+    for g, gain, cost in zip(sweep.gammas, sweep.l2_gain, sweep.cost):
+        print(f"  {g:10.5g}  {gain:10.5g}  {cost:12.5g}")
+    if args.plot:
+        save_figure(sweep_figure(sweep), args.plot)
+        print(f"wrote {args.plot}")
+    if args.json:
+        _write(args.json, json.dumps(sweep.to_dict(), indent=2) + "\n")
     return 0
 
 
@@ -122,7 +213,36 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--json", help="write the results file (JSON)")
     run.add_argument("--csv", help="write the time series (CSV)")
     run.add_argument("--plot", help="write the x-y plot (PNG, PDF or SVG)")
+    run.add_argument("--gamma-star", action="store_true", help="also compute gamma* (eq. 14) for the results file")
     run.set_defaults(handler=cmd_run)
+
+    star = sub.add_parser("gamma-star", help="gamma* (eq. 14) of a scenario's design, by bisection")
+    star.add_argument("scenario", help="scenario file (TOML)")
+    star.add_argument("--output-feedback", action="store_true",
+                      help="the smallest gamma of the output-feedback design (needs [measurement])")
+    star.add_argument("--lower", type=float, default=0.0, help="lower end of the bracket (must fail)")
+    star.add_argument("--upper", type=float, default=0.0, help="upper end of the bracket (must pass)")
+    star.add_argument("--rtol", type=float, default=1e-6, help="relative width of the final bracket")
+    star.add_argument("--max-evaluations", type=int, default=200)
+    star.add_argument("--threads", type=int, default=2, help="evaluations in parallel per round")
+    star.add_argument("--json", help="write the result with every gamma tried (JSON)")
+    star.set_defaults(handler=cmd_gamma_star)
+
+    certify = sub.add_parser("certify", help="the certificates of paper §3 (eqs. 22-24)")
+    certify.add_argument("scenario", help="scenario file (TOML)")
+    certify.add_argument("--json", help="write the certificates (JSON)")
+    certify.set_defaults(handler=cmd_certify)
+
+    sweep = sub.add_parser("sweep-gamma", help="measured L2 gain and L_gamma against gamma")
+    sweep.add_argument("scenario", help="scenario file (TOML)")
+    sweep.add_argument("--count", type=int, default=12, help="number of gammas (default 12)")
+    sweep.add_argument("--upper", type=float, help="largest gamma (default max(4 gamma, 10 gamma*))")
+    sweep.add_argument("--keep-initial-error", action="store_true",
+                       help="start from the scenario's initial state (default: from the desired state)")
+    sweep.add_argument("--threads", type=int, default=2)
+    sweep.add_argument("--plot", help="write the figure (PNG, PDF or SVG)")
+    sweep.add_argument("--json", help="write the sweep (JSON)")
+    sweep.set_defaults(handler=cmd_sweep_gamma)
 
     paper = sub.add_parser("paper", help="the paper's runs: figures, results files and a metrics table")
     paper.add_argument("--out", default="out/paper", help="output folder (default: out/paper)")

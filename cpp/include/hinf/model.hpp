@@ -52,6 +52,11 @@ class Model {
   virtual Mat C(double t) const;
   virtual std::vector<int> noise_channels() const { return {}; }
 
+  // A bound L with |f_e(t, q_e) - A_e(t) q_e| <= L |q_e|^2 for all |q_e| <= radius (the
+  // remainder of the linearization, paper eqs. 11 and 24), or NaN if the model has none (the
+  // certificates then fall back on a sampled estimate, reported as such).
+  virtual double remainder_bound(double t, const ConstVecRef& q_d, double radius) const;
+
   // Names of the state components (for tables, CSV headers and plots).
   virtual std::vector<std::string> state_names() const;
   // Indices of the inertial position components used by the position-error metrics
@@ -101,6 +106,9 @@ class ShipModel final : public Model {
                    VecRef alpha) const override;
   // Position and heading are measured: C = [0 I3], noise on w4..w6.
   Mat C(double t) const override;
+  // Global bound (any radius): L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2); see
+  // model.cpp for the derivation.
+  double remainder_bound(double t, const ConstVecRef& q_d, double radius) const override;
   std::vector<int> noise_channels() const override { return {3, 4, 5}; }
   std::vector<std::string> state_names() const override;
   std::vector<int> position_indices() const override { return {3, 4}; }
@@ -126,6 +134,7 @@ class LinearModel final : public Model {
   Mat D(double) const override { return D_; }
   Mat C(double t) const override;
   std::vector<int> noise_channels() const override;
+  double remainder_bound(double, const ConstVecRef&, double) const override { return 0.0; }
   const Mat& A() const { return A_; }
 
  private:

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "hinf/analysis.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
@@ -74,6 +75,14 @@ struct RunResult {
 };
 
 RunResult run_scenario(const Scenario& scenario);
+
+// gamma* (eq. 14) of the scenario's state-feedback design (trajectory, Q, Qf, horizon; also
+// for a scenario with [measurement]). options.solver is replaced by the scenario's [solver].
+GammaStarResult scenario_gamma_star(const Scenario& scenario, GammaStarOptions options = {});
+// The smallest gamma of the scenario's output-feedback design (needs [measurement]).
+GammaStarResult scenario_gamma_star_output_feedback(const Scenario& scenario, GammaStarOptions options = {});
+// The certificates of paper §3 for the scenario's design (gamma, Q, Qf, kappa).
+Certificates scenario_certificates(const Scenario& scenario);
 
 // The standard normal noise samples of a scenario with [measurement] (from its seed).
 RowMat scenario_noise(const Scenario& scenario);

@@ -1,0 +1,85 @@
+// gamma*, conjugate points and the certificates of paper §3.
+//
+// gamma* (eq. 14) is the infimum of the gammas for which the GRDE (13) has no conjugate point
+// on [t0, tf]. Whether a given gamma passes is decided by grde_escape_time(), which follows
+// the inverse W = Z^-1 through an escape, so no escape between solver steps is missed. The
+// pass/fail answer is monotone in gamma, so gamma* is found by bisection (k-section: one
+// evaluation per thread and round).
+//
+// With imperfect measurements (paper §4) a gamma must also keep the filter Riccati equation
+// (36) (here with A = A_e(t)) bounded and positive definite and satisfy the coupling
+// condition rho(Sigma Z) < gamma^2 on [t0, tf]; each condition is monotone in gamma too.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hinf/riccati.hpp"
+#include "hinf/signal.hpp"
+
+namespace hinf {
+
+struct GammaStarOptions {
+  double lower = 0.0;        // bracket [lower, upper]: lower must fail, upper must pass;
+  double upper = 0.0;        // both 0: found automatically (doubling / halving from 1)
+  double rtol = 1e-6;        // stop when upper - lower <= rtol * upper
+  int max_evaluations = 200;
+  int threads = 2;           // evaluations run in parallel per round (>= 1)
+  SolverOptions solver;      // for every Riccati solve
+  void validate() const;
+};
+
+struct GammaTrial {
+  double gamma;
+  bool passed;
+  double t_escape;        // failure time (escape or coupling violation), NaN if passed
+  std::string condition;  // what failed: "grde", "filter" or "coupling"; empty if passed
+};
+
+struct GammaStarResult {
+  double gamma_star = NAN;  // the upper end of the final bracket: the smallest gamma known to pass
+  double lower = NAN;       // final bracket: lower fails (0 when every gamma > 0 passes)
+  double upper = NAN;
+  double t_escape_lower = NAN;  // where the lower end fails
+  std::string binding;          // the condition that fails at the lower end
+  bool converged = false;       // false: max_evaluations reached first
+  std::vector<GammaTrial> trials;  // every gamma tried, in the order evaluated
+};
+
+// gamma* of the state-feedback design (trajectory, Q, Qf, horizon).
+GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
+                           const GammaStarOptions& options = {});
+
+// The smallest gamma for the output-feedback design: no conjugate point of the GRDE, the
+// filter Riccati equation (36) with A_e(t) bounded and positive definite from Sigma0, and
+// rho(Sigma Z) < gamma^2 on [t0, tf]. binding names the condition that limits it.
+GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
+                                           const Mat& N, const Mat& Sigma0,
+                                           const GammaStarOptions& options = {});
+
+// The largest value of rho(Sigma(t) Z(t)) on [t0, tf] and where it is taken.
+std::pair<double, double> max_rho_sigma_z(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma);
+
+// The certificates of paper §3 for a design Z and a gain scaling kappa(t).
+struct Certificates {
+  double m = NAN, M = NAN;  // m I <= Z(t) <= M I on [t0, tf] (eq. 22)
+  double kappa_min = NAN;   // min kappa(t); the proof needs kappa >= 1/2
+  // Smallest eigenvalue over [t0, tf] of P(t) = Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z:
+  // V = q_e' Z q_e has dV/dt = -q_e' P q_e + 2 q_e' Z r(q_e) (eq. 23).
+  double p_min = NAN, p_min_t = NAN;
+  // L with |r(q_e)| = |f_e(q_e) - A_e q_e| <= L |q_e|^2 (the largest over [t0, tf]).
+  double remainder_L = NAN;
+  std::string remainder_method;  // how L was obtained (see Model::remainder_bound)
+  bool remainder_is_bound = false;  // false: a sampled estimate, not a proof
+  // Radius of eq. (24): with |r| <= L |q_e|^2 and |q_e| < epsilon = min_t p(t) / (4 M L(t)),
+  // |r| <= p |q_e| / (4 M), so dV/dt <= -(p/2) |q_e|^2 (exponential decay).
+  double epsilon = NAN, epsilon_t = NAN;
+  // Initial errors with |q_e(t0)| < epsilon sqrt(m / M) never leave the epsilon-ball (V decays).
+  double attraction_radius = NAN;
+  // V(t) <= V(t0) exp(-decay_rate (t - t0)) inside the ball: decay_rate = p_min / (2 M).
+  double decay_rate = NAN;
+};
+
+Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q);
+
+}  // namespace hinf

@@ -1,0 +1,283 @@
+#include "hinf/analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <random>
+#include <thread>
+
+#include "hinf/checks.hpp"
+#include "hinf/errors.hpp"
+#include "extremum.hpp"
+#include "symmetric_extremes.hpp"
+
+namespace hinf {
+
+void GammaStarOptions::validate() const {
+  require(std::isfinite(lower) && std::isfinite(upper) && lower >= 0.0 && upper >= 0.0,
+          "the gamma* bracket must be finite and >= 0, got [", lower, ", ", upper, "]");
+  require((lower == 0.0 && upper == 0.0) || upper > lower,
+          "the gamma* bracket [", lower, ", ", upper, "] is empty or inverted: give lower < upper (or both 0 to",
+          " search automatically)");
+  require(std::isfinite(rtol) && rtol > 0.0 && rtol < 1.0, "the gamma* tolerance rtol must be in (0, 1), got ",
+          rtol);
+  require(max_evaluations >= 2, "max_evaluations must be >= 2, got ", max_evaluations);
+  require(threads >= 1, "threads must be >= 1, got ", threads);
+  solver.validate();
+}
+
+namespace {
+
+using Test = std::function<GammaTrial(double)>;
+
+// Evaluates the test at each gamma, in parallel (one thread each), in order of gamma.
+std::vector<GammaTrial> evaluate(const Test& test, const std::vector<double>& gammas) {
+  std::vector<GammaTrial> results(gammas.size());
+  if (gammas.size() == 1) {
+    results[0] = test(gammas[0]);
+    return results;
+  }
+  std::vector<std::exception_ptr> errors(gammas.size());
+  std::vector<std::thread> workers;
+  for (std::size_t i = 0; i < gammas.size(); ++i)
+    workers.emplace_back([&, i] {
+      try {
+        results[i] = test(gammas[i]);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+  for (std::thread& w : workers) w.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return results;
+}
+
+GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
+  o.validate();
+  GammaStarResult r;
+  auto run = [&](const std::vector<double>& gammas) {
+    std::vector<GammaTrial> trials = evaluate(test, gammas);
+    r.trials.insert(r.trials.end(), trials.begin(), trials.end());
+    return trials;
+  };
+  GammaTrial low, high;  // low fails, high passes
+  if (o.upper > 0.0) {
+    const std::vector<GammaTrial> ends = run(o.lower > 0.0 ? std::vector<double>{o.lower, o.upper}
+                                                           : std::vector<double>{o.upper});
+    high = ends.back();
+    require(high.passed, "gamma = ", o.upper, " (the upper end of the bracket) fails too (", high.condition,
+            " at t = ", high.t_escape, "): raise the upper end");
+    if (o.lower > 0.0) {
+      low = ends.front();
+      require(!low.passed, "gamma = ", o.lower, " (the lower end of the bracket) passes already: gamma* <= ",
+              o.lower, "; lower the lower end");
+    } else {
+      low = GammaTrial{0.0, false, NAN, "lower end 0"};
+    }
+  } else {
+    // Automatic bracket: from 1, double until a gamma passes or halve until one fails.
+    GammaTrial trial = run({1.0}).front();
+    if (trial.passed) {
+      high = trial;
+      for (;;) {
+        if (high.gamma < 1e-12) {  // every gamma passes: gamma* = 0 (no gamma-dependent term)
+          r.gamma_star = 0.0;
+          r.lower = 0.0;
+          r.upper = high.gamma;
+          r.converged = true;
+          return r;
+        }
+        trial = run({high.gamma / 2.0}).front();
+        if (!trial.passed) break;
+        high = trial;
+      }
+      low = trial;
+    } else {
+      low = trial;
+      for (;;) {
+        require(low.gamma < 1e12, "no gamma up to 1e12 passes (", low.condition, " fails at t = ",
+                low.t_escape, ")");
+        trial = run({low.gamma * 2.0}).front();
+        if (trial.passed) break;
+        low = trial;
+      }
+      high = trial;
+    }
+  }
+  // k-section: o.threads interior points per round, evaluated in parallel.
+  while (high.gamma - low.gamma > o.rtol * high.gamma &&
+         static_cast<int>(r.trials.size()) + o.threads <= o.max_evaluations) {
+    std::vector<double> gammas;
+    for (int i = 1; i <= o.threads; ++i)
+      gammas.push_back(low.gamma + (high.gamma - low.gamma) * i / (o.threads + 1));
+    for (const GammaTrial& t : run(gammas)) {
+      if (t.passed) {
+        high = t;
+        break;
+      }
+      low = t;
+    }
+  }
+  r.converged = high.gamma - low.gamma <= o.rtol * high.gamma;
+  r.gamma_star = high.gamma;
+  r.lower = low.gamma;
+  r.upper = high.gamma;
+  r.t_escape_lower = low.t_escape;
+  r.binding = low.condition;
+  return r;
+}
+
+GammaTrial fail(double gamma, double t, const char* condition) { return GammaTrial{gamma, false, t, condition}; }
+GammaTrial pass(double gamma) { return GammaTrial{gamma, true, NAN, ""}; }
+
+template <int N>
+double rho_at(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma, double t) {
+  const int n = Z.n();
+  Eigen::Matrix<double, N, N> z(n, n), s(n, n), w(n, n);
+  z = Z.Z(t);
+  s = Sigma.Sigma(t);
+  Eigen::LLT<Eigen::Matrix<double, N, N>> llt(s);
+  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+  const Eigen::Matrix<double, N, N> L = llt.matrixL();
+  w.noalias() = L.transpose() * z * L;
+  return detail::symmetric_eigen_max(w);
+}
+
+std::vector<double> merged_samples(const SymmetricSolution& a, const SymmetricSolution& b) {
+  std::vector<double> times = detail::step_samples(a.dense().breakpoints());
+  const std::vector<double> more = detail::step_samples(b.dense().breakpoints());
+  times.insert(times.end(), more.begin(), more.end());
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+}  // namespace
+
+std::pair<double, double> max_rho_sigma_z(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma) {
+  const std::vector<double> times = merged_samples(Z, Sigma);
+  if (Z.n() == 6) return detail::extremum_over(times, [&](double t) { return rho_at<6>(Z, Sigma, t); }, -1.0);
+  return detail::extremum_over(times, [&](double t) { return rho_at<Eigen::Dynamic>(Z, Sigma, t); }, -1.0);
+}
+
+GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
+                           const GammaStarOptions& options) {
+  require(trajectory != nullptr, "gamma_star needs a trajectory");
+  options.validate();
+  grde_escape_time(trajectory, Q, Qf, std::numeric_limits<double>::infinity(), options.solver);  // input checks
+  return bisect([&](double gamma) {
+    const double t = grde_escape_time(trajectory, Q, Qf, gamma, options.solver);
+    return std::isnan(t) ? pass(gamma) : fail(gamma, t, "grde");
+  }, options);
+}
+
+GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
+                                           const Mat& N, const Mat& Sigma0, const GammaStarOptions& options) {
+  require(trajectory != nullptr, "gamma_star_output_feedback needs a trajectory");
+  options.validate();
+  const double inf = std::numeric_limits<double>::infinity();
+  grde_escape_time(trajectory, Q, Qf, inf, options.solver);             // input checks
+  solve_filter_riccati(trajectory, N, Q, inf, Sigma0, options.solver);  // input checks
+  return bisect([&](double gamma) {
+    RiccatiSolutionPtr Z;
+    FilterRiccatiSolutionPtr Sigma;
+    try {
+      Z = solve_grde(trajectory, Q, Qf, gamma, options.solver);
+    } catch (const ConjugatePointError& e) {
+      return fail(gamma, e.t_escape(), "grde");
+    }
+    try {
+      Sigma = solve_filter_riccati(trajectory, N, Q, gamma, Sigma0, options.solver);
+    } catch (const ConjugatePointError& e) {
+      return fail(gamma, e.t_escape(), "filter");
+    }
+    double lo = 0.0, hi = 0.0;
+    Sigma->eigenvalue_bounds(lo, hi);
+    if (!(lo > 0.0)) return fail(gamma, NAN, "filter");
+    const auto [rho, t] = max_rho_sigma_z(*Z, *Sigma);
+    return rho < gamma * gamma ? pass(gamma) : fail(gamma, t, "coupling");
+  }, options);
+}
+
+namespace {
+
+// L(t) for the certificate: the model's bound, or a sampled estimate of
+// max |r(e)| / |e|^2 over random directions at a few radii (not a bound).
+double remainder_estimate(const Model& model, double t, const Vec& q_d, std::mt19937_64& rng) {
+  const int n = model.n();
+  Mat A(n, n);
+  model.dfdq(t, q_d, A);
+  Vec f0(n), f1(n), e(n);
+  model.f(t, q_d, f0);
+  std::normal_distribution<double> normal;
+  double worst = 0.0;
+  for (double radius : {1e-2, 1e-1, 0.5}) {
+    for (int k = 0; k < 32; ++k) {
+      for (int i = 0; i < n; ++i) e[i] = normal(rng);
+      e *= radius / e.norm();
+      model.f(t, q_d + e, f1);
+      worst = std::max(worst, (f1 - f0 - A * e).norm() / (radius * radius));
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q) {
+  const Trajectory& trajectory = Z.trajectory();
+  const Model& model = trajectory.model();
+  const int n = Z.n();
+  check_symmetric_weight(Q, n, "Q", false);
+  Certificates c;
+  Z.eigenvalue_bounds(c.m, c.M);
+  c.kappa_min = kappa.minimum(Z.t0(), Z.tf()).first;
+  const double inv_gamma2 = std::isinf(Z.gamma()) ? 0.0 : 1.0 / (Z.gamma() * Z.gamma());
+  const std::vector<double> times = detail::step_samples(Z.dense().breakpoints());
+
+  // p(t) = lambda_min(Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z), eq. (23).
+  auto p_at = [&](double t) {
+    const Mat Zt = Z.Z(t), B = model.B(t), D = model.D(t);
+    const Mat ZB = Zt * B, ZD = Zt * D;
+    Mat P = Q + (2.0 * kappa(t) - 1.0) * ZB * ZB.transpose() + inv_gamma2 * ZD * ZD.transpose();
+    P = 0.5 * (P + P.transpose());
+    double lo = 0.0, hi = 0.0;
+    detail::symmetric_eigen_extremes(P, lo, hi);
+    return lo;
+  };
+  std::tie(c.p_min, c.p_min_t) = detail::extremum_over(times, p_at, 1.0);
+
+  // L(t) and epsilon = min_t p(t) / (4 M L(t)), eq. (24).
+  const Vec q_d0 = trajectory.q_d(Z.t0());
+  const bool bounded = !std::isnan(model.remainder_bound(Z.t0(), q_d0, 1.0));
+  c.remainder_is_bound = bounded;
+  c.remainder_method = bounded ? "the model's remainder_bound (an analytic bound)"
+                               : "sampled estimate: max |r(e)| / |e|^2 over random e at radii 0.01, 0.1, 0.5"
+                                 " (not a bound)";
+  std::mt19937_64 rng(12345);
+  auto L_at = [&](double t) {
+    const Vec q_d = trajectory.q_d(t);
+    return bounded ? model.remainder_bound(t, q_d, std::numeric_limits<double>::infinity())
+                   : remainder_estimate(model, t, q_d, rng);
+  };
+  c.remainder_L = detail::extremum_over(times, L_at, -1.0).first;
+  if (c.p_min > 0.0) {
+    auto eps_at = [&](double t) {
+      const double L = L_at(t);
+      return L > 0.0 ? p_at(t) / (4.0 * c.M * L) : std::numeric_limits<double>::infinity();
+    };
+    std::tie(c.epsilon, c.epsilon_t) = detail::extremum_over(times, eps_at, 1.0);
+    c.attraction_radius = c.epsilon * std::sqrt(c.m / c.M);
+    c.decay_rate = c.p_min / (2.0 * c.M);
+  } else {
+    c.epsilon = 0.0;
+    c.attraction_radius = 0.0;
+    c.decay_rate = 0.0;
+  }
+  return c;
+}
+
+}  // namespace hinf
