@@ -181,6 +181,16 @@ VectorSignal to_vector_signal(const py::object& value, int dim, const char* what
                            dim, " Signals or numbers, or None"));
 }
 
+// A Disturbance from a Disturbance or anything to_vector_signal takes.
+Disturbance to_disturbance(const py::object& value, int dim) {
+  if (py::isinstance<Disturbance>(value)) {
+    Disturbance d = value.cast<Disturbance>();
+    require(d.dim() == dim, "the disturbance has ", d.dim(), " channels, expected ", dim);
+    return d;
+  }
+  return Disturbance(to_vector_signal(value, dim, "disturbance"));
+}
+
 void register_exceptions(py::module_& m) {
   static py::exception<HinfError> hinf_error(m, "HinfError", PyExc_RuntimeError);
   static py::exception<SolverError> solver_error(m, "SolverError", hinf_error.ptr());
@@ -520,6 +530,41 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def(py::init<RiccatiSolutionPtr, Signal>(), py::arg("solution"), py::arg("kappa") = Signal(1.0))
       .def_property_readonly("kappa", &HinfStateFeedback::kappa);
 
+  py::class_<CascadeGains>(m, "CascadeGains", "Gains k, k1, k2 > 0 of the cascade baseline")
+      .def(py::init([](double k, double k1, double k2) { return CascadeGains{k, k1, k2}; }), py::arg("k") = 0.2,
+           py::arg("k1") = 2.0, py::arg("k2") = 3.0)
+      .def_readwrite("k", &CascadeGains::k)
+      .def_readwrite("k1", &CascadeGains::k1)
+      .def_readwrite("k2", &CascadeGains::k2)
+      .def("__repr__", [](const CascadeGains& g) {
+        return str_cat("CascadeGains(k=", g.k, ", k1=", g.k1, ", k2=", g.k2, ")");
+      });
+
+  py::class_<CascadeController, Controller, py::smart_holder>(
+      m, "CascadeController", "Cascaded tracking baseline for the ship (Lefeber, Pettersen, Nijmeijer type)")
+      .def(py::init<TrajectoryPtr, const CascadeGains&>(), py::arg("trajectory"), py::arg("gains") = CascadeGains{})
+      .def_property_readonly("gains", &CascadeController::gains);
+  m.def("wrap_angle", &wrap_angle, py::arg("angle"), "the angle wrapped to (-pi, pi]");
+
+  py::class_<Disturbance>(m, "Disturbance",
+                          "w(t, q) = signals(t) [+ gamma^-2 D' Z q_e, the worst case of paper eq. (16)]")
+      .def(py::init([](const py::object& signals, int dim) {
+             return Disturbance(to_vector_signal(signals, dim, "signals"));
+           }),
+           py::arg("signals"), py::arg("dim"))
+      .def(py::init([](const py::object& signals, const RiccatiSolutionPtr& design) {
+             require(design != nullptr, "the worst-case disturbance needs a design");
+             return Disturbance(to_vector_signal(signals, design->trajectory().model().nw(), "signals"), design);
+           }),
+           py::arg("signals"), py::arg("worst_case_design"))
+      .def_property_readonly("dim", &Disturbance::dim)
+      .def_property_readonly("worst_case", &Disturbance::worst_case)
+      .def("__call__", [](const Disturbance& d, double t, const Vec& q) {
+        Vec w(d.dim());
+        d.eval(t, q.data(), w.data());
+        return w;
+      }, py::arg("t"), py::arg("q"));
+
   py::class_<SimulationResult>(m, "SimulationResult", "Time series on the output grid, one row per time")
       .def_readonly("t", &SimulationResult::t)
       .def_readonly("q", &SimulationResult::q)
@@ -540,7 +585,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
   m.def("simulate_state_feedback",
         [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance,
            const Vec& q0, double output_dt, const SolverOptions& options) {
-          const VectorSignal w = to_vector_signal(disturbance, trajectory.model().nw(), "disturbance");
+          const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
           py::gil_scoped_release release;
           return simulate_state_feedback(trajectory, controller, w, q0, output_dt, options);
         },
@@ -580,16 +625,23 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
   m.def("standard_normal_samples", &standard_normal_samples, py::arg("seed"), py::arg("count"),
         py::arg("channels"), "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
   m.def("simulate_output_feedback",
-        [](const RiccatiSolution& grde, const Signal& kappa, const py::object& disturbance, const Vec& q0,
-           const RowMat& noise, const OutputFeedbackOptions& options, double output_dt,
+        [](const RiccatiSolutionPtr& grde, const py::object& controller, const py::object& disturbance,
+           const Vec& q0, const RowMat& noise, const OutputFeedbackOptions& options, double output_dt,
            const SolverOptions& solver) {
-          const VectorSignal w = to_vector_signal(disturbance, grde.trajectory().model().nw(), "disturbance");
+          require(grde != nullptr, "simulate_output_feedback needs a GRDE solution");
+          const Disturbance w = to_disturbance(disturbance, grde->trajectory().model().nw());
+          // A Controller, or kappa (a Signal or a number) for the H-infinity law (34).
+          std::shared_ptr<Controller> law;
+          if (py::isinstance<Controller>(controller)) law = controller.cast<std::shared_ptr<Controller>>();
+          else law = std::make_shared<HinfStateFeedback>(grde, controller.cast<Signal>());
           py::gil_scoped_release release;
-          return simulate_output_feedback(grde, kappa, w, q0, noise, options, output_dt, solver);
+          return simulate_output_feedback(*grde, *law, w, q0, noise, options, output_dt, solver);
         },
-        py::arg("grde"), py::arg("kappa"), py::arg("disturbance"), py::arg("q0"), py::arg("noise"),
+        py::arg("grde"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"), py::arg("noise"),
         py::arg("options"), py::arg("output_dt") = 0.01, py::arg("solver") = SolverOptions{},
-        "Output-feedback closed loop (paper 34-36); noise: standard normal samples, one row per hold interval");
+        "Output-feedback closed loop (paper 34-36): filter and estimator of grde, control by `controller` (a"
+        " Controller, or kappa for the H-infinity law) at the estimate; noise: standard normal samples, one"
+        " row per hold interval");
   m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
   m.def("compute_metrics", [](const Model& model, const SimulationResult& run, const Mat& Q) {
     return metrics_dict(compute_metrics(model, run, Q));
@@ -703,6 +755,9 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readwrite("Q", &Scenario::Q)
       .def_readwrite("Qf", &Scenario::Qf)
       .def_readwrite("kappa", &Scenario::kappa)
+      .def_readwrite("law", &Scenario::law)
+      .def_readwrite("cascade", &Scenario::cascade)
+      .def_readwrite("worst_case", &Scenario::worst_case)
       .def_property("disturbance", [](const Scenario& s) { return s.disturbance; },
                     [](Scenario& s, const py::object& v) {
                       require(s.model != nullptr, "set Scenario.model before disturbance");

@@ -55,14 +55,15 @@ class OutputFeedbackSystem {
   using MatN = Eigen::Matrix<double, N, N>;
   using VecN = Eigen::Matrix<double, N, 1>;
 
-  OutputFeedbackSystem(const RiccatiSolution& grde, const Signal& kappa, const VectorSignal& disturbance,
+  OutputFeedbackSystem(const RiccatiSolution& grde, Controller& controller, const Disturbance& disturbance,
                        const OutputFeedbackOptions& o)
-      : grde_(grde), trajectory_(grde.trajectory()), model_(trajectory_.model()), kappa_(kappa),
+      : grde_(grde), trajectory_(grde.trajectory()), model_(trajectory_.model()), controller_(controller),
         disturbance_(disturbance), options_(o), n_(grde.n()), m_(model_.m()), nw_(model_.nw()),
         noise_channels_(model_.noise_channels()), constant_(model_.constant_input_matrices()),
         inv_gamma2_(std::isinf(grde.gamma()) ? 0.0 : 1.0 / (grde.gamma() * grde.gamma())) {
     for (auto* M : {&Z_, &Sigma_, &A_, &A_f_, &T_, &G_, &DDt_, &S_f_, &gain_lhs_, &CtNinvC_}) M->resize(n_, n_);
     for (auto* v : {&q_d_, &q_hat_, &Zq_, &alpha_, &dq_hat_, &error_, &noise_term_}) v->resize(n_);
+    q_estimate_.resize(n_);
     C_ = model_.C(trajectory_.t0());
     p_ = static_cast<int>(C_.rows());
     N_inv_ = o.N.inverse();
@@ -120,6 +121,17 @@ class OutputFeedbackSystem {
     detail::riccati_rhs(1.0, A_f_, DDt_, S_f_, Sigma_, T_, G_, dx + 2 * n_);
   }
 
+  // rho(Sigma Z) at (t, x).
+  double rho(double t, const double* x) {
+    evaluate_signals(t, x);
+    Eigen::LLT<MatN> llt(Sigma_);
+    if (llt.info() != Eigen::Success) return NAN;
+    T_ = llt.matrixL();
+    A_f_.noalias() = Z_ * T_;
+    G_.noalias() = T_.transpose() * A_f_;
+    return detail::symmetric_eigen_max(G_);
+  }
+
   // Values on the output grid at (t, x): u, w (noise channels included), y, the extreme
   // eigenvalues of Sigma and rho(Sigma Z).
   void outputs(double t, const double* x, double* u, double* w, double* y, double& sigma_min,
@@ -131,15 +143,7 @@ class OutputFeedbackSystem {
     Eigen::Map<Vec>(y, p_) = C_ * q + options_.sigma * noise_;
     detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
     // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L'.
-    Eigen::LLT<MatN> llt(Sigma_);
-    if (llt.info() != Eigen::Success) {
-      rho = NAN;
-      return;
-    }
-    T_ = llt.matrixL();
-    A_f_.noalias() = Z_ * T_;
-    G_.noalias() = T_.transpose() * A_f_;
-    rho = detail::symmetric_eigen_max(G_);
+    rho = this->rho(t, x);
   }
 
  private:
@@ -174,21 +178,18 @@ class OutputFeedbackSystem {
     unpack_symmetric(x + 2 * n_, Sigma_);
     for (int i = 0; i < n_; ++i) q_hat_[i] = x[n_ + i];
     Zq_.noalias() = Z_ * q_hat_;
-    // u = u_d - kappa B' Z q_hat
-    const double kappa = kappa_(t);
-    for (int i = 0; i < m_; ++i) u_[i] = 0.0;
-    if (constant_) B_sparse_.add_transpose_product(Zq_.data(), u_.data());
-    else u_.noalias() = B_.transpose() * Zq_;
-    for (int i = 0; i < m_; ++i) u_[i] = u_d_[i] - kappa * u_[i];
-    disturbance_.eval(t, w_.data());
+    // The control at the estimated state (for the H-infinity law: u_d - kappa B' Z q_hat).
+    q_estimate_ = q_d_ + q_hat_;
+    controller_.control(t, q_estimate_, u_);
+    disturbance_.eval(t, x, w_.data());
     for (int i = 0; i < p_; ++i) w_[noise_channels_[static_cast<std::size_t>(i)]] = noise_[i];
   }
 
   const RiccatiSolution& grde_;
   const Trajectory& trajectory_;
   const Model& model_;
-  const Signal& kappa_;
-  const VectorSignal& disturbance_;
+  Controller& controller_;
+  const Disturbance& disturbance_;
   const OutputFeedbackOptions& options_;
   int n_, m_, nw_, p_ = 0;
   std::vector<int> noise_channels_;
@@ -199,16 +200,17 @@ class OutputFeedbackSystem {
   SparseMatrix B_sparse_, D_sparse_;
   MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_, CtNinvC_;
   VecN q_d_, q_hat_, Zq_, alpha_, dq_hat_, error_, noise_term_;
+  Vec q_estimate_;
   Vec u_d_, u_, u_e_ = Vec(0), w_, noise_;
   std::vector<double> z_packed_;
 };
 
 template <int N>
-SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
-                               const VectorSignal& disturbance, const Vec& q0, const RowMat& noise,
+SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controller,
+                               const Disturbance& disturbance, const Vec& q0, const RowMat& noise,
                                const OutputFeedbackOptions& options, double output_dt,
                                const SolverOptions& solver) {
-  OutputFeedbackSystem<N> system(grde, kappa, disturbance, options);
+  OutputFeedbackSystem<N> system(grde, controller, disturbance, options);
   const Trajectory& trajectory = grde.trajectory();
   const Model& model = trajectory.model();
   const int n = system.n(), p = system.p(), dim = system.dim();
@@ -231,6 +233,14 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
   r.sigma_max_eig.resize(count);
   r.rho_sigma_z.resize(count);
 
+  auto coupling_error = [&](double t, double rho, const std::string& detail) {
+    return CouplingConditionError(
+        str_cat("coupling condition violated at t = ", t, ": rho(Sigma Z) = ", rho, " >= gamma^2 = ", gamma2,
+                " (paper §4: I - gamma^-2 Sigma Z must stay invertible). Increase gamma, or make Sigma(t0) ="
+                " (Q0 - eta I)^-1 smaller (larger Q0 - eta I)",
+                detail.empty() ? "; or ask to continue and only flag it" : detail),
+        t, rho, grde.gamma());
+  };
   // Records output time k from the state x; the noise sample is the one held at grid[k].
   std::size_t cursor = 0;
   auto record = [&](long k, const double* x) {
@@ -253,13 +263,7 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
                         t, "SIGMA_NOT_POSITIVE_DEFINITE");
     if (!(rho < gamma2) && std::isnan(r.coupling_violation_t)) {
       r.coupling_violation_t = t;
-      if (options.stop_on_coupling_violation)
-        throw CouplingConditionError(
-            str_cat("coupling condition violated at t = ", t, ": rho(Sigma Z) = ", rho,
-                    " >= gamma^2 = ", gamma2, " (paper §4: I - gamma^-2 Sigma Z must stay invertible)."
-                    " Increase gamma, or make Sigma(t0) = (Q0 - eta I)^-1 smaller (larger Q0 - eta I);"
-                    " or ask to continue and only flag it"),
-            t, rho, grde.gamma());
+      if (options.stop_on_coupling_violation) throw coupling_error(t, rho, "");
     }
   };
 
@@ -296,14 +300,17 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
     if (solver.method == Method::ERK || solver.method == Method::BDF) {
       // Dormand-Prince per hold interval; for "bdf", a switch to the L-stable SDIRK4 once
       // Dormand-Prince's stiffness test fires.
-      Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, solver.max_steps);
+      // Steps per hold interval are capped: a closed loop stuck near a singular estimator gain
+      // fails fast instead of spending max_steps.
+      const long per_interval = std::min<long>(solver.max_steps, 20000);
+      Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, per_interval);
       std::unique_ptr<Sdirk4> implicit_stepper;
       r.integrator = "dormand-prince 5(4) per hold interval";
       for (long k = 0; k < samples; ++k) {
         const double ta = t0 + static_cast<double>(k) * T, tb = interval_end(k);
         system.set_noise(noise.row(k).data());
         if (solver.method == Method::BDF && !implicit_stepper && explicit_stepper.stiff()) {
-          implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol, solver.max_steps);
+          implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol, per_interval);
           r.integrator += str_cat(", then SDIRK4 from t = ", ta, " (stiffness detected)");
         }
         if (implicit_stepper) {
@@ -357,6 +364,17 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
       }
     }
   } catch (const SolverError& e) {
+    // x holds the last accepted state. Near a coupling violation the estimator gain
+    // [I - gamma^-2 Sigma Z]^-1 blows up and the integration stops before the next output time.
+    if (!std::isnan(r.coupling_violation_t))
+      throw SolverError(str_cat("output-feedback closed loop stopped at t = ", e.t(), " after the coupling condition",
+                                " rho(Sigma Z) < gamma^2 was violated at t = ", r.coupling_violation_t,
+                                " (flagged): past the violation the estimator gain [I - gamma^-2 Sigma Z]^-1",
+                                " becomes singular. Increase gamma or Q0 - eta I. [", e.what(), "]"),
+                        e.t(), "COUPLING_VIOLATED");
+    const double rho = system.rho(e.t(), x.data());
+    if (rho >= (1.0 - 1e-3) * gamma2)
+      throw coupling_error(e.t(), rho, str_cat(" (between output times: the integration stopped there, ", e.what(), ")"));
     throw SolverError(str_cat("output-feedback closed loop: ", e.what()), e.t(), e.flag());
   }
   return r;
@@ -364,8 +382,8 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, const Signal& kappa,
 
 }  // namespace
 
-SimulationResult simulate_output_feedback(const RiccatiSolution& grde, const Signal& kappa,
-                                          const VectorSignal& disturbance, const Vec& q0,
+SimulationResult simulate_output_feedback(const RiccatiSolution& grde, Controller& controller,
+                                          const Disturbance& disturbance, const Vec& q0,
                                           const RowMat& noise, const OutputFeedbackOptions& options,
                                           double output_dt, const SolverOptions& solver) {
   const Trajectory& trajectory = grde.trajectory();
@@ -392,9 +410,11 @@ SimulationResult simulate_output_feedback(const RiccatiSolution& grde, const Sig
           options.sample_period, " s sample) and ", p, " columns, got (", noise.rows(), ", ",
           noise.cols(), ")");
   check_finite(noise, "noise");
+  require(controller.m() == model.m(), "the controller gives ", controller.m(), " inputs, the model has ",
+          model.m());
   if (n == 6)
-    return simulate_impl<6>(grde, kappa, disturbance, q0, noise, options, output_dt, solver);
-  return simulate_impl<Eigen::Dynamic>(grde, kappa, disturbance, q0, noise, options, output_dt, solver);
+    return simulate_impl<6>(grde, controller, disturbance, q0, noise, options, output_dt, solver);
+  return simulate_impl<Eigen::Dynamic>(grde, controller, disturbance, q0, noise, options, output_dt, solver);
 }
 
 }  // namespace hinf

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include "hinf/checks.hpp"
 #include "hinf/controller.hpp"
@@ -22,8 +24,7 @@ Scenario Scenario::resolved() const {
     if (ms.Q0.size() == 0) ms.Q0 = 2.0 * Mat::Identity(n, n);
     const int p = static_cast<int>(model->C(s.t0).rows());
     if (ms.N.size() == 0) {
-      require(ms.sigma > 0.0, "[measurement] N must be given when sigma = 0 (the default N is sigma^2 I)");
-      ms.N = ms.sigma * ms.sigma * Mat::Identity(p, p);
+      if (ms.sigma > 0.0) ms.N = ms.sigma * ms.sigma * Mat::Identity(p, p);  // else validate() reports it
     } else if (ms.N.rows() == 1 && ms.N.cols() == 1 && p != 1) {
       ms.N = ms.N(0, 0) * Mat::Identity(p, p);
     }
@@ -49,10 +50,22 @@ void Scenario::validate() const {
   require(std::isfinite(kappa_min) && kappa_min > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(",
           kappa_min_t, ") = ", kappa_min);
   output_grid(t0, tf, output_dt);  // checks dt
+  require(law == "hinf" || law == "lqr" || law == "cascade", "[controller] law must be \"hinf\", \"lqr\" or",
+          " \"cascade\", got \"", law, "\"");
+  if (law == "cascade") {
+    require(dynamic_cast<const ShipModel*>(model.get()) != nullptr,
+            "[controller] law = \"cascade\" is written for the ship model; the model is '", model->name(), "'");
+    for (double g : {cascade.k, cascade.k1, cascade.k2})
+      require(std::isfinite(g) && g > 0.0, "[controller] cascade gains k, k1, k2 must be > 0, got (", cascade.k,
+              ", ", cascade.k1, ", ", cascade.k2, ")");
+  }
+  require(!worst_case || std::isfinite(gamma),
+          "[disturbance] worst_case needs a finite gamma: the worst-case disturbance gamma^-2 D' Z q_e is 0 at inf");
   if (measurement) {
     const MeasurementSpec& ms = *measurement;
     const int p = static_cast<int>(model->C(t0).rows());
     require(std::isfinite(ms.sigma) && ms.sigma >= 0.0, "[measurement] sigma must be >= 0, got ", ms.sigma);
+    require(ms.N.size() > 0, "[measurement] N must be given when sigma = 0 (the default N is sigma^2 I)");
     require(std::isfinite(ms.sample_period) && ms.sample_period > 0.0,
             "[measurement] sample_period must be > 0, got ", ms.sample_period);
     check_symmetric_weight(ms.N, p, "[measurement] N", true);
@@ -114,14 +127,20 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
 
   RunResult result;
   result.scenario_name = s.name;
-  result.gamma = s.gamma;
+  result.controller = s.law;
+  result.gamma = s.law == "lqr" ? std::numeric_limits<double>::infinity() : s.gamma;
   result.trajectory = trajectory_of(s);
-  result.solution = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
+  // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
+  result.solution = solve_grde(result.trajectory, s.Q, s.Qf, result.gamma, s.solver);
+  RiccatiSolutionPtr game = result.solution;  // the H-infinity design at the scenario's gamma
+  if (s.worst_case && s.law == "lqr") game = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
   result.timing.design = seconds_since(start);
 
   const auto simulate_start = std::chrono::steady_clock::now();
-  HinfStateFeedback controller(result.solution, s.kappa);
-  result.controller = controller.name();
+  std::unique_ptr<Controller> controller;
+  if (s.law == "cascade") controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
+  else controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
+  const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
   if (s.measurement) {
     const MeasurementSpec& ms = *s.measurement;
     OutputFeedbackOptions o;
@@ -134,11 +153,11 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
     o.stop_on_coupling_violation = ms.on_coupling_violation == "error";
     result.controller += "-output-feedback";
     const RowMat seeded = noise == nullptr ? scenario_noise(s) : RowMat();
-    result.simulation = simulate_output_feedback(*result.solution, s.kappa, s.disturbance, s.initial_q0,
+    result.simulation = simulate_output_feedback(*result.solution, *controller, disturbance, s.initial_q0,
                                                  noise == nullptr ? seeded : *noise, o, s.output_dt,
                                                  s.solver);
   } else {
-    result.simulation = simulate_state_feedback(*result.trajectory, controller, s.disturbance,
+    result.simulation = simulate_state_feedback(*result.trajectory, *controller, disturbance,
                                                 s.initial_q0, s.output_dt, s.solver);
   }
   result.timing.simulate = seconds_since(simulate_start);

@@ -299,8 +299,17 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   }
   {
     TableReader r(*section(root, "controller", source, true), "[controller]", source,
-                  {"gamma", "Q", "Qf", "kappa"});
+                  {"gamma", "Q", "Qf", "kappa", "law", "cascade"});
     s.gamma = r.number("gamma");
+    s.law = r.string_or("law", s.law);
+    if (const toml::node* node = r.get("cascade")) {
+      const toml::table* table = node->as_table();
+      if (table == nullptr) r.fail("cascade", "expected a table { k = ..., k1 = ..., k2 = ... }, got " + type_name(*node));
+      TableReader g(*table, "[controller]", source, {"k", "k1", "k2"}, "cascade.");
+      s.cascade.k = g.number_or("k", s.cascade.k);
+      s.cascade.k1 = g.number_or("k1", s.cascade.k1);
+      s.cascade.k2 = g.number_or("k2", s.cascade.k2);
+    }
     if (r.has("Q")) s.Q = r.matrix("Q", n, n, true);
     if (r.has("Qf")) s.Qf = r.matrix("Qf", n, n, true);
     if (r.has("kappa")) s.kappa = r.signal("kappa");
@@ -310,7 +319,9 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     if (const toml::table* table = section(root, "disturbance", source, false)) {
       std::vector<std::string> known;
       for (int i = 1; i <= nw; ++i) known.push_back(str_cat("w", i));
+      known.push_back("worst_case");
       TableReader r(*table, "[disturbance]", source, known);
+      s.worst_case = r.boolean_or("worst_case", false);
       for (int i = 1; i <= nw; ++i)
         if (r.has(str_cat("w", i))) channels[static_cast<std::size_t>(i - 1)] = r.signal(str_cat("w", i));
     }

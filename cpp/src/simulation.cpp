@@ -36,7 +36,7 @@ void eval_dense(const double* c, int degree, int dim, double theta, double* out)
 }  // namespace
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
-                                         const VectorSignal& disturbance, const Vec& q0,
+                                         const Disturbance& disturbance, const Vec& q0,
                                          double output_dt, const SolverOptions& options) {
   const Model& model = trajectory.model();
   const int n = model.n(), m = model.m(), nw = model.nw();
@@ -59,7 +59,7 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
     Eigen::Map<Vec> out(dydt, n);
     model.f(t, q, out);
     controller.control(t, q, u);
-    disturbance.eval(t, w.data());
+    disturbance.eval(t, y, w.data());
     if (constant_BD) {
       B_sparse.add_product(u.data(), dydt);
       D_sparse.add_product(w.data(), dydt);
@@ -122,7 +122,7 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
     trajectory.q_d(t, result.q_d.row(k).data(), &cursor);
     trajectory.u_d(t, result.u_d.row(k).data());
     controller.control(t, result.q.row(k).transpose(), result.u.row(k).transpose());
-    disturbance.eval(t, result.w.row(k).data());
+    disturbance.eval(t, result.q.row(k).data(), result.w.row(k).data());
   }
   return result;
 }

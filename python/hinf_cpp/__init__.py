@@ -12,10 +12,13 @@ from importlib import resources as _resources
 import pathlib as _pathlib
 
 from ._core import (
+    CascadeController,
+    CascadeGains,
     Certificates,
     ConjugatePointError,
     Controller,
     CouplingConditionError,
+    Disturbance,
     FilterRiccatiSolution,
     GammaStarOptions,
     GammaStarResult,
@@ -60,6 +63,7 @@ from ._core import (
     solve_filter_riccati,
     solve_grde,
     standard_normal_samples,
+    wrap_angle,
 )
 from .scenario import load_scenario, scenario_from_dict, signal_from_spec
 
@@ -74,10 +78,13 @@ def scenario_path(name: str) -> _pathlib.Path:
 
 
 __all__ = [
+    "CascadeController",
+    "CascadeGains",
     "Certificates",
     "ConjugatePointError",
     "Controller",
     "CouplingConditionError",
+    "Disturbance",
     "FilterRiccatiSolution",
     "GammaStarOptions",
     "GammaStarResult",
@@ -126,4 +133,5 @@ __all__ = [
     "solve_filter_riccati",
     "solve_grde",
     "standard_normal_samples",
+    "wrap_angle",
 ]

@@ -241,8 +241,19 @@ def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
     s.desired_u = _core.VectorSignal([r.signal(key) for key in inputs])
 
     r = _Table(_section(root, "controller", source, True), "[controller]", source,
-               ["gamma", "Q", "Qf", "kappa"])
+               ["gamma", "Q", "Qf", "kappa", "law", "cascade"])
     s.gamma = r.number("gamma")
+    s.law = r.string("law", s.law)
+    if r.has("cascade"):
+        table = root["controller"]["cascade"]
+        if not isinstance(table, dict):
+            r.fail("cascade", f"expected a table {{ k = ..., k1 = ..., k2 = ... }}, got {_type_name(table)}")
+        g = _Table(table, "[controller]", source, ["k", "k1", "k2"], "cascade.")
+        gains = s.cascade
+        gains.k = g.number("k", gains.k)
+        gains.k1 = g.number("k1", gains.k1)
+        gains.k2 = g.number("k2", gains.k2)
+        s.cascade = gains
     if r.has("Q"):
         s.Q = r.matrix("Q", n, n, True)
     if r.has("Qf"):
@@ -254,7 +265,11 @@ def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
     table = _section(root, "disturbance", source, False)
     if table is not None:
         keys = [f"w{i}" for i in range(1, nw + 1)]
-        r = _Table(table, "[disturbance]", source, keys)
+        r = _Table(table, "[disturbance]", source, [*keys, "worst_case"])
+        if r.has("worst_case"):
+            if not isinstance(table["worst_case"], bool):
+                r.fail("worst_case", f"expected true or false, got {_type_name(table['worst_case'])}")
+            s.worst_case = table["worst_case"]
         for i, key in enumerate(keys):
             if r.has(key):
                 channels[i] = r.signal(key)

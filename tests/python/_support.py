@@ -178,3 +178,150 @@ def max_rel(a, b) -> float:
     """max |a - b| / max |b| (one relative error over all entries)."""
     a, b = np.asarray(a), np.asarray(b)
     return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+
+# ---- imperfect measurements (paper §4) ----
+
+# The ship measures x, y, psi (DESIGN.md "Imperfect measurements"): C = [0 I3].
+SHIP_C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+
+
+def ship_jacobian(q, p=PAPER_PARAMETERS) -> np.ndarray:
+    """df/dq of ship_drift, written out by hand."""
+    u, v, r, _, _, psi = q
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([
+        [-p["d_u"], p["m_u"] * r, p["m_u"] * v, 0.0, 0.0, 0.0],
+        [p["m_v"] * r, -p["d_v"], p["m_v"] * u, 0.0, 0.0, 0.0],
+        [p["m_r"] * v, p["m_r"] * u, -p["d_r"], 0.0, 0.0, 0.0],
+        [c, -s, 0.0, 0.0, 0.0, -u * s - v * c],
+        [s, c, 0.0, 0.0, 0.0, u * c - v * s],
+        [0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+    ])
+
+
+def ship_error_split(q_d, q_e, p=PAPER_PARAMETERS):
+    """(A(q_e), alpha(q_e)) of DESIGN.md (paper eqs. 26-31) with A12 = d alpha1/d q2 and
+    A21 = d alpha2/d q1 at 0 differentiated by hand; state order [u, v, r, x, y, psi],
+    q1 = [u, v, x, y] (indices 0, 1, 3, 4), q2 = [r, psi] (indices 2, 5)."""
+    ud, vd, rd, psid = q_d[0], q_d[1], q_d[2], q_d[5]
+    ue, ve, re, pe = q_e[0], q_e[1], q_e[2], q_e[5]
+    psi = psid + pe
+    c, s, cd, sd = math.cos(psi), math.sin(psi), math.cos(psid), math.sin(psid)
+    i1, i2 = [0, 1, 3, 4], [2, 5]
+    A11 = np.array([[-p["d_u"], p["m_u"] * (rd + re), 0, 0],
+                    [p["m_v"] * (rd + re), -p["d_v"], 0, 0],
+                    [c, -s, 0, 0],
+                    [s, c, 0, 0]])
+    alpha1 = np.array([p["m_u"] * vd * re,
+                       p["m_v"] * ud * re,
+                       ud * (c - cd) - vd * (s - sd),
+                       ud * (s - sd) + vd * (c - cd)])
+    A12 = np.array([[p["m_u"] * vd, 0.0],
+                    [p["m_v"] * ud, 0.0],
+                    [0.0, -ud * sd - vd * cd],
+                    [0.0, ud * cd - vd * sd]])
+    A21 = np.array([[p["m_r"] * vd, p["m_r"] * ud, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0]])
+    A22 = np.array([[-p["d_r"], 0.0], [1.0, 0.0]])
+    alpha2 = np.array([p["m_r"] * (ue * vd + ud * ve + ue * ve), 0.0])
+    q1, q2 = np.asarray(q_e)[i1], np.asarray(q_e)[i2]
+    A = np.zeros((6, 6))
+    A[np.ix_(i1, i1)] = A11
+    A[np.ix_(i1, i2)] = A12
+    A[np.ix_(i2, i1)] = A21
+    A[np.ix_(i2, i2)] = A22
+    alpha = np.zeros(6)
+    alpha[i1] = alpha1 - A12 @ q2
+    alpha[i2] = alpha2 - A21 @ q1
+    return A, alpha
+
+
+def filter_are(A, C, D, N, Q, gamma):
+    """Stabilizing solution X of the filter algebraic Riccati equation
+        A X + X A' - X (C' N^-1 C - gamma^-2 Q) X + D D' = 0
+    from SciPy, as the dual (control-form) ARE a'X + X a - X b r^-1 b' X + q = 0 with
+    a = A', q = D D' and, writing Q = L'L, b = [C' L'], r = diag(N, -gamma^2 I), so that
+    b r^-1 b' = C' N^-1 C - gamma^-2 L'L. gamma = inf: the Kalman-Bucy ARE (b = C', r = N)."""
+    n = A.shape[0]
+    if math.isinf(gamma):
+        X = linalg.solve_continuous_are(A.T, C.T, D @ D.T, N)
+    else:
+        w, V = np.linalg.eigh(0.5 * (Q + Q.T))
+        L = (V * np.sqrt(np.clip(w, 0.0, None))).T  # Q = L' L
+        p = C.shape[0]
+        R = np.zeros((p + n, p + n))
+        R[:p, :p] = N
+        R[p:, p:] = -gamma**2 * np.eye(n)
+        X = linalg.solve_continuous_are(A.T, np.hstack([C.T, L.T]), D @ D.T, R)
+    return 0.5 * (X + X.T)
+
+
+def filter_hamiltonian(A, S, R, Sigma0, t0, times):
+    """Exact Sigma(t) of the LTI forward Riccati equation dSigma/dt = A Sigma + Sigma A'
+    - Sigma S Sigma + R, Sigma(t0) = Sigma0: with Sigma = Y X^-1,
+    d[X; Y]/dt = [[-A', S], [R, A]] [X; Y], X(t0) = I, Y(t0) = Sigma0."""
+    n = A.shape[0]
+    H = np.block([[-A.T, S], [R, A]])
+    XY = expm_many(H, np.asarray(times) - t0) @ np.vstack([np.eye(n), Sigma0])
+    X, Y = XY[:, :n], XY[:, n:]
+    return np.transpose(np.linalg.solve(np.transpose(X, (0, 2, 1)), np.transpose(Y, (0, 2, 1))), (0, 2, 1))
+
+
+def spectral_radius_of_products(Sigma, Z) -> np.ndarray:
+    """rho(Sigma_k Z_k) for stacks of matrices, from the eigenvalues of the (non-symmetric)
+    product."""
+    return np.max(np.abs(np.linalg.eigvals(np.asarray(Sigma) @ np.asarray(Z))), axis=-1)
+
+
+def output_feedback_reference(t0, tf, q0, times, *, f, B, D, C, A_filter, q_d, u_d, Z, w,
+                              kappa, gamma, N, Q, Sigma0, sigma, noise, period,
+                              rtol=1e-11, atol=1e-12):
+    """The closed loop of paper §4 integrated with SciPy (DOP853), one hold interval at a time:
+        plant       dq/dt = f(t, q) + B u + D w(t),  u = u_d - kappa B' Z q_hat,
+        measurement y = C q + sigma v_k on [t0 + k T, t0 + (k+1) T),
+        estimator   dq_hat/dt = f(t, q_d + q_hat) - f(t, q_d) - (kappa B B' - gamma^-2 D D') Z q_hat
+                                + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y - C q_d - C q_hat),
+        filter      dSigma/dt = A Sigma + Sigma A' - Sigma (C'N^-1C - gamma^-2 Q) Sigma + D D',
+    with A = A_filter(t, q_d(t), q_hat) and A(q) q + alpha(q) = f_e(q) used in the estimator.
+    f, B, D, C are NumPy (f(t, q) the drift, B, D, C constant matrices); q_d, u_d, Z are callables
+    of t. Returns (q, q_hat, Sigma) at `times` (which must lie in [t0, tf])."""
+    n = len(q0)
+    g2 = 0.0 if math.isinf(gamma) else 1.0 / gamma**2
+    N_inv = np.linalg.inv(N)
+    S_f = C.T @ N_inv @ C - g2 * Q
+    DDt = D @ D.T
+    BBt = B @ B.T
+
+    def rhs(t, x, v):
+        q, q_hat, Sigma = x[:n], x[n:2 * n], x[2 * n:].reshape(n, n)
+        qd, Zt = q_d(t), Z(t)
+        u = u_d(t) - kappa * B.T @ Zt @ q_hat
+        dq = f(t, q) + B @ u + D @ w(t)
+        y = C @ q + sigma * v
+        gain = np.linalg.solve(np.eye(n) - g2 * Sigma @ Zt, Sigma @ C.T @ N_inv)
+        dq_hat = (f(t, qd + q_hat) - f(t, qd) - (kappa * BBt - g2 * DDt) @ Zt @ q_hat
+                  + gain @ (y - C @ qd - C @ q_hat))
+        A = A_filter(t, qd, q_hat)
+        dSigma = A @ Sigma + Sigma @ A.T - Sigma @ S_f @ Sigma + DDt
+        return np.concatenate([dq, dq_hat, dSigma.ravel()])
+
+    from scipy.integrate import solve_ivp
+
+    times = np.asarray(times, dtype=float)
+    out = np.empty((times.size, 2 * n + n * n))
+    x = np.concatenate([np.asarray(q0, dtype=float), np.zeros(n), np.asarray(Sigma0, dtype=float).ravel()])
+    k = 0
+    while True:
+        ta = t0 + k * period
+        if ta >= tf - 1e-12 * max(1.0, abs(tf)):
+            break
+        tb = min(tf, t0 + (k + 1) * period)
+        sol = solve_ivp(rhs, (ta, tb), x, method="DOP853", rtol=rtol, atol=atol, dense_output=True,
+                        args=(noise[k],))
+        assert sol.success, sol.message
+        inside = (times >= ta) & (times <= tb)
+        if np.any(inside):
+            out[inside] = sol.sol(times[inside]).T
+        x = sol.y[:, -1]
+        k += 1
+    return out[:, :n], out[:, n:2 * n], out[:, 2 * n:].reshape(-1, n, n)

@@ -9,8 +9,9 @@
 //                      q_hat(t0) = 0, y_e = y - C q_d(t); q_hat estimates the error q_e;
 //   filter (36):       dSigma/dt = A Sigma + Sigma A' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D D',
 //                      Sigma(t0) = (Q0 - eta I)^-1, A = A(q_hat(t)) or A_e(t) (filter_A);
-//   control (34):      u = u_d(t) - kappa B' Z(t) q_hat  (the paper's law is kappa = 1; the
-//                      estimator uses the control actually applied).
+//   control (34):      u = u_d(t) - kappa B' Z(t) q_hat (the paper's law, kappa = 1), or any
+//                      Controller evaluated at the estimated state q_d + q_hat (certainty
+//                      equivalence, for the baselines); the estimator uses the control applied.
 // The central controller needs I - gamma^-2 Sigma Z invertible: the coupling condition
 // rho(Sigma Z) < gamma^2 is checked at every output time.
 //
@@ -27,6 +28,8 @@
 #include <cstdint>
 
 #include "hinf/riccati.hpp"
+#include "hinf/controller.hpp"
+#include "hinf/disturbance.hpp"
 #include "hinf/signal.hpp"
 #include "hinf/simulation.hpp"
 
@@ -48,13 +51,14 @@ struct OutputFeedbackOptions {
   bool stop_on_coupling_violation = true;  // false: continue and report the first violation
 };
 
-// Simulates the output-feedback closed loop for the design `grde` (Z, gamma; its trajectory).
+// Simulates the output-feedback closed loop: filter and estimator of the design `grde` (Z,
+// gamma; its trajectory), control by `controller` at the estimated state q_d + q_hat.
 // noise: standard normal samples, one row per hold interval (noise_sample_count rows) and one
 // column per measured output. Fills q_hat, y, sigma_min_eig, sigma_max_eig, rho_sigma_z and
 // coupling_violation_t of the result. Throws CouplingConditionError when rho(Sigma Z) >=
 // gamma^2 at an output time (unless stop_on_coupling_violation is false).
-SimulationResult simulate_output_feedback(const RiccatiSolution& grde, const Signal& kappa,
-                                          const VectorSignal& disturbance, const Vec& q0,
+SimulationResult simulate_output_feedback(const RiccatiSolution& grde, Controller& controller,
+                                          const Disturbance& disturbance, const Vec& q0,
                                           const RowMat& noise, const OutputFeedbackOptions& options,
                                           double output_dt, const SolverOptions& solver);
 

@@ -40,7 +40,15 @@ struct Scenario {
   Mat Q;                      // empty: identity
   Mat Qf;                     // empty: identity
   Signal kappa = Signal(1.0);
+  // The tracking law: "hinf" (paper 17/18 and 34), "lqr" (the same design at gamma = inf;
+  // with [measurement]: the Kalman-Bucy filter too) or "cascade" (CascadeController; with
+  // [measurement] it acts on the H-infinity estimate of the design at gamma).
+  std::string law = "hinf";
+  CascadeGains cascade;
   VectorSignal disturbance;   // w(t), nw channels (dim 0: all zero)
+  // Adds the worst-case disturbance gamma^-2 D' Z q_e of paper eq. (16) (Z of the H-infinity
+  // design at gamma, whatever the law) to the disturbance signals.
+  bool worst_case = false;
   Vec initial_q0;             // q(t0)
   std::optional<MeasurementSpec> measurement;
   SolverOptions solver;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hinf/controller.hpp"
+#include "hinf/disturbance.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
 #include "hinf/solver_options.hpp"
@@ -39,7 +40,7 @@ struct SimulationResult {
 };
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
-                                         const VectorSignal& disturbance, const Vec& q0,
+                                         const Disturbance& disturbance, const Vec& q0,
                                          double output_dt, const SolverOptions& options);
 
 }  // namespace hinf

@@ -1,0 +1,37 @@
+// The disturbance w applied to the plant (all nw channels of the model):
+//     w(t, q) = signals(t) [+ w*(t, q)],
+// where w* = gamma^-2 D(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
+// for a design Z at gamma (scenario key [disturbance] worst_case = true): the adversary of the
+// game, feeding back the true error.
+#pragma once
+
+#include <memory>
+
+#include "hinf/riccati.hpp"
+#include "hinf/signal.hpp"
+
+namespace hinf {
+
+class Disturbance {
+ public:
+  Disturbance() = default;
+  Disturbance(VectorSignal signals);  // implicit: a VectorSignal is a disturbance
+  // signals + the worst-case disturbance of `design` (needs a finite gamma).
+  Disturbance(VectorSignal signals, RiccatiSolutionPtr design);
+
+  int dim() const { return signals_.dim(); }
+  bool worst_case() const { return design_ != nullptr; }
+  const VectorSignal& signals() const { return signals_; }
+  // w at time t for the actual state q (n numbers); writes dim() numbers. Keeps a lookup
+  // cursor: use one object per thread.
+  void eval(double t, const double* q, double* w) const;
+
+ private:
+  VectorSignal signals_;
+  RiccatiSolutionPtr design_;
+  mutable Mat D_;
+  mutable Vec q_d_, z_, Zq_;
+  mutable std::size_t q_cursor_ = 0, z_cursor_ = 0;
+};
+
+}  // namespace hinf
