@@ -118,7 +118,7 @@ class OutputFeedbackSystem {
       model_.dfdq(t, q_d_, T_);
       A_f_ = T_.transpose();
     }
-    detail::riccati_rhs(1.0, A_f_, DDt_, S_f_, Sigma_, T_, G_, dx + 2 * n_);
+    detail::riccati_rhs(1.0, A_f_, DDt_, S_f_, Sigma_, T_, G_, dx + 2 * n_, diagonal_S_f_);
   }
 
   // rho(Sigma Z) at (t, x).
@@ -156,6 +156,7 @@ class OutputFeedbackSystem {
     CtNinvC_ = C_.transpose() * N_inv_ * C_;
     S_f_ = CtNinvC_;
     if (inv_gamma2_ > 0.0) S_f_ -= inv_gamma2_ * options_.Q;
+    diagonal_S_f_ = detail::is_diagonal(S_f_);
   }
 
   // dx[0:n] += B u + D w.
@@ -195,6 +196,7 @@ class OutputFeedbackSystem {
   std::vector<int> noise_channels_;
   bool constant_;
   double inv_gamma2_;
+  bool diagonal_S_f_ = false;
   std::size_t q_cursor_ = 0, z_cursor_ = 0;
   Mat B_, D_, C_, N_inv_, CtNinv_;
   SparseMatrix B_sparse_, D_sparse_;

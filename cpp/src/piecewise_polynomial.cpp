@@ -50,24 +50,28 @@ void PiecewisePolynomial::finalize() {
 
 std::size_t PiecewisePolynomial::locate(double t, std::size_t* cursor) const {
   const std::size_t count = num_pieces();
-  if (count == 0) throw InputError("dense output is empty");
-  const double lo = t_min(), hi = t_max();
-  const double slack = 1e-12 * std::max({1.0, std::abs(lo), std::abs(hi)});
-  if (!(t >= lo - slack && t <= hi + slack))
-    throw InputError(str_cat("t = ", t, " is outside the solved interval [", lo, ", ", hi, "]"));
+  // Fast path: a sweep over sorted times stays in the cursor's piece or moves to a neighbour.
   if (cursor != nullptr && *cursor < count) {
     std::size_t k = *cursor;
-    // Sweeps over sorted times move by at most a few pieces.
-    for (int tries = 0; tries < 4; ++tries) {
-      const double a = lower_[k], b = a + std::abs(h_[k]);
-      if (t < a && k > 0) --k;
-      else if (t > b && k + 1 < count) ++k;
-      else {
+    for (int tries = 0; tries < 3; ++tries) {
+      const double a = lower_[k];
+      if (t < a) {
+        if (k == 0) break;
+        --k;
+      } else if (t > a + std::abs(h_[k])) {
+        if (k + 1 == count) break;
+        ++k;
+      } else {
         *cursor = k;
         return k;
       }
     }
   }
+  if (count == 0) throw InputError("dense output is empty");
+  const double lo = t_min(), hi = t_max();
+  const double slack = 1e-12 * std::max({1.0, std::abs(lo), std::abs(hi)});
+  if (!(t >= lo - slack && t <= hi + slack))
+    throw InputError(str_cat("t = ", t, " is outside the solved interval [", lo, ", ", hi, "]"));
   std::size_t k = static_cast<std::size_t>(std::upper_bound(lower_.begin(), lower_.end(), t) -
                                            lower_.begin());
   k = k == 0 ? 0 : k - 1;

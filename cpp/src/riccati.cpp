@@ -47,7 +47,7 @@ class RiccatiProblem {
   void rhs(double t, const double* x, double* dx) {
     linearize(t);
     unpack_symmetric(x, X_);
-    detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx);
+    detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx, diagonal_S_);
   }
 
   void jacobian(double t, const double* x, double* J) {
@@ -73,6 +73,7 @@ class RiccatiProblem {
     }
     R_ = inverted_ ? MatN(-S) : R;
     S_ = inverted_ ? MatN(-R) : S;
+    diagonal_S_ = detail::is_diagonal(S_);
   }
 
   void linearize(double t) {
@@ -93,6 +94,7 @@ class RiccatiProblem {
   double sign_;
   double inv_gamma2_;
   bool constant_;
+  bool diagonal_S_ = false;
   Mat Q_, N_inv_;
   std::size_t cursor_ = 0;
   VecN q_d_;

@@ -9,12 +9,22 @@
 
 namespace hinf::detail {
 
-// M'X + XM + R - XSX = G + G' with G = X (M - S X / 2) + R / 2: two n x n products.
-// T and G are workspaces of the size of X.
+// Whether S is diagonal (then S X is a row scaling: the ship's S = B B' - gamma^-2 D D' is).
+template <class MatN>
+bool is_diagonal(const MatN& S) {
+  for (Eigen::Index j = 0; j < S.cols(); ++j)
+    for (Eigen::Index i = 0; i < S.rows(); ++i)
+      if (i != j && S(i, j) != 0.0) return false;
+  return true;
+}
+
+// M'X + XM + R - XSX = G + G' with G = X (M - S X / 2) + R / 2: two n x n products (one when
+// S is diagonal: pass diagonal_S). T and G are workspaces of the size of X.
 template <class MatN>
 void riccati_rhs(double sign, const MatN& M, const MatN& R, const MatN& S, const MatN& X,
-                 MatN& T, MatN& G, double* dX) {
-  T.noalias() = S * X;
+                 MatN& T, MatN& G, double* dX, bool diagonal_S = false) {
+  if (diagonal_S) T.noalias() = S.diagonal().asDiagonal() * X;
+  else T.noalias() = S * X;
   T = M - 0.5 * T;
   G.noalias() = X * T;
   G += 0.5 * R;

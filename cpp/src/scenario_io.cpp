@@ -446,15 +446,21 @@ std::string results_csv(const RunResult& r) {
   for (int i = 1; i <= model.m(); ++i) os << ",u" << i << "_d";
   for (int i = 1; i <= model.nw(); ++i) os << ",w" << i;
   const bool estimated = s.q_hat.rows() == s.t.size() && s.t.size() > 0;
-  if (estimated)
+  if (estimated) {
     for (const std::string& name : names) os << "," << name << "_e_hat";
+    for (Eigen::Index i = 1; i <= s.y.cols(); ++i) os << ",y" << i;
+    os << ",sigma_min_eig,sigma_max_eig,rho_sigma_z";
+  }
   os << "\n";
   for (Eigen::Index k = 0; k < s.t.size(); ++k) {
     os << s.t[k];
     for (const RowMat* M : {&s.q, &s.q_d, &s.u, &s.u_d, &s.w})
       for (Eigen::Index i = 0; i < M->cols(); ++i) os << "," << (*M)(k, i);
-    if (estimated)
+    if (estimated) {
       for (Eigen::Index i = 0; i < s.q_hat.cols(); ++i) os << "," << s.q_hat(k, i);
+      for (Eigen::Index i = 0; i < s.y.cols(); ++i) os << "," << s.y(k, i);
+      os << "," << s.sigma_min_eig[k] << "," << s.sigma_max_eig[k] << "," << s.rho_sigma_z[k];
+    }
     os << "\n";
   }
   return os.str();
