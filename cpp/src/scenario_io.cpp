@@ -404,7 +404,7 @@ std::string results_json(const RunResult& r, int indent) {
   j["scenario"] = r.scenario_name;
   j["controller"] = r.controller;
   j["gamma"] = number(r.gamma);
-  j["Z0"] = matrix_json(r.Z0);
+  j["Z0"] = r.solution ? matrix_json(r.Z0) : nlohmann::json(nullptr);
   j["Z_min_eig"] = number(r.Z_min_eig);
   j["Z_max_eig"] = number(r.Z_max_eig);
   j["gamma_star"] = r.gamma_star ? number(*r.gamma_star) : nlohmann::json(nullptr);
@@ -424,12 +424,13 @@ std::string results_json(const RunResult& r, int indent) {
                    {"simulate", r.timing.simulate},
                    {"analysis", r.timing.analysis},
                    {"total", r.timing.total}};
-  const SolveStats& grde = r.solution->stats();
+  const SolveStats grde = r.solution ? r.solution->stats() : SolveStats{};
   j["solver"] = {{"grde_steps", grde.steps},
                  {"grde_rhs_evals", grde.rhs_evals},
                  {"grde_memory_bytes", grde.memory_bytes},
                  {"simulation_steps", r.simulation.stats.steps},
-                 {"simulation_rhs_evals", r.simulation.stats.rhs_evals}};
+                 {"simulation_rhs_evals", r.simulation.stats.rhs_evals},
+                 {"simulation_integrator", r.simulation.integrator}};
   return j.dump(indent);
 }
 

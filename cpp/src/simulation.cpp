@@ -74,6 +74,7 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   result.q.row(0) = q0.transpose();
   Vec y = q0;
 
+  result.integrator = options.method == Method::ERK ? "dormand-prince 5(4)" : "CVODE " + to_string(options.method);
   if (options.method == Method::ERK) {
     Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
     long next = 1;

@@ -1,7 +1,11 @@
 """hinf_cpp: H-infinity tracking control of nonlinear underactuated vehicles.
 
 The numerics (models, desired trajectories, the GRDE, the closed loop) live in the C++
-core ``hinf_cpp._core``; this package adds scenario files, plots and the command line.
+core ``hinf_cpp._core``; this package adds scenario files, plots and the command line:
+``hinf_cpp.compare`` (the H-infinity law against the lqr and cascade baselines),
+``hinf_cpp.recovery`` (poor initial conditions, turning around), ``hinf_cpp.plotting``
+(figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON)
+and ``hinf_cpp.analysis`` (attenuation against gamma).
 
 Conventions (docs/conventions.md): state order of the ship q = [u, v, r, x, y, psi];
 errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved

@@ -4,12 +4,15 @@ over a range of gammas above gamma*."""
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
+import threading
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
 from . import _core
+from .progress import ProgressCallback
 
 __all__ = ["GammaSweep", "cost_L_gamma", "sweep_gamma"]
 
@@ -51,14 +54,17 @@ class GammaSweep:
 
 def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None = None,
                 zero_initial_error: bool = True, threads: int = 2,
-                gamma_star_options: _core.GammaStarOptions | None = None) -> GammaSweep:
+                gamma_star_options: _core.GammaStarOptions | None = None,
+                progress: ProgressCallback | None = None) -> GammaSweep:
     """Runs the scenario at `count` gammas spaced geometrically from just above the smallest
     admissible gamma (gamma*, or the output-feedback one with [measurement]) to `upper`
     (default: the larger of 4 times the scenario's gamma and 10 gamma*).
 
     With zero_initial_error the runs start on the desired trajectory, so the measured gain is
     the disturbance-to-error gain that the design bounds by gamma for the linearized error
-    system (the worst case over all disturbances; the scenario's disturbance gains less)."""
+    system (the worst case over all disturbances; the scenario's disturbance gains less).
+
+    ``progress(index, total, message)`` is called as each run starts (from the worker threads)."""
     if count < 2:
         raise ValueError(f"sweep_gamma needs count >= 2, got {count}")
     options = gamma_star_options or _core.GammaStarOptions()
@@ -73,7 +79,13 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
         raise ValueError(f"the sweep's upper end {top:g} must exceed the smallest admissible gamma {lowest:g}")
     gammas = np.geomspace(lowest * (1.0 + 1e-3), top, count)
 
+    counter, lock = itertools.count(1), threading.Lock()
+
     def run(gamma: float) -> _core.RunResult:
+        if progress is not None:
+            with lock:
+                index = next(counter)
+            progress(index, len(gammas), f"running {scenario.name} at gamma = {gamma:.5g}")
         variant = scenario.copy()
         variant.gamma = float(gamma)
         if zero_initial_error:

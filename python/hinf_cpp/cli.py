@@ -1,13 +1,18 @@
 """The ``hinf-cpp`` command line.
 
-    hinf-cpp run SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--plot OUT.png] [--gamma-star]
+    hinf-cpp run SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--npz OUT.npz] [--plot OUT.png] [--gamma-star]
+    hinf-cpp compare SCENARIO.toml [--controllers hinf,lqr,cascade] [--feedback state,output]
+                     [--worst-case] [--json OUT.json] [--plot OUT.png] [--quiet]
+    hinf-cpp recovery [SCENARIO.toml ...] [--controllers ...] [--json OUT.json] [--plot OUT.png] [--quiet]
+    hinf-cpp report SCENARIO.toml --out DIR [--controllers ...] [--quiet]
     hinf-cpp gamma-star SCENARIO.toml [--output-feedback] [--json OUT.json] [bracket options]
     hinf-cpp certify SCENARIO.toml [--json OUT.json]
-    hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N]
-    hinf-cpp paper [--out DIR]
+    hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N] [--quiet]
+    hinf-cpp paper [--out DIR] [--quiet]
 
-Exit status: 0 success, 2 bad input, 3 numerical failure (solver, conjugate point,
-coupling condition). Errors are one line on stderr.
+Exit status: 0 success, 2 bad input (bad options included), 3 numerical failure (solver,
+conjugate point, coupling condition). Errors are one line on stderr. The longer commands
+show a live progress line on stderr when it is a terminal (off with --quiet).
 """
 
 from __future__ import annotations
@@ -15,12 +20,15 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import pathlib
 import sys
 
 from . import _core
 from .plotting import save_figure, xy_figure
+from .progress import Progress
 from .scenario import load_scenario
+from .tables import markdown_table, text_table
 
 METRIC_NAMES = [
     "rms_position_error_last_half",
@@ -86,6 +94,10 @@ def cmd_run(args: argparse.Namespace) -> int:
         _write(args.json, result.to_json() + "\n")
     if args.csv:
         _write(args.csv, result.to_csv())
+    if args.npz:
+        from .export import save_npz
+
+        save_npz(result, args.npz)
     if args.plot:
         save_figure(xy_figure(result), args.plot)
     print(summary(result))
@@ -154,8 +166,10 @@ def cmd_sweep_gamma(args: argparse.Namespace) -> int:
     from .analysis import sweep_figure, sweep_gamma
 
     scenario = load_scenario(args.scenario)
-    sweep = sweep_gamma(scenario, count=args.count, upper=args.upper,
-                        zero_initial_error=not args.keep_initial_error, threads=args.threads)
+    with Progress(quiet=args.quiet) as progress:
+        sweep = sweep_gamma(scenario, count=args.count, upper=args.upper,
+                            zero_initial_error=not args.keep_initial_error, threads=args.threads,
+                            progress=progress)
     print(f"scenario {scenario.name}: gamma* = {sweep.gamma_star:.6g}")
     print(f"  {'gamma':>10}  {'L2 gain':>10}  {'L_gamma':>12}")
     for g, gain, cost in zip(sweep.gammas, sweep.l2_gain, sweep.cost):
@@ -181,14 +195,118 @@ def metrics_markdown(rows: list[tuple[str, _core.RunResult]]) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _comparison_header(comparison) -> str:
+    return (f"scenario {comparison.scenario}: comparison of tracking laws (H-infinity design at gamma = "
+            f"{comparison.gamma:g})\n  disturbance: {comparison.disturbance['description']}")
+
+
+def _comparison_notes(comparison) -> list[str]:
+    notes = []
+    noisy = [run for run in comparison.runs if run.disturbance["measurement_noise"]]
+    if noisy:
+        noise = noisy[0].disturbance["measurement_noise"]
+        notes.append(f"  output-feedback runs: plus measurement noise sigma = {noise['sigma']:g} held over "
+                     f"{noise['sample_period']:g} s (seed {noise['seed']}) on {', '.join(noise['channels'])}")
+    for run in comparison.runs:
+        if run.error:
+            notes.append(f"  {run.key} failed: {run.error}")
+    return notes
+
+
+def cmd_compare(args: argparse.Namespace) -> int:
+    from .compare import compare, parse_controllers
+    from .plotting import paths_figure
+
+    controllers = parse_controllers(args.controllers)
+    scenario = load_scenario(args.scenario)
+    with Progress(quiet=args.quiet) as progress:
+        comparison = compare(scenario, controllers, feedback=args.feedback,
+                             worst_case=True if args.worst_case else None, progress=progress)
+    print(_comparison_header(comparison))
+    notes = _comparison_notes(comparison)
+    if notes:
+        print("\n".join(notes))
+    print()
+    print(text_table(*comparison.table()), end="")
+    if args.json:
+        _write(args.json, comparison.to_json() + "\n")
+        print(f"wrote {args.json}")
+    if args.plot:
+        runs = comparison.results()
+        if not runs:
+            raise _core.HinfError("every run failed: nothing to plot")
+        save_figure(paths_figure(runs), args.plot)
+        print(f"wrote {args.plot}")
+    return 0
+
+
+def cmd_recovery(args: argparse.Namespace) -> int:
+    from .compare import parse_controllers
+    from .plotting import recovery_figure
+    from .recovery import recovery_study
+
+    controllers = parse_controllers(args.controllers)
+    if not (args.position_tol > 0 and args.heading_tol > 0):
+        raise ValueError(f"--position-tol and --heading-tol must be > 0, got {args.position_tol:g} m and "
+                         f"{args.heading_tol:g} deg")
+    with Progress(quiet=args.quiet) as progress:
+        study = recovery_study(args.scenarios or None, controllers, position_tolerance=args.position_tol,
+                               heading_tolerance=math.radians(args.heading_tol), progress=progress)
+    definitions = study.to_dict()["definitions"]
+    print("recovery from poor initial conditions")
+    for key in ("recovers", "turns_around", "settling_time"):
+        print(f"  {key.replace('_', ' ')}: {definitions[key]}")
+    print()
+    print(text_table(*study.table()), end="")
+    for v in study.verdicts:
+        if v.error:
+            print(f"  {v.controller} on {v.scenario} failed: {v.error}")
+        elif v.turns_around:
+            print(f"  {v.controller} on {v.scenario} turns around: {v.turn.reason}")
+    if args.json:
+        _write(args.json, json.dumps(study.to_dict(), indent=2) + "\n")
+        print(f"wrote {args.json}")
+    if args.plot:
+        save_figure(recovery_figure(study), args.plot)
+        print(f"wrote {args.plot}")
+    return 0
+
+
+def cmd_report(args: argparse.Namespace) -> int:
+    from .compare import parse_controllers
+    from .report import write_report
+
+    controllers = parse_controllers(args.controllers)
+    scenario = load_scenario(args.scenario)
+    with Progress(quiet=args.quiet) as progress:
+        report = write_report(scenario, args.out, controllers, feedback=args.feedback,
+                              worst_case=True if args.worst_case else None, progress=progress)
+    print(_comparison_header(report.comparison))
+    notes = _comparison_notes(report.comparison)
+    if notes:
+        print("\n".join(notes))
+    print()
+    print(text_table(*report.comparison.table()), end="")
+    for run in report.comparison.runs:
+        if run.error:
+            print(f"  {run.key} failed: {run.error}")
+    names = ", ".join(sorted(p.name for p in report.files))
+    print(f"\nwrote the report to {report.folder}/ ({len(report.files)} files; open report.md): {names}")
+    return 0
+
+
 def cmd_paper(args: argparse.Namespace) -> int:
     from . import scenario_path
+    from .compare import compare
+    from .plotting import paths_figure
 
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = []
+    scenarios = {}
     for figure, name in [("Figure 1", "paper_fig1"), ("Figure 2", "paper_fig2")]:
-        result = _core.run_scenario(load_scenario(scenario_path(name)))
+        scenarios[name] = load_scenario(scenario_path(name))
+        result = _core.run_scenario(scenarios[name])
         stem = name.replace("paper_", "")
         _write(out / f"{stem}.json", result.to_json() + "\n")
         _write(out / f"{stem}.csv", result.to_csv())
@@ -199,12 +317,55 @@ def cmd_paper(args: argparse.Namespace) -> int:
     _write(out / "metrics.md", table)
     print()
     print(table, end="")
+
+    # The three laws on Figure 1 (state feedback) and on Figure 2 (output feedback).
+    sections = ["# The tracking laws compared on the paper's runs", "",
+                "hinf: the paper's H-infinity law (gamma = 5); lqr: the same design at gamma = inf (with "
+                "measurements, the Kalman-Bucy filter); cascade: the cascaded baseline (with measurements, "
+                "on the H-infinity estimate). Heading errors are wrapped to (-pi, pi]; 'last half' is "
+                f"t >= {0.5 * (scenarios['paper_fig1'].t0 + scenarios['paper_fig1'].tf):g} s; 'L2 gain (from "
+                "the desired start)' is the same run started on the desired trajectory, the disturbance's "
+                "gain alone.", ""]
+    with Progress(quiet=args.quiet) as progress:
+        for figure, name, feedback in [("Figure 1", "paper_fig1", "state"), ("Figure 2", "paper_fig2", "output")]:
+            comparison = compare(scenarios[name], feedback=feedback, progress=progress)
+            stem = name.replace("paper_", "")
+            mode = "state feedback" if feedback == "state" else "output feedback"
+            _write(out / f"comparison_{stem}.json", comparison.to_json() + "\n")
+            save_figure(paths_figure(comparison.results(),
+                                     title=f"Paper {figure} scenario: the three laws, {mode}"),
+                        out / f"comparison_{stem}_paths.png")
+            header, table_rows = comparison.table()
+            sections += [f"## {figure} scenario ({comparison.scenario}), {mode}", "",
+                         f"Disturbance: {comparison.runs[0].disturbance['description']}.", "",
+                         markdown_table(header, table_rows),
+                         f"![{figure}: x-y paths of the three laws](comparison_{stem}_paths.png)", ""]
+            print(f"\n{figure} scenario, {mode}: the three laws")
+            print(text_table(header, table_rows), end="")
+    _write(out / "comparison.md", "\n".join(sections))
     print(f"\nwrote {out}/: " + ", ".join(sorted(p.name for p in out.iterdir())))
+    print(f"output folder: {out.resolve()}")
     return 0
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with errors on one line of stderr (exit status 2), like every other error."""
+
+    def error(self, message: str):
+        self.exit(2, f"{self.prog}: error: {' '.join(message.split())} (see {self.prog} --help)\n")
+
+
+def _add_law_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--controllers", default="hinf,lqr,cascade",
+                        help="comma-separated laws among hinf, lqr, cascade (default: all three)")
+
+
+def _add_quiet(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="hinf-cpp", description=__doc__.split("\n")[0])
+    parser = _Parser(prog="hinf-cpp", description=__doc__.split("\n")[0])
     parser.add_argument("--version", action="version", version=_core.__version__)
     sub = parser.add_subparsers(dest="command", required=True)
 
@@ -212,9 +373,43 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("scenario", help="scenario file (TOML)")
     run.add_argument("--json", help="write the results file (JSON)")
     run.add_argument("--csv", help="write the time series (CSV)")
+    run.add_argument("--npz", help="write every time series, the metrics and the metadata (NPZ)")
     run.add_argument("--plot", help="write the x-y plot (PNG, PDF or SVG)")
     run.add_argument("--gamma-star", action="store_true", help="also compute gamma* (eq. 14) for the results file")
     run.set_defaults(handler=cmd_run)
+
+    comp = sub.add_parser("compare", help="the H-infinity law against the baselines (lqr, cascade)")
+    comp.add_argument("scenario", help="scenario file (TOML)")
+    _add_law_options(comp)
+    comp.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
+    comp.add_argument("--worst-case", action="store_true",
+                      help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+    comp.add_argument("--json", help="write the metrics of every run (JSON)")
+    comp.add_argument("--plot", help="write the overlaid x-y paths (PNG, PDF or SVG)")
+    _add_quiet(comp)
+    comp.set_defaults(handler=cmd_compare)
+
+    rec = sub.add_parser("recovery", help="recovery from poor initial conditions, turning around")
+    rec.add_argument("scenarios", nargs="*", help="scenario files (default: the shipped poor_*.toml)")
+    _add_law_options(rec)
+    rec.add_argument("--position-tol", type=float, default=0.5,
+                     help="recovered: final position error below this (m, default 0.5)")
+    rec.add_argument("--heading-tol", type=float, default=10.0,
+                     help="recovered: final wrapped heading error below this (degrees, default 10)")
+    rec.add_argument("--json", help="write the verdicts (JSON)")
+    rec.add_argument("--plot", help="write the x-y paths, one panel per scenario (PNG, PDF or SVG)")
+    _add_quiet(rec)
+    rec.set_defaults(handler=cmd_recovery)
+
+    rep = sub.add_parser("report", help="comparison, figures, tables and results files in a folder")
+    rep.add_argument("scenario", help="scenario file (TOML)")
+    rep.add_argument("--out", required=True, help="output folder")
+    _add_law_options(rep)
+    rep.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
+    rep.add_argument("--worst-case", action="store_true",
+                     help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+    _add_quiet(rep)
+    rep.set_defaults(handler=cmd_report)
 
     star = sub.add_parser("gamma-star", help="gamma* (eq. 14) of a scenario's design, by bisection")
     star.add_argument("scenario", help="scenario file (TOML)")
@@ -242,10 +437,13 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--threads", type=int, default=2)
     sweep.add_argument("--plot", help="write the figure (PNG, PDF or SVG)")
     sweep.add_argument("--json", help="write the sweep (JSON)")
+    _add_quiet(sweep)
     sweep.set_defaults(handler=cmd_sweep_gamma)
 
-    paper = sub.add_parser("paper", help="the paper's runs: figures, results files and a metrics table")
+    paper = sub.add_parser("paper", help="the paper's runs: figures, results files, metrics and the "
+                                         "comparison of the three laws")
     paper.add_argument("--out", default="out/paper", help="output folder (default: out/paper)")
+    _add_quiet(paper)
     paper.set_defaults(handler=cmd_paper)
     return parser
 
@@ -259,6 +457,10 @@ def main(argv: list[str] | None = None) -> int:
         return _fail(error, 2)
     except _core.HinfError as error:
         return _fail(error, 3)
+    except BrokenPipeError:
+        # The reader went away (e.g. `| head`): stop quietly, as other command-line tools do.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
 
 
 def _fail(error: Exception, status: int) -> int:

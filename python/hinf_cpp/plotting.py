@@ -1,15 +1,79 @@
-"""Figures of a run, drawn on matplotlib Figure objects (no display needed)."""
+"""Figures of runs, drawn on matplotlib Figure objects (no pyplot, no display needed).
+
+Every function takes one :class:`RunResult` or a list of ``(label, RunResult)`` pairs (the
+runs of a comparison, overlaid) and returns a :class:`matplotlib.figure.Figure`; save it
+with :func:`save_figure` (PNG, or vector PDF / SVG from the file name's suffix).
+
+Line styles of overlaid runs: colour by law (hinf blue, lqr orange, cascade green), dashed
+for state feedback and dash-dotted for output feedback; the desired path is solid black.
+"""
 
 from __future__ import annotations
 
+import math
 import pathlib
+from typing import Sequence, Union
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from . import _core
 
-__all__ = ["xy_figure", "save_figure"]
+__all__ = [
+    "controls_figure",
+    "coupling_figure",
+    "eigenvalues_figure",
+    "errors_figure",
+    "paths_figure",
+    "position_error",
+    "recovery_figure",
+    "save_figure",
+    "xy_figure",
+]
+
+Runs = Union[_core.RunResult, Sequence[tuple[str, _core.RunResult]]]
+
+_LAW_COLOURS = {"hinf": "tab:blue", "lqr": "tab:orange", "cascade": "tab:green"}
+_LAW_COLOURS_OUTPUT = {"hinf": "#0b2e73", "lqr": "#9c4200", "cascade": "#145214"}
+_OTHER_COLOURS = ["tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
+
+
+def _runs(runs: Runs) -> list[tuple[str, _core.RunResult]]:
+    if isinstance(runs, _core.RunResult):
+        return [(runs.controller, runs)]
+    out = list(runs)
+    if not out:
+        raise ValueError("no run to plot")
+    for item in out:
+        if not (isinstance(item, tuple) and len(item) == 2 and isinstance(item[1], _core.RunResult)):
+            raise ValueError("runs must be a RunResult or a list of (label, RunResult) pairs")
+    return out
+
+
+def _styles(runs: list[tuple[str, _core.RunResult]]) -> list[dict]:
+    """Colour by law (a darker shade for output feedback); ``ls`` for paths: dashed for state
+    feedback, dash-dotted for output feedback (time plots use solid lines)."""
+    styles, spare = [], iter(_OTHER_COLOURS * 4)
+    for _, result in runs:
+        law = result.controller.split("-")[0]
+        output_feedback = result.controller.endswith("output-feedback")
+        palette = _LAW_COLOURS_OUTPUT if output_feedback else _LAW_COLOURS
+        colour = palette.get(law) or next(spare)
+        styles.append({"color": colour, "ls": "-." if output_feedback else "--"})
+    # Two runs with the same law and mode (e.g. two scenarios) get distinct colours.
+    seen = set()
+    for style in styles:
+        if style["color"] in seen:
+            style["color"] = next(spare)
+        seen.add(style["color"])
+    return styles
+
+
+def _series_style(style: dict) -> dict:
+    """Line style of a time plot: solid; output-feedback runs (noisy) thinner, lighter, below."""
+    if style["ls"] == "-.":
+        return {"color": style["color"], "ls": "-", "lw": 0.8, "alpha": 0.8, "zorder": 2}
+    return {"color": style["color"], "ls": "-", "lw": 1.4, "zorder": 3}
 
 
 def _position_indices(result: _core.RunResult) -> tuple[int, int]:
@@ -20,8 +84,54 @@ def _position_indices(result: _core.RunResult) -> tuple[int, int]:
     return indices[0], indices[1]
 
 
-def xy_figure(result: _core.RunResult, title: str | None = None) -> Figure:
-    """The paper's x-y plot: desired path solid, actual path dashed, start points marked."""
+def position_error(result: _core.RunResult) -> np.ndarray:
+    """|p - p_d| on the output grid."""
+    ix, iy = _position_indices(result)
+    q_e = result.simulation.q_e
+    return np.hypot(q_e[:, ix], q_e[:, iy])
+
+
+def _arrow_indices(x: np.ndarray, y: np.ndarray, count: int, offset: float = 0.0) -> np.ndarray:
+    """The start, then ``count - 1`` grid indices evenly spaced in arc length along the path,
+    shifted by ``offset`` (a fraction of the spacing, so that overlaid paths do not stack
+    their arrows)."""
+    if count <= 0:
+        return np.zeros(0, dtype=int)
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(x), np.diff(y)))])
+    if count == 1 or s[-1] <= 0.0:
+        return np.zeros(1, dtype=int)
+    spacing = s[-1] / count
+    targets = spacing * (np.arange(1, count) + (offset % 1.0) - 0.5)
+    return np.unique(np.concatenate([[0], np.searchsorted(s, targets)]))
+
+
+def _heading_arrows(ax, q: np.ndarray, model: _core.Model, count: int, length: float, color: str,
+                    offset: float = 0.0) -> None:
+    heading = model.heading_index()
+    if heading < 0 or count <= 0:
+        return
+    ix, iy = model.position_indices()
+    k = _arrow_indices(q[:, ix], q[:, iy], count, offset)
+    psi = q[k, heading]
+    ax.quiver(q[k, ix], q[k, iy], length * np.cos(psi), length * np.sin(psi), angles="xy",
+              scale_units="xy", scale=1.0, color=color, width=0.005, headwidth=4, headlength=5,
+              zorder=6)
+
+
+def _window(result: _core.RunResult, t_max: float | None) -> np.ndarray:
+    """Rows of the output grid with t <= t_max (all rows for None)."""
+    t = np.asarray(result.simulation.t)
+    return np.ones(t.size, dtype=bool) if t_max is None else t <= t_max
+
+
+def _span(paths: list[np.ndarray]) -> float:
+    points = np.vstack(paths)
+    return float(max(np.ptp(points[:, 0]), np.ptp(points[:, 1]), 1e-9))
+
+
+def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows: int = 0) -> Figure:
+    """The paper's x-y plot: desired path solid, actual path dashed, start points marked;
+    optionally ``heading_arrows`` arrows of the heading along the actual path."""
     ix, iy = _position_indices(result)
     sim = result.simulation
     fig = Figure(figsize=(6.4, 5.2), layout="constrained")
@@ -30,6 +140,9 @@ def xy_figure(result: _core.RunResult, title: str | None = None) -> Figure:
     ax.plot(sim.q[:, ix], sim.q[:, iy], "--", color="tab:blue", lw=1.5, label="actual")
     ax.plot(sim.q_d[0, ix], sim.q_d[0, iy], "o", color="black", ms=5, label="desired start")
     ax.plot(sim.q[0, ix], sim.q[0, iy], "s", color="tab:blue", ms=5, label="actual start")
+    if heading_arrows > 0:
+        length = 0.05 * _span([sim.q[:, [ix, iy]], sim.q_d[:, [ix, iy]]])
+        _heading_arrows(ax, sim.q, result.trajectory.model, heading_arrows, length, "tab:blue")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     ax.set_aspect("equal", adjustable="datalim")
@@ -40,16 +153,256 @@ def xy_figure(result: _core.RunResult, title: str | None = None) -> Figure:
     return fig
 
 
+def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | None = None, ax=None,
+                 t_max: float | None = None, legend: bool = True) -> Figure:
+    """Overlaid x-y paths: the desired path (solid black, its start heading arrowed) and each
+    run's actual path (dashed; dash-dotted for output feedback) with its start marked (square)
+    and ``heading_arrows`` arrows of the heading along it (the first at the start).
+
+    Parameters
+    ----------
+    runs : RunResult or list of (label, RunResult)
+        The runs (of the same desired path).
+    title : str, optional
+        Default: the scenario name.
+    heading_arrows : int, optional
+        Arrows per run (0: none); default 5 for up to two runs, fewer (at least 2) for more.
+    ax : matplotlib Axes, optional
+        Draw into this Axes (its figure is returned) instead of a new figure.
+    t_max : float, optional
+        Draw only t <= t_max (default: the whole horizon).
+    legend : bool
+        Draw the legend in the axes.
+    """
+    runs = _runs(runs)
+    first = runs[0][1]
+    ix, iy = _position_indices(first)
+    model = first.trajectory.model
+    if heading_arrows is None:
+        heading_arrows = max(2, min(5, 12 // len(runs)))
+    if ax is None:
+        fig = Figure(figsize=(7.2, 5.8), layout="constrained")
+        ax = fig.subplots()
+    else:
+        fig = ax.figure
+    q_d = first.simulation.q_d[_window(first, t_max)]
+    paths = [r.simulation.q[_window(r, t_max)] for _, r in runs]
+    length = 0.045 * _span([q_d[:, [ix, iy]]] + [q[:, [ix, iy]] for q in paths])
+    ax.plot(q_d[:, ix], q_d[:, iy], "-", color="black", lw=2.0, label="desired", zorder=2)
+    ax.plot(q_d[0, ix], q_d[0, iy], "o", color="black", ms=6, zorder=5)
+    _heading_arrows(ax, q_d, model, 1, length, "black")
+    widths = np.linspace(2.4, 1.2, len(runs)) if len(runs) > 1 else [1.6]
+    for i, ((label, _), q, style, width) in enumerate(zip(runs, paths, _styles(runs), widths)):
+        ax.plot(q[:, ix], q[:, iy], lw=width, label=label, zorder=3, **style)
+        ax.plot(q[0, ix], q[0, iy], "s", color=style["color"], ms=6, zorder=5)
+        _heading_arrows(ax, q, model, heading_arrows, length, style["color"], offset=i / len(runs))
+    ax.plot([], [], "o", color="black", ms=6, label="desired start")
+    ax.plot([], [], "s", color="gray", ms=6, label="actual start")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, alpha=0.3)
+    if legend:
+        ax.legend(loc="best", fontsize="small")
+    window = "" if t_max is None else f", t <= {t_max:g} s"
+    ax.set_title(title if title is not None else
+                 f"{first.scenario_name}: x-y paths (arrows: heading{window})")
+    return fig
+
+
+def _wrap(angle: np.ndarray) -> np.ndarray:
+    return np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2.0 * np.pi)
+
+
+def errors_figure(runs: Runs, title: str | None = None) -> Figure:
+    """Position error |p - p_d| (log scale) and wrapped heading error against time."""
+    runs = _runs(runs)
+    fig = Figure(figsize=(7.6, 6.0), layout="constrained")
+    ax_p, ax_h = fig.subplots(2, 1, sharex=True)
+    errors = [position_error(result) for _, result in runs]
+    peak = max(float(np.max(e)) for e in errors)
+    # Four decades below the peak: a start on the path (error 0) stays readable on a log axis.
+    floor = 1e-4 * peak if peak > 0.0 else 1e-12
+    largest = 0.0
+    for (label, result), error, style in zip(runs, errors, _styles(runs)):
+        t = result.simulation.t
+        ax_p.plot(t, np.maximum(error, floor), label=label, **_series_style(style))
+        heading = result.trajectory.model.heading_index()
+        if heading >= 0:
+            e = np.degrees(_wrap(result.simulation.q_e[:, heading]))
+            largest = max(largest, float(np.max(np.abs(e))))
+            ax_h.plot(t, e, label=label, **_series_style(style))
+    ax_p.set_yscale("log")
+    ax_p.set_ylim(floor, 2.0 * max(peak, floor))
+    ax_p.set_ylabel("position error |p - p_d| [m]")
+    ax_h.set_ylabel("heading error wrap(psi - psi_d) [deg]")
+    if largest > 90.0:
+        ax_h.set_yticks(np.arange(-180, 181, 45))
+        ax_h.set_ylim(-185, 185)
+    ax_h.axhline(0.0, color="black", lw=0.8)
+    ax_h.set_xlabel("time t [s]")
+    for ax in (ax_p, ax_h):
+        ax.grid(True, alpha=0.3)
+    ax_p.legend(loc="best", fontsize="small")
+    ax_p.set_title(title if title is not None else f"{runs[0][1].scenario_name}: tracking errors")
+    return fig
+
+
+def controls_figure(runs: Runs, title: str | None = None) -> Figure:
+    """Each input against time: the desired input u_d (solid black) and the applied ones."""
+    runs = _runs(runs)
+    first = runs[0][1]
+    m = first.simulation.u.shape[1]
+    units = ["m/s^2", "rad/s^2"] if isinstance(first.trajectory.model, _core.ShipModel) else ["-"] * m
+    fig = Figure(figsize=(7.6, 2.6 + 2.2 * m), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(m, 1, sharex=True))
+    for i, ax in enumerate(axes):
+        for (label, result), style in zip(runs, _styles(runs)):
+            ax.plot(result.simulation.t, result.simulation.u[:, i], label=label, **_series_style(style))
+        ax.plot(first.simulation.t, first.simulation.u_d[:, i], "-", color="black", lw=1.8,
+                label="desired u_d", zorder=4)
+        ax.set_ylabel(f"u{i + 1} [{units[i]}]")
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(loc="best", fontsize="small")
+    axes[-1].set_xlabel("time t [s]")
+    axes[0].set_title(title if title is not None else f"{first.scenario_name}: control inputs")
+    return fig
+
+
+def _z_eigenvalues(result: _core.RunResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    t = np.asarray(result.simulation.t)
+    Z = np.asarray(result.solution.Z(t))
+    eig = np.linalg.eigvalsh(0.5 * (Z + np.swapaxes(Z, 1, 2)))
+    return t, eig[:, 0], eig[:, -1]
+
+
+def _has_output_feedback(result: _core.RunResult) -> bool:
+    return np.size(result.simulation.sigma_min_eig) > 0
+
+
+def eigenvalues_figure(runs: Runs, title: str | None = None) -> Figure:
+    """Smallest and largest eigenvalue of Z(t) of each design (one per distinct gamma) and,
+    for output-feedback runs, of the filter's Sigma(t)."""
+    runs = _runs(runs)
+    designs, seen = [], set()
+    for label, result in runs:
+        if result.solution is not None and result.gamma not in seen:
+            seen.add(result.gamma)
+            designs.append(result)
+    filtered = [(label, r) for label, r in runs if _has_output_feedback(r)]
+    fig = Figure(figsize=(7.6, 6.0 if filtered else 3.8), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(2 if filtered else 1, 1, sharex=True))
+    ax_z = axes[0]
+    colours = ["tab:blue", "tab:orange", "tab:red", "tab:purple"]
+    for result, colour in zip(designs, colours * 4):
+        t, lo, hi = _z_eigenvalues(result)
+        name = "gamma = inf (LQR)" if math.isinf(result.gamma) else f"gamma = {result.gamma:g}"
+        ax_z.plot(t, hi, "-", color=colour, lw=1.5, label=f"lambda_max(Z), {name}")
+        ax_z.plot(t, lo, ":", color=colour, lw=1.8, label=f"lambda_min(Z), {name}")
+    ax_z.set_yscale("log")
+    ax_z.set_ylabel("eigenvalue of Z(t) [-]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    if filtered:
+        ax_s = axes[1]
+        for (label, result), style in zip(filtered, _styles(filtered)):
+            sim = result.simulation
+            ax_s.plot(sim.t, sim.sigma_max_eig, "-", color=style["color"], lw=1.3,
+                      label=f"lambda_max(Sigma), {label}")
+            ax_s.plot(sim.t, sim.sigma_min_eig, ":", color=style["color"], lw=1.6,
+                      label=f"lambda_min(Sigma), {label}")
+        ax_s.set_yscale("log")
+        ax_s.set_ylabel("eigenvalue of Sigma(t) [-]")
+        ax_s.legend(loc="best", fontsize="small")
+    ax_z.legend(loc="best", fontsize="small")
+    axes[-1].set_xlabel("time t [s]")
+    ax_z.set_title(title if title is not None else
+                   f"{runs[0][1].scenario_name}: eigenvalue bounds of Z(t)"
+                   + (" and Sigma(t)" if filtered else ""))
+    return fig
+
+
+def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
+    """The coupling condition of the output-feedback design: rho(Sigma Z)(t) against gamma^2.
+
+    Raises
+    ------
+    ValueError
+        When no run has output feedback (a scenario without [measurement]).
+    """
+    runs = [(label, r) for label, r in _runs(runs) if _has_output_feedback(r)]
+    if not runs:
+        raise ValueError("rho(Sigma Z) needs an output-feedback run (a scenario with [measurement])")
+    fig = Figure(figsize=(7.6, 4.2), layout="constrained")
+    ax = fig.subplots()
+    gammas = set()
+    for (label, result), style in zip(runs, _styles(runs)):
+        ax.plot(result.simulation.t, result.simulation.rho_sigma_z, "-", color=style["color"], lw=1.3,
+                label=label)
+        if math.isfinite(result.gamma):
+            gammas.add(result.gamma)
+    for gamma in sorted(gammas):
+        ax.axhline(gamma**2, color="black", lw=1.2, ls=":",
+                   label=f"gamma^2 = {gamma**2:g} (coupling condition rho < gamma^2)")
+    ax.set_ylim(bottom=0.0)
+    ax.set_xlabel("time t [s]")
+    ax.set_ylabel("spectral radius rho(Sigma Z) [-]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    ax.set_title(title if title is not None else f"{runs[0][1].scenario_name}: coupling condition")
+    return fig
+
+
+def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figure:
+    """One panel of overlaid x-y paths per scenario of a recovery study
+    (:class:`~hinf_cpp.recovery.RecoveryStudy`).
+
+    ``t_max``: the time window drawn; default per panel: the latest settling time of its runs
+    plus 5 s (the whole horizon when a run does not settle).
+    """
+    scenarios = study.scenarios
+    if not scenarios:
+        raise ValueError("the recovery study has no scenario")
+    columns = max(1, min(columns, len(scenarios)))
+    rows = math.ceil(len(scenarios) / columns)
+    fig = Figure(figsize=(4.6 * columns, 4.3 * rows + 0.6), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(rows, columns)).ravel()
+    handles = labels = None
+    for ax, name in zip(axes, scenarios):
+        verdicts = [v for v in study.verdicts if v.scenario == name and v.result is not None]
+        if not verdicts:
+            ax.set_title(f"{name}: every run failed")
+            continue
+        window = t_max
+        if window is None:
+            settling = [v.settling_time for v in verdicts]
+            if all(s is not None for s in settling):
+                window = max(settling) + 5.0 + float(verdicts[0].result.simulation.t[0])
+        paths_figure([(v.controller, v.result) for v in verdicts], heading_arrows=4, ax=ax,
+                     t_max=window, legend=False,
+                     title=name + ("" if window is None else f" (t <= {window:.0f} s)"))
+        handles, labels = ax.get_legend_handles_labels()
+    for ax in axes[len(scenarios):]:
+        ax.set_visible(False)
+    if handles:
+        fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize="small")
+    return fig
+
+
 def save_figure(fig: Figure, path: str | pathlib.Path) -> pathlib.Path:
-    """Saves a figure (format from the suffix: .png, .pdf, .svg)."""
+    """Saves a figure; the format is the suffix: .png (150 dpi), .pdf and .svg (vector), or
+    any other format matplotlib writes.
+
+    Raises
+    ------
+    ValueError
+        A suffix that is not an image format (the message lists the formats).
+    """
     path = pathlib.Path(path)
+    formats = fig.canvas.get_supported_filetypes()
+    if path.suffix.lower().lstrip(".") not in formats:
+        raise ValueError(f"figure file '{path}': the suffix must name an image format "
+                         f"(.png, .pdf, .svg, ...; supported: {', '.join(sorted(formats))})")
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=150)
     return path
-
-
-def position_error(result: _core.RunResult) -> np.ndarray:
-    """|p - p_d| on the output grid."""
-    ix, iy = _position_indices(result)
-    q_e = result.simulation.q_e
-    return np.hypot(q_e[:, ix], q_e[:, iy])

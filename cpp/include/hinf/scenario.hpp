@@ -73,7 +73,8 @@ struct RunResult {
   std::string controller;
   double gamma = 0.0;
   TrajectoryPtr trajectory;
-  RiccatiSolutionPtr solution;
+  RiccatiSolutionPtr solution;  // the law's design; null only for the cascade law with state
+                                // feedback when no design exists at gamma (gamma <= gamma*)
   Mat Z0;
   double Z_min_eig = NAN, Z_max_eig = NAN;  // m and M of paper eq. (22) over [t0, tf]
   std::optional<double> gamma_star;

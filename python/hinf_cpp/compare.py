@@ -1,0 +1,414 @@
+"""Comparison of the tracking laws on one scenario: the paper's H-infinity law and the baselines.
+
+``compare(scenario)`` runs the scenario once per law (``"hinf"``: the paper's law at the
+scenario's gamma; ``"lqr"``: the same design at gamma = inf, with ``[measurement]`` the
+Kalman-Bucy filter; ``"cascade"``: the cascaded ship baseline, with ``[measurement]`` acting
+on the H-infinity estimate) and, for a scenario with ``[measurement]``, both with perfect
+state feedback (the measurement removed) and with output feedback. It returns the runs and
+one metrics dictionary per run, and says which disturbance every number is for.
+
+Metrics (on the output grid; "last half" = the grid points with t >= (t0 + tf)/2):
+
+- the library's metrics of the results file (``RunResult.metrics``, ``docs/mathematics.md``);
+- ``rms_heading_error_last_half``: sqrt of the mean over the last half of wrap(psi - psi_d)^2,
+  wrap to (-pi, pi] (rad);
+- ``final_heading_error``: |wrap(psi - psi_d)| at tf (rad);
+- ``l2_gain_from_desired``: the ``l2_gain`` of the same law and disturbance started on the
+  desired trajectory (q(t0) = q_d(t0)), so that it is the disturbance's gain alone, not the
+  response to the initial error (equal to ``l2_gain`` when the scenario starts there).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+from typing import Any, Iterable, Sequence
+
+import numpy as np
+
+from . import _core
+from .progress import ProgressCallback
+
+__all__ = [
+    "CONTROLLERS",
+    "FEEDBACK_MODES",
+    "METRICS",
+    "Comparison",
+    "ComparisonRun",
+    "MetricInfo",
+    "compare",
+    "describe_disturbance",
+    "heading_error",
+    "heading_metrics",
+    "parse_controllers",
+    "parse_feedback",
+    "run_law",
+    "wrap_angles",
+]
+
+CONTROLLERS = ("hinf", "lqr", "cascade")
+FEEDBACK_MODES = ("state", "output")
+
+
+@dataclasses.dataclass(frozen=True)
+class MetricInfo:
+    """One row of the comparison table."""
+
+    key: str
+    label: str
+    unit: str
+    definition: str
+
+
+METRICS = [
+    MetricInfo("rms_position_error_last_half", "RMS position error, last half", "m",
+               "sqrt(mean over t >= (t0+tf)/2 of x_e^2 + y_e^2)"),
+    MetricInfo("max_position_error", "max position error", "m", "max over [t0, tf] of sqrt(x_e^2 + y_e^2)"),
+    MetricInfo("final_position_error", "final position error", "m", "sqrt(x_e^2 + y_e^2) at tf"),
+    MetricInfo("rms_heading_error_last_half", "RMS heading error (wrapped), last half", "rad",
+               "sqrt(mean over t >= (t0+tf)/2 of wrap(psi - psi_d)^2), wrap to (-pi, pi]"),
+    MetricInfo("final_heading_error", "final heading error (wrapped)", "rad", "|wrap(psi - psi_d)| at tf"),
+    MetricInfo("control_l2", "control effort ||u||", "-", "sqrt(integral of |u|^2)"),
+    MetricInfo("control_error_l2", "control effort ||u - u_d||", "-", "sqrt(integral of |u - u_d|^2)"),
+    MetricInfo("disturbance_l2", "disturbance ||w||", "-",
+               "sqrt(integral of |w|^2) over every applied channel (measurement noise included)"),
+    MetricInfo("l2_gain", "L2 gain (from the scenario's start)", "-",
+               "sqrt(integral of |q_e|_Q^2 + |u_e|^2) / ||w||; includes the response to the initial error"),
+    MetricInfo("l2_gain_from_desired", "L2 gain (from the desired start)", "-",
+               "l2_gain of the same law and disturbance started at q(t0) = q_d(t0): the disturbance's alone"),
+    MetricInfo("max_rho_sigma_z", "max rho(Sigma Z)", "-", "max over t of the spectral radius of Sigma Z"),
+    MetricInfo("rms_estimation_error_last_half", "RMS estimation error, last half", "-",
+               "sqrt(mean over t >= (t0+tf)/2 of |q_hat - q_e|^2)"),
+]
+
+
+def parse_controllers(spec: str | Iterable[str] | None) -> list[str]:
+    """The laws to compare, from ``"hinf,lqr"`` or a list; None means all three.
+
+    Raises
+    ------
+    ValueError
+        For an empty list, an empty or unknown name, or a name given twice.
+    """
+    if spec is None:
+        return list(CONTROLLERS)
+    raw = spec.split(",") if isinstance(spec, str) else list(spec)
+    names = [str(name).strip() for name in raw]
+    choices = ", ".join(CONTROLLERS)
+    if not names or names == [""]:
+        raise ValueError(f"no controller given: choose one or more of {choices} (comma-separated)")
+    for name in names:
+        if not name:
+            raise ValueError(f"empty controller name in '{','.join(map(str, raw))}': choose from {choices}")
+        if name not in CONTROLLERS:
+            raise ValueError(f"unknown controller '{name}': choose from {choices}")
+    seen = set()
+    for name in names:
+        if name in seen:
+            raise ValueError(f"controller '{name}' is given twice")
+        seen.add(name)
+    return names
+
+
+def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str] | None) -> list[str]:
+    """The feedback modes to run: ``"state"`` and/or ``"output"``.
+
+    None: both for a scenario with ``[measurement]``, state feedback otherwise.
+    """
+    has_measurement = scenario.measurement is not None
+    if spec is None:
+        return list(FEEDBACK_MODES) if has_measurement else ["state"]
+    raw = spec.split(",") if isinstance(spec, str) else list(spec)
+    modes = [str(m).strip() for m in raw]
+    if not modes or any(m not in FEEDBACK_MODES for m in modes) or len(set(modes)) != len(modes):
+        raise ValueError(f"feedback modes must be one or both of 'state', 'output' (each once), got {raw!r}")
+    if "output" in modes and not has_measurement:
+        raise ValueError(f"output feedback needs a scenario with [measurement]; '{scenario.name}' has none")
+    return [m for m in FEEDBACK_MODES if m in modes]
+
+
+def wrap_angles(angle: np.ndarray | float) -> np.ndarray:
+    """Angles wrapped to (-pi, pi], elementwise (as ``hinf_cpp.wrap_angle``)."""
+    a = np.asarray(angle, dtype=float)
+    return np.pi - np.mod(np.pi - a, 2.0 * np.pi)
+
+
+def heading_error(result: _core.RunResult) -> np.ndarray | None:
+    """psi - psi_d on the output grid, continuous (psi as integrated, not wrapped);
+    None when the model has no heading."""
+    index = result.trajectory.model.heading_index()
+    if index < 0:
+        return None
+    return np.asarray(result.simulation.q_e)[:, index]
+
+
+def _last_half(t: np.ndarray) -> np.ndarray:
+    return t >= 0.5 * (t[0] + t[-1])
+
+
+def heading_metrics(result: _core.RunResult) -> dict[str, float]:
+    """``rms_heading_error_last_half`` and ``final_heading_error`` (rad; NaN without a heading)."""
+    e = heading_error(result)
+    if e is None or e.size == 0:
+        return {"rms_heading_error_last_half": math.nan, "final_heading_error": math.nan}
+    t = np.asarray(result.simulation.t)
+    wrapped = wrap_angles(e)
+    return {
+        "rms_heading_error_last_half": float(np.sqrt(np.mean(wrapped[_last_half(t)] ** 2))),
+        "final_heading_error": float(abs(wrapped[-1])),
+    }
+
+
+def _describe_signal(signal: _core.Signal) -> str | None:
+    """``0.1 cos(1.25664 t)`` and the like; None for the zero signal."""
+    if signal.is_table:
+        t = signal.table_t
+        return f"a table of {len(t)} points on [{t[0]:g}, {t[-1]:g}] s"
+    terms = [f"{signal.offset:g}"] if signal.offset != 0.0 else []
+    for h in signal.harmonics:
+        if h.amplitude == 0.0:
+            continue
+        phase = "" if h.phase == 0.0 else f" {'+' if h.phase > 0 else '-'} {abs(h.phase):.6g}"
+        terms.append(f"{h.amplitude:g} {'cos' if h.cosine else 'sin'}({h.omega:.6g} t{phase})")
+    return " + ".join(terms) if terms else None
+
+
+def _gamma_text(gamma: float) -> str:
+    return "inf" if math.isinf(gamma) else f"{gamma:g}"
+
+
+def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None = None) -> dict:
+    """Which disturbance a run of ``scenario`` sees.
+
+    Parameters
+    ----------
+    scenario : Scenario
+        The scenario (its ``[disturbance]`` signals, ``worst_case`` and ``[measurement]``).
+    output_feedback : bool, optional
+        Whether the run is output feedback (default: whether the scenario has ``[measurement]``).
+
+    Returns
+    -------
+    dict
+        ``signals`` (channel -> description, non-zero channels only), ``worst_case``
+        (bool), ``worst_case_gamma`` (the gamma of the H-infinity design whose w* is applied,
+        or None), ``measurement_noise`` (sigma, sample period, seed, channels; or None) and
+        ``description`` (one sentence).
+    """
+    model = scenario.model
+    if model is None:
+        raise ValueError("the scenario has no model")
+    if output_feedback is None:
+        output_feedback = scenario.measurement is not None
+    noise_channels = set(model.noise_channels()) if output_feedback else set()
+    signals: dict[str, str] = {}
+    disturbance = scenario.disturbance
+    if disturbance.dim and disturbance.is_function:
+        signals["w"] = "a function of t (Python callable)"
+    elif disturbance.dim:
+        for i, channel in enumerate(disturbance.channels):
+            text = _describe_signal(channel)
+            if text is not None and i not in noise_channels:
+                signals[f"w{i + 1}"] = text
+    parts = []
+    if signals:
+        parts.append("the scenario's signals (" + "; ".join(f"{k} = {v}" for k, v in signals.items()) + ")")
+    else:
+        parts.append("no disturbance signals")
+    if scenario.worst_case:
+        parts.append(f"plus the worst case w* = gamma^-2 D' Z q_e of the H-infinity design at gamma = "
+                     f"{_gamma_text(scenario.gamma)} (paper eq. 16)")
+    noise = None
+    if output_feedback:
+        ms = scenario.measurement
+        channels = [f"w{i + 1}" for i in sorted(noise_channels)]
+        noise = {"sigma": ms.sigma, "sample_period": ms.sample_period, "seed": int(ms.seed),
+                 "channels": channels}
+        parts.append(f"plus measurement noise sigma = {ms.sigma:g} held over {ms.sample_period:g} s "
+                     f"(seed {ms.seed}) on {', '.join(channels)}")
+    return {
+        "signals": signals,
+        "worst_case": bool(scenario.worst_case),
+        "worst_case_gamma": float(scenario.gamma) if scenario.worst_case else None,
+        "measurement_noise": noise,
+        "description": ", ".join(parts),
+    }
+
+
+def run_law(scenario: _core.Scenario, law: str, feedback: str = "state", *,
+            from_desired: bool = False) -> _core.RunResult:
+    """One run of ``scenario`` with the law ``law`` and the feedback mode ``feedback``
+    (``"state"`` removes ``[measurement]``), optionally started on the desired trajectory."""
+    parse_controllers([law])
+    if feedback not in FEEDBACK_MODES:
+        raise ValueError(f"feedback must be 'state' or 'output', got '{feedback}'")
+    variant = scenario.copy()
+    variant.law = law
+    if feedback == "state":
+        variant.measurement = None
+    elif variant.measurement is None:
+        raise ValueError(f"output feedback needs a scenario with [measurement]; '{scenario.name}' has none")
+    if from_desired:
+        variant.initial_q0 = variant.desired_q0
+    return _core.run_scenario(variant)
+
+
+@dataclasses.dataclass
+class ComparisonRun:
+    """One law in one feedback mode."""
+
+    key: str                     # "hinf", "lqr", "cascade", "hinf/output-feedback", ...
+    law: str                     # "hinf" | "lqr" | "cascade"
+    feedback: str                # "state" | "output"
+    design_gamma: float          # gamma of the law's Riccati design (inf for lqr)
+    disturbance: dict            # describe_disturbance() of this run
+    metrics: dict[str, float]    # every key of METRICS (NaN where it does not apply)
+    result: _core.RunResult | None = None
+    error: str | None = None     # the numerical failure, when the run failed
+
+    @property
+    def ok(self) -> bool:
+        return self.error is None
+
+    def to_dict(self) -> dict:
+        """The run's entry of the comparison JSON: description and metrics (NaN as None)."""
+        entry = {
+            "law": self.law,
+            "feedback": self.feedback,
+            "design_gamma": None if math.isinf(self.design_gamma) else self.design_gamma,
+            "disturbance": self.disturbance["description"],
+        }
+        if self.error is not None:
+            entry["error"] = self.error
+        entry.update({k: _json_number(v) for k, v in self.metrics.items()})
+        return entry
+
+
+@dataclasses.dataclass
+class Comparison:
+    """The runs of :func:`compare` on one scenario."""
+
+    scenario: str
+    gamma: float
+    disturbance: dict            # describe_disturbance() of the scenario (state feedback)
+    runs: list[ComparisonRun]
+
+    def __getitem__(self, key: str) -> ComparisonRun:
+        for run in self.runs:
+            if run.key == key:
+                return run
+        raise KeyError(f"no run '{key}' in the comparison (runs: {', '.join(self.keys)})")
+
+    @property
+    def keys(self) -> list[str]:
+        return [run.key for run in self.runs]
+
+    def results(self, feedback: str | None = None) -> list[tuple[str, _core.RunResult]]:
+        """(key, RunResult) of the runs that succeeded, optionally of one feedback mode."""
+        return [(r.key, r.result) for r in self.runs
+                if r.ok and (feedback is None or r.feedback == feedback)]
+
+    def table(self, keys: bool = False) -> tuple[list[str], list[list[Any]]]:
+        """Header ``[metric, unit, run...]`` and one row per metric that applies to some run;
+        the metric is named by its label, or by its key with ``keys=True``."""
+        header = ["metric", "unit", *self.keys]
+        rows = []
+        for info in METRICS:
+            values = [run.metrics.get(info.key, math.nan) for run in self.runs]
+            if all(not math.isfinite(v) for v in values):
+                continue
+            rows.append([info.key if keys else info.label, info.unit, *values])
+        failed = [run for run in self.runs if not run.ok]
+        if failed:
+            rows.append(["failed", "", *["" if run.ok else "yes" for run in self.runs]])
+        return header, rows
+
+    def to_dict(self) -> dict:
+        """The comparison JSON: scenario, gamma, disturbance, one entry per run under
+        ``controllers`` and the metric definitions."""
+        return {
+            "scenario": self.scenario,
+            "gamma": _json_number(self.gamma),
+            "disturbance": self.disturbance,
+            "controllers": {run.key: run.to_dict() for run in self.runs},
+            "metric_definitions": {m.key: f"{m.definition} [{m.unit}]" for m in METRICS},
+        }
+
+    def to_json(self, indent: int = 2) -> str:
+        return json.dumps(self.to_dict(), indent=indent)
+
+
+def _json_number(x: float | None) -> float | None:
+    return float(x) if x is not None and math.isfinite(x) else None
+
+
+def _run_key(law: str, feedback: str) -> str:
+    return law if feedback == "state" else f"{law}/output-feedback"
+
+
+def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = None, *,
+            feedback: str | Sequence[str] | None = None, worst_case: bool | None = None,
+            progress: ProgressCallback | None = None) -> Comparison:
+    """Runs ``scenario`` with each law and returns the runs and their metrics.
+
+    Parameters
+    ----------
+    scenario : Scenario
+        The scenario (its own ``[controller] law`` is ignored).
+    controllers : str or sequence of str, optional
+        Laws among ``"hinf"``, ``"lqr"``, ``"cascade"`` (``"hinf,lqr"`` or a list); default all.
+    feedback : str or sequence of str, optional
+        ``"state"`` and/or ``"output"``; default both with ``[measurement]``, else state.
+    worst_case : bool, optional
+        Overrides ``[disturbance] worst_case`` (add w* of eq. 16 of the H-infinity design).
+    progress : callable, optional
+        Called as ``progress(index, total, message)`` before each run (e.g. a
+        :class:`~hinf_cpp.progress.Progress`).
+
+    Returns
+    -------
+    Comparison
+        Runs keyed ``law`` (state feedback) or ``law/output-feedback``. A run that fails
+        numerically (a conjugate point, a coupling violation) is kept with ``error`` set and
+        NaN metrics; bad input raises.
+
+    Raises
+    ------
+    ValueError
+        Bad controller names or feedback modes, or an invalid scenario.
+    """
+    laws = parse_controllers(controllers)
+    modes = parse_feedback(scenario, feedback)
+    base = scenario.copy()
+    if worst_case is not None:
+        base.worst_case = bool(worst_case)
+    for law in laws:   # bad input (e.g. cascade on a non-ship model) fails before any run
+        variant = base.copy()
+        variant.law = law
+        variant.resolved().validate()
+    starts_on_desired = np.array_equal(np.asarray(base.initial_q0), np.asarray(base.desired_q0))
+    plan = [(law, mode) for mode in modes for law in laws]
+    runs = []
+    for index, (law, mode) in enumerate(plan, start=1):
+        key = _run_key(law, mode)
+        if progress is not None:
+            progress(index, len(plan), f"running {key} on {base.name}")
+        disturbance = describe_disturbance(base, mode == "output")
+        design_gamma = math.inf if law == "lqr" else float(base.gamma)
+        try:
+            result = run_law(base, law, mode)
+            gain_alone = (result.metrics["l2_gain"] if starts_on_desired
+                          else run_law(base, law, mode, from_desired=True).metrics["l2_gain"])
+        except _core.HinfError as error:
+            metrics = {m.key: math.nan for m in METRICS}
+            runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics,
+                                      error=" ".join(str(error).split())))
+            continue
+        metrics = dict(result.metrics)
+        metrics.update(heading_metrics(result))
+        metrics["l2_gain_from_desired"] = gain_alone
+        metrics = {m.key: float(metrics.get(m.key, math.nan)) for m in METRICS}
+        runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics, result=result))
+    return Comparison(scenario=base.name, gamma=float(base.gamma),
+                      disturbance=describe_disturbance(base, False), runs=runs)

@@ -1,0 +1,253 @@
+"""Exports of a run: NPZ (every time series, metrics and metadata), tidy CSV, the JSON results file.
+
+Time series of a run (:func:`time_series`), one row per output time, k rows:
+
+    t (k,)              output grid, s
+    q, q_d, q_e (k, n)  actual, desired and error state (q_e = q - q_d)
+    u, u_d (k, m)       applied and desired input
+    w (k, nw)           applied disturbance (signals, worst case, measurement noise)
+    z_min_eig, z_max_eig (k,)  extreme eigenvalues of the design's Z(t) at the grid times
+    q_hat (k, n), y (k, p), sigma_min_eig, sigma_max_eig, rho_sigma_z (k,)
+                        output feedback only (absent for state feedback)
+
+NPZ (:func:`save_npz`, compressed, readable with ``numpy.load(path, allow_pickle=False)``):
+those arrays under their names, ``Z`` (k, n, n) = Z(t) at the grid times, and ``meta``, a 0-d
+string array holding JSON: ``format``, ``results`` (the results file, ``RunResult.to_json()``:
+scenario, gamma, Z0, metrics, timing), ``components`` (the column names of every 2-D series)
+and the model's ``state_names``, ``position_indices`` and ``heading_index``. The round trip
+through :func:`load_npz` is exact.
+
+Tidy CSV (:func:`save_csv`): LONG format, header ``t,variable,value``, one row per time and
+series component; ``variable`` is ``<series>.<component>`` for 2-D series (``q.x``,
+``q_d.psi``, ``u.u1``, ``w.w3``, ``q_hat.y``, ``y.psi``) and the series name for 1-D ones
+(``z_min_eig``, ``rho_sigma_z``); rows are grouped by variable, in time order within each. Numbers
+are written with ``repr`` (the shortest text that reads back to the same double: the round
+trip is exact) or, with ``digits``, to that many significant digits. ``Z`` is left out of the
+CSV (36 series for the ship; use the NPZ).
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import io
+import json
+import pathlib
+from typing import Any
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["FORMAT", "RunData", "component_names", "load_csv", "load_json", "load_npz", "save_csv",
+           "save_json", "save_npz", "time_series"]
+
+FORMAT = "hinf_cpp-run/1"
+
+_OUTPUT_FEEDBACK_SERIES = ("q_hat", "y", "sigma_min_eig", "sigma_max_eig", "rho_sigma_z")
+
+
+@dataclasses.dataclass
+class RunData:
+    """Arrays and metadata read back from an export."""
+
+    arrays: dict[str, np.ndarray]
+    meta: dict[str, Any]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.arrays[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self.arrays
+
+
+def _output_names(model: _core.Model, t0: float, p: int) -> list[str]:
+    """Names of the measured outputs: the state measured when a row of C picks one state."""
+    states = model.state_names()
+    names = []
+    try:
+        C = np.asarray(model.C(t0))
+    except Exception:  # noqa: BLE001 - a model without C: generic names
+        C = np.zeros((0, 0))
+    for i in range(p):
+        row = C[i] if i < C.shape[0] else None
+        if row is not None and np.count_nonzero(row) == 1 and row[np.flatnonzero(row)[0]] == 1.0:
+            names.append(states[int(np.flatnonzero(row)[0])])
+        else:
+            names.append(f"y{i + 1}")
+    return names if len(set(names)) == len(names) else [f"y{i + 1}" for i in range(p)]
+
+
+def component_names(result: _core.RunResult) -> dict[str, list[str]]:
+    """Column names of the 2-D series of :func:`time_series` (state names, u1.., w1.., outputs)."""
+    model = result.trajectory.model
+    sim = result.simulation
+    states = list(model.state_names())
+    names = {"q": states, "q_d": states, "q_e": states,
+             "u": [f"u{i + 1}" for i in range(np.shape(sim.u)[1])],
+             "u_d": [f"u{i + 1}" for i in range(np.shape(sim.u_d)[1])],
+             "w": [f"w{i + 1}" for i in range(np.shape(sim.w)[1])]}
+    if np.size(sim.q_hat):
+        names["q_hat"] = states
+        names["y"] = _output_names(model, float(sim.t[0]), np.shape(sim.y)[1])
+    return names
+
+
+def time_series(result: _core.RunResult) -> dict[str, np.ndarray]:
+    """Every time series of a run (module docstring), as NumPy arrays."""
+    sim = result.simulation
+    t = np.asarray(sim.t, dtype=float)
+    series = {"t": t, "q": np.asarray(sim.q), "q_d": np.asarray(sim.q_d), "q_e": np.asarray(sim.q_e),
+              "u": np.asarray(sim.u), "u_d": np.asarray(sim.u_d), "w": np.asarray(sim.w)}
+    if result.solution is not None:
+        eig = np.linalg.eigvalsh(_symmetric(result.solution.Z(t)))
+        series["z_min_eig"] = eig[:, 0]
+        series["z_max_eig"] = eig[:, -1]
+    else:  # the cascade law with state feedback at a gamma without design
+        series["z_min_eig"] = series["z_max_eig"] = np.full_like(t, np.nan)
+    if np.size(sim.q_hat):
+        for name in _OUTPUT_FEEDBACK_SERIES:
+            series[name] = np.asarray(getattr(sim, name))
+    return series
+
+
+def _symmetric(Z: np.ndarray) -> np.ndarray:
+    return 0.5 * (Z + np.swapaxes(Z, -1, -2))
+
+
+def _meta(result: _core.RunResult) -> dict[str, Any]:
+    model = result.trajectory.model
+    return {
+        "format": FORMAT,
+        "results": json.loads(result.to_json()),
+        "components": component_names(result),
+        "state_names": list(model.state_names()),
+        "position_indices": list(model.position_indices()),
+        "heading_index": int(model.heading_index()),
+    }
+
+
+def _path(path: str | pathlib.Path) -> pathlib.Path:
+    path = pathlib.Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def save_npz(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
+    """Writes every time series, Z(t) on the grid and the metadata (JSON) to a compressed NPZ.
+
+    ``numpy.savez_compressed`` appends ``.npz`` to a name without it; the path written is
+    returned.
+    """
+    path = _path(path)
+    arrays = time_series(result)
+    if result.solution is not None:
+        arrays["Z"] = np.asarray(result.solution.Z(arrays["t"]))
+    arrays["meta"] = np.array(json.dumps(_meta(result)))
+    np.savez_compressed(path, **arrays)
+    return path if path.suffix == ".npz" else path.with_name(path.name + ".npz")
+
+
+def load_npz(path: str | pathlib.Path) -> RunData:
+    """Reads a file of :func:`save_npz`: the arrays (exactly as written) and the metadata."""
+    with np.load(pathlib.Path(path), allow_pickle=False) as data:
+        if "meta" not in data.files:
+            raise ValueError(f"{path}: not a hinf_cpp run export (no 'meta' entry)")
+        meta = json.loads(str(data["meta"]))
+        if meta.get("format") != FORMAT:
+            raise ValueError(f"{path}: unknown export format {meta.get('format')!r} (expected {FORMAT!r})")
+        arrays = {name: data[name] for name in data.files if name != "meta"}
+    return RunData(arrays, meta)
+
+
+def _text(x: float, digits: int | None) -> str:
+    return repr(float(x)) if digits is None else f"{x:.{digits}g}"
+
+
+def save_csv(result: _core.RunResult, path: str | pathlib.Path, digits: int | None = None) -> pathlib.Path:
+    """Writes the time series as a tidy (long) CSV: ``t,variable,value`` (module docstring).
+
+    Parameters
+    ----------
+    digits : int, optional
+        Significant digits of every number; None (default) writes the shortest exact text.
+    """
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 17):
+        raise ValueError(f"digits must be an integer in [1, 17] or None, got {digits!r}")
+    series = time_series(result)
+    names = component_names(result)
+    t = series.pop("t")
+    times = [_text(x, digits) for x in t]
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(["t", "variable", "value"])
+    for name, values in series.items():
+        columns = [(name, values)] if values.ndim == 1 else \
+            [(f"{name}.{c}", values[:, j]) for j, c in enumerate(names[name])]
+        for variable, column in columns:
+            writer.writerows(zip(times, [variable] * len(times), (_text(v, digits) for v in column)))
+    path = _path(path)
+    path.write_text(buffer.getvalue())
+    return path
+
+
+def load_csv(path: str | pathlib.Path) -> RunData:
+    """Reads a file of :func:`save_csv` back into the arrays of :func:`time_series`.
+
+    ``meta`` holds ``components`` (the column names found for every 2-D series).
+
+    Raises
+    ------
+    ValueError
+        A file that is not a tidy export (header, times that differ between variables).
+    """
+    path = pathlib.Path(path)
+    with path.open(newline="") as handle:
+        reader = csv.reader(handle)
+        header = next(reader, None)
+        if header != ["t", "variable", "value"]:
+            raise ValueError(f"{path}: expected the header t,variable,value, got {header}")
+        columns: dict[str, tuple[list[float], list[float]]] = {}
+        for line, row in enumerate(reader, start=2):
+            if len(row) != 3:
+                raise ValueError(f"{path}:{line}: expected 3 fields, got {len(row)}")
+            times, values = columns.setdefault(row[1], ([], []))
+            times.append(float(row[0]))
+            values.append(float(row[2]))
+    if not columns:
+        raise ValueError(f"{path}: no data rows")
+    t = None
+    grouped: dict[str, list[tuple[str, np.ndarray]]] = {}
+    for variable, (times, values) in columns.items():
+        times = np.array(times)
+        if t is None:
+            t = times
+        elif times.shape != t.shape or not np.array_equal(times, t):
+            raise ValueError(f"{path}: variable '{variable}' is not on the same times as the others")
+        name, _, component = variable.partition(".")
+        grouped.setdefault(name, []).append((component, np.array(values)))
+    arrays = {"t": t}
+    components = {}
+    for name, parts in grouped.items():
+        if len(parts) == 1 and parts[0][0] == "":
+            arrays[name] = parts[0][1]
+        else:
+            components[name] = [c for c, _ in parts]
+            arrays[name] = np.column_stack([v for _, v in parts])
+    return RunData(arrays, {"components": components})
+
+
+def save_json(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
+    """Writes the results file (``RunResult.to_json()``, shared/scenarios.md)."""
+    path = _path(path)
+    path.write_text(result.to_json() + "\n")
+    return path
+
+
+def load_json(path: str | pathlib.Path) -> dict:
+    """Reads a results file (non-finite numbers are ``null`` there, None here)."""
+    text = pathlib.Path(path).read_text()
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as error:
+        raise ValueError(f"{path}: invalid JSON: {error}") from None

@@ -1,0 +1,334 @@
+"""Recovery from poor initial conditions, and whether a law turns the ship around.
+
+Definitions (``e(t) = psi(t) - psi_d(t)`` is the heading error as integrated, continuous, not
+wrapped; ``wrap`` maps to (-pi, pi]; "last half" = the output-grid points with
+t >= (t0 + tf)/2):
+
+recovers
+    the final position error ``|p(tf) - p_d(tf)|`` is below ``position_tolerance``
+    (default 0.5 m: a quarter of the 2 m offsets of the shipped ``poor_*`` scenarios, and
+    about twice the peak of the error the paper's disturbance leaves once the path is
+    captured, 0.07 m for the H-infinity law and up to 0.27 m for the cascade baseline, so
+    that the verdict does not depend on the phase of the disturbance at tf) **and** the final
+    wrapped heading error ``|wrap(e(tf))|`` is below ``heading_tolerance`` (default 10
+    degrees).
+turns around
+    the heading error passes through +-pi, that is ``|e(t)|`` exceeds
+    ``max(pi, |e(t0)|) + margin`` at some t (default margin 0.1 rad): the ship rotated past
+    pointing backwards, further than it started from, and winds towards e = +-2 pi instead of
+    unwinding to 0; **or** the ship tracks backwards: ``|wrap(e)| > pi/2`` on more than
+    ``backwards_fraction`` (default one half) of the last half. For a start at exactly
+    +-180 degrees both rotations are half turns; by this definition unwinding towards
+    e = 0 is not a turn-around and winding towards +-2 pi is (the linearized laws regulate
+    the unwrapped error e to 0).
+settling time
+    the first grid time after which the position error stays below ``position_tolerance``
+    (None when the final error is not below it).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import pathlib
+from importlib import resources
+from typing import Any, Sequence
+
+import numpy as np
+
+from . import _core
+from .compare import heading_error, parse_controllers, run_law, wrap_angles
+from .progress import ProgressCallback
+from .scenario import load_scenario
+
+__all__ = [
+    "BACKWARDS_FRACTION",
+    "HEADING_TOLERANCE",
+    "POSITION_TOLERANCE",
+    "TURN_MARGIN",
+    "RecoveryStudy",
+    "RecoveryVerdict",
+    "TurnAround",
+    "assess_recovery",
+    "recovery_study",
+    "shipped_poor_scenarios",
+    "turn_around",
+]
+
+POSITION_TOLERANCE = 0.5                 # m
+HEADING_TOLERANCE = math.radians(10.0)   # rad
+TURN_MARGIN = 0.1                        # rad
+BACKWARDS_FRACTION = 0.5
+
+
+@dataclasses.dataclass
+class TurnAround:
+    """The verdict of :func:`turn_around`."""
+
+    turned: bool
+    reason: str                   # "" when not turned
+    t_turn: float | None          # first time |e| exceeds the limit (None if never)
+    limit: float                  # max(pi, |e(t0)|) + margin, rad
+    backwards_fraction: float     # share of the last half with |wrap(e)| > pi/2
+
+
+def turn_around(t: Sequence[float], heading_error: Sequence[float], margin: float = TURN_MARGIN,
+                backwards_fraction: float = BACKWARDS_FRACTION) -> TurnAround:
+    """Whether a heading-error history turns the vehicle around (see the module docstring).
+
+    Parameters
+    ----------
+    t : array of float
+        Strictly increasing times (s), at least two.
+    heading_error : array of float
+        e(t) = psi - psi_d, continuous (not wrapped), rad.
+    margin : float
+        How far (rad) |e| must go beyond max(pi, |e(t0)|) to count as passing through +-pi.
+    backwards_fraction : float
+        Share of the last half in (0, 1] above which ``|wrap(e)| > pi/2`` counts as tracking
+        backwards.
+
+    Raises
+    ------
+    ValueError
+        Mismatched, too short or non-finite inputs, or options out of range.
+    """
+    t = np.asarray(t, dtype=float)
+    e = np.asarray(heading_error, dtype=float)
+    if t.ndim != 1 or e.shape != t.shape or t.size < 2:
+        raise ValueError(f"turn_around needs two 1-D arrays of the same length >= 2, got shapes {t.shape} "
+                         f"and {e.shape}")
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(e))):
+        raise ValueError("turn_around needs finite times and heading errors")
+    if not np.all(np.diff(t) > 0):
+        raise ValueError("turn_around needs strictly increasing times")
+    if not (math.isfinite(margin) and margin >= 0.0):
+        raise ValueError(f"margin must be >= 0 (rad), got {margin}")
+    if not (0.0 < backwards_fraction <= 1.0):
+        raise ValueError(f"backwards_fraction must be in (0, 1], got {backwards_fraction}")
+    limit = max(math.pi, abs(e[0])) + margin
+    beyond = np.flatnonzero(np.abs(e) > limit)
+    t_turn = float(t[beyond[0]]) if beyond.size else None
+    last = t >= 0.5 * (t[0] + t[-1])
+    fraction = float(np.mean(np.abs(wrap_angles(e[last])) > 0.5 * math.pi))
+    if t_turn is not None:
+        reason = (f"the heading error passes through +-pi: |e| exceeds max(pi, |e(t0)|) + margin = "
+                  f"{limit:.4f} rad at t = {t_turn:.4g} s (max |e| = {np.max(np.abs(e)):.4f} rad)")
+        return TurnAround(True, reason, t_turn, limit, fraction)
+    if fraction > backwards_fraction:
+        reason = (f"tracks backwards: |wrap(e)| > pi/2 on {100 * fraction:.0f}% of the last half")
+        return TurnAround(True, reason, None, limit, fraction)
+    return TurnAround(False, "", None, limit, fraction)
+
+
+@dataclasses.dataclass
+class RecoveryVerdict:
+    """Recovery of one law on one scenario."""
+
+    scenario: str
+    controller: str
+    recovers: bool
+    turns_around: bool
+    initial_position_error: float   # m
+    initial_heading_error: float    # rad, e(t0)
+    final_position_error: float     # m
+    final_heading_error: float      # rad, |wrap(e(tf))|
+    settling_time: float | None     # s after t0
+    max_abs_heading_error: float    # rad, max |e(t)|, unwrapped
+    turn: TurnAround | None
+    result: _core.RunResult | None = None
+    error: str | None = None
+
+    def to_dict(self) -> dict:
+        def number(x):
+            return float(x) if x is not None and math.isfinite(x) else None
+
+        return {
+            "scenario": self.scenario,
+            "controller": self.controller,
+            "recovers": self.recovers,
+            "turns_around": self.turns_around,
+            "turn_reason": self.turn.reason if self.turn else "",
+            "initial_position_error": number(self.initial_position_error),
+            "initial_heading_error": number(self.initial_heading_error),
+            "final_position_error": number(self.final_position_error),
+            "final_heading_error": number(self.final_heading_error),
+            "settling_time": number(self.settling_time),
+            "max_abs_heading_error": number(self.max_abs_heading_error),
+            "error": self.error,
+        }
+
+
+def _position_error(result: _core.RunResult) -> np.ndarray:
+    indices = result.trajectory.model.position_indices()
+    if len(indices) != 2:
+        raise ValueError(f"recovery needs a planar position: the model '{result.trajectory.model.name()}' "
+                         "has none")
+    q_e = np.asarray(result.simulation.q_e)
+    return np.hypot(q_e[:, indices[0]], q_e[:, indices[1]])
+
+
+def assess_recovery(result: _core.RunResult, controller: str | None = None, *,
+                    position_tolerance: float = POSITION_TOLERANCE,
+                    heading_tolerance: float = HEADING_TOLERANCE, margin: float = TURN_MARGIN,
+                    backwards_fraction: float = BACKWARDS_FRACTION) -> RecoveryVerdict:
+    """Whether a run recovers and whether it turns the ship around (module docstring).
+
+    Parameters
+    ----------
+    result : RunResult
+        A closed-loop run of a model with a planar position and a heading (the ship).
+    controller : str, optional
+        Label of the law (default ``result.controller``).
+    position_tolerance, heading_tolerance : float
+        Thresholds on the final position error (m) and final wrapped heading error (rad).
+    margin, backwards_fraction : float
+        Options of :func:`turn_around`.
+    """
+    if not (position_tolerance > 0.0 and heading_tolerance > 0.0):
+        raise ValueError(f"the tolerances must be > 0, got position {position_tolerance} m and heading "
+                         f"{heading_tolerance} rad")
+    e = heading_error(result)
+    if e is None:
+        raise ValueError(f"recovery needs a heading: the model '{result.trajectory.model.name()}' has none")
+    t = np.asarray(result.simulation.t)
+    pe = _position_error(result)
+    turn = turn_around(t, e, margin, backwards_fraction)
+    final_heading = float(abs(wrap_angles(e[-1])))
+    above = np.flatnonzero(pe >= position_tolerance)
+    if above.size == 0:
+        settling = 0.0
+    elif above[-1] == pe.size - 1:
+        settling = None
+    else:
+        settling = float(t[above[-1] + 1] - t[0])
+    return RecoveryVerdict(
+        scenario=result.scenario_name,
+        controller=controller or result.controller,
+        recovers=bool(pe[-1] < position_tolerance and final_heading < heading_tolerance),
+        turns_around=turn.turned,
+        initial_position_error=float(pe[0]),
+        initial_heading_error=float(e[0]),
+        final_position_error=float(pe[-1]),
+        final_heading_error=final_heading,
+        settling_time=settling,
+        max_abs_heading_error=float(np.max(np.abs(e))),
+        turn=turn,
+        result=result,
+    )
+
+
+def shipped_poor_scenarios() -> list[pathlib.Path]:
+    """The shipped ``poor_*.toml`` scenarios (poor initial conditions), sorted by name."""
+    folder = pathlib.Path(str(resources.files("hinf_cpp") / "scenarios"))
+    return sorted(folder.glob("poor_*.toml"))
+
+
+@dataclasses.dataclass
+class RecoveryStudy:
+    """Verdicts of :func:`recovery_study`: scenario x controller."""
+
+    verdicts: list[RecoveryVerdict]
+    position_tolerance: float
+    heading_tolerance: float
+    margin: float
+    backwards_fraction: float
+
+    @property
+    def scenarios(self) -> list[str]:
+        return list(dict.fromkeys(v.scenario for v in self.verdicts))
+
+    @property
+    def controllers(self) -> list[str]:
+        return list(dict.fromkeys(v.controller for v in self.verdicts))
+
+    def verdict(self, scenario: str, controller: str) -> RecoveryVerdict:
+        for v in self.verdicts:
+            if v.scenario == scenario and v.controller == controller:
+                return v
+        raise KeyError(f"no verdict for controller '{controller}' on scenario '{scenario}'")
+
+    def table(self) -> tuple[list[str], list[list[Any]]]:
+        """Header and rows: one row per scenario and controller."""
+        header = ["scenario", "controller", "recovers", "turns around", "final |p_e| [m]",
+                  "final |wrap(e_psi)| [deg]", "settling time [s]", "max |e_psi| [deg]"]
+        rows = []
+        for v in self.verdicts:
+            if v.error is not None:
+                rows.append([v.scenario, v.controller, "failed", "-", None, None, None, None])
+                continue
+            rows.append([v.scenario, v.controller, v.recovers, v.turns_around, v.final_position_error,
+                         math.degrees(v.final_heading_error), v.settling_time,
+                         math.degrees(v.max_abs_heading_error)])
+        return header, rows
+
+    def to_dict(self) -> dict:
+        return {
+            "definitions": {
+                "recovers": f"final position error < {self.position_tolerance:g} m and final wrapped heading "
+                            f"error < {math.degrees(self.heading_tolerance):g} deg",
+                "turns_around": f"|psi - psi_d| (unwrapped) exceeds max(pi, |e(t0)|) + {self.margin:g} rad, or "
+                                f"|wrap(psi - psi_d)| > pi/2 on more than {100 * self.backwards_fraction:g}% "
+                                "of the last half",
+                "settling_time": f"first time after which the position error stays below "
+                                 f"{self.position_tolerance:g} m",
+            },
+            "position_tolerance": self.position_tolerance,
+            "heading_tolerance": self.heading_tolerance,
+            "margin": self.margin,
+            "backwards_fraction": self.backwards_fraction,
+            "verdicts": [v.to_dict() for v in self.verdicts],
+        }
+
+
+def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | None = None,
+                   controllers: str | Sequence[str] | None = None, *,
+                   position_tolerance: float = POSITION_TOLERANCE,
+                   heading_tolerance: float = HEADING_TOLERANCE, margin: float = TURN_MARGIN,
+                   backwards_fraction: float = BACKWARDS_FRACTION,
+                   progress: ProgressCallback | None = None) -> RecoveryStudy:
+    """Runs every scenario with every law and assesses recovery and turning around.
+
+    Parameters
+    ----------
+    scenarios : sequence of Scenario or path, optional
+        Default: :func:`shipped_poor_scenarios`. Each runs as written (output feedback when it
+        has ``[measurement]``) with its law replaced.
+    controllers : str or sequence of str, optional
+        Laws among ``"hinf"``, ``"lqr"``, ``"cascade"``; default all three.
+    position_tolerance, heading_tolerance, margin, backwards_fraction
+        As in :func:`assess_recovery`.
+    progress : callable, optional
+        ``progress(index, total, message)`` before each run.
+
+    Returns
+    -------
+    RecoveryStudy
+        A run that fails numerically is kept with ``error`` set.
+    """
+    laws = parse_controllers(controllers)
+    if scenarios is None:
+        scenarios = shipped_poor_scenarios()
+        if not scenarios:
+            raise ValueError("no shipped poor_*.toml scenario found")
+    loaded = [s if isinstance(s, _core.Scenario) else load_scenario(s) for s in scenarios]
+    if not loaded:
+        raise ValueError("recovery_study needs at least one scenario")
+    total = len(loaded) * len(laws)
+    verdicts = []
+    for i, scenario in enumerate(loaded):
+        feedback = "output" if scenario.measurement is not None else "state"
+        for j, law in enumerate(laws):
+            if progress is not None:
+                progress(i * len(laws) + j + 1, total, f"running {law} on {scenario.name}")
+            try:
+                result = run_law(scenario, law, feedback)
+            except _core.HinfError as error:
+                verdicts.append(RecoveryVerdict(scenario.name, law, False, False, math.nan, math.nan, math.nan,
+                                                math.nan, None, math.nan, None,
+                                                error=" ".join(str(error).split())))
+                continue
+            verdicts.append(assess_recovery(result, law, position_tolerance=position_tolerance,
+                                            heading_tolerance=heading_tolerance, margin=margin,
+                                            backwards_fraction=backwards_fraction))
+    return RecoveryStudy(verdicts, position_tolerance, heading_tolerance, margin, backwards_fraction)

@@ -1,0 +1,151 @@
+"""A report folder for one scenario: the comparison of the laws, its figures, tables and results files.
+
+``write_report(scenario, out)`` runs :func:`~hinf_cpp.compare.compare` and writes into ``out``:
+
+    report.md            everything below in one page (tables, definitions, figures)
+    metrics.md           the comparison table (Markdown), one column per run
+    metrics.csv          the same table with the metric keys, numbers at full precision
+    comparison.json      the comparison (Comparison.to_dict(): metrics per run, disturbance)
+    paths.png            overlaid x-y paths with start markers and heading arrows
+    errors.png           position and heading errors against time
+    controls.png         control inputs against time, desired and applied
+    eigenvalues.png      eigenvalue bounds of Z(t) (and of Sigma(t) with [measurement])
+    coupling.png         rho(Sigma Z)(t) against gamma^2 (only with [measurement])
+    <run>.json           the results file of each run (RunResult.to_json())
+    <run>.npz, <run>.csv every time series of each run (hinf_cpp.export: NPZ, tidy CSV)
+
+``<run>`` is the run's key with ``/`` replaced by ``-`` (``hinf``, ``lqr-output-feedback``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import pathlib
+from typing import Callable, Sequence
+
+from . import _core
+from .compare import METRICS, Comparison, compare
+from .export import save_csv, save_json, save_npz
+from .plotting import (controls_figure, coupling_figure, eigenvalues_figure, errors_figure, paths_figure,
+                       save_figure)
+from .progress import ProgressCallback
+from .tables import csv_table, markdown_table
+
+__all__ = ["Report", "run_file_stem", "write_report"]
+
+
+def run_file_stem(key: str) -> str:
+    """The file stem of a run: its key with '/' replaced by '-'."""
+    return key.replace("/", "-")
+
+
+@dataclasses.dataclass
+class Report:
+    """What :func:`write_report` wrote."""
+
+    folder: pathlib.Path
+    files: list[pathlib.Path]
+    comparison: Comparison
+
+
+def _figures(comparison: Comparison) -> list[tuple[str, str, Callable]]:
+    """(file name, caption, factory) of the figures that apply to the comparison's runs."""
+    runs = comparison.results()
+    if not runs:
+        return []
+    model = runs[0][1].trajectory.model
+    planar = len(model.position_indices()) == 2
+    output = any(r.feedback == "output" and r.ok for r in comparison.runs)
+    figures = []
+    if planar:
+        figures.append(("paths.png", "x-y paths: desired (solid), actual (dashed; dash-dotted for output "
+                        "feedback), starts marked, arrows along the paths show the heading",
+                        lambda: paths_figure(runs)))
+        figures.append(("errors.png", "position error |p - p_d| and wrapped heading error against time",
+                        lambda: errors_figure(runs)))
+    figures.append(("controls.png", "control inputs against time: desired u_d and applied u",
+                    lambda: controls_figure(runs)))
+    figures.append(("eigenvalues.png", "smallest and largest eigenvalue of Z(t) per design"
+                    + (" and of the filter's Sigma(t)" if output else ""), lambda: eigenvalues_figure(runs)))
+    if output:
+        figures.append(("coupling.png", "coupling condition of the output-feedback design: rho(Sigma Z)(t) "
+                        "against gamma^2", lambda: coupling_figure(runs)))
+    return figures
+
+
+def _report_markdown(comparison: Comparison, figures: list[tuple[str, str, Callable]],
+                     scenario: _core.Scenario) -> str:
+    header, rows = comparison.table()
+    lines = [f"# Comparison of tracking laws: {comparison.scenario}", ""]
+    if scenario.description:
+        lines += [scenario.description, ""]
+    lines += [f"Horizon [{scenario.t0:g}, {scenario.tf:g}] s; H-infinity design at gamma = {comparison.gamma:g}; "
+              f"lqr = the same design at gamma = inf; cascade = the cascaded baseline.", "",
+              "Disturbance of every run:", ""]
+    for run in comparison.runs:
+        lines.append(f"- `{run.key}`: {run.disturbance['description']}")
+        if run.error:
+            lines.append(f"  - failed: {run.error}")
+    lines += ["", "## Metrics", "", markdown_table(header, rows), "Definitions:", ""]
+    lines += [f"- {m.label} [{m.unit}]: {m.definition}" for m in METRICS]
+    lines += ["", "## Figures", ""]
+    for name, caption, _ in figures:
+        lines += [f"![{caption}]({name})", "", f"*{caption}*", ""]
+    lines += ["## Files", "",
+              "`metrics.md`, `metrics.csv`, `comparison.json`; per run `<run>.json` (results file), "
+              "`<run>.npz` (every time series, metrics and metadata) and `<run>.csv` (tidy: t,variable,value).",
+              ""]
+    return "\n".join(lines)
+
+
+def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
+                 controllers: str | Sequence[str] | None = None, *,
+                 feedback: str | Sequence[str] | None = None, worst_case: bool | None = None,
+                 progress: ProgressCallback | None = None) -> Report:
+    """Runs the comparison and writes the report folder (module docstring).
+
+    Parameters
+    ----------
+    scenario : Scenario
+        The scenario.
+    out : path
+        The folder (created if needed; files of the same names are overwritten).
+    controllers, feedback, worst_case
+        As in :func:`~hinf_cpp.compare.compare`.
+    progress : callable, optional
+        ``progress(index, total, message)``: the runs, then each file group written.
+    """
+    folder = pathlib.Path(out)
+    if folder.exists() and not folder.is_dir():
+        raise ValueError(f"the report folder '{folder}' exists and is not a folder")
+    comparison = compare(scenario, controllers, feedback=feedback, worst_case=worst_case, progress=progress)
+    folder.mkdir(parents=True, exist_ok=True)
+    figures = _figures(comparison)
+    steps = len(figures) + len(comparison.results()) + 1
+    step = 0
+
+    def advance(message: str) -> None:
+        nonlocal step
+        step += 1
+        if progress is not None:
+            progress(step, steps, message)
+
+    files = []
+    advance("writing the tables")
+    header, rows = comparison.table()
+    for name, text in [("metrics.md", markdown_table(header, rows)), ("metrics.csv", csv_table(*comparison.table(keys=True))),
+                       ("comparison.json", comparison.to_json() + "\n"),
+                       ("report.md", _report_markdown(comparison, figures, scenario))]:
+        path = folder / name
+        path.write_text(text)
+        files.append(path)
+    for name, _, factory in figures:
+        advance(f"drawing {name}")
+        files.append(save_figure(factory(), folder / name))
+    for key, result in comparison.results():
+        stem = run_file_stem(key)
+        advance(f"writing the results files of {key}")
+        files.append(save_json(result, folder / f"{stem}.json"))
+        files.append(save_npz(result, folder / f"{stem}.npz"))
+        files.append(save_csv(result, folder / f"{stem}.csv"))
+    return Report(folder, files, comparison)
