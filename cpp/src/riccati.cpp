@@ -202,6 +202,9 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
   auto rhs = [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); };
   double limit = options.escape_norm * std::max(1.0, max_abs(x.data(), p));
   bool probed = false;
+  // Thrown when the inverse has been followed to t_end without an escape and nothing is
+  // stored: the question "does X escape?" is answered (no), the rest need not be integrated.
+  struct NoEscape {};
   auto check_escape = [&](double t, const double* y) {
     const double largest = max_abs(y, p);
     if (largest <= limit) return;
@@ -210,6 +213,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     unpack_symmetric(y, X);
     const double t_escape = escape_time<N>(trajectory, kind, Q, gamma, N_inv, X, t, t_end, options);
     if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
+    if (!store) throw NoEscape{};
     limit = std::numeric_limits<double>::infinity();  // large but finite: carry on
     probed = true;
   };
@@ -221,14 +225,20 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
       unpack_symmetric(x.data(), X);
       const double t_escape = escape_time<N>(trajectory, kind, Q, gamma, N_inv, X, e.t(), t_end, options);
       if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
+      if (!store) throw NoEscape{};
+      probed = true;
     }
-    throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)",
-                              " solve failed: ", e.what(),
-                              probed ? " (the solution is very large but has no finite escape)" : ""),
+    throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)", " solve failed: ",
+                              e.what(),
+                              probed ? str_cat(". The solution has no finite escape but grows too large to"
+                                               " integrate near t = ", e.t(), ": gamma = ", gamma,
+                                               " is very close to the smallest admissible value; increase it")
+                                     : ""),
                       e.t(), e.flag());
   };
   PiecewisePolynomial dense(p);
   SolveStats stats;
+  try {
   if (options.method == Method::ERK) {
     Dopri5 stepper(p, options.rtol, options.atol, options.max_steps);
     try {
@@ -267,6 +277,9 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     stats.rejected = solver.num_error_test_failures();
     stats.rhs_evals = solver.num_rhs_evals();
     stats.jac_evals = solver.num_jac_evals();
+  }
+  } catch (const NoEscape&) {
+    return {PiecewisePolynomial(p), stats};
   }
   dense.finalize();
   stats.memory_bytes = dense.memory_bytes();
