@@ -32,7 +32,8 @@ void check_symmetric_weight(const ConstMatRef& M, int n, const std::string& name
                             bool definite) {
   check_shape(M, n, n, name);
   check_finite(M, name);
-  const double scale = std::max(1.0, M.cwiseAbs().maxCoeff());
+  // Relative to the matrix's own size, so that a tiny weight (1e-12 I) is as valid as I.
+  const double scale = M.cwiseAbs().maxCoeff();
   const double asym = (M - M.transpose()).cwiseAbs().maxCoeff();
   require(asym <= 1e-10 * scale, name, " must be symmetric: max |", name, " - ", name,
           "'| = ", asym, "; pass (M + M')/2 if the asymmetry is round-off");

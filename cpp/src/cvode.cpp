@@ -62,7 +62,7 @@ std::string flag_name(long flag) {
 
 Cvode::Cvode(int dim, Method method, double rtol, double atol, long max_steps, Rhs rhs,
              Jacobian jacobian)
-    : dim_(dim), method_(method), method_name_(to_string(method)), rhs_(std::move(rhs)),
+    : dim_(dim), max_steps_(max_steps), method_(method), method_name_(to_string(method)), rhs_(std::move(rhs)),
       jacobian_(std::move(jacobian)) {
   if (method != Method::BDF && method != Method::Adams)
     throw InputError("Cvode supports the methods \"bdf\" and \"adams\"");
@@ -149,6 +149,13 @@ void Cvode::reset(double t0, const double* y0, double t_stop) {
 double Cvode::step(double* y_out) {
   if (!initialized_) throw InputError("Cvode::step before reset");
   double t = 0.0;
+  if (num_steps() >= max_steps_) {
+    CVodeGetCurrentTime(mem_, &t);
+    throw SolverError(str_cat("CVODE ", method_name_, ": more than max_steps = ", max_steps_,
+                              " steps before t = ", t, " (CV_TOO_MUCH_WORK); the step size collapsed or"
+                              " the problem needs a larger max_steps"),
+                      t, "CV_TOO_MUCH_WORK");
+  }
   const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
   check(flag, "CVode", t);
   const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));

@@ -205,7 +205,16 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
   // Thrown when the inverse has been followed to t_end without an escape and nothing is
   // stored: the question "does X escape?" is answered (no), the rest need not be integrated.
   struct NoEscape {};
+  // Once the inverse has shown that X does not escape, X is followed through its peak; a
+  // continuation that needs far more steps than the whole solve before it (the step size
+  // collapsing under the huge X) is stopped as a failure instead of running to max_steps.
+  long steps_taken = 0, step_budget_after_probe = 0;
   auto check_escape = [&](double t, const double* y) {
+    ++steps_taken;
+    if (probed && steps_taken > step_budget_after_probe)
+      throw SolverError(str_cat("more than ", step_budget_after_probe, " steps in the peak of the solution near t = ", t,
+                                " (the step size collapsed)"),
+                        t, "TOO_MUCH_WORK");
     const double largest = max_abs(y, p);
     if (largest <= limit) return;
     if (!std::isfinite(largest)) throw_escape(kind, t, gamma, t0, tf, " (the solution became non-finite)");
@@ -216,6 +225,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     if (!store) throw NoEscape{};
     limit = std::numeric_limits<double>::infinity();  // large but finite: carry on
     probed = true;
+    step_budget_after_probe = steps_taken + std::max(2000L, 20 * steps_taken);
   };
   // A failure while X is large may be an escape the threshold has not caught yet.
   const double initial_scale = std::max(1.0, max_abs(x.data(), p));
@@ -228,8 +238,10 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
       if (!store) throw NoEscape{};
       probed = true;
     }
+    std::string cause = e.what();
+    while (!cause.empty() && (cause.back() == '.' || cause.back() == ' ')) cause.pop_back();
     throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)", " solve failed: ",
-                              e.what(),
+                              cause,
                               probed ? str_cat(". The solution has no finite escape but grows too large to"
                                                " integrate near t = ", e.t(), ": gamma = ", gamma,
                                                " is very close to the smallest admissible value; increase it")
@@ -267,11 +279,11 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     while ((t_end - t) * direction > 0.0) {
       try {
         t = solver.step(x.data());
+        if (store) solver.append_last_step(dense);
+        check_escape(t, x.data());
       } catch (const SolverError& e) {
         on_failure(e);
       }
-      if (store) solver.append_last_step(dense);
-      check_escape(t, x.data());
     }
     stats.steps = solver.num_steps();
     stats.rejected = solver.num_error_test_failures();

@@ -580,4 +580,27 @@ TEST(Cvode, TooManyStepsIsASolverError) {
   EXPECT_THROW(solver.advance(100.0, &y), hinf::SolverError);
 }
 
+// CVODE counts max_steps per CVode() call; in one-step mode every call is one step, so the
+// wrapper must count across calls or a collapsing step size loops without end.
+TEST(Cvode, TooManyStepsIsASolverErrorInOneStepMode) {
+  hinf::Cvode solver(1, Method::Adams, 1e-10, 1e-12, 10,
+                     [](double t, const double*, double* dy) { dy[0] = std::cos(10.0 * t); });
+  double y = 0.0;
+  solver.reset(0.0, &y, 100.0);
+  int calls = 0;
+  try {
+    while (calls < 1000) {
+      solver.step(&y);
+      ++calls;
+    }
+    FAIL() << "1000 steps taken with max_steps = 10";
+  } catch (const hinf::SolverError& e) {
+    EXPECT_EQ(calls, 10);
+    EXPECT_EQ(e.flag(), "CV_TOO_MUCH_WORK");
+  }
+  // A reset restores the budget.
+  solver.reset(0.0, &y, 100.0);
+  EXPECT_NO_THROW(solver.step(&y));
+}
+
 }  // namespace

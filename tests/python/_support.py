@@ -325,3 +325,113 @@ def output_feedback_reference(t0, tf, q0, times, *, f, B, D, C, A_filter, q_d, u
         x = sol.y[:, -1]
         k += 1
     return out[:, :n], out[:, n:2 * n], out[:, 2 * n:].reshape(-1, n, n)
+
+
+# ---- the infinite-horizon full-information H-infinity level (gamma* of T -> infinity) ----
+
+def game_hamiltonian(A, B, D, Q, gamma) -> np.ndarray:
+    """H(gamma) = [[A, -S], [-Q, -A']], S = BB' - gamma^-2 DD', of the game ARE
+    A'X + XA + Q - X S X = 0 (X = X2 X1^-1 for an n-dimensional invariant subspace [X1; X2])."""
+    S = B @ B.T - D @ D.T / gamma**2
+    return np.block([[A, -S], [-Q, -A.T]])
+
+
+def stabilizing_game_solution(A, B, D, Q, gamma, imag_tol=1e-9, cond_max=1e12):
+    """(X, why) for the stabilizing solution of the game ARE from the stable invariant subspace
+    of H(gamma) (real Schur form ordered with SciPy, sort="lhp"): X = X2 X1^-1 with A - S X
+    stable. X is None and why says what is missing when H has eigenvalues on the imaginary axis
+    ("imaginary") or X1 is singular ("singular"); why = "indefinite" when X exists but is not
+    positive semidefinite (then it is returned too), "" when X >= 0."""
+    n = A.shape[0]
+    H = game_hamiltonian(A, B, D, Q, gamma)
+    lam = np.linalg.eigvals(H)
+    if np.min(np.abs(lam.real)) <= imag_tol * max(1.0, np.max(np.abs(lam))):
+        return None, "imaginary"
+    _, U, sdim = linalg.schur(H, sort="lhp")
+    assert sdim == n  # a Hamiltonian matrix without imaginary eigenvalues: n on each side
+    X1, X2 = U[:n, :n], U[n:, :n]
+    if np.linalg.cond(X1) > cond_max:
+        return None, "singular"
+    X = np.linalg.solve(X1.T, X2.T).T
+    X = 0.5 * (X + X.T)
+    if np.linalg.eigvalsh(X)[0] < -1e-10 * max(1.0, np.max(np.abs(X))):
+        return X, "indefinite"
+    return X, ""
+
+
+def full_information_hinf_level(A, B, D, Q, gamma_max=1e3, step=1.01, rtol=1e-13) -> float:
+    """The infinite-horizon full-information H-infinity level of dq/dt = A q + B u + D w with
+    the cost |q|_Q^2 + |u|^2: the infimum of the gammas above which the game ARE has a
+    stabilizing solution X >= 0 (no eigenvalue of H(gamma) on the imaginary axis, X1
+    invertible, X positive semidefinite). Every gamma above the level must pass, so the search
+    walks down from gamma_max by the factor `step` to the first failure (one admissible
+    interval from the top, not just a sign change), then bisects."""
+
+    def admissible(gamma):
+        X, why = stabilizing_game_solution(A, B, D, Q, gamma)
+        return X is not None and why == ""
+
+    assert admissible(gamma_max), "gamma_max is below the level"
+    gamma = gamma_max
+    while admissible(gamma / step):
+        gamma /= step
+        if gamma < 1e-9:
+            return 0.0
+    lo, hi = gamma / step, gamma
+    while hi - lo > rtol * hi:
+        mid = 0.5 * (lo + hi)
+        if admissible(mid):
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+# ---- conjugate points through the inverse W = Z^-1 ----
+
+def inverse_grde(A_e, S, Q, Qf, t0, tf, rtol=1e-10):
+    """W(t) = Z(t)^-1 for the GRDE -dZ/dt = A'Z + ZA + Q - Z S Z, Z(tf) = Qf, integrated backward
+    by SciPy (DOP853, dense output) as
+        dW/dt = A W + W A' + W Q W - S,   W(tf) = Qf^-1,
+    A = A_e(t) a callable. W is smooth through a finite escape of Z: Z exists on [t, tf] exactly
+    while lambda_min(W) > 0 there (W is bounded before the escape: Z >= the LQR solution > 0),
+    so the first conjugate point is the first zero of lambda_min(W) going backward."""
+    from scipy.integrate import solve_ivp
+
+    n = Qf.shape[0]
+
+    def rhs(t, y):
+        A = A_e(float(t))
+        W = y.reshape(n, n)
+        return (A @ W + W @ A.T + W @ Q @ W - S).ravel()
+
+    sol = solve_ivp(rhs, (tf, t0), np.linalg.inv(Qf).ravel(), method="DOP853", rtol=rtol,
+                    atol=rtol * 1e-2, dense_output=True)
+    assert sol.success, sol.message
+    return sol
+
+
+def inverse_grde_conjugate_point(sol, t0, tf, samples=8001):
+    """From inverse_grde's solution: (min over [t0, tf] of lambda_min(W), where, the first zero
+    of lambda_min(W) going backward from tf or None). The minimum is refined by a bounded scalar
+    search around the best sample, the zero by brentq."""
+    from scipy.optimize import brentq, minimize_scalar
+
+    def lam(t):
+        W = sol.sol(t).reshape(int(round(math.sqrt(sol.y.shape[0]))), -1)
+        return np.linalg.eigvalsh(0.5 * (W + W.T))[0]
+
+    times = np.linspace(tf, t0, samples)
+    values = np.array([lam(t) for t in times])
+    k = int(np.argmin(values))
+    a, b = times[min(k + 1, samples - 1)], times[max(k - 1, 0)]
+    best = minimize_scalar(lam, bounds=(min(a, b), max(a, b)), method="bounded", options={"xatol": 1e-10})
+    lowest, where = (best.fun, best.x) if best.fun < values[k] else (values[k], times[k])
+    negative = np.nonzero(values <= 0.0)[0]
+    crossing = None
+    if negative.size:
+        j = negative[0]
+        crossing = brentq(lam, times[j], times[j - 1], xtol=1e-13) if j > 0 else tf
+    elif lowest <= 0.0:  # dips below zero between samples only
+        crossing = brentq(lam, where, times[max(k - 1, 0)], xtol=1e-13)
+    return float(lowest), float(where), crossing

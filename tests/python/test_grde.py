@@ -207,8 +207,8 @@ def test_lqr_never_has_a_conjugate_point(lti_trajectory):
     """gamma = inf (LQR): S = BB' >= 0, so Z(t) is bounded on any finite horizon (by the cost
     of u = 0) and no conjugate point exists. Here Z(t0) is large but finite: the scalar LQR
     GRDE with a = 1, b = 1e-6, q = qf = 1 reaches about 2e12 (= 2a/b^2) at t0.
-    BUG: solve_grde raises ConjugatePointError ("gamma = inf is at or below gamma*") as soon
-    as |Z| exceeds escape_norm * max(1, |Qf|) = 1e8, whatever gamma is."""
+    Regression: solve_grde used to raise ConjugatePointError ("gamma = inf is at or below
+    gamma*") as soon as |Z| exceeded escape_norm * max(1, |Qf|) = 1e8, whatever gamma was."""
     a, b, q, qf, t0, tf = LQR_LARGE
     exact = scalar_lqr_exact(a, b, q, qf, tf - t0)
     assert 1e12 < exact < 3e12

@@ -758,9 +758,9 @@ def test_ship_coupling_violation_between_output_times_is_reported_as_such(ship_c
     0.72 and 0.73. At the crossing I - gamma^-2 Sigma Z is singular and the estimator's gain
     blows up, so the integration cannot reach the next output time. The run must still report
     the coupling violation (CouplingConditionError near t_c), not an integration failure.
-    BUG: the check runs only at output times, so this raises SolverError ("Dormand-Prince:
-    step size underflow at t = 0.7238171001 (the solution may be escaping to infinity)"),
-    which hides the cause and its remedy."""
+    Regression: when the check ran only at output times, this raised SolverError
+    ("Dormand-Prince: step size underflow at t = 0.7238171001 (the solution may be escaping to
+    infinity)"), which hid the cause and its remedy."""
     grde, t_first, _, t_cross = ship_coupling_reference(2.0)
     assert t_first == pytest.approx(0.73) and 0.72 < t_cross < 0.73
     with pytest.raises(hc.CouplingConditionError) as info:
@@ -774,10 +774,10 @@ def test_ship_flagged_coupling_violation_is_not_lost(ship_coupling_reference):
     the run either completes and reports coupling_violation_t = 1.38, or, if the singular
     estimator makes the integration fail afterwards, the error says that the coupling
     condition was violated (and when).
-    BUG: the run fails later with SolverError "Dormand-Prince: more than 2000 steps before
-    reaching t = 2.64 ...; raise max_steps or loosen rtol" (with the default 500000 steps it
-    grinds for about a minute, then fails the same way at t = 3.37), which does not mention
-    the flagged violation: coupling_violation_t is unreachable and the advice is wrong."""
+    Regression: the run used to fail later with SolverError "Dormand-Prince: more than 2000
+    steps before reaching t = 2.64 ...; raise max_steps or loosen rtol" (with the default
+    500000 steps it ground for about a minute, then failed the same way at t = 3.37), without
+    mentioning the flagged violation."""
     grde, t_first, _, _ = ship_coupling_reference(SHIP_COUPLING_GAMMA)
     options = paper_options(Sigma0=0.01 * EYE6, filter_A="desired", stop_on_coupling_violation=False)
     try:
@@ -807,7 +807,8 @@ def test_coupling_violation_from_a_scenario_file(tmp_path, reader, ship_coupling
     with pytest.raises(hc.CouplingConditionError) as info:
         hc.run_scenario(scenario)
     assert info.value.t == pytest.approx(t_first, abs=1e-12)
-    # "flag": the run goes on past the violation (on the ship it then fails: see the BUG above).
+    # "flag": the run goes on past the violation (on the ship the singular estimator may then
+    # end it; the error names the violation: see test_ship_flagged_coupling_violation_is_not_lost).
     flagged = 'filter_A = "desired"\non_coupling_violation = "flag"'
     path.write_text(mutate(COUPLING_TEXT, 'filter_A = "desired"', flagged))
     scenario = load(path)
@@ -933,9 +934,8 @@ def measurement_case(old, new):
 # id -> (scenario text, words the message must contain)
 BAD_MEASUREMENT = {
     "sigma < 0": (measurement_case("\nsigma = 0.5", "\nsigma = -0.5"), ["sigma", ">= 0"]),
-    # BUG: with N left to its default, Scenario.resolved() (run before validate()) reports
-    # "[measurement] N must be given when sigma = 0 (the default N is sigma^2 I)" for
-    # sigma = -0.5, instead of "[measurement] sigma must be >= 0, got -0.5".
+    # Regression: with N left to its default, the message used to be "[measurement] N must be
+    # given when sigma = 0 ..." for sigma = -0.5, instead of naming sigma.
     "sigma < 0 without N": (mutate(measurement_case("\nsigma = 0.5", "\nsigma = -0.5"), "N = 0.25\n", ""),
                             ["sigma", ">= 0"]),
     "sigma NaN": (measurement_case("\nsigma = 0.5", "\nsigma = nan"), ["sigma"]),

@@ -452,6 +452,16 @@ def test_solve_grde_bad_inputs(short_trajectory, Q, Qf, gamma, words):
         assert word in str(info.value)
 
 
+def test_definiteness_is_judged_relative_to_the_weight_scale(short_trajectory):
+    # A tiny positive definite weight is as valid as I; a tiny indefinite one is still rejected.
+    Z = hc.solve_grde(short_trajectory, 1e-12 * EYE, 1e-12 * EYE, math.inf)
+    assert np.all(np.isfinite(Z.Z(0.0)))
+    with pytest.raises(ValueError, match="Qf must be positive definite"):
+        hc.solve_grde(short_trajectory, EYE, 1e-12 * np.diag([1.0] * 5 + [-1.0]), 5.0)
+    with pytest.raises(ValueError, match="Qf must be positive definite"):
+        hc.solve_grde(short_trajectory, EYE, np.diag([1.0] * 5 + [1e-14]), 5.0)
+
+
 def test_solver_options_bad_inputs(short_trajectory):
     with pytest.raises(ValueError, match="rk4"):
         hc.SolverOptions(method="rk4")

@@ -32,7 +32,8 @@ struct GammaStarOptions {
 struct GammaTrial {
   double gamma;
   bool passed;
-  double t_escape;        // failure time (escape or coupling violation), NaN if passed
+  double t_escape;        // failure time (escape, coupling violation, or where a solution too
+                          // close to its escape could not be integrated), NaN if passed
   std::string condition;  // what failed: "grde", "filter" or "coupling"; empty if passed
 };
 

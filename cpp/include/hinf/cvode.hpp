@@ -30,7 +30,8 @@ class Cvode {
 
   // (Re)starts at (t0, y0); the solver never steps past t_stop.
   void reset(double t0, const double* y0, double t_stop);
-  // Takes one internal step toward t_stop; returns the new time and stores y there.
+  // Takes one internal step toward t_stop; returns the new time and stores y there. The
+  // max_steps budget counts every step since reset (CVODE itself counts only per call).
   double step(double* y);
   // Integrates to tout (between the current time and t_stop), interpolating; returns tout.
   double advance(double tout, double* y);
@@ -50,6 +51,7 @@ class Cvode {
   void rethrow_pending();
 
   int dim_;
+  long max_steps_;
   Method method_;
   std::string method_name_;
   Rhs rhs_;
