@@ -124,12 +124,7 @@ class OutputFeedbackSystem {
   // rho(Sigma Z) at (t, x).
   double rho(double t, const double* x) {
     evaluate_signals(t, x);
-    Eigen::LLT<MatN> llt(Sigma_);
-    if (llt.info() != Eigen::Success) return NAN;
-    T_ = llt.matrixL();
-    A_f_.noalias() = Z_ * T_;
-    G_.noalias() = T_.transpose() * A_f_;
-    return detail::symmetric_eigen_max(G_);
+    return rho_of_current();
   }
 
   // Values on the output grid at (t, x): u, w (noise channels included), y, the extreme
@@ -142,11 +137,21 @@ class OutputFeedbackSystem {
     Eigen::Map<const Vec> q(x, n_);
     Eigen::Map<Vec>(y, p_) = C_ * q + options_.sigma * noise_;
     detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
-    // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L'.
-    rho = this->rho(t, x);
+    rho = rho_of_current();
   }
 
  private:
+  // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L', for the Sigma_ and Z_ of the last
+  // evaluate_signals; NaN if Sigma is not positive definite.
+  double rho_of_current() {
+    Eigen::LLT<MatN> llt(Sigma_);
+    if (llt.info() != Eigen::Success) return NAN;
+    T_ = llt.matrixL();
+    A_f_.noalias() = Z_ * T_;
+    G_.noalias() = T_.transpose() * A_f_;
+    return detail::symmetric_eigen_max(G_);
+  }
+
   void set_matrices(double t) {
     B_ = model_.B(t);
     D_ = model_.D(t);
