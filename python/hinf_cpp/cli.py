@@ -280,7 +280,8 @@ def cmd_report(args: argparse.Namespace) -> int:
     scenario = load_scenario(args.scenario)
     with Progress(quiet=args.quiet) as progress:
         report = write_report(scenario, args.out, controllers, feedback=args.feedback,
-                              worst_case=True if args.worst_case else None, progress=progress)
+                              worst_case=True if args.worst_case else None, pdf=args.pdf,
+                              progress=progress)
     print(_comparison_header(report.comparison))
     notes = _comparison_notes(report.comparison)
     if notes:
@@ -408,6 +409,7 @@ def build_parser() -> argparse.ArgumentParser:
     rep.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
     rep.add_argument("--worst-case", action="store_true",
                      help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+    rep.add_argument("--pdf", action="store_true", help="also write every figure as a vector PDF")
     _add_quiet(rep)
     rep.set_defaults(handler=cmd_report)
 

@@ -15,6 +15,7 @@
     <run>.npz, <run>.csv every time series of each run (hinf_cpp.export: NPZ, tidy CSV)
 
 ``<run>`` is the run's key with ``/`` replaced by ``-`` (``hinf``, ``lqr-output-feedback``).
+With ``pdf=True`` every figure is also written as a vector PDF next to its PNG.
 """
 
 from __future__ import annotations
@@ -101,7 +102,7 @@ def _report_markdown(comparison: Comparison, figures: list[tuple[str, str, Calla
 def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
                  controllers: str | Sequence[str] | None = None, *,
                  feedback: str | Sequence[str] | None = None, worst_case: bool | None = None,
-                 progress: ProgressCallback | None = None) -> Report:
+                 pdf: bool = False, progress: ProgressCallback | None = None) -> Report:
     """Runs the comparison and writes the report folder (module docstring).
 
     Parameters
@@ -112,6 +113,8 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
         The folder (created if needed; files of the same names are overwritten).
     controllers, feedback, worst_case
         As in :func:`~hinf_cpp.compare.compare`.
+    pdf : bool
+        Also write each figure as a vector PDF (``paths.pdf``, ...).
     progress : callable, optional
         ``progress(index, total, message)``: the runs, then each file group written.
     """
@@ -141,7 +144,10 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
         files.append(path)
     for name, _, factory in figures:
         advance(f"drawing {name}")
-        files.append(save_figure(factory(), folder / name))
+        fig = factory()
+        files.append(save_figure(fig, folder / name))
+        if pdf:
+            files.append(save_figure(fig, (folder / name).with_suffix(".pdf")))
     for key, result in comparison.results():
         stem = run_file_stem(key)
         advance(f"writing the results files of {key}")

@@ -282,6 +282,15 @@ def test_write_report_state_feedback(tmp_path):
     assert "](paths.png)" in text and "| metric | unit | hinf | cascade |" in text
 
 
+def test_write_report_with_vector_figures(tmp_path):
+    report = write_report(short("paper_fig1"), tmp_path / "rep", "hinf", pdf=True)
+    pngs = sorted(p.stem for p in report.files if p.suffix == ".png")
+    pdfs = sorted(p for p in report.files if p.suffix == ".pdf")
+    assert pngs and [p.stem for p in pdfs] == pngs
+    for p in pdfs:
+        assert p.read_bytes()[:5] == b"%PDF-" and p.stat().st_size > 1000
+
+
 @needs_cli
 def test_cli_report(tmp_path):
     out = tmp_path / "report"
