@@ -31,3 +31,19 @@ def test_tutorial_code_blocks_run(monkeypatch):
     assert "True\nTrue" in printed  # coupling held; the replay is identical
     assert namespace["position_error"][-1] < 0.1 * namespace["position_error"][0]
     assert os.path.exists(ROOT / "docs" / "mathematics.md")
+
+
+def test_readme_python_block_runs(monkeypatch):
+    text = (ROOT / "README.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    assert len(blocks) == 1
+    monkeypatch.chdir(ROOT)
+    namespace: dict = {}
+    with contextlib.redirect_stdout(io.StringIO()) as out:
+        exec(compile(blocks[0], "README.md", "exec"), namespace)  # noqa: S102
+    # What the comments of the block say.
+    assert 0.0 < float(out.getvalue()) < 0.1
+    assert namespace["Z"].shape == (5, 6, 6)
+    assert abs(namespace["star"].gamma_star - 1.335) < 1e-3
+    run = namespace["run"]
+    assert run.q.shape[1] == 6 and run.q.shape[0] == run.t.shape[0]
