@@ -205,16 +205,25 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
   // Thrown when the inverse has been followed to t_end without an escape and nothing is
   // stored: the question "does X escape?" is answered (no), the rest need not be integrated.
   struct NoEscape {};
-  // Once the inverse has shown that X does not escape, X is followed through its peak; a
-  // continuation that needs far more steps than the whole solve before it (the step size
-  // collapsing under the huge X) is stopped as a failure instead of running to max_steps.
-  long steps_taken = 0, step_budget_after_probe = 0;
+  // Once the inverse has shown that X does not escape, X is followed through its peak. A
+  // continuation that has taken far more steps than the whole solve before it AND whose pace
+  // since the probe would need more than max_steps to reach t_end (the step size collapsing
+  // under the huge X) is stopped as a failure instead of grinding on to max_steps; a large X
+  // that is integrated at a normal pace (a long horizon) is not affected.
+  long steps_taken = 0, steps_at_probe = 0, step_budget_after_probe = 0;
+  double t_probe = t_start;
   auto check_escape = [&](double t, const double* y) {
     ++steps_taken;
-    if (probed && steps_taken > step_budget_after_probe)
-      throw SolverError(str_cat("more than ", step_budget_after_probe, " steps in the peak of the solution near t = ", t,
-                                " (the step size collapsed)"),
-                        t, "TOO_MUCH_WORK");
+    if (probed && steps_taken > step_budget_after_probe) {
+      const double steps_since = static_cast<double>(steps_taken - steps_at_probe);
+      const double pace = std::abs(t - t_probe) / steps_since;  // mean step since the probe
+      const double projected = static_cast<double>(steps_taken) + std::abs(t_end - t) / std::max(pace, 1e-300);
+      if (projected > static_cast<double>(options.max_steps))
+        throw SolverError(str_cat(steps_taken - steps_at_probe, " steps in the peak of the solution near t = ", t,
+                                  " (the step size collapsed: at this pace max_steps = ", options.max_steps,
+                                  " would not reach t = ", t_end, ")"),
+                          t, "TOO_MUCH_WORK");
+    }
     const double largest = max_abs(y, p);
     if (largest <= limit) return;
     if (!std::isfinite(largest)) throw_escape(kind, t, gamma, t0, tf, " (the solution became non-finite)");
@@ -225,6 +234,8 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     if (!store) throw NoEscape{};
     limit = std::numeric_limits<double>::infinity();  // large but finite: carry on
     probed = true;
+    steps_at_probe = steps_taken;
+    t_probe = t;
     step_budget_after_probe = steps_taken + std::max(2000L, 20 * steps_taken);
   };
   // A failure while X is large may be an escape the threshold has not caught yet.
@@ -242,10 +253,13 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     while (!cause.empty() && (cause.back() == '.' || cause.back() == ' ')) cause.pop_back();
     throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)", " solve failed: ",
                               cause,
-                              probed ? str_cat(". The solution has no finite escape but grows too large to"
-                                               " integrate near t = ", e.t(), ": gamma = ", gamma,
-                                               " is very close to the smallest admissible value; increase it")
-                                     : ""),
+                              !probed ? std::string()
+                              : std::isinf(gamma)
+                                  ? str_cat(". The solution has no finite escape but grows too large to integrate"
+                                            " near t = ", e.t(), " (gamma = inf): rescale the weights or the model")
+                                  : str_cat(". The solution has no finite escape but grows too large to integrate"
+                                            " near t = ", e.t(), ": gamma = ", gamma,
+                                            " is very close to the smallest admissible value; increase it")),
                       e.t(), e.flag());
   };
   PiecewisePolynomial dense(p);

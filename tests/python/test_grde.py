@@ -232,6 +232,59 @@ def test_lqr_large_solution_with_a_raised_escape_norm(lti_trajectory, method):
     assert np.max(np.abs(sol.Z(times)[:, 0, 0] / exact - 1.0)) < 1e-5
 
 
+class PeriodicScalar(hc.Model):
+    """dq/dt = a(t) q + b u + w with a(t) = 1 + 0.9 sin(5 t): time-varying, so that the solver
+    keeps taking steps over a long horizon."""
+
+    B_GAIN = 1e-6
+
+    def __init__(self):
+        hc.Model.__init__(self)
+
+    def n(self):
+        return 1
+
+    def m(self):
+        return 1
+
+    def nw(self):
+        return 1
+
+    @staticmethod
+    def a(t):
+        return 1.0 + 0.9 * math.sin(5.0 * t)
+
+    def f(self, t, q):
+        return np.array([self.a(t) * q[0]])
+
+    def dfdq(self, t, q):
+        return np.array([[self.a(t)]])
+
+    def B(self, t):
+        return np.array([[self.B_GAIN]])
+
+    def D(self, t):
+        return np.array([[1.0]])
+
+
+def test_lqr_large_solution_over_a_long_horizon(method):
+    """Z (gamma = inf, no conjugate point possible) passes the escape threshold early and then
+    stays about 1e12 for 190 s of a time-varying problem, thousands of steps after the W = Z^-1
+    probe has shown that it does not escape. Regression: a step budget after the probe used to
+    stop this solve with "gamma = inf is very close to the smallest admissible value". The
+    reference integrates W = 1/Z, dW/dt = 2 a W + q W^2 - b^2, with SciPy."""
+    T, b = 200.0, PeriodicScalar.B_GAIN
+    tr = hc.Trajectory(PeriodicScalar(), [0.0], [0.0], 0.0, T)
+    sol = hc.solve_grde(tr, np.eye(1), np.eye(1), math.inf, hc.SolverOptions(method=method))
+    ref = solve_ivp(lambda t, w: [2.0 * PeriodicScalar.a(t) * w[0] + w[0] ** 2 - b * b], (T, 0.0), [1.0],
+                    method="DOP853", rtol=1e-12, atol=1e-30, dense_output=True)
+    times = np.linspace(0.0, 180.0, 37)
+    Z_ref = 1.0 / ref.sol(times)[0]
+    assert Z_ref.min() > 1e11
+    assert np.max(np.abs(sol.Z(times)[:, 0, 0] / Z_ref - 1.0)) < 1e-5  # measured: bdf 1.2e-7
+    assert sol.stats.steps > 3000
+
+
 # ---- long horizons: the game algebraic Riccati equation ----
 
 def random_game(seed: int, n: int):
