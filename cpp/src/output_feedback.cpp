@@ -5,6 +5,7 @@
 #include <random>
 
 #include "hinf/checks.hpp"
+#include "hinf/controller.hpp"
 #include "hinf/cvode.hpp"
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
@@ -61,6 +62,10 @@ class OutputFeedbackSystem {
         disturbance_(disturbance), options_(o), n_(grde.n()), m_(model_.m()), nw_(model_.nw()),
         noise_channels_(model_.noise_channels()), constant_(model_.constant_input_matrices()),
         inv_gamma2_(std::isinf(grde.gamma()) ? 0.0 : 1.0 / (grde.gamma() * grde.gamma())) {
+    // The law of this very design (the usual case): u = u_d - kappa B' Z q_hat from the q_d,
+    // u_d and Z q_hat already evaluated here, instead of a second lookup of each.
+    const auto* law = dynamic_cast<const HinfStateFeedback*>(&controller);
+    if (law != nullptr && &law->solution() == &grde) own_law_ = law;
     for (auto* M : {&Z_, &Sigma_, &A_, &A_f_, &T_, &G_, &DDt_, &S_f_, &gain_lhs_, &CtNinvC_}) M->resize(n_, n_);
     for (auto* v : {&q_d_, &q_hat_, &Zq_, &alpha_, &dq_hat_, &error_, &noise_term_}) v->resize(n_);
     q_estimate_.resize(n_);
@@ -127,11 +132,13 @@ class OutputFeedbackSystem {
     return rho_of_current();
   }
 
-  // Values on the output grid at (t, x): u, w (noise channels included), y, the extreme
-  // eigenvalues of Sigma and rho(Sigma Z).
-  void outputs(double t, const double* x, double* u, double* w, double* y, double& sigma_min,
-               double& sigma_max, double& rho) {
+  // Values on the output grid at (t, x): q_d, u_d, u, w (noise channels included), y, the
+  // extreme eigenvalues of Sigma and rho(Sigma Z).
+  void outputs(double t, const double* x, double* q_d, double* u_d, double* u, double* w, double* y,
+               double& sigma_min, double& sigma_max, double& rho) {
     evaluate_signals(t, x);
+    for (int i = 0; i < n_; ++i) q_d[i] = q_d_[i];
+    for (int i = 0; i < m_; ++i) u_d[i] = u_d_[i];
     for (int i = 0; i < m_; ++i) u[i] = u_[i];
     for (int i = 0; i < nw_; ++i) w[i] = w_[i];
     Eigen::Map<const Vec> q(x, n_);
@@ -186,7 +193,12 @@ class OutputFeedbackSystem {
     Zq_.noalias() = Z_ * q_hat_;
     // The control at the estimated state (for the H-infinity law: u_d - kappa B' Z q_hat).
     q_estimate_ = q_d_ + q_hat_;
-    controller_.control(t, q_estimate_, u_);
+    if (own_law_ != nullptr) {
+      const double kappa = own_law_->checked_kappa(t);
+      u_.noalias() = u_d_ - kappa * (B_.transpose() * Zq_);
+    } else {
+      controller_.control(t, q_estimate_, u_);
+    }
     disturbance_.eval(t, x, w_.data());
     for (int i = 0; i < p_; ++i) w_[noise_channels_[static_cast<std::size_t>(i)]] = noise_[i];
   }
@@ -195,6 +207,7 @@ class OutputFeedbackSystem {
   const Trajectory& trajectory_;
   const Model& model_;
   Controller& controller_;
+  const HinfStateFeedback* own_law_ = nullptr;
   const Disturbance& disturbance_;
   const OutputFeedbackOptions& options_;
   int n_, m_, nw_, p_ = 0;
@@ -249,7 +262,6 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
         t, rho, grde.gamma());
   };
   // Records output time k from the state x; the noise sample is the one held at grid[k].
-  std::size_t cursor = 0;
   auto record = [&](long k, const double* x) {
     const double t = grid[static_cast<std::size_t>(k)];
     const long sample = std::min(samples - 1, static_cast<long>(std::floor((t - t0) / T + 1e-9)));
@@ -258,10 +270,8 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
       r.q(k, i) = x[i];
       r.q_hat(k, i) = x[n + i];
     }
-    trajectory.q_d(t, r.q_d.row(k).data(), &cursor);
-    trajectory.u_d(t, r.u_d.row(k).data());
-    system.outputs(t, x, r.u.row(k).data(), r.w.row(k).data(), r.y.row(k).data(), r.sigma_min_eig[k],
-                   r.sigma_max_eig[k], r.rho_sigma_z[k]);
+    system.outputs(t, x, r.q_d.row(k).data(), r.u_d.row(k).data(), r.u.row(k).data(), r.w.row(k).data(),
+                   r.y.row(k).data(), r.sigma_min_eig[k], r.sigma_max_eig[k], r.rho_sigma_z[k]);
     const double rho = r.rho_sigma_z[k];
     if (!(r.sigma_min_eig[k] > 0.0))
       throw SolverError(str_cat("the filter Riccati solution Sigma(t) lost positive definiteness at t = ",

@@ -37,9 +37,10 @@ class HinfStateFeedback final : public Controller {
   void control_jacobian(double t, const ConstVecRef& q, MatRef dudq) override;
   const RiccatiSolution& solution() const { return *solution_; }
   const Signal& kappa() const { return kappa_; }
+  // kappa(t); an InputError if it is not > 0.
+  double checked_kappa(double t) const;
 
  private:
-  double checked_kappa(double t) const;
 
   RiccatiSolutionPtr solution_;
   Signal kappa_;
