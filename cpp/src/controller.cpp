@@ -22,7 +22,9 @@ void Controller::control_jacobian(double t, const ConstVecRef& q, MatRef dudq) {
 HinfStateFeedback::HinfStateFeedback(RiccatiSolutionPtr solution, Signal kappa)
     : solution_(std::move(solution)), kappa_(std::move(kappa)) {
   require(solution_ != nullptr, "HinfStateFeedback needs a Riccati solution");
+  q_d_.resize(solution_->n());
   q_e_.resize(solution_->n());
+  u_d_.resize(solution_->m());
   K_.resize(solution_->m(), solution_->n());
 }
 
@@ -30,16 +32,24 @@ std::string HinfStateFeedback::name() const {
   return std::isinf(solution_->gamma()) ? "lqr" : "hinf";
 }
 
-void HinfStateFeedback::control(double t, const ConstVecRef& q, VecRef u) {
+void HinfStateFeedback::evaluate_at(double t) {
+  // Runge-Kutta stages come back to the same t: q_d, u_d, K and kappa depend on t alone.
+  if (t == evaluated_at_) return;
   const Trajectory& trajectory = solution_->trajectory();
-  trajectory.q_d(t, q_e_.data(), &q_cursor_);
-  q_e_ = q - q_e_;
-  trajectory.u_d(t, u.data());
+  trajectory.q_d(t, q_d_.data(), &q_cursor_);
+  trajectory.u_d(t, u_d_.data());
   solution_->gain(t, K_.data(), &k_cursor_);
-  const double kappa = checked_kappa(t);
+  kappa_now_ = checked_kappa(t);
+  evaluated_at_ = t;
+}
+
+void HinfStateFeedback::control(double t, const ConstVecRef& q, VecRef u) {
+  evaluate_at(t);
+  q_e_ = q - q_d_;
   const Eigen::Index m = K_.rows(), n = K_.cols();
+  for (Eigen::Index i = 0; i < m; ++i) u[i] = u_d_[i];
   for (Eigen::Index j = 0; j < n; ++j)
-    for (Eigen::Index i = 0; i < m; ++i) u[i] -= kappa * K_(i, j) * q_e_[j];
+    for (Eigen::Index i = 0; i < m; ++i) u[i] -= kappa_now_ * K_(i, j) * q_e_[j];
 }
 
 double HinfStateFeedback::checked_kappa(double t) const {
@@ -50,8 +60,8 @@ double HinfStateFeedback::checked_kappa(double t) const {
 }
 
 void HinfStateFeedback::control_jacobian(double t, const ConstVecRef&, MatRef dudq) {
-  solution_->gain(t, K_.data(), &k_cursor_);
-  dudq = -checked_kappa(t) * K_;
+  evaluate_at(t);
+  dudq = -kappa_now_ * K_;
 }
 
 double wrap_angle(double angle) {

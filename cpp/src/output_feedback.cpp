@@ -183,11 +183,15 @@ class OutputFeedbackSystem {
 
   // q_d, u_d, Z, Sigma, q_hat, Z q_hat, u and w at (t, x).
   void evaluate_signals(double t, const double* x) {
-    if (!constant_) set_matrices(t);
-    trajectory_.q_d(t, q_d_.data(), &q_cursor_);
-    trajectory_.u_d(t, u_d_.data());
-    grde_.packed(t, z_packed_.data(), &z_cursor_);
-    unpack_symmetric(z_packed_.data(), Z_);
+    // What depends on t alone is kept: Runge-Kutta stages and output times repeat t.
+    if (t != signals_at_) {
+      signals_at_ = t;
+      if (!constant_) set_matrices(t);
+      trajectory_.q_d(t, q_d_.data(), &q_cursor_);
+      trajectory_.u_d(t, u_d_.data());
+      grde_.packed(t, z_packed_.data(), &z_cursor_);
+      unpack_symmetric(z_packed_.data(), Z_);
+    }
     unpack_symmetric(x + 2 * n_, Sigma_);
     for (int i = 0; i < n_; ++i) q_hat_[i] = x[n_ + i];
     Zq_.noalias() = Z_ * q_hat_;
@@ -216,6 +220,7 @@ class OutputFeedbackSystem {
   double inv_gamma2_;
   bool diagonal_S_f_ = false;
   std::size_t q_cursor_ = 0, z_cursor_ = 0;
+  double signals_at_ = NAN;  // the t of q_d_, u_d_ and Z_
   Mat B_, D_, C_, N_inv_, CtNinv_;
   SparseMatrix B_sparse_, D_sparse_;
   MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_, CtNinvC_;

@@ -77,6 +77,9 @@ class RiccatiProblem {
   }
 
   void linearize(double t) {
+    // Explicit Runge-Kutta stages and Newton iterations often come back to the same t.
+    if (t == linearized_at_) return;
+    linearized_at_ = t;
     trajectory_.q_d(t, q_d_.data(), &cursor_);
     model_.dfdq(t, q_d_, T_);
     // M = A_e (control) or A_e' (filter); the inverse problem uses M'.
@@ -97,6 +100,7 @@ class RiccatiProblem {
   bool diagonal_S_ = false;
   Mat Q_, N_inv_;
   std::size_t cursor_ = 0;
+  double linearized_at_ = NAN;  // the t of M_ (and of R_, S_ for time-varying input matrices)
   VecN q_d_;
   MatN M_, R_, S_, X_, T_, G_;
 };

@@ -1,6 +1,7 @@
 // Tracking controllers: u = control(t, q) for the actual state q.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -42,10 +43,14 @@ class HinfStateFeedback final : public Controller {
 
  private:
 
+  // q_d, u_d, K = B'Z and kappa at t, kept until t changes.
+  void evaluate_at(double t);
+
   RiccatiSolutionPtr solution_;
   Signal kappa_;
   std::size_t q_cursor_ = 0, k_cursor_ = 0;
-  Vec q_e_;
+  double evaluated_at_ = NAN, kappa_now_ = 0.0;
+  Vec q_d_, q_e_, u_d_;
   Mat K_;
 };
 
