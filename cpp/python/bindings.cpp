@@ -97,6 +97,20 @@ class PyModel : public Model, public py::trampoline_self_life_support {
   }
 };
 
+// Every call into a model implemented in Python holds the GIL, so parallel gamma evaluations
+// would only contend for it (each handover can wait for Python's switch interval): such
+// models get one thread.
+GammaStarOptions serial_for_python_models(const Model* model, GammaStarOptions options) {
+  if (dynamic_cast<const PyModel*>(model) != nullptr) options.threads = 1;
+  return options;
+}
+GammaStarOptions serial_for_python_models(const TrajectoryPtr& trajectory, const GammaStarOptions& options) {
+  return serial_for_python_models(trajectory ? &trajectory->model() : nullptr, options);
+}
+GammaStarOptions serial_for_python_models(const ModelPtr& model, const GammaStarOptions& options) {
+  return serial_for_python_models(model.get(), options);
+}
+
 // A Controller implemented in Python: override name() (optional), m() and control(t, q) -> u.
 class PyController : public Controller, public py::trampoline_self_life_support {
  public:
@@ -648,7 +662,9 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
   }, py::arg("model"), py::arg("run"), py::arg("Q"));
 
   // ---- gamma* and certificates (paper §3) ----
-  py::class_<GammaStarOptions>(m, "GammaStarOptions", "Options of the gamma* search")
+  py::class_<GammaStarOptions>(m, "GammaStarOptions",
+                                "Options of the gamma* search. threads: gammas evaluated in parallel per round"
+                                " (one for a model implemented in Python, whose calls hold the GIL)")
       .def(py::init([](double lower, double upper, double rtol, int max_evaluations, int threads,
                        const SolverOptions& solver) {
              GammaStarOptions o;
@@ -698,12 +714,21 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
                        r.trials.size(), ")");
       });
 
-  m.def("gamma_star", &gamma_star, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"),
-        py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
-        "gamma* (paper eq. 14): the smallest gamma without a conjugate point of the GRDE on [t0, tf]");
-  m.def("gamma_star_output_feedback", &gamma_star_output_feedback, py::arg("trajectory"), py::arg("Q"),
-        py::arg("Qf"), py::arg("N"), py::arg("Sigma0"), py::arg("options") = GammaStarOptions{},
+  m.def("gamma_star",
+        [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const GammaStarOptions& options) {
+          return gamma_star(trajectory, Q, Qf, serial_for_python_models(trajectory, options));
+        },
+        py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("options") = GammaStarOptions{},
         py::call_guard<py::gil_scoped_release>(),
+        "gamma* (paper eq. 14): the smallest gamma without a conjugate point of the GRDE on [t0, tf]");
+  m.def("gamma_star_output_feedback",
+        [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const Mat& N, const Mat& Sigma0,
+           const GammaStarOptions& options) {
+          return gamma_star_output_feedback(trajectory, Q, Qf, N, Sigma0,
+                                            serial_for_python_models(trajectory, options));
+        },
+        py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("N"), py::arg("Sigma0"),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
         "The smallest gamma for output feedback: GRDE, filter (36) with A_e and rho(Sigma Z) < gamma^2");
   m.def("max_rho_sigma_z", &max_rho_sigma_z, py::arg("Z"), py::arg("Sigma"),
         py::call_guard<py::gil_scoped_release>(), "(max over [t0, tf] of rho(Sigma Z), where)");
@@ -802,10 +827,17 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         py::arg("scenario"), py::arg("noise") = py::none(),
         "Run a scenario; with [measurement], noise (standard normal samples, one row per hold interval)"
         " replaces the seeded noise so that a run can be replayed exactly");
-  m.def("scenario_gamma_star", &scenario_gamma_star, py::arg("scenario"), py::arg("options") = GammaStarOptions{},
-        py::call_guard<py::gil_scoped_release>(), "gamma* of a scenario's state-feedback design");
-  m.def("scenario_gamma_star_output_feedback", &scenario_gamma_star_output_feedback, py::arg("scenario"),
-        py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+  m.def("scenario_gamma_star",
+        [](const Scenario& scenario, const GammaStarOptions& options) {
+          return scenario_gamma_star(scenario, serial_for_python_models(scenario.model, options));
+        },
+        py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+        "gamma* of a scenario's state-feedback design");
+  m.def("scenario_gamma_star_output_feedback",
+        [](const Scenario& scenario, const GammaStarOptions& options) {
+          return scenario_gamma_star_output_feedback(scenario, serial_for_python_models(scenario.model, options));
+        },
+        py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
         "The smallest gamma of a scenario's output-feedback design");
   m.def("scenario_certificates", &scenario_certificates, py::arg("scenario"),
         py::call_guard<py::gil_scoped_release>(), "The certificates of paper §3 for a scenario's design");

@@ -92,6 +92,8 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
             variant.initial_q0 = variant.desired_q0
         return _core.run_scenario(variant)
 
+    if type(scenario.model).__module__ != _core.__name__:
+        threads = 1  # a model implemented in Python holds the GIL in every call: no parallel gain
     with ThreadPoolExecutor(max_workers=max(1, threads)) as pool:
         results = list(pool.map(run, gammas))
     resolved = scenario.resolved()
