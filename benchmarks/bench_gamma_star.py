@@ -36,7 +36,6 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse  # noqa: E402
-import gc  # noqa: E402
 import json  # noqa: E402
 import math  # noqa: E402
 import pathlib  # noqa: E402
@@ -51,6 +50,7 @@ import hinf_cpp as hc  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import scipy_gamma_star as sgs  # noqa: E402
+from bench_paper_fig1 import core_fingerprint, cpu_model, ms, s_, timed  # noqa: E402
 import scipy_reference as ref  # noqa: E402
 
 SCENARIO = pathlib.Path(__file__).resolve().parents[1] / "scenarios" / "paper_fig1.toml"
@@ -67,60 +67,6 @@ PAIRS = [
     ("DOP853", "erk", "SciPy's fastest explicit option here"),
     ("BDF", "bdf", "variable-order BDF with the analytic Jacobian on both sides"),
 ]
-
-
-# ---------------------------------------------------------------------------------------------
-# timing helpers (as in bench_paper_fig1.py)
-# ---------------------------------------------------------------------------------------------
-
-
-def timed(fn, repeat: int, warmup: int = 1) -> dict:
-    """Runs fn() warmup + repeat times; returns seconds: median, min, max, n."""
-    for _ in range(warmup):
-        fn()
-    samples = []
-    gc_was_enabled = gc.isenabled()
-    gc.collect()
-    gc.disable()
-    try:
-        for _ in range(repeat):
-            start = time.perf_counter()
-            fn()
-            samples.append(time.perf_counter() - start)
-    finally:
-        if gc_was_enabled:
-            gc.enable()
-    samples = np.array(samples)
-    return {"median": float(np.median(samples)), "min": float(samples.min()),
-            "max": float(samples.max()), "n": int(samples.size)}
-
-
-def ms(t: dict) -> str:
-    return f"{1e3 * t['median']:.2f} [{1e3 * t['min']:.2f}-{1e3 * t['max']:.2f}]"
-
-
-def s_(t: dict) -> str:
-    return f"{t['median']:.3f} [{t['min']:.3f}-{t['max']:.3f}]"
-
-
-def cpu_model() -> str:
-    try:
-        for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
-
-
-def core_fingerprint() -> dict:
-    """Which compiled module was measured: path, mtime and SHA-256 of hinf_cpp._core."""
-    import hashlib
-
-    path = pathlib.Path(hc._core.__file__)
-    return {"path": str(path), "mtime": time.strftime("%Y-%m-%d %H:%M:%S",
-                                                      time.gmtime(path.stat().st_mtime)),
-            "sha256": hashlib.sha256(path.read_bytes()).hexdigest()[:16]}
 
 
 def bracket_evaluations(gammas) -> int:

@@ -104,12 +104,7 @@ GammaStarOptions serial_for_python_models(const Model* model, GammaStarOptions o
   if (dynamic_cast<const PyModel*>(model) != nullptr) options.threads = 1;
   return options;
 }
-GammaStarOptions serial_for_python_models(const TrajectoryPtr& trajectory, const GammaStarOptions& options) {
-  return serial_for_python_models(trajectory ? &trajectory->model() : nullptr, options);
-}
-GammaStarOptions serial_for_python_models(const ModelPtr& model, const GammaStarOptions& options) {
-  return serial_for_python_models(model.get(), options);
-}
+const Model* model_of(const TrajectoryPtr& trajectory) { return trajectory ? &trajectory->model() : nullptr; }
 
 // A Controller implemented in Python: override name() (optional), m() and control(t, q) -> u.
 class PyController : public Controller, public py::trampoline_self_life_support {
@@ -716,7 +711,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
 
   m.def("gamma_star",
         [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const GammaStarOptions& options) {
-          return gamma_star(trajectory, Q, Qf, serial_for_python_models(trajectory, options));
+          return gamma_star(trajectory, Q, Qf, serial_for_python_models(model_of(trajectory), options));
         },
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("options") = GammaStarOptions{},
         py::call_guard<py::gil_scoped_release>(),
@@ -725,7 +720,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const Mat& N, const Mat& Sigma0,
            const GammaStarOptions& options) {
           return gamma_star_output_feedback(trajectory, Q, Qf, N, Sigma0,
-                                            serial_for_python_models(trajectory, options));
+                                            serial_for_python_models(model_of(trajectory), options));
         },
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("N"), py::arg("Sigma0"),
         py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
@@ -829,13 +824,13 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         " replaces the seeded noise so that a run can be replayed exactly");
   m.def("scenario_gamma_star",
         [](const Scenario& scenario, const GammaStarOptions& options) {
-          return scenario_gamma_star(scenario, serial_for_python_models(scenario.model, options));
+          return scenario_gamma_star(scenario, serial_for_python_models(scenario.model.get(), options));
         },
         py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
         "gamma* of a scenario's state-feedback design");
   m.def("scenario_gamma_star_output_feedback",
         [](const Scenario& scenario, const GammaStarOptions& options) {
-          return scenario_gamma_star_output_feedback(scenario, serial_for_python_models(scenario.model, options));
+          return scenario_gamma_star_output_feedback(scenario, serial_for_python_models(scenario.model.get(), options));
         },
         py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
         "The smallest gamma of a scenario's output-feedback design");

@@ -182,11 +182,6 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
   grde_escape_time(trajectory, Q, Qf, inf, options.solver);             // input checks
   solve_filter_riccati(trajectory, N, Q, inf, Sigma0, options.solver);  // input checks
   return bisect([&](double gamma) {
-    // The escape test first (no storage, the same test as gamma_star). Just above the GRDE's
-    // threshold Z is finite but too large to integrate and store (SolverError): such a gamma
-    // cannot be certified, so it fails with "grde" as the binding condition.
-    const double t_grde = grde_escape_time(trajectory, Q, Qf, gamma, options.solver);
-    if (!std::isnan(t_grde)) return fail(gamma, t_grde, "grde");
     RiccatiSolutionPtr Z;
     FilterRiccatiSolutionPtr Sigma;
     try {
@@ -194,6 +189,8 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
     } catch (const ConjugatePointError& e) {
       return fail(gamma, e.t_escape(), "grde");
     } catch (const SolverError& e) {
+      // Just above the GRDE's threshold Z is finite but too large to integrate and store:
+      // such a gamma cannot be certified, so it fails with "grde" as the binding condition.
       return fail(gamma, e.t(), "grde");
     }
     try {

@@ -196,11 +196,11 @@ class OutputFeedbackSystem {
     for (int i = 0; i < n_; ++i) q_hat_[i] = x[n_ + i];
     Zq_.noalias() = Z_ * q_hat_;
     // The control at the estimated state (for the H-infinity law: u_d - kappa B' Z q_hat).
-    q_estimate_ = q_d_ + q_hat_;
     if (own_law_ != nullptr) {
       const double kappa = own_law_->checked_kappa(t);
       u_.noalias() = u_d_ - kappa * (B_.transpose() * Zq_);
     } else {
+      q_estimate_ = q_d_ + q_hat_;
       controller_.control(t, q_estimate_, u_);
     }
     disturbance_.eval(t, x, w_.data());

@@ -258,12 +258,12 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& 
     throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)", " solve failed: ",
                               cause,
                               !probed ? std::string()
-                              : std::isinf(gamma)
-                                  ? str_cat(". The solution has no finite escape but grows too large to integrate"
-                                            " near t = ", e.t(), " (gamma = inf): rescale the weights or the model")
-                                  : str_cat(". The solution has no finite escape but grows too large to integrate"
-                                            " near t = ", e.t(), ": gamma = ", gamma,
-                                            " is very close to the smallest admissible value; increase it")),
+                                      : str_cat(". The solution has no finite escape but grows too large to integrate"
+                                                " near t = ", e.t(),
+                                                std::isinf(gamma) ? " (gamma = inf): rescale the weights or the model"
+                                                                  : str_cat(": gamma = ", gamma,
+                                                                            " is very close to the smallest admissible"
+                                                                            " value; increase it"))),
                       e.t(), e.flag());
   };
   PiecewisePolynomial dense(p);

@@ -42,7 +42,6 @@ class HinfStateFeedback final : public Controller {
   double checked_kappa(double t) const;
 
  private:
-
   // q_d, u_d, K = B'Z and kappa at t, kept until t changes.
   void evaluate_at(double t);
 
