@@ -239,7 +239,8 @@ void register_exceptions(py::module_& m) {
 
 std::string repr_options(const SolverOptions& o) {
   return str_cat("SolverOptions(method='", to_string(o.method), "', rtol=", o.rtol, ", atol=", o.atol,
-                 ", max_steps=", o.max_steps, ", escape_norm=", o.escape_norm, ")");
+                 ", max_steps=", o.max_steps, ", escape_norm=", o.escape_norm,
+                 ", divergence_factor=", o.divergence_factor, ")");
 }
 
 py::dict metrics_dict(const Metrics& mt) {
@@ -375,24 +376,27 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
 
   // ---- solver options ----
   py::class_<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)")
-      .def(py::init([](const std::string& method, double rtol, double atol, long max_steps, double escape_norm) {
+      .def(py::init([](const std::string& method, double rtol, double atol, long max_steps, double escape_norm,
+                       double divergence_factor) {
              SolverOptions o;
              o.method = method_from_string(method);
              o.rtol = rtol;
              o.atol = atol;
              o.max_steps = max_steps;
              o.escape_norm = escape_norm;
+             o.divergence_factor = divergence_factor;
              o.validate();
              return o;
            }),
            py::arg("method") = "bdf", py::arg("rtol") = 1e-8, py::arg("atol") = 1e-10,
-           py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e6)
+           py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e6, py::arg("divergence_factor") = 1e3)
       .def_property("method", [](const SolverOptions& o) { return to_string(o.method); },
                     [](SolverOptions& o, const std::string& s) { o.method = method_from_string(s); })
       .def_readwrite("rtol", &SolverOptions::rtol)
       .def_readwrite("atol", &SolverOptions::atol)
       .def_readwrite("max_steps", &SolverOptions::max_steps)
       .def_readwrite("escape_norm", &SolverOptions::escape_norm)
+      .def_readwrite("divergence_factor", &SolverOptions::divergence_factor)
       .def("validate", &SolverOptions::validate)
       .def("__repr__", &repr_options);
 
@@ -587,6 +591,9 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readonly("sigma_max_eig", &SimulationResult::sigma_max_eig)
       .def_readonly("rho_sigma_z", &SimulationResult::rho_sigma_z)
       .def_readonly("coupling_violation_t", &SimulationResult::coupling_violation_t)
+      .def_property_readonly("status", [](const SimulationResult& r) { return to_string(r.status); },
+                             "\"completed\", or \"diverged\" (stopped early: the tracking error left the divergence bound)")
+      .def_readonly("status_message", &SimulationResult::status_message)
       .def_readonly("integrator", &SimulationResult::integrator)
       .def_readonly("stats", &SimulationResult::stats)
       .def_property_readonly("q_e", [](const SimulationResult& r) { return RowMat(r.q - r.q_d); });
@@ -672,7 +679,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
              o.validate();
              return o;
            }),
-           py::arg("lower") = 0.0, py::arg("upper") = 0.0, py::arg("rtol") = 1e-6, py::arg("max_evaluations") = 200,
+           py::arg("lower") = 0.0, py::arg("upper") = 0.0, py::arg("rtol") = 1e-7, py::arg("max_evaluations") = 200,
            py::arg("threads") = 2, py::arg("solver") = SolverOptions{})
       .def_readwrite("lower", &GammaStarOptions::lower)
       .def_readwrite("upper", &GammaStarOptions::upper)

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <system_error>
 #include <thread>
 
 #include "hinf/checks.hpp"
@@ -32,27 +33,48 @@ namespace {
 
 using Test = std::function<GammaTrial(double)>;
 
-// Evaluates the test at each gamma, in parallel (one thread each), in order of gamma.
+// Evaluates the test at each gamma, in parallel (one thread each; the first on this thread),
+// in order of gamma. When the system cannot create another thread, the remaining gammas run on
+// this thread.
 std::vector<GammaTrial> evaluate(const Test& test, const std::vector<double>& gammas) {
   std::vector<GammaTrial> results(gammas.size());
-  if (gammas.size() == 1) {
-    results[0] = test(gammas[0]);
-    return results;
-  }
   std::vector<std::exception_ptr> errors(gammas.size());
+  auto run = [&](std::size_t i) {
+    try {
+      results[i] = test(gammas[i]);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
-  for (std::size_t i = 0; i < gammas.size(); ++i)
-    workers.emplace_back([&, i] {
-      try {
-        results[i] = test(gammas[i]);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    });
+  std::size_t started = 1;
+  for (; started < gammas.size(); ++started) {
+    try {
+      workers.emplace_back(run, started);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
+  run(0);
+  for (std::size_t i = started; i < gammas.size(); ++i) run(i);
   for (std::thread& w : workers) w.join();
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
   return results;
+}
+
+// Interior points per k-section round: at most the threads asked for and the hardware's
+// threads, and few enough that the rounds needed to shrink the bracket [lower, upper] to
+// rtol * upper fit in the evaluations left.
+int points_per_round(const GammaStarOptions& o, double lower, double upper, int evaluations_left) {
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int k = std::min(o.threads, hardware);
+  const double shrink = std::max(1.0, (upper - lower) / (o.rtol * upper));
+  for (; k > 1; --k) {
+    const double rounds = std::ceil(std::log(shrink) / std::log(k + 1.0));
+    if (rounds * k <= evaluations_left) break;
+  }
+  return k;
 }
 
 GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
@@ -107,12 +129,12 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
       high = trial;
     }
   }
-  // k-section: o.threads interior points per round, evaluated in parallel.
+  // k-section: k interior points per round, evaluated in parallel.
+  const int k = points_per_round(o, low.gamma, high.gamma, o.max_evaluations - static_cast<int>(r.trials.size()));
   while (high.gamma - low.gamma > o.rtol * high.gamma &&
-         static_cast<int>(r.trials.size()) + o.threads <= o.max_evaluations) {
+         static_cast<int>(r.trials.size()) + k <= o.max_evaluations) {
     std::vector<double> gammas;
-    for (int i = 1; i <= o.threads; ++i)
-      gammas.push_back(low.gamma + (high.gamma - low.gamma) * i / (o.threads + 1));
+    for (int i = 1; i <= k; ++i) gammas.push_back(low.gamma + (high.gamma - low.gamma) * i / (k + 1));
     for (const GammaTrial& t : run(gammas)) {
       if (t.passed) {
         high = t;

@@ -22,6 +22,7 @@ void Controller::control_jacobian(double t, const ConstVecRef& q, MatRef dudq) {
 HinfStateFeedback::HinfStateFeedback(RiccatiSolutionPtr solution, Signal kappa)
     : solution_(std::move(solution)), kappa_(std::move(kappa)) {
   require(solution_ != nullptr, "HinfStateFeedback needs a Riccati solution");
+  heading_ = solution_->trajectory().model().heading_index();
   q_d_.resize(solution_->n());
   q_e_.resize(solution_->n());
   u_d_.resize(solution_->m());
@@ -45,7 +46,7 @@ void HinfStateFeedback::evaluate_at(double t) {
 
 void HinfStateFeedback::control(double t, const ConstVecRef& q, VecRef u) {
   evaluate_at(t);
-  q_e_ = q - q_d_;
+  tracking_error(static_cast<int>(q_e_.size()), heading_, q.data(), q_d_.data(), q_e_.data());
   const Eigen::Index m = K_.rows(), n = K_.cols();
   for (Eigen::Index i = 0; i < m; ++i) u[i] = u_d_[i];
   for (Eigen::Index j = 0; j < n; ++j)
@@ -62,12 +63,6 @@ double HinfStateFeedback::checked_kappa(double t) const {
 void HinfStateFeedback::control_jacobian(double t, const ConstVecRef&, MatRef dudq) {
   evaluate_at(t);
   dudq = -kappa_now_ * K_;
-}
-
-double wrap_angle(double angle) {
-  double wrapped = std::remainder(angle, 2.0 * M_PI);  // in [-pi, pi]
-  if (wrapped <= -M_PI) wrapped += 2.0 * M_PI;
-  return wrapped;
 }
 
 CascadeController::CascadeController(TrajectoryPtr trajectory, const CascadeGains& gains)

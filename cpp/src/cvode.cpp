@@ -7,6 +7,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -100,6 +101,7 @@ Cvode::Cvode(int dim, Method method, double rtol, double atol, long max_steps, R
     throw;
   }
   taylor_.assign(static_cast<std::size_t>(13 * dim), 0.0);
+  piece_coeffs_.assign(static_cast<std::size_t>(13 * dim), 0.0);
 }
 
 Cvode::~Cvode() { release(); }
@@ -136,6 +138,12 @@ void Cvode::rethrow_pending() {
 }
 
 void Cvode::reset(double t0, const double* y0, double t_stop) {
+  if (initialized_) {
+    steps_before_ = num_steps();
+    rhs_evals_before_ = num_rhs_evals();
+    jac_evals_before_ = num_jac_evals();
+    error_test_failures_before_ = num_error_test_failures();
+  }
   double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
   for (int i = 0; i < dim_; ++i) y[i] = y0[i];
   check(CVodeReInit(mem_, t0, static_cast<N_Vector>(y_)), "CVodeReInit", t0);
@@ -146,16 +154,23 @@ void Cvode::reset(double t0, const double* y0, double t_stop) {
   initialized_ = true;
 }
 
-double Cvode::step(double* y_out) {
-  if (!initialized_) throw InputError("Cvode::step before reset");
-  double t = 0.0;
-  if (num_steps() >= max_steps_) {
+long Cvode::remaining_steps() {
+  const long left = max_steps_ - num_steps();
+  if (left <= 0) {
+    double t = 0.0;
     CVodeGetCurrentTime(mem_, &t);
     throw SolverError(str_cat("CVODE ", method_name_, ": more than max_steps = ", max_steps_,
-                              " steps before t = ", t, " (CV_TOO_MUCH_WORK); the step size collapsed or"
+                              " steps (stopped at t = ", t, "; CV_TOO_MUCH_WORK): the step size collapsed or"
                               " the problem needs a larger max_steps"),
                       t, "CV_TOO_MUCH_WORK");
   }
+  return left;
+}
+
+double Cvode::step(double* y_out) {
+  if (!initialized_) throw InputError("Cvode::step before reset");
+  remaining_steps();
+  double t = 0.0;
   const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
   check(flag, "CVode", t);
   const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
@@ -165,6 +180,8 @@ double Cvode::step(double* y_out) {
 
 double Cvode::advance(double tout, double* y_out) {
   if (!initialized_) throw InputError("Cvode::advance before reset");
+  // CVODE's own limit counts per call: give this call what is left of the whole budget.
+  check(CVodeSetMaxNumSteps(mem_, remaining_steps()), "CVodeSetMaxNumSteps", tout);
   double t = 0.0;
   const int flag = CVode(mem_, tout, static_cast<N_Vector>(y_), &t, CV_NORMAL);
   check(flag, "CVode", t);
@@ -173,50 +190,52 @@ double Cvode::advance(double tout, double* y_out) {
   return t;
 }
 
-void Cvode::append_last_step(PiecewisePolynomial& dense) {
+const DensePiece& Cvode::last_step_piece() {
   int order = 0;
   double h_last = 0.0, t_now = 0.0;
   check(CVodeGetLastOrder(mem_, &order), "CVodeGetLastOrder", 0.0);
   check(CVodeGetLastStep(mem_, &h_last), "CVodeGetLastStep", 0.0);
   check(CVodeGetCurrentTime(mem_, &t_now), "CVodeGetCurrentTime", 0.0);
-  // y(t) = sum_k y^(k)(t_n)/k! (t - t_n)^k on [t_n - h_last, t_n]. As a piece starting at t_n
-  // with signed length -h_last: theta = (t - t_n) / (-h_last), c_k = y^(k)(t_n)/k! (-h_last)^k.
+  // Taylor form at the step's end t_n: y(t_n + s) = sum_k b_k (s / h)^k with b_k = y^(k)(t_n) h^k / k!
+  // (h = h_last, signed). With t = t_n - h + theta h, s / h = theta - 1, so the coefficients in
+  // theta are d_j = sum_{k >= j} C(k, j) (-1)^(k - j) b_k.
   double scale = 1.0, factorial = 1.0;
   for (int k = 0; k <= order; ++k) {
     if (k > 0) {
       factorial *= k;
-      scale *= -h_last;
+      scale *= h_last;
     }
     check(CVodeGetDky(mem_, t_now, k, static_cast<N_Vector>(dky_)), "CVodeGetDky", t_now);
     const double* d = N_VGetArrayPointer(static_cast<N_Vector>(dky_));
-    for (int i = 0; i < dim_; ++i)
-      taylor_[static_cast<std::size_t>(k * dim_ + i)] = d[i] * scale / factorial;
+    for (int i = 0; i < dim_; ++i) taylor_[static_cast<std::size_t>(k * dim_ + i)] = d[i] * scale / factorial;
   }
-  dense.append(t_now, -h_last, order, taylor_.data());
+  std::fill(piece_coeffs_.begin(), piece_coeffs_.begin() + static_cast<long>((order + 1) * dim_), 0.0);
+  for (int k = 0; k <= order; ++k) {
+    double binomial = 1.0;  // C(k, j), from j = 0
+    for (int j = 0; j <= k; ++j) {
+      const double factor = ((k - j) % 2 == 0 ? 1.0 : -1.0) * binomial;
+      for (int i = 0; i < dim_; ++i)
+        piece_coeffs_[static_cast<std::size_t>(j * dim_ + i)] += factor * taylor_[static_cast<std::size_t>(k * dim_ + i)];
+      binomial = binomial * (k - j) / (j + 1);
+    }
+  }
+  piece_ = DensePiece{t_now - h_last, h_last, order, dim_, piece_coeffs_.data()};
+  return piece_;
 }
 
-long Cvode::num_steps() const {
+long Cvode::counter(int (*get)(void*, long*)) const {
   long value = 0;
-  CVodeGetNumSteps(mem_, &value);
+  get(mem_, &value);
   return value;
 }
 
-long Cvode::num_rhs_evals() const {
-  long value = 0;
-  CVodeGetNumRhsEvals(mem_, &value);
-  return value;
-}
-
+long Cvode::num_steps() const { return steps_before_ + counter(CVodeGetNumSteps); }
+long Cvode::num_rhs_evals() const { return rhs_evals_before_ + counter(CVodeGetNumRhsEvals); }
 long Cvode::num_jac_evals() const {
-  long value = 0;
-  if (method_ == Method::BDF) CVodeGetNumJacEvals(mem_, &value);
-  return value;
+  return jac_evals_before_ + (method_ == Method::BDF ? counter(CVodeGetNumJacEvals) : 0);
 }
-
 long Cvode::num_error_test_failures() const {
-  long value = 0;
-  CVodeGetNumErrTestFails(mem_, &value);
-  return value;
+  return error_test_failures_before_ + counter(CVodeGetNumErrTestFails);
 }
 
 }  // namespace hinf

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "hinf/angles.hpp"
 #include "hinf/errors.hpp"
 
 namespace hinf {
@@ -29,7 +30,7 @@ void Disturbance::eval(double t, const double* q, double* w) const {
   const Model& model = trajectory.model();
   const int n = model.n();
   trajectory.q_d(t, q_d_.data(), &q_cursor_);
-  for (int i = 0; i < n; ++i) q_d_[i] = q[i] - q_d_[i];  // q_e
+  tracking_error(n, model.heading_index(), q, q_d_.data(), q_d_.data());  // q_e, in place
   design_->packed(t, z_.data(), &z_cursor_);
   // Z q_e from the packed Z.
   for (int i = 0; i < n; ++i) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "hinf/angles.hpp"
+
 namespace hinf {
 
 namespace {
@@ -36,7 +38,9 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
   Metrics metrics;
   const Eigen::Index count = run.t.size();
   if (count == 0) return metrics;
-  const RowMat q_e = run.q - run.q_d;
+  const int n = static_cast<int>(run.q.cols()), heading = model.heading_index();
+  RowMat q_e(count, n);
+  for (Eigen::Index k = 0; k < count; ++k) tracking_error(n, heading, run.q.row(k).data(), run.q_d.row(k).data(), q_e.row(k).data());
   const RowMat u_e = run.u - run.u_d;
 
   const std::vector<int> position = model.position_indices();
@@ -47,10 +51,13 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
       for (int i : position) s += q_e(k, i) * q_e(k, i);
       error[k] = std::sqrt(s);
     }
-    metrics.rms_position_error_last_half = rms_over_last_half(run.t, error.array().square().matrix());
     metrics.max_position_error = error.maxCoeff();
+    // A run that stopped early has no last half and no final error.
+    if (run.status != RunStatus::Completed) return metrics;
+    metrics.rms_position_error_last_half = rms_over_last_half(run.t, error.array().square().matrix());
     metrics.final_position_error = error[count - 1];
   }
+  if (run.status != RunStatus::Completed) return metrics;
   metrics.control_l2 = l2_norm(run.t, run.u);
   metrics.control_error_l2 = l2_norm(run.t, u_e);
   metrics.disturbance_l2 = l2_norm(run.t, run.w);
@@ -64,7 +71,10 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
 
   if (run.rho_sigma_z.size() > 0) metrics.max_rho_sigma_z = run.rho_sigma_z.maxCoeff();
   if (run.q_hat.rows() == count) {
-    const Vec squared = (run.q_hat - q_e).rowwise().squaredNorm();
+    RowMat estimation_error = run.q_hat - q_e;
+    if (heading >= 0)
+      for (Eigen::Index k = 0; k < count; ++k) estimation_error(k, heading) = wrap_angle(estimation_error(k, heading));
+    const Vec squared = estimation_error.rowwise().squaredNorm();
     metrics.rms_estimation_error_last_half = rms_over_last_half(run.t, squared);
   }
   return metrics;

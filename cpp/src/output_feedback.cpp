@@ -4,11 +4,13 @@
 #include <memory>
 #include <random>
 
+#include "hinf/angles.hpp"
 #include "hinf/checks.hpp"
 #include "hinf/controller.hpp"
 #include "hinf/cvode.hpp"
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
+#include "hinf/resources.hpp"
 #include "hinf/sdirk4.hpp"
 #include "hinf/sparse_matrix.hpp"
 #include "riccati_kernel.hpp"
@@ -20,12 +22,14 @@ long noise_sample_count(double t0, double tf, double period) {
   check_horizon(t0, tf);
   require(std::isfinite(period) && period > 0.0, "the noise sample period must be > 0, got ", period);
   const double intervals = (tf - t0) / period;
-  require(intervals <= 1e8, "the noise would need ", intervals, " samples: use a longer sample period");
+  require(intervals <= 1e12, "the noise would need ", intervals, " samples: use a longer [measurement] sample_period");
   return std::max<long>(1, static_cast<long>(std::ceil(intervals - 1e-9)));
 }
 
 RowMat standard_normal_samples(std::uint64_t seed, long count, int channels) {
-  require(count >= 0 && channels >= 0, "noise sample counts must be >= 0");
+  require(count >= 0 && channels >= 0, "noise sample counts must be >= 0, got ", count, " x ", channels);
+  check_memory(8.0 * static_cast<double>(count) * channels, str_cat(count, " x ", channels, " noise samples"),
+               "use a longer [measurement] sample_period (or a shorter horizon)");
   std::mt19937_64 engine(seed);
   // Uniform in (-1, 1) from the top 53 bits; Marsaglia's polar method gives pairs.
   auto uniform = [&engine]() { return 2.0 * static_cast<double>(engine() >> 11) * 0x1.0p-53 - 1.0; };
@@ -60,7 +64,8 @@ class OutputFeedbackSystem {
                        const OutputFeedbackOptions& o)
       : grde_(grde), trajectory_(grde.trajectory()), model_(trajectory_.model()), controller_(controller),
         disturbance_(disturbance), options_(o), n_(grde.n()), m_(model_.m()), nw_(model_.nw()),
-        noise_channels_(model_.noise_channels()), constant_(model_.constant_input_matrices()),
+        noise_channels_(model_.noise_channels()), heading_(model_.heading_index()),
+        constant_(model_.constant_input_matrices()),
         inv_gamma2_(std::isinf(grde.gamma()) ? 0.0 : 1.0 / (grde.gamma() * grde.gamma())) {
     // The law of this very design (the usual case): u = u_d - kappa B' Z q_hat from the q_d,
     // u_d and Z q_hat already evaluated here, instead of a second lookup of each.
@@ -103,6 +108,7 @@ class OutputFeedbackSystem {
     //   = C' N^-1 C (q - q_d - q_hat) + sigma C' N^-1 v.
     model_.error_split(t, q_d_, q_hat_, A_, alpha_);
     error_ = q - q_d_ - q_hat_;
+    if (heading_ >= 0) error_[heading_] = wrap_angle(error_[heading_]);  // the heading innovation is an angle
     dq_hat_.noalias() = CtNinvC_ * error_;
     dq_hat_ += noise_term_;
     error_.noalias() = Sigma_ * dq_hat_;
@@ -204,7 +210,9 @@ class OutputFeedbackSystem {
       controller_.control(t, q_estimate_, u_);
     }
     disturbance_.eval(t, x, w_.data());
-    for (int i = 0; i < p_; ++i) w_[noise_channels_[static_cast<std::size_t>(i)]] = noise_[i];
+    // E w = sigma v on the noise channels: w carries v there, or nothing when sigma = 0.
+    for (int i = 0; i < p_; ++i)
+      w_[noise_channels_[static_cast<std::size_t>(i)]] = options_.sigma > 0.0 ? noise_[i] : 0.0;
   }
 
   const RiccatiSolution& grde_;
@@ -216,6 +224,7 @@ class OutputFeedbackSystem {
   const OutputFeedbackOptions& options_;
   int n_, m_, nw_, p_ = 0;
   std::vector<int> noise_channels_;
+  int heading_;
   bool constant_;
   double inv_gamma2_;
   bool diagonal_S_f_ = false;
@@ -230,6 +239,21 @@ class OutputFeedbackSystem {
   std::vector<double> z_packed_;
 };
 
+// The cubic Hermite interpolant of a step from (y0, f0) to (y1, f1) of size h as a DensePiece
+// (coefficients written into coeffs, 4 * dim numbers).
+DensePiece hermite_piece(double t_start, double h, int dim, const double* y0, const double* f0, const double* y1,
+                         const double* f1, std::vector<double>& coeffs) {
+  coeffs.resize(static_cast<std::size_t>(4 * dim));
+  double *c0 = coeffs.data(), *c1 = c0 + dim, *c2 = c1 + dim, *c3 = c2 + dim;
+  for (int i = 0; i < dim; ++i) {
+    c0[i] = y0[i];
+    c1[i] = h * f0[i];
+    c2[i] = 3.0 * (y1[i] - y0[i]) - h * (2.0 * f0[i] + f1[i]);
+    c3[i] = 2.0 * (y0[i] - y1[i]) + h * (f0[i] + f1[i]);
+  }
+  return DensePiece{t_start, h, 3, dim, coeffs.data()};
+}
+
 template <int N>
 SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controller,
                                const Disturbance& disturbance, const Vec& q0, const RowMat& noise,
@@ -238,21 +262,25 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   OutputFeedbackSystem<N> system(grde, controller, disturbance, options);
   const Trajectory& trajectory = grde.trajectory();
   const Model& model = trajectory.model();
-  const int n = system.n(), p = system.p(), dim = system.dim();
+  const int n = system.n(), p = system.p(), dim = system.dim(), m = model.m(), nw = model.nw();
   const double t0 = trajectory.t0(), tf = trajectory.tf(), T = options.sample_period;
   const long samples = noise_sample_count(t0, tf, T);
+  const long count = output_count(t0, tf, output_dt);
+  check_memory(8.0 * static_cast<double>(count) * (4 + 3 * n + 2 * m + nw + p),
+               str_cat("the time series on the output grid of ", count, " points"),
+               "increase [output] dt (or shorten the horizon)");
   const std::vector<double> grid = output_grid(t0, tf, output_dt);
-  const long count = static_cast<long>(grid.size());
   const double gamma2 = grde.gamma() * grde.gamma();
+  const double bound = divergence_bound(trajectory, q0, grid, solver.divergence_factor);
+  const int heading = model.heading_index();
 
   SimulationResult r;
-  r.t = Eigen::Map<const Vec>(grid.data(), count);
   r.q.resize(count, n);
   r.q_hat.resize(count, n);
   r.q_d.resize(count, n);
-  r.u.resize(count, model.m());
-  r.u_d.resize(count, model.m());
-  r.w.resize(count, model.nw());
+  r.u.resize(count, m);
+  r.u_d.resize(count, m);
+  r.w.resize(count, nw);
   r.y.resize(count, p);
   r.sigma_min_eig.resize(count);
   r.sigma_max_eig.resize(count);
@@ -296,94 +324,97 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   long next = 1;  // next output time to record
   auto rhs = [&system](double t, const double* y, double* dy) { system.rhs(t, y, dy); };
 
+  auto interval_start = [&](long k) { return t0 + static_cast<double>(k) * T; };
   auto interval_end = [&](long k) {
     return k + 1 == samples ? tf : std::min(tf, t0 + static_cast<double>(k + 1) * T);
   };
-  // Records the output times in (t_start, t_start + h] of one accepted step of hold interval
-  // k; interpolate(theta, out) evaluates the step's dense output.
+  // Steps per hold interval are capped (on top of max_steps for the whole run): a closed loop
+  // stuck near a singular estimator gain fails fast instead of spending max_steps.
+  const long per_interval = std::min<long>(solver.max_steps, 20000);
+  long steps_in_interval = 0;
   std::vector<double> at_grid(static_cast<std::size_t>(dim));
-  auto emit = [&](double t_start, double h, long k, auto&& interpolate) {
-    const double t_end = t_start + h;
-    const double slack = 1e-12 * std::max(1.0, std::abs(t_end));
-    while (next < count && grid[static_cast<std::size_t>(next)] <= t_end + slack) {
-      interpolate(std::min(1.0, (grid[static_cast<std::size_t>(next)] - t_start) / h), at_grid.data());
+  Vec q_d(n), q_e(n);
+  std::size_t q_cursor = 0;
+  // After each accepted step of hold interval k (x holds the state at its end): records the
+  // output times the step covers, then stops the run if it diverged.
+  auto on_step = [&](const DensePiece& piece, long k) {
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
+      piece.eval(std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h), at_grid.data());
       record(next, at_grid.data());
       system.set_noise(noise.row(k).data());
       ++next;
     }
+    if (++steps_in_interval > per_interval)
+      throw SolverError(str_cat("more than ", per_interval, " steps in the noise hold interval [", interval_start(k),
+                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end(), ")"),
+                        piece.t_end(), "TOO_MUCH_WORK");
+    trajectory.q_d(piece.t_end(), q_d.data(), &q_cursor);
+    tracking_error(n, heading, x.data(), q_d.data(), q_e.data());
+    const double error = q_e.cwiseAbs().maxCoeff();
+    if (error <= bound) return StepAction::Continue;
+    r.status = RunStatus::Diverged;
+    r.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ", bound,
+                               " at t = ", piece.t_end(),
+                               ": the closed loop left the neighbourhood of the desired trajectory where the"
+                               " linearized design is meaningful (reduce the disturbance or the initial error,"
+                               " or raise [solver] divergence_factor)");
+    return StepAction::Stop;
   };
   auto add_stats = [&r](const StepStats& s) {
     r.stats.steps += s.steps;
     r.stats.rejected += s.rejected;
     r.stats.rhs_evals += s.rhs_evals;
+    r.stats.jac_evals += s.jac_evals;
   };
 
   try {
     if (solver.method == Method::ERK || solver.method == Method::BDF) {
       // Dormand-Prince per hold interval; for "bdf", a switch to the L-stable SDIRK4 once
       // Dormand-Prince's stiffness test fires.
-      // Steps per hold interval are capped: a closed loop stuck near a singular estimator gain
-      // fails fast instead of spending max_steps.
-      const long per_interval = std::min<long>(solver.max_steps, 20000);
-      Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, per_interval);
+      Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, solver.max_steps);
       std::unique_ptr<Sdirk4> implicit_stepper;
+      std::vector<double> hermite;
       r.integrator = "dormand-prince 5(4) per hold interval";
-      for (long k = 0; k < samples; ++k) {
-        const double ta = t0 + static_cast<double>(k) * T, tb = interval_end(k);
+      for (long k = 0; k < samples && r.status == RunStatus::Completed; ++k) {
+        const double ta = interval_start(k), tb = interval_end(k);
         system.set_noise(noise.row(k).data());
+        steps_in_interval = 0;
         if (solver.method == Method::BDF && !implicit_stepper && explicit_stepper.stiff()) {
-          implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol, per_interval);
+          const StepStats& used = explicit_stepper.stats();
+          implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol,
+                                                      std::max(1L, solver.max_steps - used.steps - used.rejected));
           r.integrator += str_cat(", then SDIRK4 from t = ", ta, " (stiffness detected)");
         }
         if (implicit_stepper) {
           implicit_stepper->integrate(
               rhs, ta, tb, x.data(),
               [&](double ts, double h, const double* y0, const double* f0, const double* y1, const double* f1) {
-                emit(ts, h, k, [&](double s, double* out) {
-                  // Cubic Hermite between the step's ends.
-                  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
-                  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-                  for (int i = 0; i < dim; ++i)
-                    out[i] = h00 * y0[i] + h * h10 * f0[i] + h01 * y1[i] + h * h11 * f1[i];
-                });
+                return on_step(hermite_piece(ts, h, dim, y0, f0, y1, f1, hermite), k);
               });
         } else {
-          explicit_stepper.integrate(rhs, ta, tb, x.data(), [&](double ts, double h, const double* c, const double*) {
-            emit(ts, h, k, [&](double theta, double* out) {
-              for (int i = 0; i < dim; ++i) {
-                double v = c[4 * dim + i];
-                for (int j = 3; j >= 0; --j) v = v * theta + c[j * dim + i];
-                out[i] = v;
-              }
-            });
-          });
+          explicit_stepper.integrate(rhs, ta, tb, x.data(), [&](const DensePiece& piece) { return on_step(piece, k); });
         }
       }
       add_stats(explicit_stepper.stats());
-      if (implicit_stepper) {
-        add_stats(implicit_stepper->stats());
-        r.stats.jac_evals = implicit_stepper->jacobian_evals();
-      }
+      if (implicit_stepper) add_stats(implicit_stepper->stats());
     } else {
       // Adams: CVODE restarted at every sample (a multistep method restarts at first order).
       r.integrator = "CVODE Adams restarted per hold interval";
       Cvode cvode(dim, solver.method, solver.rtol, solver.atol, solver.max_steps, rhs);
-      for (long k = 0; k < samples; ++k) {
-        const double ta = t0 + static_cast<double>(k) * T, tb = interval_end(k);
+      for (long k = 0; k < samples && r.status == RunStatus::Completed; ++k) {
+        const double ta = interval_start(k), tb = interval_end(k);
         system.set_noise(noise.row(k).data());
+        steps_in_interval = 0;
         cvode.reset(ta, x.data(), tb);
-        const double slack = 1e-12 * std::max(1.0, std::abs(tb));
-        while (next < count && grid[static_cast<std::size_t>(next)] <= tb + slack) {
-          cvode.advance(std::min(grid[static_cast<std::size_t>(next)], tb), x.data());
-          record(next, x.data());
-          system.set_noise(noise.row(k).data());
-          ++next;
+        for (double t = ta; t < tb;) {
+          t = cvode.step(x.data());
+          if (on_step(cvode.last_step_piece(), k) == StepAction::Stop) break;
         }
-        cvode.advance(tb, x.data());
-        r.stats.steps += cvode.num_steps();
-        r.stats.rhs_evals += cvode.num_rhs_evals();
-        r.stats.rejected += cvode.num_error_test_failures();
       }
+      r.stats.steps = cvode.num_steps();
+      r.stats.rhs_evals = cvode.num_rhs_evals();
+      r.stats.rejected = cvode.num_error_test_failures();
     }
   } catch (const SolverError& e) {
     // x holds the last accepted state. Near a coupling violation the estimator gain
@@ -399,6 +430,24 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
       throw coupling_error(e.t(), rho, str_cat(" (between output times: the integration stopped there, ", e.what(), ")"));
     throw SolverError(str_cat("output-feedback closed loop: ", e.what()), e.t(), e.flag());
   }
+  if (r.status == RunStatus::Completed && next != count)
+    throw SolverError(str_cat("output-feedback closed loop: ", next, " of ", count,
+                              " output times recorded at the end of the horizon"),
+                      tf, "INTERNAL");
+  if (r.status != RunStatus::Completed) {
+    // Keep the output times recorded before the run stopped.
+    r.q.conservativeResize(next, n);
+    r.q_hat.conservativeResize(next, n);
+    r.q_d.conservativeResize(next, n);
+    r.u.conservativeResize(next, m);
+    r.u_d.conservativeResize(next, m);
+    r.w.conservativeResize(next, nw);
+    r.y.conservativeResize(next, p);
+    r.sigma_min_eig.conservativeResize(next);
+    r.sigma_max_eig.conservativeResize(next);
+    r.rho_sigma_z.conservativeResize(next);
+  }
+  r.t = Eigen::Map<const Vec>(grid.data(), next);
   return r;
 }
 

@@ -6,8 +6,10 @@
 
 #include "hinf/checks.hpp"
 #include "hinf/cvode.hpp"
-#include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
+#include "hinf/resources.hpp"
+#include "hinf/stepper.hpp"
+#include "definiteness.hpp"
 #include "extremum.hpp"
 #include "riccati_kernel.hpp"
 #include "symmetric_extremes.hpp"
@@ -19,11 +21,12 @@ namespace {
 enum class RiccatiKind { Control, Filter };
 
 // dX/dt = sign (M(t)' X + X M(t) + R(t) - X S(t) X) along a trajectory:
-//   Control (GRDE 13):  sign = -1, M = A_e, R = Q,    S = B B' - gamma^-2 D D';
+//   Control (GRDE 13):  sign = -1, M = A_e,  R = Q,    S = B B' - gamma^-2 D D';
 //   Filter  (eq. 36):   sign = +1, M = A_e', R = D D', S = C' N^-1 C - gamma^-2 Q.
-// With inverted = true the problem is the one of W = X^-1, which passes smoothly through a
-// finite escape of X (W becomes singular there):
-//   dW/dt = -W (dX/dt) W = (-sign) (M'' W + W M' + (-S) - W (-R) W).
+// With shift = c > 0 the unknown is instead W = c (X + c I)^-1 (see escape_time), which obeys a
+// Riccati equation of the same form:
+//   dW/dt = -sign (M_w' W + W M_w + R_w - W S_w W),
+//   M_w = (M + c S)',  R_w = -c S,  S_w = M + M' - R / c + c S.
 // N is the state dimension when known at compile time (fixed-size Eigen types), else Dynamic.
 template <int N>
 class RiccatiProblem {
@@ -32,67 +35,82 @@ class RiccatiProblem {
   using VecN = Eigen::Matrix<double, N, 1>;
 
   RiccatiProblem(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
-                 const Mat& N_inv, bool inverted = false)
-      : trajectory_(trajectory), model_(trajectory.model()), kind_(kind), inverted_(inverted),
-        n_(trajectory.n()), sign_((kind == RiccatiKind::Control ? -1.0 : 1.0) * (inverted ? -1.0 : 1.0)),
+                 const Mat& N_inv, double shift = 0.0)
+      : trajectory_(trajectory), model_(trajectory.model()), kind_(kind), shift_(shift), n_(trajectory.n()),
+        sign_((kind == RiccatiKind::Control ? -1.0 : 1.0) * (shift > 0.0 ? -1.0 : 1.0)),
         inv_gamma2_(std::isinf(gamma) ? 0.0 : 1.0 / (gamma * gamma)),
         constant_(model_.constant_input_matrices()), Q_(Q), N_inv_(N_inv) {
-    for (auto* M : {&M_, &R_, &S_, &X_, &T_, &G_}) M->resize(n_, n_);
+    for (auto* M : {&M_, &R_, &S_, &R0_, &S0_, &shifted_, &X_, &A_, &T_, &G_}) M->resize(n_, n_);
     q_d_.resize(n_);
-    if (constant_) set_matrices(trajectory.t0());
+    if (constant_) set_input_terms(trajectory.t0());
   }
 
   int n() const { return n_; }
 
   void rhs(double t, const double* x, double* dx) {
-    linearize(t);
+    coefficients_at(t);
     unpack_symmetric(x, X_);
     detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx, diagonal_S_);
   }
 
   void jacobian(double t, const double* x, double* J) {
-    linearize(t);
+    coefficients_at(t);
     unpack_symmetric(x, X_);
     detail::riccati_jacobian(sign_, M_, S_, X_, T_, G_, J);
   }
 
  private:
-  void set_matrices(double t) {
+  // R and S of the equation for X (they depend on t only through B, C, D), and the parts of
+  // the shifted problem that do not depend on A_e.
+  void set_input_terms(double t) {
     const Mat D = model_.D(t);
-    MatN R(n_, n_), S(n_, n_);
     if (kind_ == RiccatiKind::Control) {
       const Mat B = model_.B(t);
-      R = Q_;
-      S = B * B.transpose();
-      if (inv_gamma2_ > 0.0) S -= inv_gamma2_ * (D * D.transpose());
+      R0_ = Q_;
+      S0_ = B * B.transpose();
+      if (inv_gamma2_ > 0.0) S0_ -= inv_gamma2_ * (D * D.transpose());
     } else {
       const Mat C = model_.C(t);
-      R = D * D.transpose();
-      S = C.transpose() * N_inv_ * C;
-      if (inv_gamma2_ > 0.0) S -= inv_gamma2_ * Q_;
+      R0_ = D * D.transpose();
+      S0_ = C.transpose() * N_inv_ * C;
+      if (inv_gamma2_ > 0.0) S0_ -= inv_gamma2_ * Q_;
     }
-    R_ = inverted_ ? MatN(-S) : R;
-    S_ = inverted_ ? MatN(-R) : S;
-    diagonal_S_ = detail::is_diagonal(S_);
+    if (shift_ > 0.0) {
+      R_ = -shift_ * S0_;
+      shifted_ = shift_ * S0_ - R0_ / shift_;  // S_w - (M + M')
+      diagonal_S_ = false;
+    } else {
+      R_ = R0_;
+      S_ = S0_;
+      diagonal_S_ = detail::is_diagonal(S_);
+    }
   }
 
-  void linearize(double t) {
+  void coefficients_at(double t) {
     // Explicit Runge-Kutta stages and Newton iterations often come back to the same t.
-    if (t == linearized_at_) return;
-    linearized_at_ = t;
+    if (t == coefficients_at_) return;
+    coefficients_at_ = t;
     trajectory_.q_d(t, q_d_.data(), &cursor_);
-    model_.dfdq(t, q_d_, T_);
-    // M = A_e (control) or A_e' (filter); the inverse problem uses M'.
-    const bool transpose = (kind_ == RiccatiKind::Filter) != inverted_;
-    if (transpose) M_ = T_.transpose();
-    else M_ = T_;
-    if (!constant_) set_matrices(t);
+    model_.dfdq(t, q_d_, A_);
+    if (!constant_) set_input_terms(t);
+    const bool transpose = kind_ == RiccatiKind::Filter;  // M = A_e (control) or A_e' (filter)
+    if (shift_ > 0.0) {
+      if (transpose) T_ = A_.transpose();
+      else T_ = A_;
+      S_ = T_ + T_.transpose() + shifted_;
+      T_ += shift_ * S0_;
+      M_ = T_.transpose();
+    } else if (transpose) {
+      M_ = A_.transpose();
+    } else {
+      M_ = A_;
+    }
   }
 
   const Trajectory& trajectory_;
   const Model& model_;
   RiccatiKind kind_;
-  bool inverted_;
+  double shift_;
   int n_;
   double sign_;
   double inv_gamma2_;
@@ -100,9 +118,9 @@ class RiccatiProblem {
   bool diagonal_S_ = false;
   Mat Q_, N_inv_;
   std::size_t cursor_ = 0;
-  double linearized_at_ = NAN;  // the t of M_ (and of R_, S_ for time-varying input matrices)
+  double coefficients_at_ = NAN;  // the t of M_ (and of R_, S_ for time-varying input matrices)
   VecN q_d_;
-  MatN M_, R_, S_, X_, T_, G_;
+  MatN M_, R_, S_, R0_, S0_, shifted_, X_, A_, T_, G_;
 };
 
 double max_abs(const double* y, int p) {
@@ -114,8 +132,39 @@ double max_abs(const double* y, int p) {
   return value;
 }
 
-[[noreturn]] void throw_escape(RiccatiKind kind, double t_escape, double gamma, double t0,
-                               double tf, const std::string& detail) {
+double largest_eigenvalue(const Mat& M) {
+  return Eigen::SelfAdjointEigenSolver<Mat>(0.5 * (M + M.transpose()), Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+}
+
+// The integration runs from t_start to t_end: backward from tf for the GRDE, forward from t0
+// for the filter.
+double start_of(const Trajectory& trajectory, RiccatiKind kind) {
+  return kind == RiccatiKind::Control ? trajectory.tf() : trajectory.t0();
+}
+double end_of(const Trajectory& trajectory, RiccatiKind kind) {
+  return kind == RiccatiKind::Control ? trajectory.t0() : trajectory.tf();
+}
+
+// A scale of X over the horizon: the larger of X_start and the constant term R integrated over
+// the time scale of the dynamics, min(horizon, 1 / |A_e(t_start)|_F) (Q for the GRDE, D D' for
+// the filter): for a stable system X settles at about R / |A|, for an unstable or slow one it
+// grows with the horizon. The escape test's accuracy depends on it: W = c (X + c I)^-1 carries
+// X with the relative accuracy of W times (1 + c / x), so c should not exceed X's scale by much.
+double solution_scale(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, const Mat& X_start) {
+  const double t_start = start_of(trajectory, kind);
+  const double time_scale = std::min(trajectory.tf() - trajectory.t0(), 1.0 / std::max(trajectory.A_e(t_start).norm(), 1e-300));
+  double R_scale = 0.0;
+  if (kind == RiccatiKind::Control) {
+    R_scale = largest_eigenvalue(Q);
+  } else {
+    const Mat D = trajectory.model().D(t_start);
+    R_scale = largest_eigenvalue(D * D.transpose());
+  }
+  return std::max({largest_eigenvalue(X_start), R_scale * time_scale, std::numeric_limits<double>::min()});
+}
+
+[[noreturn]] void throw_escape(RiccatiKind kind, double t_escape, double gamma, double t0, double tf,
+                               const std::string& detail) {
   if (kind == RiccatiKind::Control)
     throw ConjugatePointError(
         str_cat("conjugate point: Z(t) of the GRDE (13) escapes to infinity at t = ", t_escape,
@@ -131,216 +180,180 @@ double max_abs(const double* y, int p) {
       t_escape, gamma);
 }
 
-template <int N>
-double smallest_eigenvalue(const double* packed, int n) {
-  Eigen::Matrix<double, N, N> W(n, n);
-  unpack_symmetric(packed, W);
-  double lo = 0.0, hi = 0.0;
-  detail::symmetric_eigen_extremes(W, lo, hi);
-  return lo;
-}
+bool is_too_much_work(const SolverError& e) { return e.flag().find("TOO_MUCH_WORK") != std::string::npos; }
 
-// Where, between t_start and t_end, does the solution X of the Riccati problem escape to
-// infinity? Integrates W = X^-1 from W(t_start) = X_start^-1 (X_start large, positive
-// definite) and returns the first time the smallest eigenvalue of W reaches zero, located by
-// bisection on the dense output; NaN if W stays positive definite (X is large but finite).
+// Where, between t_from and t_end, does the solution X of the Riccati problem escape to
+// infinity (a conjugate point, paper eq. 14)? X_from = X(t_from) is large (or could not be
+// integrated further). Returns the first escape time, or NaN if X stays finite up to t_end.
+//
+// Decided on W = c (X + c I)^-1, c = solution_scale(): while X is finite and X >= 0 (X is
+// bounded below by the gamma = inf solution, which is >= 0 for Q, D D' >= 0), W is smooth with
+// 0 < W <= I, and W loses positive definiteness exactly where X escapes; W itself passes
+// smoothly through the escape. Every accepted step is searched with the certified test of
+// definiteness.hpp, which also finds a dip of lambda_min(W) below zero and back within one
+// step (a tangential conjugate point just below gamma*). The absolute tolerance of W is set
+// relative to its smallest eigenvalue at t_from, c / (lambda_max(X_from) + c), so that a large
+// X that keeps growing without escaping (lambda_min(W) -> 0+) is not mistaken for an escape.
 template <int N>
-double escape_time(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
-                   const Mat& N_inv, const Mat& X_start, double t_start, double t_end,
-                   const SolverOptions& options) {
-  RiccatiProblem<N> inverse(trajectory, kind, Q, gamma, N_inv, /*inverted=*/true);
-  const int n = inverse.n();
+double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma, const Mat& N_inv,
+                    const Mat& X_from, double t_from, double t_end, double c, const SolverOptions& options) {
+  const int n = static_cast<int>(X_from.rows());
   const int p = packed_size(n);
-  const Eigen::LLT<Mat> llt(X_start);
-  if (llt.info() != Eigen::Success) return t_start;  // X already lost positive definiteness
-  const Mat W0 = llt.solve(Mat::Identity(n, n));
-  std::vector<double> w(static_cast<std::size_t>(p)), at(static_cast<std::size_t>(p));
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, c);
+  const Mat shifted = 0.5 * (X_from + X_from.transpose()) + c * Mat::Identity(n, n);
+  const Eigen::LLT<Mat> llt(shifted);
+  if (llt.info() != Eigen::Success) return t_from;  // X_from has an eigenvalue <= -c: past an escape
+  const Mat W0 = c * llt.solve(Mat::Identity(n, n));
+  std::vector<double> w(static_cast<std::size_t>(p));
   pack_symmetric(0.5 * (W0 + W0.transpose()), w.data());
-  const double scale = max_abs(w.data(), p);
-  Dopri5 stepper(p, options.rtol, std::min(options.atol, 1e-3 * options.rtol * scale), options.max_steps);
-  auto rhs = [&inverse](double t, const double* y, double* dy) { inverse.rhs(t, y, dy); };
-  struct Found {
-    double t;
-  };
+  SolverOptions o = options;
+  o.atol = 1e-2 * options.rtol * c / (largest_eigenvalue(X_from) + c);
+  detail::DefinitenessSearch<N> search(n);
+  double found = NAN;
   try {
-    stepper.integrate(rhs, t_start, t_end, w.data(), [&](double ts, double h, const double* c, const double* y) {
-      if (smallest_eigenvalue<N>(y, n) > 0.0) return;
-      double lo = 0.0, hi = 1.0;  // lambda_min(W) > 0 at theta = lo, <= 0 at theta = hi
-      for (int i = 0; i < 60 && (hi - lo) * std::abs(h) > 1e-14 * std::max(1.0, std::abs(ts)); ++i) {
-        const double mid = 0.5 * (lo + hi);
-        for (int k = 0; k < p; ++k) {
-          double v = c[4 * p + k];
-          for (int j = 3; j >= 0; --j) v = v * mid + c[j * p + k];
-          at[static_cast<std::size_t>(k)] = v;
-        }
-        (smallest_eigenvalue<N>(at.data(), n) > 0.0 ? lo : hi) = mid;
-      }
-      throw Found{ts + hi * h};
-    });
-  } catch (const Found& found) {
-    return found.t;
+    integrate(
+        o, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
+        [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_from,
+        t_end, w.data(), [&](const DensePiece& piece) {
+          const double theta = search.first_loss(piece);
+          if (std::isnan(theta)) return StepAction::Continue;
+          found = piece.time(theta);
+          return StepAction::Stop;
+        });
   } catch (const SolverError& e) {
-    return e.t();  // W could not be continued: treat the failure point as the escape
+    if (is_too_much_work(e))
+      throw SolverError(str_cat("the conjugate-point test of the ",
+                                kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati equation (36)",
+                                " could not be completed: ", e.what()),
+                        e.t(), e.flag());
+    // W is bounded while X is finite and >= 0; it can fail to continue only past an escape of
+    // X (where X reaches -c I), between the last accepted step and e.t().
+    return e.t();
   }
-  return NAN;
+  return found;
 }
 
-// Integrates the Riccati problem from (t_start, X_start) to t_end with the chosen method and
-// returns its dense output. When |X|_max passes escape_norm * max(1, |X_start|_max), the
-// inverse W = X^-1 decides whether X really escapes (ConjugatePointError at the escape
-// time) or is only large; in the latter case the integration goes on.
+// Integrates the Riccati problem over the trajectory's horizon with the chosen method. When
+// |X|_max passes escape_norm * solution_scale(), or when the integration fails, escape_after()
+// decides from there whether X escapes (ConjugatePointError at the escape time) or is only
+// large. With store = true the dense output is kept and a large X that does not escape is
+// followed through its peak; with store = false (the escape test) the answer "no escape" ends
+// the integration and an empty dense output is returned.
 template <int N>
-std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(RiccatiProblem<N>& problem,
-                                                             const Trajectory& trajectory, RiccatiKind kind,
-                                                             const Mat& Q, const Mat& N_inv,
-                                                             const Mat& X_start, double t_start,
-                                                             double t_end, double gamma,
-                                                             const SolverOptions& options, bool store) {
+std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& trajectory, RiccatiKind kind,
+                                                             const Mat& Q, double gamma, const Mat& N_inv,
+                                                             const Mat& X_start, const SolverOptions& options,
+                                                             bool store) {
   const int n = static_cast<int>(X_start.rows());
   const int p = packed_size(n);
+  const double t_start = start_of(trajectory, kind), t_end = end_of(trajectory, kind);
+  const double t0 = trajectory.t0(), tf = trajectory.tf();
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv);
   std::vector<double> x(static_cast<std::size_t>(p));
   pack_symmetric(X_start, x.data());
-  const double t0 = std::min(t_start, t_end), tf = std::max(t_start, t_end);
-  const double direction = t_end > t_start ? 1.0 : -1.0;
+  const double scale = solution_scale(trajectory, kind, Q, X_start);
 
-  auto rhs = [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); };
-  double limit = options.escape_norm * std::max(1.0, max_abs(x.data(), p));
-  bool probed = false;
-  // Thrown when the inverse has been followed to t_end without an escape and nothing is
-  // stored: the question "does X escape?" is answered (no), the rest need not be integrated.
-  struct NoEscape {};
-  // Once the inverse has shown that X does not escape, X is followed through its peak. A
-  // continuation that has taken far more steps than the whole solve before it AND whose pace
-  // since the probe would need more than max_steps to reach t_end (the step size collapsing
-  // under the huge X) is stopped as a failure instead of grinding on to max_steps; a large X
-  // that is integrated at a normal pace (a long horizon) is not affected.
-  long steps_taken = 0, steps_at_probe = 0, step_budget_after_probe = 0;
-  double t_probe = t_start;
-  auto check_escape = [&](double t, const double* y) {
-    ++steps_taken;
-    if (probed && steps_taken > step_budget_after_probe) {
-      const double steps_since = static_cast<double>(steps_taken - steps_at_probe);
-      const double pace = std::abs(t - t_probe) / steps_since;  // mean step since the probe
-      const double projected = static_cast<double>(steps_taken) + std::abs(t_end - t) / std::max(pace, 1e-300);
-      if (projected > static_cast<double>(options.max_steps))
-        throw SolverError(str_cat(steps_taken - steps_at_probe, " steps in the peak of the solution near t = ", t,
-                                  " (the step size collapsed: at this pace max_steps = ", options.max_steps,
-                                  " would not reach t = ", t_end, ")"),
-                          t, "TOO_MUCH_WORK");
-    }
-    const double largest = max_abs(y, p);
-    if (largest <= limit) return;
-    if (!std::isfinite(largest)) throw_escape(kind, t, gamma, t0, tf, " (the solution became non-finite)");
+  // With gamma = inf, S >= 0 and X cannot escape (it only grows without bound in infinite time).
+  const bool can_escape = std::isfinite(gamma);
+  bool no_escape = !can_escape;  // established: by the escape test, or because none is possible
+  double t_last = t_start;       // the time of x (the last accepted step)
+  // Decides from (t_last, x) whether X escapes before t_end; throws ConjugatePointError if so.
+  auto decide_escape = [&]() {
+    if (no_escape) return;
     Mat X(n, n);
-    unpack_symmetric(y, X);
-    const double t_escape = escape_time<N>(trajectory, kind, Q, gamma, N_inv, X, t, t_end, options);
+    unpack_symmetric(x.data(), X);
+    const double t_escape = escape_after<N>(trajectory, kind, Q, gamma, N_inv, X, t_last, t_end, scale, options);
     if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
-    if (!store) throw NoEscape{};
-    limit = std::numeric_limits<double>::infinity();  // large but finite: carry on
-    probed = true;
-    steps_at_probe = steps_taken;
-    t_probe = t;
-    step_budget_after_probe = steps_taken + std::max(2000L, 20 * steps_taken);
+    no_escape = true;
   };
-  // A failure while X is large may be an escape the threshold has not caught yet.
-  const double initial_scale = std::max(1.0, max_abs(x.data(), p));
-  auto on_failure = [&](const SolverError& e) {
-    if (!probed && max_abs(x.data(), p) > 1e3 * initial_scale) {
-      Mat X(n, n);
-      unpack_symmetric(x.data(), X);
-      const double t_escape = escape_time<N>(trajectory, kind, Q, gamma, N_inv, X, e.t(), t_end, options);
-      if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
-      if (!store) throw NoEscape{};
-      probed = true;
-    }
+  const double limit = options.escape_norm * scale;
+  bool large = false;  // X has passed the threshold once
+  // Once X is large (and does not escape), it is followed through its peak. A continuation that
+  // has taken far more steps than the whole solve before it AND whose pace since then would
+  // need more than max_steps to reach t_end (the step size collapsing under the huge X) is
+  // stopped as a failure instead of grinding on to max_steps; a large X integrated at a normal
+  // pace (a long horizon) is not affected.
+  long steps_taken = 0, steps_when_large = 0, step_budget_after_large = 0;
+  double t_large = t_start;
+  PiecewisePolynomial dense(p);
+  StepStats step_stats;
+  try {
+    step_stats = integrate(
+        options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
+        [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
+        t_end, x.data(), [&](const DensePiece& piece) {
+          const double t = piece.t_end();
+          const double largest = max_abs(x.data(), p);
+          if (!std::isfinite(largest)) throw SolverError("the solution became non-finite", t, "NOT_FINITE");
+          t_last = t;
+          ++steps_taken;
+          if (store) {
+            dense.append(piece);
+            if (steps_taken % 1024 == 0)
+              check_memory(static_cast<double>(dense.memory_bytes()), "the stored Riccati solution",
+                           "loosen the solver tolerances or shorten the horizon");
+          }
+          if (large && steps_taken > step_budget_after_large) {
+            const double steps_since = static_cast<double>(steps_taken - steps_when_large);
+            const double pace = std::abs(t - t_large) / steps_since;  // mean step since X became large
+            const double projected =
+                static_cast<double>(steps_taken) + std::abs(t_end - t) / std::max(pace, 1e-300);
+            if (projected > static_cast<double>(options.max_steps))
+              throw SolverError(str_cat(steps_taken - steps_when_large,
+                                        " steps in the peak of the solution near t = ", t,
+                                        " (the step size collapsed: at this pace max_steps = ", options.max_steps,
+                                        " would not reach t = ", t_end, ")"),
+                                t, "TOO_MUCH_WORK");
+          }
+          if (large || largest <= limit) return StepAction::Continue;
+          decide_escape();
+          if (!store) return StepAction::Stop;  // the question "does X escape?" is answered: no
+          large = true;
+          steps_when_large = steps_taken;
+          t_large = t;
+          step_budget_after_large = steps_taken + std::max(2000L, 20 * steps_taken);
+          return StepAction::Continue;
+        });
+  } catch (const SolverError& e) {
+    // A failure may be an escape that the threshold has not caught yet.
+    decide_escape();
+    if (!store) return {PiecewisePolynomial(p), SolveStats{}};
     std::string cause = e.what();
     while (!cause.empty() && (cause.back() == '.' || cause.back() == ' ')) cause.pop_back();
+    std::string advice;
+    if (std::isinf(gamma))
+      advice = ". The solution grows too large to integrate (gamma = inf): rescale the weights or the model";
+    else
+      advice = str_cat(". The solution has no conjugate point (checked on W = c (X + c I)^-1 from t = ", t_last,
+                       ") but grows too large to integrate near t = ", e.t(), ": gamma = ", gamma,
+                       " is very close to the smallest admissible value; increase it");
     throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)", " solve failed: ",
-                              cause,
-                              !probed ? std::string()
-                                      : str_cat(". The solution has no finite escape but grows too large to integrate"
-                                                " near t = ", e.t(),
-                                                std::isinf(gamma) ? " (gamma = inf): rescale the weights or the model"
-                                                                  : str_cat(": gamma = ", gamma,
-                                                                            " is very close to the smallest admissible"
-                                                                            " value; increase it"))),
+                              cause, advice),
                       e.t(), e.flag());
-  };
-  PiecewisePolynomial dense(p);
-  SolveStats stats;
-  try {
-  if (options.method == Method::ERK) {
-    Dopri5 stepper(p, options.rtol, options.atol, options.max_steps);
-    try {
-      stepper.integrate(rhs, t_start, t_end, x.data(),
-                        [&](double t_step, double h, const double* c, const double* y) {
-                          if (store) dense.append(t_step, h, 4, c);
-                          check_escape(t_step + h, y);
-                        });
-    } catch (const ConjugatePointError&) {
-      throw;
-    } catch (const SolverError& e) {
-      on_failure(e);
-    }
-    stats.steps = stepper.stats().steps;
-    stats.rejected = stepper.stats().rejected;
-    stats.rhs_evals = stepper.stats().rhs_evals;
-  } else {
-    Cvode::Jacobian jacobian = nullptr;
-    if (options.method == Method::BDF)
-      jacobian = [&problem](double t, const double* y, const double*, double* J) {
-        problem.jacobian(t, y, J);
-      };
-    Cvode solver(p, options.method, options.rtol, options.atol, options.max_steps, rhs, jacobian);
-    solver.reset(t_start, x.data(), t_end);
-    double t = t_start;
-    while ((t_end - t) * direction > 0.0) {
-      try {
-        t = solver.step(x.data());
-        if (store) solver.append_last_step(dense);
-        check_escape(t, x.data());
-      } catch (const SolverError& e) {
-        on_failure(e);
-      }
-    }
-    stats.steps = solver.num_steps();
-    stats.rejected = solver.num_error_test_failures();
-    stats.rhs_evals = solver.num_rhs_evals();
-    stats.jac_evals = solver.num_jac_evals();
-  }
-  } catch (const NoEscape&) {
-    return {PiecewisePolynomial(p), stats};
   }
   dense.finalize();
+  SolveStats stats;
+  stats.steps = step_stats.steps;
+  stats.rejected = step_stats.rejected;
+  stats.rhs_evals = step_stats.rhs_evals;
+  stats.jac_evals = step_stats.jac_evals;
   stats.memory_bytes = dense.memory_bytes();
   return {std::move(dense), stats};
 }
 
-template <int N>
-std::pair<PiecewisePolynomial, SolveStats> solve_kind(const Trajectory& trajectory, RiccatiKind kind,
-                                                      const Mat& Q, double gamma, const Mat& N_inv,
-                                                      const Mat& X_start, const SolverOptions& options,
-                                                      bool store) {
-  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv);
-  const double t0 = trajectory.t0(), tf = trajectory.tf();
-  if (kind == RiccatiKind::Control)
-    return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, tf, t0, gamma, options, store);
-  return integrate_riccati(problem, trajectory, kind, Q, N_inv, X_start, t0, tf, gamma, options, store);
-}
-
 // Solves (store = true: keeps the dense output) or only integrates (store = false: enough to
 // find escapes) the Riccati problem of `kind` over the trajectory's horizon.
-std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind,
-                                                 const Mat& Q, double gamma, const Mat& N_inv,
-                                                 const Mat& X_start, const SolverOptions& options,
-                                                 bool store = true) {
-  if (trajectory.n() == 6) return solve_kind<6>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
-  return solve_kind<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q,
+                                                 double gamma, const Mat& N_inv, const Mat& X_start,
+                                                 const SolverOptions& options, bool store = true) {
+  if (trajectory.n() == 6) return integrate_riccati<6>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+  return integrate_riccati<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
 }
 
 // Escape time of an integration without storage, NaN when there is none.
 double escape_or_nan(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
                      const Mat& N_inv, const Mat& X_start, const SolverOptions& options) {
+  if (std::isinf(gamma)) return NAN;  // S >= 0: no finite escape
   try {
     solve(trajectory, kind, Q, gamma, N_inv, X_start, options, /*store=*/false);
   } catch (const ConjugatePointError& e) {

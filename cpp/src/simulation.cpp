@@ -1,39 +1,60 @@
 #include "hinf/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "hinf/angles.hpp"
 #include "hinf/checks.hpp"
-#include "hinf/cvode.hpp"
-#include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
+#include "hinf/resources.hpp"
 #include "hinf/sparse_matrix.hpp"
+#include "hinf/stepper.hpp"
 
 namespace hinf {
 
-std::vector<double> output_grid(double t0, double tf, double dt) {
+std::string to_string(RunStatus status) {
+  switch (status) {
+    case RunStatus::Completed: return "completed";
+    case RunStatus::Diverged: return "diverged";
+  }
+  return "unknown";
+}
+
+long output_count(double t0, double tf, double dt) {
   check_horizon(t0, tf);
   require(std::isfinite(dt) && dt > 0.0, "the output step dt must be > 0, got ", dt);
   const double intervals = (tf - t0) / dt;
-  require(intervals <= 1e8, "the output grid would have ", intervals, " points: use a larger dt");
+  require(intervals <= 1e12, "the output grid would have ", intervals, " points: use a larger [output] dt");
   // A last interval shorter than 1e-6 dt is merged into the one before.
-  const long count = std::max(1L, static_cast<long>(std::ceil(intervals - 1e-6)));
+  return std::max(1L, static_cast<long>(std::ceil(intervals - 1e-6))) + 1;
+}
+
+std::vector<double> output_grid(double t0, double tf, double dt) {
+  const long count = output_count(t0, tf, dt);
+  check_memory(8.0 * static_cast<double>(count), str_cat("the output grid of ", count, " points"),
+               "use a larger [output] dt");
   std::vector<double> grid;
-  grid.reserve(static_cast<std::size_t>(count + 1));
-  for (long k = 0; k < count; ++k) grid.push_back(t0 + static_cast<double>(k) * dt);
+  grid.reserve(static_cast<std::size_t>(count));
+  for (long k = 0; k + 1 < count; ++k) grid.push_back(t0 + static_cast<double>(k) * dt);
   grid.push_back(tf);
   return grid;
 }
 
-namespace {
-
-// Evaluates the dense-output polynomial of one Dormand-Prince step at theta.
-void eval_dense(const double* c, int degree, int dim, double theta, double* out) {
-  for (int i = 0; i < dim; ++i) out[i] = c[degree * dim + i];
-  for (int j = degree - 1; j >= 0; --j)
-    for (int i = 0; i < dim; ++i) out[i] = out[i] * theta + c[j * dim + i];
+double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::vector<double>& grid,
+                        double divergence_factor) {
+  const Model& model = trajectory.model();
+  const int n = model.n();
+  Vec q_d(n), q_e(n);
+  trajectory.q_d(grid.front(), q_d.data());
+  tracking_error(n, model.heading_index(), q0.data(), q_d.data(), q_e.data());
+  double scale = std::max(1.0, q_e.cwiseAbs().maxCoeff());
+  std::size_t cursor = 0;
+  for (double t : grid) {
+    trajectory.q_d(t, q_d.data(), &cursor);
+    scale = std::max(scale, q_d.cwiseAbs().maxCoeff());
+  }
+  return divergence_factor * scale;
 }
-
-}  // namespace
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
@@ -46,13 +67,18 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
           " channels, the model '", model.name(), "' has ", nw);
   options.validate();
   const double t0 = trajectory.t0(), tf = trajectory.tf();
+  const long count = output_count(t0, tf, output_dt);
+  check_memory(8.0 * static_cast<double>(count) * (1 + 2 * n + 2 * m + nw),
+               str_cat("the time series on the output grid of ", count, " points"),
+               "increase [output] dt (or shorten the horizon)");
   const std::vector<double> grid = output_grid(t0, tf, output_dt);
-  const long count = static_cast<long>(grid.size());
+  const double bound = divergence_bound(trajectory, q0, grid, options.divergence_factor);
+  const int heading = model.heading_index();
 
   const bool constant_BD = model.constant_input_matrices();
   Mat B = model.B(t0), D = model.D(t0);
   const SparseMatrix B_sparse(B), D_sparse(D);
-  Vec u(m), w(nw);
+  Vec u(m), w(nw), q_d(n), q_e(n);
   Mat J(n, n), dudq(m, n);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
@@ -67,58 +93,55 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
       out.noalias() += model.B(t) * u + model.D(t) * w;
     }
   };
+  auto jacobian = [&](double t, const double* yy, const double*, double* Jout) {
+    Eigen::Map<const Vec> q(yy, n);
+    if (!constant_BD) B = model.B(t);
+    model.dfdq(t, q, J);
+    controller.control_jacobian(t, q, dudq);
+    Eigen::Map<Mat>(Jout, n, n) = J + B * dudq;
+  };
 
   SimulationResult result;
-  result.t = Eigen::Map<const Vec>(grid.data(), count);
   result.q.resize(count, n);
   result.q.row(0) = q0.transpose();
   Vec y = q0;
-
   result.integrator = options.method == Method::ERK ? "dormand-prince 5(4)" : "CVODE " + to_string(options.method);
-  if (options.method == Method::ERK) {
-    Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
-    long next = 1;
-    stepper.integrate(rhs, t0, tf, y.data(), [&](double t_start, double h, const double* c, const double*) {
-      const double t_end = t_start + h;
-      const double slack = 1e-12 * std::max(1.0, std::abs(t_end));
-      while (next < count && grid[static_cast<std::size_t>(next)] <= t_end + slack) {
-        const double theta = std::min(1.0, (grid[static_cast<std::size_t>(next)] - t_start) / h);
-        eval_dense(c, 4, n, theta, result.q.row(next).data());
-        ++next;
-      }
-    });
-    result.stats.steps = stepper.stats().steps;
-    result.stats.rejected = stepper.stats().rejected;
-    result.stats.rhs_evals = stepper.stats().rhs_evals;
-  } else {
-    Cvode::Jacobian jacobian = nullptr;
-    if (options.method == Method::BDF)
-      jacobian = [&](double t, const double* yy, const double*, double* Jout) {
-        Eigen::Map<const Vec> q(yy, n);
-        if (!constant_BD) B = model.B(t);
-        model.dfdq(t, q, J);
-        controller.control_jacobian(t, q, dudq);
-        Eigen::Map<Mat>(Jout, n, n) = J + B * dudq;
-      };
-    Cvode solver(n, options.method, options.rtol, options.atol, options.max_steps, rhs, jacobian);
-    solver.reset(t0, y.data(), tf);
-    for (long k = 1; k < count; ++k) {
-      solver.advance(grid[static_cast<std::size_t>(k)], y.data());
-      result.q.row(k) = y.transpose();
-    }
-    result.stats.steps = solver.num_steps();
-    result.stats.rejected = solver.num_error_test_failures();
-    result.stats.rhs_evals = solver.num_rhs_evals();
-    result.stats.jac_evals = solver.num_jac_evals();
-  }
-
-  // Signals on the grid.
-  result.q_d.resize(count, n);
-  result.u.resize(count, m);
-  result.u_d.resize(count, m);
-  result.w.resize(count, nw);
+  long next = 1;  // the next output time to record
   std::size_t cursor = 0;
-  for (long k = 0; k < count; ++k) {
+  const StepStats stats = integrate(options, n, rhs, jacobian, t0, tf, y.data(), [&](const DensePiece& piece) {
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
+      const double theta = std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h);
+      piece.eval(theta, result.q.row(next).data());
+      ++next;
+    }
+    trajectory.q_d(piece.t_end(), q_d.data(), &cursor);
+    tracking_error(n, heading, y.data(), q_d.data(), q_e.data());
+    const double error = q_e.cwiseAbs().maxCoeff();
+    if (error <= bound) return StepAction::Continue;
+    result.status = RunStatus::Diverged;
+    result.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ",
+                                    bound, " at t = ", piece.t_end(),
+                                    ": the closed loop left the neighbourhood of the desired trajectory where the"
+                                    " linearized design is meaningful (reduce the disturbance or the initial"
+                                    " error, or raise [solver] divergence_factor)");
+    return StepAction::Stop;
+  });
+  result.stats.steps = stats.steps;
+  result.stats.rejected = stats.rejected;
+  result.stats.rhs_evals = stats.rhs_evals;
+  result.stats.jac_evals = stats.jac_evals;
+
+  // Signals on the recorded part of the grid.
+  const long recorded = result.status == RunStatus::Completed ? count : next;
+  result.t = Eigen::Map<const Vec>(grid.data(), recorded);
+  result.q.conservativeResize(recorded, n);
+  result.q_d.resize(recorded, n);
+  result.u.resize(recorded, m);
+  result.u_d.resize(recorded, m);
+  result.w.resize(recorded, nw);
+  cursor = 0;
+  for (long k = 0; k < recorded; ++k) {
     const double t = grid[static_cast<std::size_t>(k)];
     trajectory.q_d(t, result.q_d.row(k).data(), &cursor);
     trajectory.u_d(t, result.u_d.row(k).data());

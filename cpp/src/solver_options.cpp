@@ -24,12 +24,16 @@ Method method_from_string(const std::string& name) {
 }
 
 void SolverOptions::validate() const {
-  require(std::isfinite(rtol) && rtol > 0.0, "solver rtol must be > 0, got ", rtol);
-  require(std::isfinite(atol) && atol > 0.0, "solver atol must be > 0, got ", atol);
-  require(rtol >= 1e-14, "solver rtol = ", rtol, " is below what double precision can give; use >= 1e-14");
-  require(max_steps > 0, "solver max_steps must be > 0, got ", max_steps);
-  require(std::isfinite(escape_norm) && escape_norm > 1.0, "solver escape_norm must be > 1, got ",
+  // Looser tolerances do not give an answer (rtol = 1 or atol = 1e10 "succeed" with errors of
+  // the size of the solution); tighter ones than 1e-14 are below double precision.
+  require(std::isfinite(rtol) && rtol >= 1e-14 && rtol <= 1e-3, "solver rtol must be in [1e-14, 1e-3], got ", rtol);
+  require(std::isfinite(atol) && atol > 0.0 && atol <= 1e-3,
+          "solver atol must be in (0, 1e-3] (about rtol / 100 for solutions of order 1), got ", atol);
+  require(max_steps >= 1 && max_steps <= 1000000000L, "solver max_steps must be in [1, 1e9], got ", max_steps);
+  require(std::isfinite(escape_norm) && escape_norm > 1.0, "solver escape_norm must be a finite number > 1, got ",
           escape_norm);
+  require(std::isfinite(divergence_factor) && divergence_factor > 1.0,
+          "solver divergence_factor must be a finite number > 1, got ", divergence_factor);
 }
 
 }  // namespace hinf

@@ -34,9 +34,7 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
   Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
   Vec y = q_d0_;
   try {
-    stepper.integrate(rhs, t0, tf, y.data(), [&](double t_start, double h, const double* c, const double*) {
-      dense_.append(t_start, h, 4, c);
-    });
+    stepper.integrate(rhs, t0, tf, y.data(), [&](const DensePiece& piece) { dense_.append(piece); });
   } catch (const SolverError& e) {
     throw SolverError(str_cat("the desired trajectory could not be integrated: ", e.what()),
                       e.t(), e.flag());

@@ -419,7 +419,7 @@ def build_parser() -> argparse.ArgumentParser:
                       help="the smallest gamma of the output-feedback design (needs [measurement])")
     star.add_argument("--lower", type=float, default=0.0, help="lower end of the bracket (must fail)")
     star.add_argument("--upper", type=float, default=0.0, help="upper end of the bracket (must pass)")
-    star.add_argument("--rtol", type=float, default=1e-6, help="relative width of the final bracket")
+    star.add_argument("--rtol", type=float, default=1e-7, help="relative width of the final bracket")
     star.add_argument("--max-evaluations", type=int, default=200)
     star.add_argument("--threads", type=int, default=2, help="evaluations in parallel per round")
     star.add_argument("--json", help="write the result with every gamma tried (JSON)")

@@ -263,7 +263,11 @@ DopriRun run_dopri(const LinearProblem& prob, double t0, double t1, double rtol,
   double t_prev = t0;
   stepper.integrate(
       [&](double t, const double* yy, double* dy) { prob.rhs(t, yy, dy); }, t0, t1, y.data(),
-      [&](double t_start, double h, const double* c, const double* y_end) {
+      [&](const hinf::DensePiece& piece) {
+        const double t_start = piece.t_start, h = piece.h;
+        const double* c = piece.coeffs;
+        const double* y_end = y.data();  // the stepper's state is at the end of the step
+        EXPECT_EQ(piece.degree, 4);
         EXPECT_EQ(t_start, t_prev);
         EXPECT_TRUE(t1 > t0 ? h > 0 : h < 0);
         for (int i = 0; i < n; ++i) {
@@ -326,7 +330,7 @@ TEST(Dopri5, StepSizeUnderflowIsASolverError) {
   double y = 1.0;
   try {
     stepper.integrate([](double, const double* yy, double* dy) { dy[0] = yy[0] * yy[0]; }, 0.0, 2.0,
-                      &y, [](double, double, const double*, const double*) {});
+                      &y, [](const hinf::DensePiece&) {});
     FAIL() << "no error although the solution escapes at t = 1";
   } catch (const hinf::SolverError& e) {
     EXPECT_NEAR(e.t(), 1.0, 1e-3) << e.what();
@@ -339,7 +343,7 @@ TEST(Dopri5, NonFiniteRhsIsASolverError) {
   double y = 1.0;
   EXPECT_THROW(stepper.integrate(
                    [](double t, const double*, double* dy) { dy[0] = t > 0.5 ? kNaN : 1.0; }, 0.0,
-                   1.0, &y, [](double, double, const double*, const double*) {}),
+                   1.0, &y, [](const hinf::DensePiece&) {}),
                hinf::SolverError);
 }
 
@@ -348,7 +352,7 @@ TEST(Dopri5, TooManyStepsIsASolverError) {
   double y = 0.0;
   try {
     stepper.integrate([](double t, const double*, double* dy) { dy[0] = std::cos(10.0 * t); }, 0.0,
-                      100.0, &y, [](double, double, const double*, const double*) {});
+                      100.0, &y, [](const hinf::DensePiece&) {});
     FAIL() << "20 steps cannot cover 160 periods at rtol 1e-10";
   } catch (const hinf::SolverError& e) {
     EXPECT_EQ(e.flag(), "TOO_MUCH_WORK");
@@ -385,7 +389,7 @@ CvodeRun run_cvode(const LinearProblem& prob, Method method, bool user_jacobian,
   double t = t0;
   for (int guard = 0; guard < 200000 && t != t1; ++guard) {
     t = solver.step(y.data());
-    if (dense != nullptr) solver.append_last_step(*dense);
+    if (dense != nullptr) dense->append(solver.last_step_piece());
   }
   if (dense != nullptr) dense->finalize();
   run.y_end = y;
@@ -598,9 +602,44 @@ TEST(Cvode, TooManyStepsIsASolverErrorInOneStepMode) {
     EXPECT_EQ(calls, 10);
     EXPECT_EQ(e.flag(), "CV_TOO_MUCH_WORK");
   }
-  // A reset restores the budget.
+  // The budget spans restarts: a loop that resets the solver (one restart per noise sample,
+  // say) cannot exceed max_steps either.
   solver.reset(0.0, &y, 100.0);
-  EXPECT_NO_THROW(solver.step(&y));
+  EXPECT_THROW(solver.step(&y), hinf::SolverError);
+}
+
+TEST(Cvode, MaxStepsBoundsAdvanceAcrossOutputTimes) {
+  // CVODE's own limit counts per CVode() call: 100 output times would allow 100 x max_steps.
+  hinf::Cvode solver(1, Method::Adams, 1e-10, 1e-12, 50,
+                     [](double t, const double*, double* dy) { dy[0] = std::cos(10.0 * t); });
+  double y = 0.0;
+  solver.reset(0.0, &y, 100.0);
+  int outputs = 0;
+  try {
+    for (; outputs < 100; ++outputs) solver.advance(outputs + 1.0, &y);
+    FAIL() << "100 s of a 10 rad/s oscillation at rtol 1e-10 in 50 steps";
+  } catch (const hinf::SolverError& e) {
+    EXPECT_EQ(e.flag(), "CV_TOO_MUCH_WORK") << e.what();
+    EXPECT_LE(solver.num_steps(), 50);
+  }
+  EXPECT_LT(outputs, 100);
+}
+
+TEST(Dopri5, MaxStepsBoundsTheStepperOverAllCalls) {
+  // Many short integrate() calls (one per hold interval) share one budget.
+  hinf::Dopri5 stepper(1, 1e-10, 1e-12, 200);
+  double y = 0.0;
+  int calls = 0;
+  try {
+    for (; calls < 1000; ++calls)
+      stepper.integrate([](double t, const double*, double* dy) { dy[0] = std::cos(10.0 * t); }, calls * 0.1,
+                        (calls + 1) * 0.1, &y, [](const hinf::DensePiece&) {});
+    FAIL() << "1000 intervals within 200 steps";
+  } catch (const hinf::SolverError& e) {
+    EXPECT_EQ(e.flag(), "TOO_MUCH_WORK");
+  }
+  EXPECT_LE(stepper.stats().steps + stepper.stats().rejected, 200);
+  EXPECT_LT(calls, 1000);
 }
 
 }  // namespace

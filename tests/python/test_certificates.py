@@ -362,10 +362,13 @@ def test_sweep_gain_below_gamma_and_cost_nonpositive(sweeps, name):
         # L_gamma = -gamma^2 int |v|^2 exactly (v the harmonic signals), up to the trapezoid
         # rule at dt = 0.002 (measured 5e-8 .. 1.3e-7 relative). At the lowest gamma the worst
         # case amplifies w (|w|^2 / |v|^2 ~ 170) and L_gamma is the small difference of terms
-        # that much larger: the same ~3e-6 quadrature error of the terms is 4.7e-4 of L_gamma.
+        # that much larger. There the closed loop under the worst case grows like e^t and
+        # amplifies the integration error: q is accurate to ~1.3e-5 relative at the default
+        # rtol 1e-8 (measured against an rtol 1e-12 run), so |dL| <= 2 * 170 * 1.3e-5 |L|
+        # ~ 4.4e-3 |L|; with a margin of 4, 2e-2.
         expected = -sweep.gammas**2 * harmonic_energy()
         np.testing.assert_allclose(sweep.cost[1:], expected[1:], rtol=1e-6)
-        np.testing.assert_allclose(sweep.cost[0], expected[0], rtol=1e-3)
+        np.testing.assert_allclose(sweep.cost[0], expected[0], rtol=2e-2)
 
 
 @pytest.mark.parametrize("worst_case", [False, True])

@@ -22,9 +22,12 @@ namespace hinf {
 struct GammaStarOptions {
   double lower = 0.0;        // bracket [lower, upper]: lower must fail, upper must pass;
   double upper = 0.0;        // both 0: found automatically (doubling / halving from 1)
-  double rtol = 1e-6;        // stop when upper - lower <= rtol * upper
+  double rtol = 1e-7;        // stop when upper - lower <= rtol * upper (1e-7: with the integration
+                             // error of the default solver options, gamma* is good to 1e-6)
   int max_evaluations = 200;
-  int threads = 2;           // evaluations run in parallel per round (>= 1)
+  int threads = 2;           // gammas evaluated in parallel per round (>= 1); at most the hardware's
+                             // threads are used, and fewer when max_evaluations would not
+                             // suffice to converge with that many per round
   SolverOptions solver;      // for every Riccati solve
   void validate() const;
 };

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "hinf/angles.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
 
@@ -26,7 +27,8 @@ class Controller {
 using ControllerPtr = std::shared_ptr<Controller>;
 
 // The H-infinity state-feedback tracking law, paper eqs. (17)/(18):
-//     u = u_d(t) - kappa(t) B(t)' Z(t) (q - q_d(t)).
+//     u = u_d(t) - kappa(t) B(t)' Z(t) (q - q_d(t)),
+// with the heading component of q - q_d wrapped to (-pi, pi] (angles.hpp).
 // kappa = 1 is the saddle-point (optimal) law (15); kappa >= 1/2 keeps the Lyapunov proof
 // of local exponential stability (eq. 23). kappa must stay > 0.
 class HinfStateFeedback final : public Controller {
@@ -47,6 +49,7 @@ class HinfStateFeedback final : public Controller {
 
   RiccatiSolutionPtr solution_;
   Signal kappa_;
+  int heading_;
   std::size_t q_cursor_ = 0, k_cursor_ = 0;
   double evaluated_at_ = NAN, kappa_now_ = 0.0;
   Vec q_d_, q_e_, u_d_;
@@ -84,8 +87,5 @@ class CascadeController final : public Controller {
   std::size_t cursor_ = 0;
   Vec q_d_, u_d_;
 };
-
-// Wraps an angle to (-pi, pi].
-double wrap_angle(double angle);
 
 }  // namespace hinf

@@ -4,6 +4,8 @@
 // is given); Adams uses fixed-point iteration. Exceptions thrown by rhs or jacobian are kept
 // and rethrown after CVODE returns; CVODE's own failures become SolverError carrying the
 // flag name and the time. CVODE integrates backward when the stop time is below t0.
+// max_steps bounds the steps over the solver's whole life, across reset() and advance() calls
+// (CVODE itself counts per call and per re-initialization).
 #pragma once
 
 #include <exception>
@@ -11,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "hinf/piecewise_polynomial.hpp"
+#include "hinf/dense_piece.hpp"
 #include "hinf/solver_options.hpp"
 
 namespace hinf {
@@ -30,25 +32,27 @@ class Cvode {
 
   // (Re)starts at (t0, y0); the solver never steps past t_stop.
   void reset(double t0, const double* y0, double t_stop);
-  // Takes one internal step toward t_stop; returns the new time and stores y there. The
-  // max_steps budget counts every step since reset (CVODE itself counts only per call).
+  // Takes one internal step toward t_stop; returns the new time and stores y there.
   double step(double* y);
   // Integrates to tout (between the current time and t_stop), interpolating; returns tout.
   double advance(double tout, double* y);
-  // Appends the interpolating polynomial of the last step (CVODE's Nordsieck history, the
-  // method's own order) to dense.
-  void append_last_step(PiecewisePolynomial& dense);
+  // The interpolating polynomial of the last step (CVODE's Nordsieck history, the method's own
+  // order) as a piece from the step's start to its end; valid until the next call.
+  const DensePiece& last_step_piece();
 
+  // Counts over the solver's life (all resets).
   long num_steps() const;
   long num_rhs_evals() const;
   long num_jac_evals() const;
   long num_error_test_failures() const;
-  const std::string& method_name() const { return method_name_; }
 
  private:
   void release();
   void check(int flag, const char* call, double t);
   void rethrow_pending();
+  long counter(int (*get)(void*, long*)) const;
+  // Steps left in the max_steps budget; a SolverError when there are none.
+  long remaining_steps();
 
   int dim_;
   long max_steps_;
@@ -67,7 +71,10 @@ class Cvode {
   double t_stop_ = 0.0;
   std::exception_ptr pending_;
   std::string last_message_;
-  std::vector<double> taylor_;
+  // Counters of the integrations before the last re-initialization (CVODE restarts its own).
+  long steps_before_ = 0, rhs_evals_before_ = 0, jac_evals_before_ = 0, error_test_failures_before_ = 0;
+  std::vector<double> taylor_, piece_coeffs_;
+  DensePiece piece_;
 
   friend struct CvodeCallbacks;
 };

@@ -2,10 +2,12 @@
 // (Hairer, Norsett & Wanner, "Solving ODEs I", §II.5-II.6; same coefficients as DOPRI5).
 //
 // Integrates dy/dt = rhs(t, y, dydt) from t0 to t1 (t1 < t0 integrates backward). After each
-// accepted step, on_step(t_start, h, dense, y_end) receives the step's dense output as five
-// coefficient vectors c_0..c_4 (contiguous, dim each) of
-//     y(t_start + theta h) = sum_j c_j theta^j,   theta in [0, 1].
+// accepted step, on_step(piece) receives the step's dense output as a DensePiece of degree 4
+// (dense_piece.hpp); y then holds the state at the end of the step. on_step may return
+// StepAction::Stop to end the integration there (or return nothing to continue).
 // Errors: SolverError on step-size underflow, non-finite values or too many steps.
+// max_steps bounds the step attempts (accepted and rejected) over the stepper's whole life, so
+// a loop of many integrate() calls cannot exceed it either.
 // A Dopri5 keeps its workspace and its last step size, so consecutive integrate() calls (e.g.
 // one per hold interval of a sampled noise) restart cheaply. It also runs Hairer's stiffness
 // test (h lambda estimated from the last two stages, both at t + h): stiff() turns true after
@@ -15,8 +17,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
+#include "hinf/dense_piece.hpp"
 #include "hinf/errors.hpp"
 
 namespace hinf {
@@ -25,6 +29,7 @@ struct StepStats {
   long steps = 0;      // accepted steps
   long rejected = 0;   // rejected step attempts
   long rhs_evals = 0;  // right-hand-side evaluations
+  long jac_evals = 0;  // Jacobian evaluations (implicit methods)
 };
 
 class Dopri5 {
@@ -38,29 +43,23 @@ class Dopri5 {
 
   int dim() const { return dim_; }
   const StepStats& stats() const { return stats_; }
-  // Magnitude of the next step; 0 lets integrate() choose an initial step.
-  double next_step() const { return h_next_; }
-  void set_next_step(double h) { h_next_ = std::abs(h); }
-  void set_max_step(double h) { h_max_ = std::abs(h); }
   bool stiff() const { return stiff_; }
 
   template <class Rhs, class OnStep>
   void integrate(Rhs&& rhs, double t0, double t1, double* y, OnStep&& on_step) {
     if (t1 == t0) return;
     const double dir = t1 > t0 ? 1.0 : -1.0;
-    const double span = std::abs(t1 - t0);
-    const double h_cap = std::min(h_max_ > 0.0 ? h_max_ : span, span);
+    const double h_cap = std::abs(t1 - t0);
     double* k1 = k1_.data();
     rhs(t0, y, k1);
     ++stats_.rhs_evals;
     double h = h_next_ > 0.0 ? std::min(h_next_, h_cap) : initial_step(rhs, t0, y, dir, h_cap);
     double t = t0;
     bool last_rejected = false;
-    const long attempts_allowed = stats_.steps + stats_.rejected + max_steps_;
     for (;;) {
-      if (stats_.steps + stats_.rejected >= attempts_allowed)
-        throw SolverError(str_cat("Dormand-Prince: more than ", max_steps_,
-                                  " steps before reaching t = ", t1, " (stopped at t = ", t,
+      if (stats_.steps + stats_.rejected >= max_steps_)
+        throw SolverError(str_cat("Dormand-Prince: more than max_steps = ", max_steps_,
+                                  " steps (stopped at t = ", t, " on the way to t = ", t1,
                                   "); raise max_steps or loosen rtol"),
                           t, "TOO_MUCH_WORK");
       if (h < 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t)))
@@ -84,7 +83,10 @@ class Dopri5 {
         k1 = k1_.data();
         ++stats_.steps;
         update_stiffness(hs);
-        on_step(t_start, hs, static_cast<const double*>(dense_.data()), static_cast<const double*>(y));
+        const DensePiece piece{t_start, hs, 4, dim_, dense_.data()};
+        bool stop = false;
+        if constexpr (std::is_void_v<decltype(on_step(piece))>) on_step(piece);
+        else stop = on_step(piece) == StepAction::Stop;
         double fac = std::pow(std::max(err, 1e-16), kExpo1) / facold_beta_;
         fac = std::clamp(fac / kSafe, 1.0 / kFacMax, 1.0 / kFacMin);
         double h_new = h / fac;
@@ -92,7 +94,7 @@ class Dopri5 {
         facold_beta_ = std::pow(std::max(err, 1e-4), kBeta);  // Lund stabilization (PI control)
         last_rejected = false;
         h_next_ = h_new;
-        if (last) return;
+        if (last || stop) return;
         h = std::min(h_new, h_cap);
       } else {
         ++stats_.rejected;
@@ -228,8 +230,7 @@ class Dopri5 {
   int dim_;
   double rtol_, atol_;
   long max_steps_;
-  double h_next_ = 0.0;
-  double h_max_ = 0.0;
+  double h_next_ = 0.0;  // magnitude of the next step; 0 lets integrate() choose one
   double facold_beta_ = 0.69183097091893657;  // (1e-4)^beta
   int stiff_steps_ = 0, nonstiff_steps_ = 0;
   bool stiff_ = false;

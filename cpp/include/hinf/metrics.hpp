@@ -1,6 +1,8 @@
 // Metrics of a closed-loop run (scenarios.md, "The results file"). Integrals are trapezoid
 // sums over the output grid; "position" is the model's position_indices() (x, y for the ship).
-// A metric that does not apply (no position, no disturbance, no output feedback) is NaN.
+// A metric that does not apply (no position, no disturbance, no output feedback) is NaN. The
+// heading error is wrapped to (-pi, pi] (angles.hpp). A run that stopped early (status
+// Diverged) reports only max_position_error, over the part it ran.
 #pragma once
 
 #include "hinf/model.hpp"

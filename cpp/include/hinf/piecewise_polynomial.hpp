@@ -12,6 +12,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "hinf/dense_piece.hpp"
+
 namespace hinf {
 
 class PiecewisePolynomial {
@@ -27,6 +29,7 @@ class PiecewisePolynomial {
   // Adds the piece for the step [t_start, t_start + h]; coeffs holds (degree + 1) * dim numbers,
   // coefficient j of all components contiguous. Pieces must be appended in integration order.
   void append(double t_start, double h, int degree, const double* coeffs);
+  void append(const DensePiece& piece) { append(piece.t_start, piece.h, piece.degree, piece.coeffs); }
   // Orders the pieces by increasing time (needed after a backward integration).
   void finalize();
 

@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "hinf/dopri5.hpp"
 #include "hinf/errors.hpp"
@@ -31,11 +32,12 @@ class Sdirk4 {
   }
 
   const StepStats& stats() const { return stats_; }
-  long jacobian_evals() const { return jacobian_evals_; }
   long factorizations() const { return factorizations_; }
 
   // Integrates from t0 to t1 (t1 > t0). on_step(t_start, h, y_start, f_start, y_end, f_end)
-  // is called after each accepted step (for cubic Hermite output between the two ends).
+  // is called after each accepted step (for cubic Hermite output between the two ends); it may
+  // return StepAction::Stop to end the integration there. max_steps bounds the step attempts
+  // over the stepper's whole life (all integrate() calls).
   template <class Rhs, class OnStep>
   void integrate(Rhs&& rhs, double t0, double t1, double* y, OnStep&& on_step) {
     if (!(t1 > t0)) return;
@@ -45,11 +47,10 @@ class Sdirk4 {
     rhs(t, static_cast<const double*>(y), f0_.data());
     ++stats_.rhs_evals;
     if (!have_jacobian_) refresh_jacobian(rhs, t, y);
-    const long attempts_allowed = stats_.steps + stats_.rejected + max_steps_;
     for (;;) {
-      if (stats_.steps + stats_.rejected >= attempts_allowed)
-        throw SolverError(str_cat("SDIRK4: more than ", max_steps_, " steps before reaching t = ", t1,
-                                  " (stopped at t = ", t, "); raise max_steps or loosen rtol"),
+      if (stats_.steps + stats_.rejected >= max_steps_)
+        throw SolverError(str_cat("SDIRK4: more than max_steps = ", max_steps_, " steps (stopped at t = ", t,
+                                  " on the way to t = ", t1, "); raise max_steps or loosen rtol"),
                           t, "TOO_MUCH_WORK");
       if (h_step < 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t)))
         throw SolverError(str_cat("SDIRK4: step size underflow at t = ", t), t, "STEP_TOO_SMALL");
@@ -74,8 +75,13 @@ class Sdirk4 {
       ++stats_.steps;
       ymap = Y_;
       const Eigen::VectorXd& f_end = k_[kStages - 1];  // stiffly accurate: the last stage is y_{n+1}
-      on_step(t, h, static_cast<const double*>(y0_.data()), static_cast<const double*>(f0_.data()),
-              static_cast<const double*>(y), static_cast<const double*>(f_end.data()));
+      bool stop = false;
+      if constexpr (std::is_void_v<decltype(on_step(t, h, y, y, y, y))>)
+        on_step(t, h, static_cast<const double*>(y0_.data()), static_cast<const double*>(f0_.data()),
+                static_cast<const double*>(y), static_cast<const double*>(f_end.data()));
+      else
+        stop = on_step(t, h, static_cast<const double*>(y0_.data()), static_cast<const double*>(f0_.data()),
+                       static_cast<const double*>(y), static_cast<const double*>(f_end.data())) == StepAction::Stop;
       t = last ? t1 : t + h;
       f0_ = f_end;
       // A new step size only when the change is worth a new factorization; a step shortened
@@ -83,7 +89,7 @@ class Sdirk4 {
       const double proposed = h * factor;
       if ((proposed < h_step || proposed > 1.2 * h_step) && !(last && h < h_step && proposed >= h_step))
         h_step = proposed;
-      if (last) {
+      if (last || stop) {
         h_next_ = h_step;
         return;
       }
@@ -117,7 +123,7 @@ class Sdirk4 {
       scratch_[j] = yj;
     }
     stats_.rhs_evals += dim_;
-    ++jacobian_evals_;
+    ++stats_.jac_evals;
     have_jacobian_ = true;
     jacobian_fresh_ = true;
     h_lu_ = -1.0;  // force a new factorization
@@ -194,7 +200,7 @@ class Sdirk4 {
   long max_steps_;
   double h_next_ = 0.0, h_lu_ = -1.0;
   bool have_jacobian_ = false, jacobian_fresh_ = false;
-  long jacobian_evals_ = 0, factorizations_ = 0;
+  long factorizations_ = 0;
   StepStats stats_;
   std::array<Eigen::VectorXd, kStages> k_;
   Eigen::VectorXd y0_, f0_, Y_, G_, dY_, w_, err_, scratch_, base_;

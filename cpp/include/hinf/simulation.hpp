@@ -1,6 +1,12 @@
 // Closed-loop simulation of the nonlinear model under a tracking controller (paper eq. 7):
 //     dq/dt = f(t, q) + B(t) u + D(t) w(t),   u = controller(t, q),   q(t0) = q0,
 // integrated with the chosen method; the time series are sampled on the output grid.
+//
+// A closed loop that leaves the neighbourhood of the desired trajectory where the linearized
+// design means anything stops early with status Diverged: when the tracking error |q_e|_inf
+// (heading wrapped, angles.hpp) exceeds
+//     divergence_bound = options.divergence_factor * max(1, |q_e(t0)|_inf, max_t |q_d(t)|_inf).
+// Its time series then end at the last output time before that.
 #pragma once
 
 #include <cmath>
@@ -19,6 +25,15 @@ namespace hinf {
 // t0, t0 + dt, t0 + 2 dt, ..., ending exactly at tf: the last interval may be shorter, or up
 // to 1e-6 dt longer (rather than leave a sliver of an interval).
 std::vector<double> output_grid(double t0, double tf, double dt);
+// The number of points of output_grid(t0, tf, dt), without building it.
+long output_count(double t0, double tf, double dt);
+
+// How a closed-loop run ended.
+enum class RunStatus {
+  Completed,  // integrated over the whole horizon
+  Diverged    // stopped when the tracking error exceeded the divergence bound (see above)
+};
+std::string to_string(RunStatus status);
 
 // Time series on the output grid, one row per time.
 struct SimulationResult {
@@ -35,9 +50,15 @@ struct SimulationResult {
   Vec sigma_max_eig;
   Vec rho_sigma_z;        // spectral radius of Sigma(t) Z(t)
   double coupling_violation_t = NAN;  // first output time with rho(Sigma Z) >= gamma^2, if any
-  std::string integrator;  // how the closed loop was integrated
+  RunStatus status = RunStatus::Completed;
+  std::string status_message;  // why the run stopped early; empty when completed
+  std::string integrator;      // how the closed loop was integrated
   SolveStats stats;
 };
+
+// The divergence bound of the run from q0 along the trajectory (see above).
+double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::vector<double>& grid,
+                        double divergence_factor);
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,

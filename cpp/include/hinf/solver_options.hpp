@@ -18,15 +18,19 @@ Method method_from_string(const std::string& name);
 
 struct SolverOptions {
   Method method = Method::BDF;
-  double rtol = 1e-8;        // relative tolerance
-  double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions)
-  long max_steps = 500000;   // per solve; exceeding it is a SolverError
-  // Riccati solves: when |X|_max passes escape_norm * max(1, |X(start)|_max), the inverse
-  // W = X^-1 is integrated to decide whether X escapes to infinity (a conjugate point,
-  // paper eq. 14) or is only large. Only the cost depends on it.
+  double rtol = 1e-8;        // relative tolerance, in [1e-14, 1e-3]
+  double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions), in (0, 1e-3]
+  long max_steps = 500000;   // steps of one whole solve or closed-loop run (all its restarts
+                             // included); exceeding it is a SolverError
+  // Riccati solves: when |X|_max passes escape_norm times the solution's scale, the escape
+  // test (riccati.hpp) decides whether X escapes to infinity (a conjugate point, paper eq. 14)
+  // or is only large. Only the cost depends on it.
   double escape_norm = 1e6;
+  // Closed loops stop as diverged when the tracking error exceeds divergence_factor times the
+  // scale of the problem (simulation.hpp).
+  double divergence_factor = 1e3;
 
-  void validate() const;  // InputError on non-positive tolerances or steps
+  void validate() const;  // InputError naming the option and its admissible range
 };
 
 }  // namespace hinf
