@@ -115,6 +115,12 @@ class PyController : public Controller, public py::trampoline_self_life_support 
       return o().cast<std::string>();
     return "python-controller";
   }
+  // The state size, when the Python class defines n(); else 0 (see controller.hpp).
+  int n() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function o = py::get_override(static_cast<const Controller*>(this), "n")) return o().cast<int>();
+    return 0;
+  }
   int m() const override { PYBIND11_OVERRIDE_PURE(int, Controller, m, ); }
   void control(double t, const ConstVecRef& q, VecRef u) override {
     py::gil_scoped_acquire gil;
