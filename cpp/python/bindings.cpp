@@ -3,10 +3,14 @@
 // (SolverError, ConjugatePointError, CouplingConditionError) with their data as attributes.
 // Long calls release the GIL; Python callables and Python subclasses re-acquire it.
 #include <pybind11/eigen.h>
-#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <optional>
 
 #include "hinf/analysis.hpp"
 #include "hinf/checks.hpp"
@@ -26,51 +30,151 @@ using namespace hinf;
 
 namespace {
 
-// A Model implemented in Python: override n, m, nw, name, f(t, q), dfdq(t, q), B(t), D(t)
-// (and optionally error_split, state_names, position_indices, heading_index).
+// ---- values from Python ----
+// What Python hands over (arguments, and what user callables return) is checked here before
+// C++ reads it: a value of the wrong kind or size is an InputError (ValueError) naming the
+// argument, never pybind11's "Unable to cast" and never a read past an array.
+
+// "None", "float 1.5", "numpy.ndarray of shape (1,), dtype float64": a Python value, for messages.
+std::string describe(const py::handle& value) {
+  if (value.is_none()) return "None";
+  const std::string type = Py_TYPE(value.ptr())->tp_name;
+  if (py::hasattr(value, "shape") && py::hasattr(value, "dtype"))
+    return str_cat(type, " of shape ", py::str(value.attr("shape")).cast<std::string>(), ", dtype ",
+                   py::str(value.attr("dtype")).cast<std::string>());
+  std::string text = py::repr(value).cast<std::string>();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return type + " " + text;
+}
+
+// "<subject> must <expected>, got <value>[ at t = <t>]".
+[[noreturn]] void wrong_value(const py::handle& value, const std::string& subject, const std::string& expected,
+                              std::optional<double> t = std::nullopt) {
+  throw InputError(str_cat(subject, " must ", expected, ", got ", describe(value),
+                           t ? str_cat(" at t = ", *t) : std::string()));
+}
+
+// value as T, or nothing when it is not one (pybind11's cast_error).
+template <class T>
+std::optional<T> try_cast(const py::handle& value) {
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    return std::nullopt;
+  }
+}
+
+// What a user callable returned at t: a vector of `size` numbers, or a matrix rows x cols.
+// Finite values are not required here: a model's f at an integrator's trial state may
+// legitimately overflow, which the integrators treat as a step failure.
+Vec vector_result(const py::handle& value, Eigen::Index size, const std::string& subject, double t) {
+  const std::optional<Vec> v = try_cast<Vec>(value);
+  if (!v) wrong_value(value, subject, str_cat("return an array of ", size, " numbers"), t);
+  if (v->size() != size)
+    throw InputError(str_cat(subject, " returned an array of length ", v->size(), " at t = ", t, ", expected ",
+                             size, " numbers"));
+  return *v;
+}
+Mat matrix_result(const py::handle& value, Eigen::Index rows, Eigen::Index cols, const std::string& subject,
+                  double t) {
+  const std::optional<Mat> M = try_cast<Mat>(value);
+  if (!M) wrong_value(value, subject, str_cat("return an array of shape (", rows, ", ", cols, ")"), t);
+  if (M->rows() != rows || M->cols() != cols)
+    throw InputError(str_cat(subject, " returned an array of shape (", M->rows(), ", ", M->cols(), ") at t = ", t,
+                             ", expected (", rows, ", ", cols, ")"));
+  return *M;
+}
+
+// A Python callable kept by C++ objects (signals) that may be destroyed without the GIL held:
+// the last copy lets go of it with the GIL.
+class PythonFunction {
+ public:
+  explicit PythonFunction(py::function fn)
+      : fn_(new py::function(std::move(fn)), [](py::function* f) {
+          py::gil_scoped_acquire gil;
+          delete f;
+        }) {}
+  // Call with the GIL held.
+  template <class... Args>
+  py::object operator()(Args&&... args) const {
+    return (*fn_)(std::forward<Args>(args)...);
+  }
+
+ private:
+  std::shared_ptr<py::function> fn_;
+};
+
+// method() of a Python subclass (self: its C++ base) as T, or nothing when the class does not
+// define it; `who` ("the Python model") names it in errors. With the GIL held.
+template <class T, class Base>
+std::optional<T> read_override(const Base* self, const char* method, const char* expected, const char* who) {
+  py::function override = py::get_override(self, method);
+  if (!override) return std::nullopt;
+  const py::object value = override();
+  std::optional<T> result = try_cast<T>(value);
+  if (!result) wrong_value(value, str_cat(who, "'s ", method, "()"), expected);
+  return result;
+}
+
+// A Model implemented in Python: override n, m, nw, f(t, q), dfdq(t, q), B(t), D(t) (and
+// optionally name, error_split, C, noise_channels, state_names, position_indices,
+// heading_index, constant_input_matrices).
+// Its structure (name, n, m, nw, state names, position and heading indices, noise channels,
+// constant_input_matrices) is read once, on first use, validated (check_structure) and never
+// asked again: everything downstream sizes its arrays by it. What f, dfdq, B, D, C and
+// error_split return is checked against it at every call.
 class PyModel : public Model, public py::trampoline_self_life_support {
  public:
-  std::string name() const override {
+  std::string name() const override { return structure().name; }
+  int n() const override { return structure().n; }
+  int m() const override { return structure().m; }
+  int nw() const override { return structure().nw; }
+  bool constant_input_matrices() const override { return structure().constant_input_matrices; }
+  std::vector<std::string> state_names() const override { return structure().state_names; }
+  std::vector<int> position_indices() const override { return structure().position_indices; }
+  int heading_index() const override { return structure().heading_index; }
+  std::vector<int> noise_channels() const override { return structure().noise_channels; }
+
+  Mat B(double t) const override {
+    const ModelStructure& s = structure();
     py::gil_scoped_acquire gil;
-    if (py::function o = py::get_override(static_cast<const Model*>(this), "name")) return o().cast<std::string>();
-    return "python-model";
+    return finite_matrix(call("B", t), s.n, s.m, "the Python model's B(t)", t);
   }
-  int n() const override { PYBIND11_OVERRIDE_PURE(int, Model, n, ); }
-  int m() const override { PYBIND11_OVERRIDE_PURE(int, Model, m, ); }
-  int nw() const override { PYBIND11_OVERRIDE_PURE(int, Model, nw, ); }
-  Mat B(double t) const override { PYBIND11_OVERRIDE_PURE(Mat, Model, B, t); }
-  Mat D(double t) const override { PYBIND11_OVERRIDE_PURE(Mat, Model, D, t); }
-  bool constant_input_matrices() const override {
-    PYBIND11_OVERRIDE(bool, Model, constant_input_matrices, );
+  Mat D(double t) const override {
+    const ModelStructure& s = structure();
+    py::gil_scoped_acquire gil;
+    return finite_matrix(call("D", t), s.n, s.nw, "the Python model's D(t)", t);
   }
-  std::vector<std::string> state_names() const override {
-    PYBIND11_OVERRIDE(std::vector<std::string>, Model, state_names, );
-  }
-  std::vector<int> position_indices() const override {
-    PYBIND11_OVERRIDE(std::vector<int>, Model, position_indices, );
-  }
-  int heading_index() const override { PYBIND11_OVERRIDE(int, Model, heading_index, ); }
-  Mat C(double t) const override { PYBIND11_OVERRIDE(Mat, Model, C, t); }
-  std::vector<int> noise_channels() const override {
-    PYBIND11_OVERRIDE(std::vector<int>, Model, noise_channels, );
+  Mat C(double t) const override {
+    const ModelStructure& s = structure();
+    py::gil_scoped_acquire gil;
+    py::function override = py::get_override(static_cast<const Model*>(this), "C");
+    if (!override) return Model::C(t);
+    const py::object value = override(t);
+    const std::optional<Mat> C = try_cast<Mat>(value);
+    if (!C || C->rows() < 1 || C->rows() > kMaxDimension || C->cols() != s.n)
+      wrong_value(value, "the Python model's C(t)", str_cat("return an array of shape (p, ", s.n, "), p >= 1"), t);
+    check_finite(*C, "the Python model's C(t)");
+    return *C;
   }
 
   void f(double t, const ConstVecRef& q, VecRef out) const override {
+    const int n = structure().n;
+    require_sized(q.size() == n && out.size() == n, "f(t, q)");
     py::gil_scoped_acquire gil;
-    const Vec value = call("f", t, Vec(q)).cast<Vec>();
-    require(value.size() == out.size(), "Python model f(t, q) returned ", value.size(),
-            " numbers, expected ", out.size());
-    out = value;
+    out = vector_result(call("f", t, Vec(q)), n, "the Python model's f(t, q)", t);
   }
   void dfdq(double t, const ConstVecRef& q, MatRef out) const override {
+    const int n = structure().n;
+    require_sized(q.size() == n && out.rows() == n && out.cols() == n, "dfdq(t, q)");
     py::gil_scoped_acquire gil;
-    const Mat value = call("dfdq", t, Vec(q)).cast<Mat>();
-    check_shape(value, static_cast<int>(out.rows()), static_cast<int>(out.cols()),
-                "the result of the Python model's dfdq(t, q)");
-    out = value;
+    out = matrix_result(call("dfdq", t, Vec(q)), n, n, "the Python model's dfdq(t, q)", t);
   }
   void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
                    VecRef alpha) const override {
+    const int n = structure().n;
+    require_sized(q_d.size() == n && q_e.size() == n && A.rows() == n && A.cols() == n && alpha.size() == n,
+                  "error_split(t, q_d, q_e)");
     py::gil_scoped_acquire gil;
     py::function override = py::get_override(static_cast<const Model*>(this), "error_split");
     if (!override) {
@@ -78,23 +182,80 @@ class PyModel : public Model, public py::trampoline_self_life_support {
       Model::error_split(t, q_d, q_e, A, alpha);
       return;
     }
-    const py::tuple value = override(t, Vec(q_d), Vec(q_e));
-    require(value.size() == 2, "Python model error_split must return (A, alpha)");
-    const Mat A_value = value[0].cast<Mat>();
-    const Vec alpha_value = value[1].cast<Vec>();
-    check_shape(A_value, static_cast<int>(A.rows()), static_cast<int>(A.cols()), "error_split A");
-    require(alpha_value.size() == alpha.size(), "error_split alpha has the wrong length");
-    A = A_value;
-    alpha = alpha_value;
+    const char* subject = "the Python model's error_split(t, q_d, q_e)";
+    const py::object value = override(t, Vec(q_d), Vec(q_e));
+    if (!py::isinstance<py::tuple>(value) || py::len(value) != 2)
+      wrong_value(value, subject, str_cat("return a pair (A, alpha) of shapes (", n, ", ", n, ") and (", n, ",)"), t);
+    const py::tuple pair = py::reinterpret_borrow<py::tuple>(value);
+    A = matrix_result(pair[0], n, n, str_cat(subject, "[0] (A)"), t);
+    alpha = vector_result(pair[1], n, str_cat(subject, "[1] (alpha)"), t);
   }
 
  private:
+  const ModelStructure& structure() const {
+    if (const ModelStructure* s = structure_.load(std::memory_order_acquire)) return *s;
+    py::gil_scoped_acquire gil;
+    if (const ModelStructure* s = structure_.load(std::memory_order_acquire)) return *s;
+    auto read = std::make_unique<const ModelStructure>(read_structure());
+    // The Python calls of read_structure() may have let another thread store its reading
+    // first: the first one stored is the one used.
+    if (const ModelStructure* s = structure_.load(std::memory_order_acquire)) return *s;
+    structure_.store(read.get(), std::memory_order_release);
+    return *(owned_ = std::move(read));
+  }
+
+  // With the GIL held.
+  ModelStructure read_structure() const {
+    ModelStructure s;
+    s.name = read<std::string>("name", "return a str").value_or("python-model");
+    s.n = required_int("n");
+    s.m = required_int("m");
+    s.nw = required_int("nw");
+    check_dimensions(s);
+    s.state_names = read<std::vector<std::string>>("state_names", "return a list of str")
+                        .value_or(Model::numbered_state_names(s.n));
+    s.position_indices = read<std::vector<int>>("position_indices", "return a list of int")
+                             .value_or(Model::position_indices());
+    s.heading_index = read<int>("heading_index", "return an int").value_or(Model::heading_index());
+    s.noise_channels = read<std::vector<int>>("noise_channels", "return a list of int")
+                           .value_or(Model::noise_channels());
+    s.constant_input_matrices = read<bool>("constant_input_matrices", "return a bool")
+                                    .value_or(Model::constant_input_matrices());
+    check_structure(s);
+    return s;
+  }
+  template <class T>
+  std::optional<T> read(const char* method, const char* expected) const {
+    return read_override<T>(static_cast<const Model*>(this), method, expected, "the Python model");
+  }
+  int required_int(const char* method) const {
+    const std::optional<int> value = read<int>(method, "return an int");
+    if (!value) throw InputError(str_cat("the Python model does not implement ", method, "()"));
+    return *value;
+  }
+
+  // A C++ caller sizes its arrays by n: anything else is its error, reported before Python runs.
+  void require_sized(bool fits, const char* method) const {
+    if (!fits)
+      throw InputError(str_cat("the Python model's ", method, " was called with arrays that do not fit n = ",
+                               structure().n));
+  }
+
   template <class... Args>
   py::object call(const char* method, Args&&... args) const {
     py::function override = py::get_override(static_cast<const Model*>(this), method);
-    if (!override) throw InputError(str_cat("the Python model does not implement ", method, "(t, q)"));
+    if (!override) throw InputError(str_cat("the Python model does not implement ", method, "()"));
     return override(std::forward<Args>(args)...);
   }
+  static Mat finite_matrix(const py::handle& value, Eigen::Index rows, Eigen::Index cols, const char* subject,
+                           double t) {
+    Mat M = matrix_result(value, rows, cols, subject, t);
+    if (!M.allFinite()) check_finite(M, str_cat(subject, " at t = ", t));
+    return M;
+  }
+
+  mutable std::atomic<const ModelStructure*> structure_{nullptr};
+  mutable std::unique_ptr<const ModelStructure> owned_;
 };
 
 // Every call into a model implemented in Python holds the GIL, so parallel gamma evaluations
@@ -106,26 +267,48 @@ GammaStarOptions serial_for_python_models(const Model* model, GammaStarOptions o
 }
 const Model* model_of(const TrajectoryPtr& trajectory) { return trajectory ? &trajectory->model() : nullptr; }
 
-// A Controller implemented in Python: override name() (optional), m() and control(t, q) -> u.
+// A Controller implemented in Python: override m() and control(t, q) -> u, optionally name()
+// and n() (the state size; without it n() reports 0, see controller.hpp).
 class PyController : public Controller, public py::trampoline_self_life_support {
  public:
   std::string name() const override {
     py::gil_scoped_acquire gil;
-    if (py::function o = py::get_override(static_cast<const Controller*>(this), "name"))
-      return o().cast<std::string>();
-    return "python-controller";
+    return read<std::string>("name", "return a str").value_or("python-controller");
   }
-  int m() const override { PYBIND11_OVERRIDE_PURE(int, Controller, m, ); }
+  int n() const override {
+    py::gil_scoped_acquire gil;
+    const std::optional<int> n = read<int>("n", "return an int");
+    if (n) check_dimension(*n, 1, "the Python controller's n()");
+    return n.value_or(0);
+  }
+  int m() const override {
+    py::gil_scoped_acquire gil;
+    const std::optional<int> m = read<int>("m", "return an int");
+    if (!m) throw InputError("the Python controller does not implement m()");
+    check_dimension(*m, 1, "the Python controller's m()");
+    return *m;
+  }
   void control(double t, const ConstVecRef& q, VecRef u) override {
     py::gil_scoped_acquire gil;
     py::function override = py::get_override(static_cast<const Controller*>(this), "control");
     if (!override) throw InputError("the Python controller does not implement control(t, q)");
-    const Vec value = override(t, Vec(q)).cast<Vec>();
-    require(value.size() == u.size(), "Python controller control(t, q) returned ", value.size(),
-            " numbers, expected ", u.size());
-    u = value;
+    u = vector_result(override(t, Vec(q)), u.size(), "the Python controller's control(t, q)", t);
+  }
+
+ private:
+  template <class T>
+  std::optional<T> read(const char* method, const char* expected) const {
+    return read_override<T>(static_cast<const Controller*>(this), method, expected, "the Python controller");
   }
 };
+
+// The controller fits a model of n states (a controller that does not say, n() = 0, is
+// given q of the model's size and reads it as such).
+void check_controller_fits(const Controller& controller, const Model& model) {
+  const int n = controller.n();
+  require(n == 0 || n == model.n(), "the controller '", controller.name(), "' takes q of ", n,
+          " numbers, the model '", model.name(), "' has n = ", model.n(), " states");
+}
 
 // f(t) for a scalar t (any number, NumPy scalars and 0-d arrays included) gives one value;
 // for a 1-D array of times, the values stacked on axis 0. rows = 0 means a scalar value,
@@ -134,12 +317,16 @@ template <class Fn>
 py::object vectorize(const py::object& t, int rows, int cols, Fn&& fn) {
   const py::array_t<double, py::array::c_style | py::array::forcecast> times(t);
   if (times.ndim() > 1) throw InputError("times must be a number or a 1-D array");
+  const double* tp = times.data();
+  for (py::ssize_t k = 0; k < times.size(); ++k)
+    if (!std::isfinite(tp[k]))
+      throw InputError(str_cat("times must be finite numbers, got ", tp[k],
+                               times.ndim() == 0 ? std::string() : str_cat(" at index ", k)));
   const int r = std::max(rows, 1), c = std::max(cols, 1);
   const py::ssize_t block = r * c;
   std::vector<double> colmajor(static_cast<std::size_t>(block));
   if (times.ndim() == 0) {
-    const double tt = *times.data();
-    fn(tt, colmajor.data());
+    fn(*tp, colmajor.data());
     if (rows == 0) return py::float_(colmajor[0]);
     if (cols == 0) return py::cast(Eigen::Map<Vec>(colmajor.data(), rows).eval());
     return py::cast(Eigen::Map<Mat>(colmajor.data(), rows, cols).eval());
@@ -149,7 +336,6 @@ py::object vectorize(const py::object& t, int rows, int cols, Fn&& fn) {
   if (rows > 0) shape.push_back(rows);
   if (cols > 0) shape.push_back(cols);
   py::array_t<double> out(shape);
-  const double* tp = times.data();
   double* op = out.mutable_data();
   {
     py::gil_scoped_release release;
@@ -163,31 +349,55 @@ py::object vectorize(const py::object& t, int rows, int cols, Fn&& fn) {
   return std::move(out);
 }
 
+// A scalar Signal from a Signal or a finite number; `what` names the argument in errors.
+Signal to_signal(const py::handle& value, const std::string& what) {
+  if (py::isinstance<Signal>(value)) return value.cast<Signal>();
+  const std::optional<double> number = try_cast<double>(value);
+  if (!number || !std::isfinite(*number)) wrong_value(value, what, "be a Signal or a finite number");
+  return Signal(*number);
+}
+
+// One Signal per item of a sequence (what[0], what[1], ... in errors).
+std::vector<Signal> to_signals(const py::handle& sequence, const std::string& what) {
+  std::vector<Signal> channels;
+  for (const py::handle item : sequence)
+    channels.push_back(to_signal(item, str_cat(what, "[", channels.size(), "]")));
+  return channels;
+}
+
+// A VectorSignal of `dim` channels from a Python callable f(t): what(t) in errors.
+VectorSignal vector_signal_from_callable(py::function callable, int dim, const std::string& what) {
+  const PythonFunction fn(std::move(callable));
+  const std::string subject = what + "(t)";
+  return VectorSignal(dim, [fn, dim, subject](double t) {
+    py::gil_scoped_acquire gil;
+    const py::object value = fn(t);
+    const Vec v = vector_result(value, dim, subject, t);
+    if (!v.allFinite())
+      throw InputError(str_cat(subject, " returned a non-finite value at t = ", t, ": ", describe(value)));
+    return v;
+  });
+}
+
 // A VectorSignal of `dim` channels from a VectorSignal, a callable f(t) -> array, a list of
 // Signals or numbers, or None (all zero).
-VectorSignal to_vector_signal(const py::object& value, int dim, const char* what) {
+VectorSignal to_vector_signal(const py::object& value, int dim, const std::string& what) {
+  check_dimension(dim, 0, str_cat("the number of channels of ", what));
   if (value.is_none()) return VectorSignal::zeros(dim);
   if (py::isinstance<VectorSignal>(value)) {
     VectorSignal signal = value.cast<VectorSignal>();
     require(signal.dim() == dim, what, " has ", signal.dim(), " channels, expected ", dim);
     return signal;
   }
-  if (PyCallable_Check(value.ptr()) && !py::isinstance<Signal>(value)) {
-    py::function fn = value.cast<py::function>();
-    return VectorSignal(dim, [fn](double t) {
-      py::gil_scoped_acquire gil;
-      return fn(t).cast<Vec>();
-    });
-  }
+  if (PyCallable_Check(value.ptr()) && !py::isinstance<Signal>(value))
+    return vector_signal_from_callable(value.cast<py::function>(), dim, what);
   if (py::isinstance<py::sequence>(value) && !py::isinstance<py::str>(value)) {
-    std::vector<Signal> channels;
-    for (const py::handle item : value) channels.push_back(item.cast<Signal>());
-    require(static_cast<int>(channels.size()) == dim, what, " has ", channels.size(),
-            " channels, expected ", dim);
+    std::vector<Signal> channels = to_signals(value, what);
+    require(static_cast<int>(channels.size()) == dim, what, " has ", channels.size(), " channels, expected ", dim);
     return VectorSignal(std::move(channels));
   }
-  throw InputError(str_cat(what, " must be a VectorSignal, a callable f(t) -> array, a list of ",
-                           dim, " Signals or numbers, or None"));
+  wrong_value(value, what,
+              str_cat("be a VectorSignal, a callable f(t) -> array, a list of ", dim, " Signals or numbers, or None"));
 }
 
 // A Disturbance from a Disturbance or anything to_vector_signal takes.
@@ -296,8 +506,12 @@ PYBIND11_MODULE(_core, m) {
   py::implicitly_convertible<double, Signal>();
 
   py::class_<VectorSignal>(m, "VectorSignal", "A vector signal: one Signal per channel, or a function of t")
-      .def(py::init<std::vector<Signal>>(), py::arg("channels"))
-      .def(py::init<int, VectorSignal::Function>(), py::arg("dim"), py::arg("function"))
+      .def(py::init([](const py::sequence& channels) { return VectorSignal(to_signals(channels, "channels")); }),
+           py::arg("channels"))
+      .def(py::init([](int dim, const py::function& function) {
+             return vector_signal_from_callable(function, dim, "function");
+           }),
+           py::arg("dim"), py::arg("function"), "function(t) must return an array of dim numbers")
       .def_static("zeros", &VectorSignal::zeros, py::arg("dim"))
       .def_property_readonly("dim", &VectorSignal::dim)
       .def_property_readonly("is_function", &VectorSignal::is_function)
@@ -309,7 +523,10 @@ PYBIND11_MODULE(_core, m) {
   // ---- models ----
   py::class_<Model, PyModel, py::smart_holder>(m, "Model", R"doc(
 Control-affine model dq/dt = f(t, q) + B(t) u + D(t) w (paper eq. 7).
-Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t).)doc")
+Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t). Its structure
+(n, m, nw, name, state_names, position_indices, heading_index, noise_channels,
+constant_input_matrices) is read once, when the library first needs it, and validated; it must not
+change afterwards. What f, dfdq, B, D, C and error_split return is checked at every call.)doc")
       .def(py::init<>())
       .def("name", &Model::name)
       .def("n", &Model::n)
@@ -474,6 +691,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         return py::make_tuple(lo, hi);
       }, "(m, M) with m I <= Z(t) <= M I on [t0, tf] (paper eq. 22)")
       .def("eigenvalue_range", [](const RiccatiSolution& s, const std::vector<double>& times) {
+        require(!times.empty(), "eigenvalue_range needs at least one time");
         double lo = 0, hi = 0;
         s.eigenvalue_range(times, lo, hi);
         return py::make_tuple(lo, hi);
@@ -504,6 +722,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         return py::make_tuple(lo, hi);
       }, "the extreme eigenvalues of Sigma(t) on [t0, tf]")
       .def("eigenvalue_range", [](const FilterRiccatiSolution& s, const std::vector<double>& times) {
+        require(!times.empty(), "eigenvalue_range needs at least one time");
         double lo = 0, hi = 0;
         s.eigenvalue_range(times, lo, hi);
         return py::make_tuple(lo, hi);
@@ -531,8 +750,11 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
                                                          "Tracking controller u = control(t, q)")
       .def(py::init<>())
       .def("name", &Controller::name)
+      .def("n", &Controller::n, "the state size (0: a Python controller that does not say)")
       .def("m", &Controller::m)
       .def("control", [](Controller& c, double t, const Vec& q) {
+        check_finite(t, "t");
+        if (c.n() > 0) check_size(q, c.n(), "q");
         Vec u(c.m());
         c.control(t, q, u);
         return u;
@@ -540,7 +762,10 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
 
   py::class_<HinfStateFeedback, Controller, py::smart_holder>(m, "HinfStateFeedback",
                                                               "u = u_d - kappa B' Z (q - q_d), paper (17)/(18)")
-      .def(py::init<RiccatiSolutionPtr, Signal>(), py::arg("solution"), py::arg("kappa") = Signal(1.0))
+      .def(py::init([](RiccatiSolutionPtr solution, const py::object& kappa) {
+             return std::make_shared<HinfStateFeedback>(std::move(solution), to_signal(kappa, "kappa"));
+           }),
+           py::arg("solution"), py::arg("kappa") = Signal(1.0))
       .def_property_readonly("kappa", &HinfStateFeedback::kappa);
 
   py::class_<CascadeGains>(m, "CascadeGains", "Gains k, k1, k2 > 0 of the cascade baseline")
@@ -573,6 +798,8 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_property_readonly("dim", &Disturbance::dim)
       .def_property_readonly("worst_case", &Disturbance::worst_case)
       .def("__call__", [](const Disturbance& d, double t, const Vec& q) {
+        check_finite(t, "t");
+        if (d.design()) check_size(q, d.design()->n(), "q");
         Vec w(d.dim());
         d.eval(t, q.data(), w.data());
         return w;
@@ -601,6 +828,7 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
   m.def("simulate_state_feedback",
         [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance,
            const Vec& q0, double output_dt, const SolverOptions& options) {
+          check_controller_fits(controller, trajectory.model());
           const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
           py::gil_scoped_release release;
           return simulate_state_feedback(trajectory, controller, w, q0, output_dt, options);
@@ -618,6 +846,13 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
              o.Q = std::move(Q);
              require(filter_A == "estimate" || filter_A == "desired",
                      "filter_A must be \"estimate\" or \"desired\", got \"", filter_A, "\"");
+             // What can be checked without the model (simulate_output_feedback checks the sizes).
+             require(std::isfinite(sigma) && sigma >= 0.0, "sigma must be >= 0, got ", sigma);
+             require(std::isfinite(sample_period) && sample_period > 0.0, "sample_period must be > 0, got ",
+                     sample_period);
+             check_symmetric_weight(o.N, static_cast<int>(o.N.rows()), "N", true);
+             check_symmetric_weight(o.Sigma0, static_cast<int>(o.Sigma0.rows()), "Sigma0", true);
+             check_symmetric_weight(o.Q, static_cast<int>(o.Sigma0.rows()), "Q (the size of Sigma0)", false);
              o.filter_uses_estimate = filter_A == "estimate";
              o.stop_on_coupling_violation = stop_on_coupling_violation;
              return o;
@@ -638,8 +873,19 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readwrite("stop_on_coupling_violation", &OutputFeedbackOptions::stop_on_coupling_violation);
 
   m.def("noise_sample_count", &noise_sample_count, py::arg("t0"), py::arg("tf"), py::arg("period"));
-  m.def("standard_normal_samples", &standard_normal_samples, py::arg("seed"), py::arg("count"),
-        py::arg("channels"), "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
+  m.def("standard_normal_samples",
+        [](std::uint64_t seed, long count, int channels) {
+          // A few GB at most: an absurd count is an input error, not an attempt to allocate it.
+          constexpr double kMaxNumbers = 1e9;
+          require(count >= 0, "count must be >= 0, got ", count);
+          check_dimension(channels, 0, "channels");
+          require(static_cast<double>(count) * channels <= kMaxNumbers, "standard_normal_samples: count x channels = ",
+                  count, " x ", channels, " is more than the ", kMaxNumbers, " numbers (8 GB) allowed");
+          py::gil_scoped_release release;
+          return standard_normal_samples(seed, count, channels);
+        },
+        py::arg("seed"), py::arg("count"), py::arg("channels"),
+        "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
   m.def("simulate_output_feedback",
         [](const RiccatiSolutionPtr& grde, const py::object& controller, const py::object& disturbance,
            const Vec& q0, const RowMat& noise, const OutputFeedbackOptions& options, double output_dt,
@@ -649,7 +895,9 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
           // A Controller, or kappa (a Signal or a number) for the H-infinity law (34).
           std::shared_ptr<Controller> law;
           if (py::isinstance<Controller>(controller)) law = controller.cast<std::shared_ptr<Controller>>();
-          else law = std::make_shared<HinfStateFeedback>(grde, controller.cast<Signal>());
+          else law = std::make_shared<HinfStateFeedback>(grde,
+                                                         to_signal(controller, "controller (a Controller, or kappa)"));
+          check_controller_fits(*law, grde->trajectory().model());
           py::gil_scoped_release release;
           return simulate_output_feedback(*grde, *law, w, q0, noise, options, output_dt, solver);
         },
@@ -732,8 +980,14 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("N"), py::arg("Sigma0"),
         py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
         "The smallest gamma for output feedback: GRDE, filter (36) with A_e and rho(Sigma Z) < gamma^2");
-  m.def("max_rho_sigma_z", &max_rho_sigma_z, py::arg("Z"), py::arg("Sigma"),
-        py::call_guard<py::gil_scoped_release>(), "(max over [t0, tf] of rho(Sigma Z), where)");
+  m.def("max_rho_sigma_z",
+        [](const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma) {
+          require(Z.n() == Sigma.n(), "max_rho_sigma_z: Z is ", Z.n(), " x ", Z.n(), " but Sigma is ", Sigma.n(), " x ",
+                  Sigma.n(), ": pass the solutions of one design");
+          py::gil_scoped_release release;
+          return max_rho_sigma_z(Z, Sigma);
+        },
+        py::arg("Z"), py::arg("Sigma"), "(max over [t0, tf] of rho(Sigma Z), where)");
 
   py::class_<Certificates>(m, "Certificates", "The stability certificates of paper §3 (eqs. 22-24)")
       .def_readonly("m", &Certificates::m)
@@ -749,8 +1003,12 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readonly("attraction_radius", &Certificates::attraction_radius)
       .def_readonly("decay_rate", &Certificates::decay_rate);
   m.def("certify",
-        [](const RiccatiSolution& solution, const Mat& Q, const Signal& kappa) { return certify(solution, kappa, Q); },
-        py::arg("solution"), py::arg("Q"), py::arg("kappa") = Signal(1.0), py::call_guard<py::gil_scoped_release>(),
+        [](const RiccatiSolution& solution, const Mat& Q, const py::object& kappa) {
+          const Signal k = to_signal(kappa, "kappa");
+          py::gil_scoped_release release;
+          return certify(solution, k, Q);
+        },
+        py::arg("solution"), py::arg("Q"), py::arg("kappa") = Signal(1.0),
         "The certificates of paper §3 for a design Z (its gamma), the weight Q and kappa(t)");
 
   // ---- scenarios ----
@@ -781,7 +1039,8 @@ Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D
       .def_readwrite("gamma", &Scenario::gamma)
       .def_readwrite("Q", &Scenario::Q)
       .def_readwrite("Qf", &Scenario::Qf)
-      .def_readwrite("kappa", &Scenario::kappa)
+      .def_property("kappa", [](const Scenario& s) { return s.kappa; },
+                    [](Scenario& s, const py::object& v) { s.kappa = to_signal(v, "kappa"); })
       .def_readwrite("law", &Scenario::law)
       .def_readwrite("cascade", &Scenario::cascade)
       .def_readwrite("worst_case", &Scenario::worst_case)

@@ -6,6 +6,11 @@
 
 namespace hinf {
 
+void check_dimension(long long value, int min, const std::string& name) {
+  require(value >= min && value <= kMaxDimension, name, " must be in [", min, ", ", kMaxDimension,
+          "], got ", value);
+}
+
 void check_finite(double value, const std::string& name) {
   require(std::isfinite(value), name, " must be finite, got ", value);
 }
@@ -30,6 +35,7 @@ void check_size(const ConstVecRef& v, int size, const std::string& name) {
 
 void check_symmetric_weight(const ConstMatRef& M, int n, const std::string& name,
                             bool definite) {
+  require(n >= 1, name, " must be at least 1 x 1, the problem has n = ", n);
   check_shape(M, n, n, name);
   check_finite(M, name);
   // Relative to the matrix's own size, so that a tiny weight (1e-12 I) is as valid as I.

@@ -7,6 +7,9 @@
 namespace hinf {
 
 void Controller::control_jacobian(double t, const ConstVecRef& q, MatRef dudq) {
+  if (dudq.rows() != m() || dudq.cols() != q.size())
+    throw InputError(str_cat("control_jacobian: du/dq must be (", m(), ", ", q.size(), "), got (", dudq.rows(),
+                             ", ", dudq.cols(), ")"));
   Vec qp = q, up(m()), um(m());
   for (Eigen::Index j = 0; j < q.size(); ++j) {
     const double h = 1e-7 * std::max(1.0, std::abs(q[j]));
@@ -45,6 +48,7 @@ void HinfStateFeedback::evaluate_at(double t) {
 }
 
 void HinfStateFeedback::control(double t, const ConstVecRef& q, VecRef u) {
+  check_control_sizes(q, u.size());
   evaluate_at(t);
   tracking_error(static_cast<int>(q_e_.size()), heading_, q.data(), q_d_.data(), q_e_.data());
   const Eigen::Index m = K_.rows(), n = K_.cols();
@@ -60,7 +64,9 @@ double HinfStateFeedback::checked_kappa(double t) const {
   return kappa;
 }
 
-void HinfStateFeedback::control_jacobian(double t, const ConstVecRef&, MatRef dudq) {
+void HinfStateFeedback::control_jacobian(double t, const ConstVecRef& q, MatRef dudq) {
+  check_control_sizes(q, dudq.rows());
+  require(dudq.cols() == q.size(), "control_jacobian: du/dq needs ", q.size(), " columns, got ", dudq.cols());
   evaluate_at(t);
   dudq = -kappa_now_ * K_;
 }
@@ -81,6 +87,7 @@ CascadeController::CascadeController(TrajectoryPtr trajectory, const CascadeGain
 }
 
 void CascadeController::control(double t, const ConstVecRef& q, VecRef u) {
+  check_control_sizes(q, u.size());
   trajectory_->q_d(t, q_d_.data(), &cursor_);
   trajectory_->u_d(t, u_d_.data());
   const double uu = q[0], v = q[1], r = q[2], x = q[3], y = q[4], psi = q[5];

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "hinf/angles.hpp"
+#include "hinf/checks.hpp"
+#include "hinf/errors.hpp"
 
 namespace hinf {
 
@@ -35,6 +37,20 @@ double l2_norm(const Vec& t, const RowMat& series) {
 }
 
 Metrics compute_metrics(const Model& model, const SimulationResult& run, const Mat& Q) {
+  // The run must be one of this model: its columns are indexed by the model's states.
+  validate_model(model, run.t.size() > 0 ? run.t[0] : 0.0);
+  const auto check_series = [&](const RowMat& series, int columns, const char* name) {
+    require(series.rows() == run.t.size() && series.cols() == columns, "compute_metrics: run.", name, " has shape (",
+            series.rows(), ", ", series.cols(), "), expected (", run.t.size(), ", ", columns,
+            ") for the model '", model.name(), "': pass the model the run was simulated with");
+  };
+  check_series(run.q, model.n(), "q");
+  check_series(run.q_d, model.n(), "q_d");
+  check_series(run.u, model.m(), "u");
+  check_series(run.u_d, model.m(), "u_d");
+  check_series(run.w, model.nw(), "w");
+  if (run.q_hat.size() > 0) check_series(run.q_hat, model.n(), "q_hat");
+  check_symmetric_weight(Q, model.n(), "Q", false);
   Metrics metrics;
   const Eigen::Index count = run.t.size();
   if (count == 0) return metrics;

@@ -23,10 +23,71 @@ Mat Model::C(double) const {
                            " measurements need a model with C(t) and noise_channels()"));
 }
 
-std::vector<std::string> Model::state_names() const {
+std::vector<std::string> Model::state_names() const { return numbered_state_names(n()); }
+
+std::vector<std::string> Model::numbered_state_names(int n) {
   std::vector<std::string> names;
-  for (int i = 0; i < n(); ++i) names.push_back("q" + std::to_string(i));
+  for (int i = 0; i < n; ++i) names.push_back("q" + std::to_string(i));
   return names;
+}
+
+namespace {
+
+std::string list(const std::vector<int>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) text += (i > 0 ? ", " : "") + std::to_string(values[i]);
+  return text + "]";
+}
+
+// Each index in [0, size) and none twice; `fact` names the model function they come from.
+void check_indices(const ModelStructure& s, const std::vector<int>& indices, int size, const char* fact,
+                   const char* kind) {
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    require(indices[i] >= 0 && indices[i] < size, "the model '", s.name, "': ", fact, " = ", list(indices),
+            " holds ", indices[i], ", which is not ", kind, " (0 to ", size - 1, "); fix the model's ", fact);
+    for (std::size_t j = 0; j < i; ++j)
+      require(indices[j] != indices[i], "the model '", s.name, "': ", fact, " = ", list(indices), " holds ",
+              indices[i], " twice; fix the model's ", fact);
+  }
+}
+
+}  // namespace
+
+void check_dimensions(const ModelStructure& s) {
+  const std::string model = str_cat("the model '", s.name, "': ");
+  check_dimension(s.n, 1, model + "the number of states n()");
+  check_dimension(s.m, 1, model + "the number of inputs m()");
+  check_dimension(s.nw, 0, model + "the number of disturbance channels nw()");
+}
+
+void check_structure(const ModelStructure& s) {
+  check_dimensions(s);
+  require(static_cast<int>(s.state_names.size()) == s.n, "the model '", s.name, "': state_names() has ",
+          s.state_names.size(), " names, expected one per state (n = ", s.n, ")");
+  check_indices(s, s.position_indices, s.n, "position_indices()", "a state index");
+  require(s.heading_index == -1 || (s.heading_index >= 0 && s.heading_index < s.n), "the model '", s.name,
+          "': heading_index() must be -1 (no heading) or a state index (0 to ", s.n - 1, "), got ",
+          s.heading_index);
+  check_indices(s, s.noise_channels, s.nw, "noise_channels()", "a disturbance channel");
+}
+
+void validate_model(const Model& model, double t) {
+  ModelStructure s;
+  s.name = model.name();
+  s.n = model.n();
+  s.m = model.m();
+  s.nw = model.nw();
+  check_dimensions(s);
+  s.state_names = model.state_names();
+  s.position_indices = model.position_indices();
+  s.heading_index = model.heading_index();
+  s.noise_channels = model.noise_channels();
+  check_structure(s);
+  const Mat B = model.B(t), D = model.D(t);
+  check_shape(B, s.n, s.m, str_cat("B(t) of the model '", s.name, "'"));
+  check_finite(B, str_cat("B(t) of the model '", s.name, "'"));
+  check_shape(D, s.n, s.nw, str_cat("D(t) of the model '", s.name, "'"));
+  check_finite(D, str_cat("D(t) of the model '", s.name, "'"));
 }
 
 ShipModel::ShipModel(const ShipParameters& parameters) : p_(parameters) {

@@ -55,16 +55,13 @@ std::size_t PiecewisePolynomial::locate(double t, std::size_t* cursor) const {
     std::size_t k = *cursor;
     for (int tries = 0; tries < 3; ++tries) {
       const double a = lower_[k];
-      if (t < a) {
-        if (k == 0) break;
-        --k;
-      } else if (t > a + std::abs(h_[k])) {
-        if (k + 1 == count) break;
-        ++k;
-      } else {
+      if (t >= a && t <= a + std::abs(h_[k])) {  // false for NaN: the range check below
         *cursor = k;
         return k;
       }
+      if (t < a && k > 0) --k;
+      else if (t > a && k + 1 < count) ++k;
+      else break;
     }
   }
   if (count == 0) throw InputError("dense output is empty");

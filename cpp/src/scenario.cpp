@@ -14,6 +14,8 @@ namespace hinf {
 
 Scenario Scenario::resolved() const {
   require(model != nullptr, "the scenario has no model");
+  check_horizon(t0, tf);
+  validate_model(*model, t0);  // before its sizes are used
   Scenario s = *this;
   const int n = model->n();
   if (s.Q.size() == 0) s.Q = Mat::Identity(n, n);
@@ -34,8 +36,9 @@ Scenario Scenario::resolved() const {
 
 void Scenario::validate() const {
   require(model != nullptr, "the scenario has no model");
-  const int n = model->n(), m = model->m(), nw = model->nw();
   check_horizon(t0, tf);
+  validate_model(*model, t0);
+  const int n = model->n(), m = model->m(), nw = model->nw();
   check_size(desired_q0, n, "[desired] q0");
   require(desired_u.dim() == m, "[desired] needs ", m, " input signals (u1..u", m, "), got ",
           desired_u.dim());

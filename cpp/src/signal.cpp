@@ -158,14 +158,17 @@ std::string Signal::describe() const {
 }
 
 VectorSignal::VectorSignal(std::vector<Signal> channels)
-    : dim_(static_cast<int>(channels.size())), channels_(std::move(channels)) {}
+    : dim_(static_cast<int>(channels.size())), channels_(std::move(channels)) {
+  check_dimension(static_cast<long long>(channels_.size()), 0, "the number of channels of a vector signal");
+}
 
 VectorSignal::VectorSignal(int dim, Function function) : dim_(dim), function_(std::move(function)) {
-  require(dim >= 0, "a vector signal needs dim >= 0, got ", dim);
+  check_dimension(dim, 0, "the dimension of a vector signal");
   require(static_cast<bool>(function_), "a vector signal needs a callable");
 }
 
 VectorSignal VectorSignal::zeros(int dim) {
+  check_dimension(dim, 0, "the dimension of a vector signal");
   return VectorSignal(std::vector<Signal>(static_cast<std::size_t>(dim)));
 }
 

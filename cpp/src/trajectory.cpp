@@ -10,6 +10,7 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
     : model_(std::move(model)), q_d0_(std::move(q_d0)), u_d_(std::move(u_d)), t0_(t0), tf_(tf) {
   require(model_ != nullptr, "Trajectory needs a model");
   check_horizon(t0, tf);
+  validate_model(*model_, t0);
   const int n = model_->n();
   const int m = model_->m();
   check_size(q_d0_, n, "the desired initial state q_d0");
@@ -20,14 +21,18 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
 
   const bool constant_B = model_->constant_input_matrices();
   Mat B = model_->B(t0);
-  check_shape(B, n, m, "B");
   Vec u(m), f(n);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
     Eigen::Map<Vec> out(dydt, n);
     model_->f(t, q, f);
     u_d_.eval(t, u.data());
-    if (!constant_B) B = model_->B(t);
+    if (!constant_B) {
+      B = model_->B(t);
+      if (B.rows() != n || B.cols() != m)
+        throw InputError(str_cat("B(t) of the model '", model_->name(), "' at t = ", t, " has shape (",
+                                 B.rows(), ", ", B.cols(), "), expected (", n, ", ", m, ")"));
+    }
     out.noalias() = f + B * u;
   };
   dense_ = PiecewisePolynomial(n);

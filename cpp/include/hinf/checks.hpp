@@ -8,6 +8,12 @@
 
 namespace hinf {
 
+// The largest dimension (n, m, nw, channels) accepted: one dense n x n matrix then takes
+// 800 MB, and packed_size(n) stays far from the int range.
+constexpr int kMaxDimension = 10000;
+
+// min <= value <= kMaxDimension (a dimension of a model, controller or signal).
+void check_dimension(long long value, int min, const std::string& name);
 void check_finite(double value, const std::string& name);
 void check_finite(const ConstMatRef& M, const std::string& name);
 void check_shape(const ConstMatRef& M, int rows, int cols, const std::string& name);

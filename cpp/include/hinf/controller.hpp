@@ -6,6 +6,7 @@
 #include <string>
 
 #include "hinf/angles.hpp"
+#include "hinf/errors.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
 
@@ -15,6 +16,11 @@ class Controller {
  public:
   virtual ~Controller() = default;
   virtual std::string name() const = 0;
+  // The state size: control() takes q of n() numbers. A controller implemented in Python may
+  // leave n() out (it reads q as a NumPy array of whatever length it is given): it then
+  // reports 0, and callers check q against their model instead.
+  virtual int n() const = 0;
+  // The number of inputs: control() writes u of m() numbers.
   virtual int m() const = 0;
   // u (m) at time t for the actual state q (n). Controllers may keep lookup cursors: use one
   // controller object per thread.
@@ -22,6 +28,15 @@ class Controller {
   // du/dq (m x n), for implicit integrators. The default uses central differences;
   // analytic overrides are preferred.
   virtual void control_jacobian(double t, const ConstVecRef& q, MatRef dudq);
+
+ protected:
+  // The first check of every control(): q has n() numbers and u has m(), else InputError (a
+  // C++ caller can hand over anything; two comparisons are free next to the law).
+  void check_control_sizes(const ConstVecRef& q, Eigen::Index u_size) const {
+    if (q.size() != n() || u_size != m())
+      throw InputError(str_cat("the ", name(), " controller takes q of ", n(), " numbers and gives u of ", m(),
+                               ", got q of ", q.size(), " and u of ", u_size));
+  }
 };
 
 using ControllerPtr = std::shared_ptr<Controller>;
@@ -35,6 +50,7 @@ class HinfStateFeedback final : public Controller {
  public:
   HinfStateFeedback(RiccatiSolutionPtr solution, Signal kappa = Signal(1.0));
   std::string name() const override;
+  int n() const override { return solution_->n(); }
   int m() const override { return solution_->m(); }
   void control(double t, const ConstVecRef& q, VecRef u) override;
   void control_jacobian(double t, const ConstVecRef& q, MatRef dudq) override;
@@ -76,6 +92,7 @@ class CascadeController final : public Controller {
  public:
   CascadeController(TrajectoryPtr trajectory, const CascadeGains& gains = {});
   std::string name() const override { return "cascade"; }
+  int n() const override { return 6; }
   int m() const override { return 2; }
   void control(double t, const ConstVecRef& q, VecRef u) override;
   const CascadeGains& gains() const { return gains_; }

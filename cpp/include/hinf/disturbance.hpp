@@ -21,6 +21,8 @@ class Disturbance {
 
   int dim() const { return signals_.dim(); }
   bool worst_case() const { return design_ != nullptr; }
+  // The design of the worst-case part (null without one); q in eval() has design()->n() numbers.
+  const RiccatiSolutionPtr& design() const { return design_; }
   const VectorSignal& signals() const { return signals_; }
   // w at time t for the actual state q (n numbers); writes dim() numbers. Keeps a lookup
   // cursor: use one object per thread.

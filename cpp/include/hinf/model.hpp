@@ -64,9 +64,40 @@ class Model {
   virtual std::vector<int> position_indices() const { return {}; }
   // Index of the heading angle (rad), or -1.
   virtual int heading_index() const { return -1; }
+
+  // "q0", "q1", ..., the default state_names().
+  static std::vector<std::string> numbered_state_names(int n);
 };
 
 using ModelPtr = std::shared_ptr<const Model>;
+
+// What a model says about itself that depends on neither t nor q. Everything downstream
+// sizes its arrays and indexes its states by these numbers, so a model must keep them fixed.
+struct ModelStructure {
+  std::string name;
+  int n = 0;
+  int m = 0;
+  int nw = 0;
+  std::vector<std::string> state_names;
+  std::vector<int> position_indices;
+  int heading_index = -1;
+  std::vector<int> noise_channels;
+  bool constant_input_matrices = true;
+};
+
+// InputError unless n >= 1, m >= 1 and nw >= 0 (all at most kMaxDimension): checked before
+// anything sized by them is read.
+void check_dimensions(const ModelStructure& structure);
+// check_dimensions, and: n state names, position indices distinct and in [0, n), heading
+// index -1 or in [0, n), noise channels distinct and in [0, nw). InputError naming the
+// first fault.
+void check_structure(const ModelStructure& structure);
+
+// The check of a model where it enters the library (the Trajectory constructor,
+// compute_metrics, Scenario): its structure (check_structure), and B(t) (n x m) and D(t)
+// (n x nw) with finite entries. A C++ model is trusted to keep its structure afterwards; a
+// model implemented in Python is read once and validated (the Python bindings).
+void validate_model(const Model& model, double t);
 
 // The underactuated surface ship of paper eqs. (1)-(6) (DESIGN.md):
 //   state q = [u, v, r, x, y, psi]: surge, sway (m/s), yaw rate (rad/s) in the body frame;
