@@ -478,6 +478,16 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
       for (int i = 1; i <= nw; ++i) known.push_back(str_cat("w", i));
       known.push_back("worst_case");
       TableReader r(*table, "[disturbance]", source, known);
+      // The noise channels carry the measurement noise of [measurement]: a signal there would
+      // count in the disturbance's energy without moving the vehicle, and output feedback
+      // would overwrite it with the noise.
+      for (int channel : s.model->noise_channels()) {
+        const std::string key = str_cat("w", channel + 1);
+        if (r.has(key))
+          r.fail(key, str_cat("is a measurement-noise channel of the ", s.model->name(),
+                              " model, not a disturbance: the measurement noise is set through"
+                              " [measurement] (sigma, sample_period, seed)"));
+      }
       s.worst_case = r.boolean_or("worst_case", false);
       for (int i = 1; i <= nw; ++i)
         if (r.has(str_cat("w", i))) channels[static_cast<std::size_t>(i - 1)] = r.signal(str_cat("w", i));

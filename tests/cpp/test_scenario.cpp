@@ -1,7 +1,7 @@
 // Scenario files (shared/scenarios.md is the contract): the shipped paper scenario parses to
 // the documented values, defaults, errors that name the key, the reader's edges (byte-order
 // mark, integers beyond 64 bits, empty arrays, deep nesting, non-UTF-8 text, unreadable paths,
-// non-finite numbers), Scenario::validate and the results files (JSON keys;
+// non-finite numbers, noise channels), Scenario::validate and the results files (JSON keys;
 // metrics recomputed from the CSV by the test).
 #include <gtest/gtest.h>
 
@@ -178,7 +178,7 @@ TEST(ScenarioFile, SignalsFrequencyPhaseCosTableAndInfGamma) {
                              "u2 = { offset = -0.1, harmonics = [ { amplitude = 0.3, frequency_hz = 0.5, "
                              "phase = 0.25, shape = \"cos\" }, { amplitude = 2, omega = 1 } ] }");
   text = replace(text, "gamma = 5.0", "gamma = inf\nkappa = { table = { t = [0.0, 5.0, 10.0], value = [1.0, 2.0, 1.0] } }");
-  text += "\n[disturbance]\nw2 = 0.25\nw5 = { harmonics = [ { amplitude = 1.0, omega = 3.0 } ] }\n";
+  text += "\n[disturbance]\nw2 = 0.25\nw3 = { harmonics = [ { amplitude = 1.0, omega = 3.0 } ] }\n";
   const Scenario s = parse(text);
   for (double t : {0.0, 0.7, 3.0, 9.9}) {
     EXPECT_NEAR(s.desired_u(t)[1],
@@ -186,7 +186,7 @@ TEST(ScenarioFile, SignalsFrequencyPhaseCosTableAndInfGamma) {
     const Vec w = s.disturbance(t);
     EXPECT_EQ(w[0], 0.0);
     EXPECT_EQ(w[1], 0.25);
-    EXPECT_NEAR(w[4], std::sin(3.0 * t), 1e-15);
+    EXPECT_NEAR(w[2], std::sin(3.0 * t), 1e-15);
   }
   EXPECT_TRUE(std::isinf(s.gamma) && s.gamma > 0) << "gamma = inf is the LQR limit";
   EXPECT_NEAR(s.kappa(5.0), 2.0, 1e-15);
@@ -450,6 +450,16 @@ TEST(ScenarioReader, NumbersMustBeFiniteExceptGamma) {
     EXPECT_TRUE(contains(message, piece)) << piece << " not in: " << message;
   }
   EXPECT_TRUE(std::isinf(parse(replace(kMinimal, "gamma = 5.0", "gamma = inf")).gamma));
+}
+
+TEST(ScenarioReader, NoiseChannelsAreNotDisturbances) {
+  for (const char* key : {"w4", "w5", "w6"}) {
+    const std::string message = error_of(kMinimal + "\n[disturbance]\n" + key + " = 0.1\n");
+    EXPECT_TRUE(contains(message, std::string("[disturbance] ") + key + ": is a measurement-noise channel"))
+        << message;
+    EXPECT_TRUE(contains(message, "[measurement]")) << message;
+  }
+  EXPECT_EQ(error_of(kMinimal + "\n[disturbance]\nw1 = 0.1\nw3 = 0.2\n"), "(accepted)");
 }
 
 TEST(ScenarioReader, SignalFromToml) {

@@ -123,6 +123,11 @@ BAD_FILES = {
                          r"\[desired\] u2\.harmonics\[0\]\.amplitude: .*finite"),
     "sigma = inf": (mutate(FIG2_TEXT, "sigma = 0.5", "sigma = inf"), r"\[measurement\] sigma: .*finite"),
     "gamma = nan": (mutate(PAPER_TEXT, "gamma = 5.0", "gamma = nan"), r"\[controller\] gamma"),
+    "w4 in [disturbance]": (mutate(PAPER_TEXT, "\n[initial]", "w4 = 0.1\n\n[initial]"),
+                            r"\[disturbance\] w4: .*measurement-noise channel.*\[measurement\]"),
+    "w6 in [disturbance] with output feedback": (
+        mutate(FIG2_TEXT, "\n[initial]", "w6 = { harmonics = [ { amplitude = 0.2, omega = 1.0 } ] }\n\n[initial]"),
+        r"\[disturbance\] w6: .*measurement-noise channel.*\[measurement\]"),
 }
 
 
@@ -133,6 +138,30 @@ def test_bad_scenario_file_same_error_from_both_front_ends(tmp_path, case):
     path = write(tmp_path, "bad.toml", text)
     message = both_front_ends(path, 2, match)
     assert str(path) in message
+
+
+def test_noise_channel_keys_follow_the_model():
+    """A model without measurement noise channels (kind = "linear") keeps every w key."""
+    text = """
+[model]
+kind = "linear"
+A = [[-1.0]]
+B = [[1.0]]
+D = [[1.0, 0.5]]
+[horizon]
+tf = 1.0
+[desired]
+q0 = [0.0]
+u1 = 0.0
+[controller]
+gamma = 3.0
+[disturbance]
+w2 = 0.1
+[initial]
+q0 = [0.0]
+"""
+    assert hc.parse_scenario_toml(text, "linear.toml").disturbance(0.5)[1] == 0.1
+    assert hc.ShipModel(hc.ShipParameters()).noise_channels() == [3, 4, 5]
 
 
 @needs_programs

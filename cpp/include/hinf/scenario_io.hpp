@@ -13,8 +13,8 @@ namespace hinf {
 //
 // Parses a scenario (UTF-8 TOML; a leading byte-order mark is allowed). Everything wrong is an
 // InputError naming the source, and the key where there is one: unknown keys, wrong types,
-// integers beyond 64 bits, non-finite numbers (only gamma may be inf), empty arrays, keys
-// nested too deeply, text that is not UTF-8.
+// integers beyond 64 bits, non-finite numbers (only gamma may be inf), empty arrays, noise
+// channels of the model in [disturbance], keys nested too deeply, text that is not UTF-8.
 // source names the text in messages (usually the file path); the scenario name defaults to
 // the file's stem.
 Scenario parse_scenario_toml(const std::string& text, const std::string& source);
