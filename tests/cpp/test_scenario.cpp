@@ -1,15 +1,19 @@
 // Scenario files (shared/scenarios.md is the contract): the shipped paper scenario parses to
 // the documented values, defaults, errors that name the key, the reader's edges (byte-order
 // mark, integers beyond 64 bits, empty arrays, deep nesting, non-UTF-8 text, unreadable paths,
-// non-finite numbers, noise channels), Scenario::validate and the results files (JSON keys;
-// metrics recomputed from the CSV by the test).
+// non-finite numbers, noise channels), Scenario::validate, the results files (JSON keys;
+// metrics recomputed from the CSV by the test) and how output files are checked and written.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -475,6 +479,93 @@ TEST(ScenarioReader, SignalFromToml) {
   EXPECT_THROW(hinf::parse_signal_toml("other = 1.0", "kappa", "<test>"), hinf::InputError);
 }
 
+// ======================================================================= output files
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+class OutputFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ = ::testing::TempDir() + "hinf_output_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& entry : std::filesystem::directory_iterator(folder_)) out.push_back(entry.path().filename());
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  std::string message_of(const std::function<void()>& action) const {
+    try {
+      action();
+    } catch (const hinf::InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+  std::string folder_;
+};
+
+TEST_F(OutputFiles, CheckedBeforeAnyComputation) {
+  const std::string plain = folder_ + "/plain";
+  hinf::write_text_file(plain, "x");
+  EXPECT_EQ(message_of([&] { hinf::check_output_path(""); }), "an output file name is empty");
+  EXPECT_EQ(message_of([&] { hinf::check_output_path(folder_); }), "cannot write '" + folder_ + "': it is a directory");
+  EXPECT_EQ(message_of([&] { hinf::check_output_path(plain + "/sub/out.json"); }),
+            "cannot write '" + plain + "/sub/out.json': '" + plain + "' is not a directory");
+  EXPECT_EQ(message_of([&] { hinf::check_output_path(folder_ + "/new/deeper/out.json"); }), "(no error)");
+  EXPECT_EQ(message_of([&] { hinf::check_output_path(plain); }), "(no error)") << "an existing file is replaced";
+  EXPECT_EQ(names(), std::vector<std::string>{"plain"}) << "checking creates nothing";
+}
+
+TEST_F(OutputFiles, WrittenWholeWithMissingFoldersAndTheUsualMode) {
+  const std::string path = folder_ + "/new/deeper/out.json";
+  hinf::write_text_file(path, "first\n");
+  hinf::write_text_file(path, "second\n");
+  EXPECT_EQ(read_file(path), "second\n");
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  EXPECT_EQ(static_cast<mode_t>(std::filesystem::status(path).permissions()) & 0777, 0666 & ~mask);
+  EXPECT_EQ(names(), std::vector<std::string>{"new"});
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder_ + "/new/deeper"),
+                          std::filesystem::directory_iterator()),
+            1) << "no temporary file left";
+}
+
+TEST_F(OutputFiles, FailedWriteLeavesThePreviousFile) {
+  // A file size limit makes write() fail half-way with EFBIG, as a full disk fails it.
+  const std::string path = folder_ + "/run.csv";
+  hinf::write_text_file(path, "old contents\n");
+  struct rlimit saved {};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  struct rlimit limited = saved;
+  limited.rlim_cur = 64 * 1024;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
+  const std::string message = message_of([&] { hinf::write_text_file(path, std::string(1 << 20, 'x')); });
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous);
+  EXPECT_EQ(message, "cannot write '" + path + "': File too large");
+  EXPECT_EQ(read_file(path), "old contents\n");
+  EXPECT_EQ(names(), std::vector<std::string>{"run.csv"}) << "no temporary file left";
+}
+
+TEST_F(OutputFiles, DevicesAreWrittenInPlace) {
+  EXPECT_EQ(message_of([&] { hinf::write_text_file("/dev/null", "x"); }), "(no error)");
+  if (std::filesystem::exists("/dev/full")) {
+    EXPECT_EQ(message_of([&] { hinf::write_text_file("/dev/full", "x"); }),
+              "cannot write '/dev/full': No space left on device");
+  }
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+}
+
 // ======================================================================= Scenario::validate
 
 void expect_invalid(const Scenario& s, const std::string& piece, const std::string& what_case) {
@@ -726,7 +817,8 @@ TEST_F(PaperRun, JsonRoundTripsThroughAFile) {
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["scenario"], "paper-fig1");
   std::remove(path.c_str());
-  EXPECT_THROW(hinf::write_text_file("/nonexistent_dir_hinf/x.json", "{}"), hinf::InputError);
+  // Below a plain file: no folder can be made there.
+  EXPECT_THROW(hinf::write_text_file(kFig1 + "/x.json", "{}"), hinf::InputError);
 }
 
 }  // namespace

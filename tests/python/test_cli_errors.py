@@ -9,6 +9,7 @@ and output files are written whole or not at all.
 
 from __future__ import annotations
 
+import errno
 import os
 import pathlib
 import re
@@ -196,6 +197,168 @@ def test_scenario_path_unreadable(tmp_path):
     message = both_front_ends(parent / "scenario.toml", 2, r"cannot read scenario file .*Not a directory")
     assert str(parent / "scenario.toml") in message
     both_front_ends(tmp_path / "missing.toml", 2, r"cannot read scenario file .*No such file")
+
+
+# ======================================================================================
+# Output paths: checked before the computation, written atomically
+# ======================================================================================
+
+@needs_programs
+@pytest.mark.parametrize("option", ["--json", "--csv"])
+def test_output_parent_is_a_file(tmp_path, option):
+    scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
+    parent = write(tmp_path, "plain_file", "x")
+    target = parent / "sub" / "out.txt"
+    message = both_front_ends(scenario, 2, r"not a directory", option, target)
+    assert str(target) in message and str(parent) in message
+
+
+@needs_programs
+@pytest.mark.parametrize("option", ["--json", "--csv"])
+def test_output_path_is_a_directory(tmp_path, option):
+    scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
+    message = both_front_ends(scenario, 2, r"is a directory", option, tmp_path)
+    assert str(tmp_path) in message
+
+
+@needs_programs
+def test_output_path_empty(tmp_path):
+    scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
+    both_front_ends(scenario, 2, r"empty", "--json", "")
+
+
+@needs_programs
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full")
+@pytest.mark.parametrize("option", ["--json", "--csv"])
+def test_full_disk(tmp_path, option):
+    scenario = hc.scenario_path("paper_fig1")
+    both_front_ends(scenario, 2, r"cannot write '/dev/full': No space left on device", option, "/dev/full")
+
+
+@needs_programs
+@pytest.mark.parametrize("program", ["hinf-sim", "hinf-cpp"])
+def test_failed_write_keeps_the_old_file(tmp_path, program):
+    """A write that fails half-way (file size limit: as a full disk) leaves the previous file
+    as it was and no temporary file behind."""
+    out = tmp_path / "out"
+    out.mkdir()
+    old_csv = write(out, "run.csv", "old contents\n")
+    args = [HINF_SIM] if program == "hinf-sim" else [HINF_CPP, "run"]
+    result = run(*args, hc.scenario_path("paper_fig1"), "--json", out / "run.json", "--csv", old_csv,
+                 limits={resource.RLIMIT_FSIZE: 256 << 10})
+    error_message(result, program, 2, f"cannot write '{re.escape(str(old_csv))}': File too large")
+    assert old_csv.read_text() == "old contents\n"
+    assert sorted(p.name for p in out.iterdir()) == ["run.csv", "run.json"]
+    assert (out / "run.json").read_text().rstrip().endswith("}")
+
+
+@needs_programs
+def test_failed_npz_write_leaves_no_file(tmp_path):
+    result = run(HINF_CPP, "run", hc.scenario_path("paper_fig1"), "--npz", tmp_path / "run.npz",
+                 limits={resource.RLIMIT_FSIZE: 256 << 10})
+    error_message(result, "hinf-cpp", 2, r"run\.npz': File too large")
+    assert list(tmp_path.iterdir()) == []
+
+
+@needs_programs
+def test_bad_plot_suffix_is_refused_before_anything_is_written(tmp_path):
+    scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
+    result = run(HINF_CPP, "run", scenario, "--json", tmp_path / "a.json", "--csv", tmp_path / "a.csv",
+                 "--plot", tmp_path / "a.xyz")
+    error_message(result, "hinf-cpp", 2, r"a\.xyz.*\.png, \.pdf or \.svg")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["doomed.toml"]
+
+
+def subcommand_cases():
+    """(subcommand arguments with {scenario}, {file} (a plain file), {tmp}) -> message pattern."""
+    bad = "{file}/out.json"
+    return {
+        "run --npz": (["run", "{scenario}", "--npz", "{file}/out.npz"], r"not a directory"),
+        "run --plot .jpg": (["run", "{scenario}", "--plot", "{tmp}/xy.jpg"], r"\.png, \.pdf or \.svg"),
+        "compare --json": (["compare", "{scenario}", "--json", bad], r"not a directory"),
+        "compare --plot": (["compare", "{scenario}", "--plot", "{tmp}/paths"], r"\.png, \.pdf or \.svg"),
+        "recovery --json": (["recovery", "--json", bad], r"not a directory"),
+        "recovery --plot": (["recovery", "--plot", "{tmp}"], r"is a directory"),
+        "report --out a file": (["report", "{scenario}", "--out", "{file}"], r"not a directory"),
+        "report --out below a file": (["report", "{scenario}", "--out", "{file}/report"], r"not a directory"),
+        "gamma-star --json": (["gamma-star", "{scenario}", "--json", bad], r"not a directory"),
+        "certify --json": (["certify", "{scenario}", "--json", "{tmp}"], r"is a directory"),
+        "sweep-gamma --plot": (["sweep-gamma", "{scenario}", "--plot", "{tmp}/sweep.txt"], r"\.png, \.pdf or \.svg"),
+        "sweep-gamma --json": (["sweep-gamma", "{scenario}", "--json", bad], r"not a directory"),
+        "paper --out a file": (["paper", "--out", "{file}"], r"not a directory"),
+    }
+
+
+@needs_programs
+@pytest.mark.parametrize("case", list(subcommand_cases()))
+def test_every_subcommand_checks_its_outputs_first(tmp_path, case):
+    args, match = subcommand_cases()[case]
+    scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
+    plain = write(tmp_path, "plain_file", "x")
+    args = [a.format(scenario=scenario, file=plain, tmp=tmp_path) for a in args]
+    result = run(HINF_CPP, *args)
+    error_message(result, "hinf-cpp", 2, match)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["doomed.toml", "plain_file"]
+
+
+@needs_programs
+@pytest.mark.parametrize("args,match", [
+    (["--json"], r"--json needs a file name"),
+    (["--csv"], r"--csv needs a file name"),
+    (["--bogus"], r"unknown option '--bogus'"),
+    (["{scenario}", "{scenario}"], r"more than one scenario file"),
+    ([], r"no scenario file given"),
+], ids=["--json without a value", "--csv without a value", "unknown option", "two scenarios", "none"])
+def test_hinf_sim_usage_errors(tmp_path, args, match):
+    scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
+    result = run(HINF_SIM, *[a.format(scenario=scenario) for a in args])
+    error_message(result, "hinf-sim", 2, match)
+
+
+# ======================================================================================
+# The Python writers: whole files or none
+# ======================================================================================
+
+@pytest.mark.parametrize("suffix", ["png", "pdf", "svg"])
+def test_failing_figure_keeps_the_old_file(tmp_path, suffix):
+    import matplotlib.pyplot as plt
+
+    from hinf_cpp.plotting import save_figure
+
+    target = write(tmp_path, f"xy.{suffix}", "old contents")
+    fig, ax = plt.subplots()
+    ax.set_title(r"$\frac{$")  # mathtext that fails while drawing (PDF and SVG: after the file was opened)
+    try:
+        with pytest.raises(ValueError):
+            save_figure(fig, target)
+    finally:
+        plt.close(fig)
+    assert target.read_text() == "old contents"
+    assert [p.name for p in tmp_path.iterdir()] == [f"xy.{suffix}"]
+
+
+def test_failed_replace_keeps_the_old_file(tmp_path, monkeypatch, paper_run):
+    from hinf_cpp import export
+
+    target = write(tmp_path, "run.json", "old contents")
+
+    def refuse(src, dst):
+        raise OSError(errno.EXDEV, "Invalid cross-device link")
+
+    monkeypatch.setattr(os, "replace", refuse)
+    with pytest.raises(OSError, match="run.json"):
+        export.save_json(paper_run, target)
+    assert target.read_text() == "old contents"
+    assert [p.name for p in tmp_path.iterdir()] == ["run.json"]
+
+
+def test_written_files_have_the_usual_permissions(tmp_path, paper_run):
+    from hinf_cpp import export
+
+    umask = os.umask(0o022)
+    os.umask(umask)
+    path = export.save_json(paper_run, tmp_path / "sub" / "run.json")
+    assert path.stat().st_mode & 0o777 == 0o666 & ~umask
 
 
 # ======================================================================================

@@ -33,6 +33,13 @@ std::string results_json(const RunResult& result, int indent = 2);
 // errors (suffix _e_hat), the measurements y1.., sigma_min_eig, sigma_max_eig, rho_sigma_z.
 std::string results_csv(const RunResult& result);
 
+// Checks, before any computation, that an output file can be written at path: not empty,
+// not a directory, and the nearest existing folder above it is a writable folder (missing
+// folders are created by write_text_file). InputError naming the path otherwise.
+void check_output_path(const std::string& path);
+// Writes a file whole or not at all: a temporary file in the same folder, renamed over path
+// once complete (an existing device or pipe, such as /dev/stdout, is written in place).
+// Creates missing folders. InputError naming the path on any failure (a full disk included).
 void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace hinf
