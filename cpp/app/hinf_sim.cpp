@@ -4,10 +4,12 @@
 //
 // --gamma-star also computes gamma* (paper eq. 14) of the state-feedback design and puts it in
 // the results file.
-// Exit status: 0 success, 2 bad input or usage (unusable output paths included), 3 numerical
-// failure (solver, conjugate point, coupling condition), 1 anything else. Errors are one line
-// on stderr. Output paths are checked before the run; each file is written whole or not at all.
+// Exit status: 0 success, 2 bad input or usage (unusable output paths and runs too large for
+// the memory included), 3 numerical failure (solver, conjugate point, coupling condition), 1
+// anything else (a bug). Errors are one line on stderr. Output paths are checked before the
+// run; each file is written whole or not at all.
 #include <iostream>
+#include <new>
 #include <optional>
 #include <string>
 
@@ -17,6 +19,9 @@
 namespace {
 
 const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]";
+// The same words as hinf-cpp's.
+const char* kOutOfMemory =
+    "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables";
 
 int fail(int status, const std::string& message) {
   std::string line = message;
@@ -81,7 +86,9 @@ int main(int argc, char** argv) {
     return fail(2, e.what());
   } catch (const hinf::HinfError& e) {
     return fail(3, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(2, kOutOfMemory);
   } catch (const std::exception& e) {
-    return fail(1, e.what());
+    return fail(1, std::string("internal error: ") + e.what());
   }
 }

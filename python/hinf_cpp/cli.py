@@ -10,11 +10,12 @@
     hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N] [--quiet]
     hinf-cpp paper [--out DIR] [--quiet]
 
-Exit status: 0 success, 2 bad input (bad options, unusable output paths and a full disk
-included), 3 numerical failure (solver, conjugate point, coupling condition). Errors are one
-line on stderr. Every output path is checked before the computation starts, and every file
-is written whole or not at all. The longer commands show a live progress line on stderr when
-it is a terminal (off with --quiet).
+Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
+too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
+condition), 1 a bug. Errors are one line on stderr, with nothing before them. Every output
+path is checked before the computation starts, and every file is written whole or not at
+all. The longer commands show a live progress line on stderr when it is a terminal (off with
+--quiet).
 """
 
 from __future__ import annotations
@@ -25,12 +26,16 @@ import math
 import os
 import pathlib
 import sys
+import warnings
 
 from . import _core
 from .outputs import check_output_folder, check_output_path, write_text
 from .progress import Progress
 from .scenario import load_scenario
 from .tables import markdown_table, text_table
+
+# Words shared with hinf-sim (cpp/app/hinf_sim.cpp).
+OUT_OF_MEMORY = "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables"
 
 METRIC_NAMES = [
     "rms_position_error_last_half",
@@ -474,22 +479,41 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    # Warnings are held back while the command runs: a failure is one line on stderr with
+    # nothing before it; a command that succeeds shows them at its end.
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("default")
+        status = _run(args)
+    if status == 0:
+        for w in caught:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno, w.file, w.line)
+    return status
+
+
+def _run(args: argparse.Namespace) -> int:
+    """The command's exit status; every exception becomes one line on stderr."""
     try:
         return args.handler(args)
-    except ValueError as error:
-        return _fail(error, 2)
-    except _core.HinfError as error:
-        return _fail(error, 3)
     except BrokenPipeError:
         # The reader went away (e.g. `| head`): stop quietly, as other command-line tools do.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except ValueError as error:  # bad input (hinf::InputError), UnicodeDecodeError included
+        return _fail(error, 2)
+    except _core.HinfError as error:  # numerical failure
+        return _fail(error, 3)
+    except MemoryError:
+        return _fail(OUT_OF_MEMORY, 2)
     except OSError as error:  # an output that cannot be written (a full disk, ...)
         message = error.strerror or str(error)
         return _fail(f"'{error.filename}': {message}" if error.filename else message, 2)
+    except KeyboardInterrupt:
+        return _fail("interrupted", 130)
+    except Exception as error:  # noqa: BLE001 - a bug: still one line, exit status 1
+        return _fail(f"internal error: {type(error).__name__}: {error}", 1)
 
 
-def _fail(error: Exception, status: int) -> int:
+def _fail(error: Exception | str, status: int) -> int:
     message = " ".join(str(error).split()) or type(error).__name__
     print(f"hinf-cpp: error: {message}", file=sys.stderr)
     return status

@@ -17,10 +17,12 @@ import resource
 import signal
 import subprocess
 import sys
+import warnings
 
 import pytest
 
 import hinf_cpp as hc
+from hinf_cpp import cli
 
 BIN = pathlib.Path(sys.executable).parent
 HINF_SIM = BIN / "hinf-sim"
@@ -199,6 +201,15 @@ def test_scenario_path_unreadable(tmp_path):
     both_front_ends(tmp_path / "missing.toml", 2, r"cannot read scenario file .*No such file")
 
 
+@needs_programs
+def test_out_of_memory_is_exit_status_2(tmp_path):
+    """A run larger than the memory it may use: 1e8 output times of 22 columns."""
+    path = write(tmp_path, "huge.toml", mutate(PAPER_TEXT, "dt = 0.01", "dt = 4.1e-7"))
+    limits = {resource.RLIMIT_AS: 3 << 30}
+    for program, args in (("hinf-sim", [HINF_SIM, path]), ("hinf-cpp", [HINF_CPP, "run", path])):
+        error_message(run(*args, limits=limits), program, 2, r"memory")
+
+
 # ======================================================================================
 # Output paths: checked before the computation, written atomically
 # ======================================================================================
@@ -313,6 +324,53 @@ def test_hinf_sim_usage_errors(tmp_path, args, match):
     scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
     result = run(HINF_SIM, *[a.format(scenario=scenario) for a in args])
     error_message(result, "hinf-sim", 2, match)
+
+
+# ======================================================================================
+# hinf-cpp's last resort: no exception type prints a traceback
+# ======================================================================================
+
+@pytest.mark.parametrize("exception,status,match", [
+    (MemoryError(), 2, r"^not enough memory"),
+    (OSError(errno.ENOSPC, "No space left on device", "/some/file"), 2, r"^'/some/file': No space left on device$"),
+    (UnicodeDecodeError("utf-8", b"\xe9", 0, 1, "invalid continuation byte"), 2, r"utf-8"),
+    (RecursionError("maximum recursion depth exceeded"), 1, r"^internal error: RecursionError: maximum recursion"),
+    (TypeError("unsupported operand"), 1, r"^internal error: TypeError: unsupported operand"),
+    (KeyError("x"), 1, r"^internal error: KeyError: 'x'"),
+    (KeyboardInterrupt(), 130, r"^interrupted$"),
+], ids=["MemoryError", "OSError", "UnicodeDecodeError", "RecursionError", "TypeError", "KeyError",
+        "KeyboardInterrupt"])
+def test_main_maps_every_exception_to_one_line(monkeypatch, capsys, exception, status, match):
+    def handler(args):
+        raise exception
+
+    monkeypatch.setattr(cli, "cmd_certify", handler)
+    assert cli.main(["certify", "any.toml"]) == status
+    captured = capsys.readouterr()
+    lines = captured.err.splitlines()
+    assert len(lines) == 1, captured.err
+    assert lines[0].startswith("hinf-cpp: error: ")
+    assert re.search(match, lines[0][len("hinf-cpp: error: "):]), lines[0]
+
+
+def test_main_prints_no_warning_before_an_error(monkeypatch, capsys):
+    def handler(args):
+        warnings.warn("invalid value encountered in multiply", RuntimeWarning)
+        raise ValueError("[controller] Q: expected a finite number, got inf")
+
+    monkeypatch.setattr(cli, "cmd_certify", handler)
+    assert cli.main(["certify", "any.toml"]) == 2
+    assert capsys.readouterr().err == "hinf-cpp: error: [controller] Q: expected a finite number, got inf\n"
+
+
+def test_main_shows_the_warnings_of_a_successful_command(monkeypatch):
+    def handler(args):
+        warnings.warn("something to know", UserWarning)
+        return 0
+
+    monkeypatch.setattr(cli, "cmd_certify", handler)
+    with pytest.warns(UserWarning, match="something to know"):  # shown after the command
+        assert cli.main(["certify", "any.toml"]) == 0
 
 
 # ======================================================================================
