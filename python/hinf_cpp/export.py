@@ -32,6 +32,7 @@ import csv
 import dataclasses
 import io
 import json
+import os
 import pathlib
 from typing import Any
 
@@ -131,6 +132,8 @@ def _meta(result: _core.RunResult) -> dict[str, Any]:
 def npz_path(path: str | pathlib.Path) -> pathlib.Path:
     """The file :func:`save_npz` writes for `path`: `path` itself, with ``.npz`` appended when
     it has another suffix (as ``numpy.savez_compressed`` names files)."""
+    if os.fspath(path) == "":
+        raise ValueError("an output file name is empty")
     path = pathlib.Path(path)
     return path if path.suffix == ".npz" else path.with_name(path.name + ".npz")
 

@@ -236,6 +236,8 @@ def test_output_path_is_a_directory(tmp_path, option):
 def test_output_path_empty(tmp_path):
     scenario = write(tmp_path, "doomed.toml", DOOMED_TEXT)
     both_front_ends(scenario, 2, r"empty", "--json", "")
+    for option in ("--csv", "--npz", "--plot"):
+        error_message(run(HINF_CPP, "run", scenario, option, ""), "hinf-cpp", 2, r"^an output file name is empty$")
 
 
 @needs_programs
