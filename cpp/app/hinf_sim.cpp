@@ -4,10 +4,13 @@
 //
 // --gamma-star also computes gamma* (paper eq. 14) of the state-feedback design and puts it in
 // the results file.
-// Exit status: 0 success, 2 bad input or usage, 3 numerical failure (solver, conjugate
-// point, coupling condition), 1 anything else. Errors are one line on stderr.
-#include <cstring>
+// Exit status: 0 success, 2 bad input or usage (unusable output paths and runs too large for
+// the memory included), 3 numerical failure (solver, conjugate point, coupling condition), 1
+// anything else (a bug). Errors are one line on stderr. Output paths are checked before the
+// run; each file is written whole or not at all.
 #include <iostream>
+#include <new>
+#include <optional>
 #include <string>
 
 #include "hinf/errors.hpp"
@@ -16,6 +19,9 @@
 namespace {
 
 const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]";
+// The same words as hinf-cpp's.
+const char* kOutOfMemory =
+    "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables";
 
 int fail(int status, const std::string& message) {
   std::string line = message;
@@ -28,13 +34,14 @@ int fail(int status, const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string scenario_path, json_path, csv_path;
+  std::string scenario_path;
+  std::optional<std::string> json_path, csv_path;
   bool with_gamma_star = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    auto value = [&](const char* option) -> std::string {
+    auto value = [&](const char* option) -> std::optional<std::string> {
       if (i + 1 >= argc) throw hinf::InputError(std::string(option) + " needs a file name");
-      return argv[++i];
+      return std::string(argv[++i]);
     };
     try {
       if (arg == "-h" || arg == "--help") {
@@ -60,11 +67,13 @@ int main(int argc, char** argv) {
   if (scenario_path.empty()) return fail(2, std::string("no scenario file given; ") + kUsage);
 
   try {
+    for (const std::optional<std::string>& path : {json_path, csv_path})
+      if (path) hinf::check_output_path(*path);
     const hinf::Scenario scenario = hinf::load_scenario_toml(scenario_path);
     hinf::RunResult result = hinf::run_scenario(scenario);
     if (with_gamma_star) result.gamma_star = hinf::scenario_gamma_star(scenario).gamma_star;
-    if (!json_path.empty()) hinf::write_text_file(json_path, hinf::results_json(result) + "\n");
-    if (!csv_path.empty()) hinf::write_text_file(csv_path, hinf::results_csv(result));
+    if (json_path) hinf::write_text_file(*json_path, hinf::results_json(result) + "\n");
+    if (csv_path) hinf::write_text_file(*csv_path, hinf::results_csv(result));
     const hinf::Metrics& m = result.metrics;
     std::cout << "scenario " << result.scenario_name << ": gamma = " << result.gamma
               << ", final position error = " << m.final_position_error
@@ -77,7 +86,9 @@ int main(int argc, char** argv) {
     return fail(2, e.what());
   } catch (const hinf::HinfError& e) {
     return fail(3, e.what());
+  } catch (const std::bad_alloc&) {
+    return fail(2, kOutOfMemory);
   } catch (const std::exception& e) {
-    return fail(1, e.what());
+    return fail(1, std::string("internal error: ") + e.what());
   }
 }

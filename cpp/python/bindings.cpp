@@ -1106,4 +1106,9 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
         "The seeded standard normal noise samples of a scenario with [measurement]");
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
         "The C++ scenario parser (the one hinf-sim uses)");
+  // The one scenario reader (scenario_io.cpp) for the Python package: files and signals.
+  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"),
+        "Reads a scenario file with the reader of hinf-sim (same checks, same messages)");
+  m.def("parse_signal_toml", &parse_signal_toml, py::arg("text"), py::arg("key"), py::arg("source"),
+        "A Signal from a TOML document whose one key is `key` (as in a scenario)");
 }

@@ -1,13 +1,20 @@
 #include "hinf/scenario_io.hpp"
 
-#include <toml++/toml.h>
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <algorithm>
 #include <sstream>
+#include <system_error>
+#include <toml++/toml.h>
 
 #include "hinf/errors.hpp"
 
@@ -65,10 +72,16 @@ class TableReader {
     const toml::node* node = get(key);
     return node != nullptr ? as_number(*node, key) : fallback;
   }
-  double as_number(const toml::node& node, const std::string& key) const {
-    if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
-    if (const auto* f = node.as_floating_point()) return f->get();
-    fail(key, "expected a number, got " + type_name(node));
+  // Every number of a scenario is finite, except where inf has a meaning (gamma):
+  // allow_infinite lets +-inf through (never nan).
+  double as_number(const toml::node& node, const std::string& key, bool allow_infinite = false) const {
+    double value = 0.0;
+    if (const auto* i = node.as_integer()) value = static_cast<double>(i->get());
+    else if (const auto* f = node.as_floating_point()) value = f->get();
+    else fail(key, "expected a number, got " + type_name(node));
+    if (std::isnan(value) || (std::isinf(value) && !allow_infinite))
+      fail(key, str_cat("expected a finite number, got ", value));
+    return value;
   }
   std::string string_or(const std::string& key, const std::string& fallback) {
     const toml::node* node = get(key);
@@ -99,7 +112,9 @@ class TableReader {
   }
   Vec as_vector(const toml::node& node, const std::string& key, int size) const {
     const toml::array* array = node.as_array();
-    if (array == nullptr) fail(key, "expected an array of numbers, got " + type_name(node));
+    const std::string expected = size >= 0 ? str_cat(size, " numbers") : "an array of numbers";
+    if (array == nullptr) fail(key, str_cat("expected ", expected, ", got ", type_name(node)));
+    if (array->empty()) fail(key, str_cat("expected ", expected, ", got an empty array"));
     if (size >= 0 && static_cast<int>(array->size()) != size)
       fail(key, str_cat("expected ", size, " numbers, got ", array->size()));
     Vec v(static_cast<Eigen::Index>(array->size()));
@@ -119,6 +134,7 @@ class TableReader {
     const std::string expected = str_cat(allow_scalar ? "a number or " : "", "a ", rows, " x ",
                                          cols, " nested list");
     if (array == nullptr) fail(key, "expected " + expected + ", got " + type_name(*node));
+    if (array->empty()) fail(key, "expected " + expected + ", got an empty array");
     if (static_cast<int>(array->size()) != rows)
       fail(key, str_cat("expected ", expected, ", got ", array->size(), " rows"));
     Mat M(rows, cols);
@@ -233,20 +249,25 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
   } else if (kind == "linear") {
     for (const char* key : {"m_u", "m_v", "m_r", "d_u", "d_v", "d_r"})
       if (r.has(key)) r.fail(key, "is a key of kind = \"ship\", not of kind = \"linear\"");
-    const toml::node* a = r.get("A");
-    if (a == nullptr || !a->is_array()) r.fail("A", "is required: an n x n nested list");
-    const int n = static_cast<int>(a->as_array()->size());
+    // A, B and D set the model's dimensions: n = rows of A, m = columns of B, nw = columns of D.
+    auto dimensions = [&r](const char* key, const char* shape) {
+      const toml::node* node = r.get(key);
+      if (node == nullptr) r.fail(key, str_cat("is required: an ", shape, " nested list"));
+      const toml::array* rows = node->as_array();
+      const toml::array* first = rows != nullptr && !rows->empty() ? rows->get(0)->as_array() : nullptr;
+      std::string found;
+      if (rows == nullptr) found = type_name(*node);
+      else if (rows->empty()) found = "an empty array";
+      else if (first == nullptr) found = "a first row that is " + type_name(*rows->get(0));
+      else if (first->empty()) found = "an empty first row";
+      if (!found.empty()) r.fail(key, str_cat("expected an ", shape, " nested list, got ", found));
+      return std::make_pair(static_cast<int>(rows->size()), static_cast<int>(first->size()));
+    };
+    const int n = dimensions("A", "n x n").first;
     const Mat A = r.matrix("A", n, n, false);
-    const toml::node* b = r.get("B");
-    if (b == nullptr || !b->is_array() || b->as_array()->empty() || !b->as_array()->get(0)->is_array())
-      r.fail("B", "is required: an n x m nested list");
-    const Mat B = r.matrix("B", n, static_cast<int>(b->as_array()->get(0)->as_array()->size()), false);
+    const Mat B = r.matrix("B", n, dimensions("B", "n x m").second, false);
     Mat D = Mat::Identity(n, n);
-    if (const toml::node* d = r.get("D")) {
-      if (!d->is_array() || d->as_array()->empty() || !d->as_array()->get(0)->is_array())
-        r.fail("D", "expected an n x nw nested list");
-      D = r.matrix("D", n, static_cast<int>(d->as_array()->get(0)->as_array()->size()), false);
-    }
+    if (r.has("D")) D = r.matrix("D", n, dimensions("D", "n x nw").second, false);
     model = std::make_shared<LinearModel>(A, B, D);
   } else {
     r.fail("kind", "unknown model kind \"" + kind + "\": use \"ship\" or \"linear\"");
@@ -260,16 +281,153 @@ std::string file_stem(const std::string& path) {
   return dot == std::string::npos ? name : name.substr(0, dot);
 }
 
+// toml++ makes a table of each part of a dotted key (a.b.c = 1, [a.b.c]), and builds and frees
+// them recursively: a key of some hundred thousand parts overflows the stack. Scenario keys
+// have at most four parts; more than kMaxKeyParts are refused before parsing. (Arrays and
+// inline tables are nested at most TOML_MAX_NESTED_VALUES deep: toml++ refuses more.)
+constexpr int kMaxKeyParts = 16;
+
+bool bare_key_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-';
+}
+
+// The index just past the TOML string that starts at text[i] (basic or literal, single- or
+// multi-line), counting the line breaks inside it. An unterminated string ends at the end of
+// its line (single-line) or of the text (multi-line); toml++ reports it.
+std::size_t skip_string(const std::string& text, std::size_t i, long& line) {
+  const char quote = text[i];
+  const std::string triple(3, quote);
+  const bool multiline = text.compare(i, 3, triple) == 0;
+  i += multiline ? 3 : 1;
+  while (i < text.size()) {
+    const char c = text[i];
+    if (c == '\\' && quote == '"') {
+      if (i + 1 < text.size() && text[i + 1] == '\n') ++line;
+      i += 2;
+    } else if (multiline && text.compare(i, 3, triple) == 0) {
+      i += 3;
+      while (i < text.size() && text[i] == quote) ++i;  // up to two quotes may end the content
+      return i;
+    } else if (!multiline && c == quote) {
+      return i + 1;
+    } else if (c == '\n') {
+      if (!multiline) return i;
+      ++line;
+      ++i;
+    } else {
+      ++i;
+    }
+  }
+  return i;
+}
+
+// Refuses a run of more than kMaxKeyParts parts joined by dots (bare words or strings), outside
+// strings and comments. Numbers and dates have at most two such parts ("1.5").
+void check_key_parts(const std::string& text, const std::string& source) {
+  long line = 1;
+  int parts = 0;  // parts of the dotted run being read: "a.b.c" has 3
+  bool after_dot = false;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i];
+    if (bare_key_char(c) || c == '"' || c == '\'') {
+      if (bare_key_char(c)) {
+        while (i < text.size() && bare_key_char(text[i])) ++i;
+      } else {
+        i = skip_string(text, i, line);
+      }
+      parts = after_dot ? parts + 1 : 1;
+      after_dot = false;
+      if (parts > kMaxKeyParts)
+        throw InputError(str_cat(source, ":", line, ": invalid TOML: a key of more than ", kMaxKeyParts,
+                                 " dotted parts (tables nested too deeply for a scenario)"));
+    } else if (c == ' ' || c == '\t') {
+      ++i;
+    } else if (c == '.' && parts > 0 && !after_dot) {
+      after_dot = true;
+      ++i;
+    } else if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else {
+      if (c == '\n') ++line;
+      parts = 0;
+      after_dot = false;
+      ++i;
+    }
+  }
+}
+
+std::string trim(const std::string& s) {
+  const std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+  return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+// For messages: the key whose value holds the byte at `offset` ("[measurement] seed"), or ""
+// when `offset` is not inside a value. The value of the last '=' before `offset` holds it
+// unless a line break comes after that value's arrays and inline tables have all closed.
+// Strings and comments are not told apart: this only names, it decides nothing.
+std::string key_at(const std::string& text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  const std::size_t equals = offset == 0 ? std::string::npos : text.rfind('=', offset - 1);
+  if (equals == std::string::npos) return "";
+  int open = 0;
+  for (std::size_t i = equals + 1; i < offset; ++i) {
+    if (text[i] == '[' || text[i] == '{') ++open;
+    if (text[i] == ']' || text[i] == '}') --open;
+    if (text[i] == '\n' && open <= 0) return "";
+  }
+  // The key: from the start of its line, or of its place in an inline table, to the '='.
+  const std::size_t before = equals == 0 ? std::string::npos : text.find_last_of("\n{,", equals - 1);
+  const std::size_t key_start = before == std::string::npos ? 0 : before + 1;
+  const std::string key = trim(text.substr(key_start, equals - key_start));
+  if (key.empty()) return "";
+  // The table: the last header line ("[name]" or "[[name]]") above the key.
+  for (std::size_t end = key_start; end > 0;) {
+    const std::size_t newline = text.rfind('\n', end - 1);
+    const std::size_t start = newline == std::string::npos ? 0 : newline + 1;
+    const std::string line = trim(text.substr(start, end - start));
+    if (!line.empty() && line[0] == '[') {
+      const std::size_t close = line.rfind(']');
+      return (close == std::string::npos ? line : line.substr(0, close + 1)) + " " + key;
+    }
+    if (newline == std::string::npos) break;
+    end = newline;
+  }
+  return "top level " + key;
+}
+
+// The byte offset of a 1-based line and column (toml++ counts columns in code points: on a line
+// with non-ASCII text before the position the offset is a little early).
+std::size_t offset_of(const std::string& text, long line, long column) {
+  std::size_t offset = 0;
+  for (long l = 1; l < line; ++l) {
+    const std::size_t next = text.find('\n', offset);
+    if (next == std::string::npos) return text.size();
+    offset = next + 1;
+  }
+  return std::min(text.size(), offset + static_cast<std::size_t>(std::max(0L, column - 1)));
+}
+
+// Parses a TOML document (a leading UTF-8 byte-order mark is skipped). Syntax errors, nesting
+// too deep and text that is not UTF-8 are an InputError naming the source, line and column and,
+// for an error inside a value (such as an integer beyond 64 bits), the key.
+toml::table parse_toml(const std::string& text, const std::string& source) {
+  check_key_parts(text, source);
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    const long line = static_cast<long>(e.source().begin.line);
+    const long column = static_cast<long>(e.source().begin.column);
+    const std::string key = key_at(text, offset_of(text, line, column));
+    throw InputError(str_cat(source, ":", line, ":", column, ": invalid TOML", key.empty() ? "" : " in " + key,
+                             ": ", e.description()));
+  }
+}
+
 }  // namespace
 
 Scenario parse_scenario_toml(const std::string& text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    throw InputError(str_cat(source, ":", e.source().begin.line, ":", e.source().begin.column,
-                             ": invalid TOML: ", e.description()));
-  }
+  const toml::table root = parse_toml(text, source);
   TableReader top(root, "top level", source,
                   {"name", "description", "model", "horizon", "desired", "controller",
                    "disturbance", "initial", "measurement", "solver", "output"});
@@ -300,7 +458,9 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   {
     TableReader r(*section(root, "controller", source, true), "[controller]", source,
                   {"gamma", "Q", "Qf", "kappa", "law", "cascade"});
-    s.gamma = r.number("gamma");
+    const toml::node* gamma = r.get("gamma");
+    if (gamma == nullptr) r.fail("gamma", "is required");
+    s.gamma = r.as_number(*gamma, "gamma", true);  // inf: the LQR limit
     s.law = r.string_or("law", s.law);
     if (const toml::node* node = r.get("cascade")) {
       const toml::table* table = node->as_table();
@@ -321,6 +481,16 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
       for (int i = 1; i <= nw; ++i) known.push_back(str_cat("w", i));
       known.push_back("worst_case");
       TableReader r(*table, "[disturbance]", source, known);
+      // The noise channels carry the measurement noise of [measurement]: a signal there would
+      // count in the disturbance's energy without moving the vehicle, and output feedback
+      // would overwrite it with the noise.
+      for (int channel : s.model->noise_channels()) {
+        const std::string key = str_cat("w", channel + 1);
+        if (r.has(key))
+          r.fail(key, str_cat("is a measurement-noise channel of the ", s.model->name(),
+                              " model, not a disturbance: the measurement noise is set through"
+                              " [measurement] (sigma, sample_period, seed)"));
+      }
       s.worst_case = r.boolean_or("worst_case", false);
       for (int i = 1; i <= nw; ++i)
         if (r.has(str_cat("w", i))) channels[static_cast<std::size_t>(i - 1)] = r.signal(str_cat("w", i));
@@ -341,11 +511,16 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     const std::int64_t seed = r.integer_or("seed", 0);
     if (seed < 0) r.fail("seed", str_cat("must be >= 0, got ", seed));
     ms.seed = static_cast<std::uint64_t>(seed);
-    if (r.has("N")) {
-      const toml::node* node = table->get("N");
-      const int p = node->is_array() ? static_cast<int>(node->as_array()->size()) : -1;
-      if (p >= 0) ms.N = r.matrix("N", p, p, false);
-      else ms.N = Mat::Constant(1, 1, r.number("N"));  // scalar: expanded to N I by resolved()
+    if (const toml::node* node = r.get("N")) {
+      const toml::array* rows = node->as_array();
+      if (rows == nullptr) {
+        ms.N = Mat::Constant(1, 1, r.number("N"));  // scalar: expanded to N I by resolved()
+      } else {
+        // p x p for p measured outputs (validate() checks p against the model)
+        if (rows->empty()) r.fail("N", "expected a number or a p x p nested list (p measured outputs), got an empty array");
+        const int p = static_cast<int>(rows->size());
+        ms.N = r.matrix("N", p, p, false);
+      }
     }
     if (r.has("Q0")) ms.Q0 = r.matrix("Q0", n, n, true);
     ms.eta = r.number_or("eta", ms.eta);
@@ -372,12 +547,32 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   return s;
 }
 
+Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source) {
+  const toml::table root = parse_toml(text, source);
+  TableReader r(root, "signal", source, {key});
+  return r.signal(key);
+}
+
+namespace {
+
+std::string error_text(int error) { return std::generic_category().message(error); }
+
+}  // namespace
+
 Scenario load_scenario_toml(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(str_cat("cannot read scenario file '", path, "'"));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_scenario_toml(buffer.str(), path);
+  const std::string cannot = str_cat("cannot read scenario file '", path, "': ");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(cannot + "it is a directory");
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) throw InputError(cannot + error_text(errno));
+  std::string text;
+  char chunk[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(chunk, 1, sizeof chunk, file)) > 0) text.append(chunk, got);
+  const int error = std::ferror(file) != 0 ? errno : 0;
+  std::fclose(file);
+  if (error != 0) throw InputError(cannot + error_text(error));
+  return parse_scenario_toml(text, path);
 }
 
 namespace {
@@ -467,11 +662,86 @@ std::string results_csv(const RunResult& r) {
   return os.str();
 }
 
+void check_output_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw InputError("an output file name is empty");
+  const std::string cannot = str_cat("cannot write '", path, "': ");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(cannot + "it is a directory");
+  // The nearest existing folder above: missing folders below it are created when writing.
+  fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  while (!fs::exists(folder, ec)) {
+    const fs::path up = folder.has_relative_path() ? folder.parent_path() : folder;
+    const fs::path next = up.empty() ? fs::path(".") : up;
+    if (next == folder) break;  // "/" or "." (a working directory that was removed)
+    folder = next;
+  }
+  if (!fs::is_directory(folder, ec)) throw InputError(str_cat(cannot, "'", folder.string(), "' is not a directory"));
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw InputError(str_cat(cannot, "'", folder.string(), "': ", error_text(errno)));
+}
+
+namespace {
+
+// Writes all of text to the open file descriptor; false (errno set) on failure.
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+}  // namespace
+
 void write_text_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out) throw InputError(str_cat("cannot write '", path, "'"));
-  out << text;
-  if (!out) throw InputError(str_cat("error writing '", path, "'"));
+  namespace fs = std::filesystem;
+  check_output_path(path);
+  const std::string cannot = str_cat("cannot write '", path, "': ");
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    // A device or a pipe (/dev/stdout, /dev/null): written in place, it cannot be replaced.
+    const int fd = ::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0) throw InputError(cannot + error_text(errno));
+    const bool written = write_all(fd, text);
+    const int error = errno;
+    if (::close(fd) != 0 && written) throw InputError(cannot + error_text(errno));
+    if (!written) throw InputError(cannot + error_text(error));
+    return;
+  }
+  // A temporary file next to the target, renamed over it once complete: a failed write (a
+  // full disk) leaves the previous file, or none, never a truncated one.
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  fs::create_directories(folder, ec);
+  if (ec) throw InputError(str_cat(cannot, "cannot create the folder '", folder.string(), "': ", ec.message()));
+  static std::atomic<unsigned> counter{0};
+  std::string temporary;
+  int fd = -1;
+  for (int attempt = 0; fd < 0; ++attempt) {
+    temporary = (folder / str_cat(".", target.filename().string(), ".", ::getpid(), ".", counter++, ".tmp")).string();
+    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);  // mode less the umask
+    if (fd < 0 && (errno != EEXIST || attempt > 100)) throw InputError(cannot + error_text(errno));
+  }
+  bool ok = write_all(fd, text) && ::fsync(fd) == 0;
+  int error = errno;
+  if (::close(fd) != 0 && ok) {
+    ok = false;
+    error = errno;
+  }
+  if (ok && std::rename(temporary.c_str(), path.c_str()) != 0) {
+    ok = false;
+    error = errno;
+  }
+  if (!ok) {
+    ::unlink(temporary.c_str());
+    throw InputError(cannot + error_text(error));
+  }
 }
 
 }  // namespace hinf

@@ -10,9 +10,12 @@
     hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N] [--quiet]
     hinf-cpp paper [--out DIR] [--quiet]
 
-Exit status: 0 success, 2 bad input (bad options included), 3 numerical failure (solver,
-conjugate point, coupling condition). Errors are one line on stderr. The longer commands
-show a live progress line on stderr when it is a terminal (off with --quiet).
+Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
+too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
+condition), 1 a bug. Errors are one line on stderr, with nothing before them. Every output
+path is checked before the computation starts, and every file is written whole or not at
+all. The longer commands show a live progress line on stderr when it is a terminal (off with
+--quiet).
 """
 
 from __future__ import annotations
@@ -23,12 +26,16 @@ import math
 import os
 import pathlib
 import sys
+import warnings
 
 from . import _core
-from .plotting import save_figure, xy_figure
+from .outputs import check_output_folder, check_output_path, write_text
 from .progress import Progress
 from .scenario import load_scenario
 from .tables import markdown_table, text_table
+
+# Words shared with hinf-sim (cpp/app/hinf_sim.cpp).
+OUT_OF_MEMORY = "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables"
 
 METRIC_NAMES = [
     "rms_position_error_last_half",
@@ -70,10 +77,17 @@ def summary(result: _core.RunResult) -> str:
     return "\n".join(lines)
 
 
-def _write(path: str | pathlib.Path, text: str) -> None:
-    path = pathlib.Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text)
+def _check_outputs(files=(), figures=(), folders=()) -> None:
+    """Checks the output paths given (None: not asked for) before any computation."""
+    for path in files:
+        if path is not None:
+            check_output_path(path)
+    for path in figures:
+        if path is not None:
+            check_output_path(path, figure=True)
+    for path in folders:
+        if path is not None:
+            check_output_folder(path)
 
 
 def _gamma_star_options(args: argparse.Namespace) -> _core.GammaStarOptions:
@@ -86,19 +100,23 @@ def _number(x):
 
 
 def cmd_run(args: argparse.Namespace) -> int:
+    from .export import npz_path, save_npz
+
+    _check_outputs(files=[args.json, args.csv, None if args.npz is None else npz_path(args.npz)],
+                   figures=[args.plot])
     scenario = load_scenario(args.scenario)
     result = _core.run_scenario(scenario)
     if args.gamma_star:
         result.gamma_star = _core.scenario_gamma_star(scenario).gamma_star
-    if args.json:
-        _write(args.json, result.to_json() + "\n")
-    if args.csv:
-        _write(args.csv, result.to_csv())
-    if args.npz:
-        from .export import save_npz
-
+    if args.json is not None:
+        write_text(args.json, result.to_json() + "\n")
+    if args.csv is not None:
+        write_text(args.csv, result.to_csv())
+    if args.npz is not None:
         save_npz(result, args.npz)
-    if args.plot:
+    if args.plot is not None:
+        from .plotting import save_figure, xy_figure
+
         save_figure(xy_figure(result), args.plot)
     print(summary(result))
     return 0
@@ -119,6 +137,7 @@ def gamma_star_dict(result: _core.GammaStarResult) -> dict:
 
 
 def cmd_gamma_star(args: argparse.Namespace) -> int:
+    _check_outputs(files=[args.json])
     scenario = load_scenario(args.scenario)
     options = _gamma_star_options(args)
     if args.output_feedback:
@@ -136,14 +155,15 @@ def cmd_gamma_star(args: argparse.Namespace) -> int:
     elif result.binding:
         print(f"  at gamma = {result.lower:.8g}: {result.binding} fails")
     print(f"  {len(result.trials)} evaluations")
-    if args.json:
-        _write(args.json, json.dumps({"scenario": scenario.name, **gamma_star_dict(result)}, indent=2) + "\n")
+    if args.json is not None:
+        write_text(args.json, json.dumps({"scenario": scenario.name, **gamma_star_dict(result)}, indent=2) + "\n")
     return 0
 
 
 def cmd_certify(args: argparse.Namespace) -> int:
     from .analysis import certificates_dict
 
+    _check_outputs(files=[args.json])
     scenario = load_scenario(args.scenario)
     c = _core.scenario_certificates(scenario)
     print(f"scenario {scenario.name}: certificates of paper §3 at gamma = {scenario.gamma:g}")
@@ -156,15 +176,17 @@ def cmd_certify(args: argparse.Namespace) -> int:
     print(f"  (24)  epsilon = {c.epsilon:.6g} (at t = {c.epsilon_t:.6g}): dV/dt <= -(p/2)|q_e|^2 for |q_e| < epsilon")
     print(f"        errors with |q_e(t0)| < {c.attraction_radius:.6g} stay in that ball and decay:"
           f" V(t) <= V(t0) exp(-{c.decay_rate:.6g} (t - t0))")
-    if args.json:
-        _write(args.json, json.dumps({"scenario": scenario.name, "gamma": scenario.gamma,
+    if args.json is not None:
+        write_text(args.json, json.dumps({"scenario": scenario.name, "gamma": scenario.gamma,
                                       **certificates_dict(c)}, indent=2) + "\n")
     return 0
 
 
 def cmd_sweep_gamma(args: argparse.Namespace) -> int:
     from .analysis import sweep_figure, sweep_gamma
+    from .plotting import save_figure
 
+    _check_outputs(files=[args.json], figures=[args.plot])
     scenario = load_scenario(args.scenario)
     with Progress(quiet=args.quiet) as progress:
         sweep = sweep_gamma(scenario, count=args.count, upper=args.upper,
@@ -174,11 +196,11 @@ def cmd_sweep_gamma(args: argparse.Namespace) -> int:
     print(f"  {'gamma':>10}  {'L2 gain':>10}  {'L_gamma':>12}")
     for g, gain, cost in zip(sweep.gammas, sweep.l2_gain, sweep.cost):
         print(f"  {g:10.5g}  {gain:10.5g}  {cost:12.5g}")
-    if args.plot:
+    if args.plot is not None:
         save_figure(sweep_figure(sweep), args.plot)
         print(f"wrote {args.plot}")
-    if args.json:
-        _write(args.json, json.dumps(sweep.to_dict(), indent=2) + "\n")
+    if args.json is not None:
+        write_text(args.json, json.dumps(sweep.to_dict(), indent=2) + "\n")
     return 0
 
 
@@ -215,9 +237,10 @@ def _comparison_notes(comparison) -> list[str]:
 
 def cmd_compare(args: argparse.Namespace) -> int:
     from .compare import compare, parse_controllers
-    from .plotting import paths_figure
+    from .plotting import paths_figure, save_figure
 
     controllers = parse_controllers(args.controllers)
+    _check_outputs(files=[args.json], figures=[args.plot])
     scenario = load_scenario(args.scenario)
     with Progress(quiet=args.quiet) as progress:
         comparison = compare(scenario, controllers, feedback=args.feedback,
@@ -228,10 +251,10 @@ def cmd_compare(args: argparse.Namespace) -> int:
         print("\n".join(notes))
     print()
     print(text_table(*comparison.table()), end="")
-    if args.json:
-        _write(args.json, comparison.to_json() + "\n")
+    if args.json is not None:
+        write_text(args.json, comparison.to_json() + "\n")
         print(f"wrote {args.json}")
-    if args.plot:
+    if args.plot is not None:
         runs = comparison.results()
         if not runs:
             raise _core.HinfError("every run failed: nothing to plot")
@@ -242,10 +265,11 @@ def cmd_compare(args: argparse.Namespace) -> int:
 
 def cmd_recovery(args: argparse.Namespace) -> int:
     from .compare import parse_controllers
-    from .plotting import recovery_figure
+    from .plotting import recovery_figure, save_figure
     from .recovery import recovery_study
 
     controllers = parse_controllers(args.controllers)
+    _check_outputs(files=[args.json], figures=[args.plot])
     if not (args.position_tol > 0 and args.heading_tol > 0):
         raise ValueError(f"--position-tol and --heading-tol must be > 0, got {args.position_tol:g} m and "
                          f"{args.heading_tol:g} deg")
@@ -263,10 +287,10 @@ def cmd_recovery(args: argparse.Namespace) -> int:
             print(f"  {v.controller} on {v.scenario} failed: {v.error}")
         elif v.turns_around:
             print(f"  {v.controller} on {v.scenario} turns around: {v.turn.reason}")
-    if args.json:
-        _write(args.json, json.dumps(study.to_dict(), indent=2) + "\n")
+    if args.json is not None:
+        write_text(args.json, json.dumps(study.to_dict(), indent=2) + "\n")
         print(f"wrote {args.json}")
-    if args.plot:
+    if args.plot is not None:
         save_figure(recovery_figure(study), args.plot)
         print(f"wrote {args.plot}")
     return 0
@@ -277,6 +301,7 @@ def cmd_report(args: argparse.Namespace) -> int:
     from .report import write_report
 
     controllers = parse_controllers(args.controllers)
+    _check_outputs(folders=[args.out])
     scenario = load_scenario(args.scenario)
     with Progress(quiet=args.quiet) as progress:
         report = write_report(scenario, args.out, controllers, feedback=args.feedback,
@@ -299,8 +324,9 @@ def cmd_report(args: argparse.Namespace) -> int:
 def cmd_paper(args: argparse.Namespace) -> int:
     from . import scenario_path
     from .compare import compare
-    from .plotting import paths_figure
+    from .plotting import paths_figure, save_figure, xy_figure
 
+    _check_outputs(folders=[args.out])
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = []
@@ -309,13 +335,13 @@ def cmd_paper(args: argparse.Namespace) -> int:
         scenarios[name] = load_scenario(scenario_path(name))
         result = _core.run_scenario(scenarios[name])
         stem = name.replace("paper_", "")
-        _write(out / f"{stem}.json", result.to_json() + "\n")
-        _write(out / f"{stem}.csv", result.to_csv())
+        write_text(out / f"{stem}.json", result.to_json() + "\n")
+        write_text(out / f"{stem}.csv", result.to_csv())
         save_figure(xy_figure(result, title=f"Paper {figure}: {result.scenario_name}"), out / f"{stem}_xy.png")
         print(summary(result))
         rows.append((figure, result))
     table = metrics_markdown(rows)
-    _write(out / "metrics.md", table)
+    write_text(out / "metrics.md", table)
     print()
     print(table, end="")
 
@@ -332,7 +358,7 @@ def cmd_paper(args: argparse.Namespace) -> int:
             comparison = compare(scenarios[name], feedback=feedback, progress=progress)
             stem = name.replace("paper_", "")
             mode = "state feedback" if feedback == "state" else "output feedback"
-            _write(out / f"comparison_{stem}.json", comparison.to_json() + "\n")
+            write_text(out / f"comparison_{stem}.json", comparison.to_json() + "\n")
             save_figure(paths_figure(comparison.results(),
                                      title=f"Paper {figure} scenario: the three laws, {mode}"),
                         out / f"comparison_{stem}_paths.png")
@@ -343,7 +369,7 @@ def cmd_paper(args: argparse.Namespace) -> int:
                          f"![{figure}: x-y paths of the three laws](comparison_{stem}_paths.png)", ""]
             print(f"\n{figure} scenario, {mode}: the three laws")
             print(text_table(header, table_rows), end="")
-    _write(out / "comparison.md", "\n".join(sections))
+    write_text(out / "comparison.md", "\n".join(sections))
     print(f"\nwrote {out}/: " + ", ".join(sorted(p.name for p in out.iterdir())))
     print(f"output folder: {out.resolve()}")
     return 0
@@ -453,19 +479,41 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
+    # Warnings are held back while the command runs: a failure is one line on stderr with
+    # nothing before it; a command that succeeds shows them at its end.
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("default")
+        status = _run(args)
+    if status == 0:
+        for w in caught:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno, w.file, w.line)
+    return status
+
+
+def _run(args: argparse.Namespace) -> int:
+    """The command's exit status; every exception becomes one line on stderr."""
     try:
         return args.handler(args)
-    except ValueError as error:
-        return _fail(error, 2)
-    except _core.HinfError as error:
-        return _fail(error, 3)
     except BrokenPipeError:
         # The reader went away (e.g. `| head`): stop quietly, as other command-line tools do.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except ValueError as error:  # bad input (hinf::InputError), UnicodeDecodeError included
+        return _fail(error, 2)
+    except _core.HinfError as error:  # numerical failure
+        return _fail(error, 3)
+    except MemoryError:
+        return _fail(OUT_OF_MEMORY, 2)
+    except OSError as error:  # an output that cannot be written (a full disk, ...)
+        message = error.strerror or str(error)
+        return _fail(f"'{error.filename}': {message}" if error.filename else message, 2)
+    except KeyboardInterrupt:
+        return _fail("interrupted", 130)
+    except Exception as error:  # noqa: BLE001 - a bug: still one line, exit status 1
+        return _fail(f"internal error: {type(error).__name__}: {error}", 1)
 
 
-def _fail(error: Exception, status: int) -> int:
+def _fail(error: Exception | str, status: int) -> int:
     message = " ".join(str(error).split()) or type(error).__name__
     print(f"hinf-cpp: error: {message}", file=sys.stderr)
     return status

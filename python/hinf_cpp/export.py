@@ -32,15 +32,17 @@ import csv
 import dataclasses
 import io
 import json
+import os
 import pathlib
 from typing import Any
 
 import numpy as np
 
 from . import _core
+from .outputs import atomic_output, write_text
 
-__all__ = ["FORMAT", "RunData", "component_names", "load_csv", "load_json", "load_npz", "save_csv",
-           "save_json", "save_npz", "time_series"]
+__all__ = ["FORMAT", "RunData", "component_names", "load_csv", "load_json", "load_npz", "npz_path",
+           "save_csv", "save_json", "save_npz", "time_series"]
 
 FORMAT = "hinf_cpp-run/1"
 
@@ -127,25 +129,29 @@ def _meta(result: _core.RunResult) -> dict[str, Any]:
     }
 
 
-def _path(path: str | pathlib.Path) -> pathlib.Path:
+def npz_path(path: str | pathlib.Path) -> pathlib.Path:
+    """The file :func:`save_npz` writes for `path`: `path` itself, with ``.npz`` appended when
+    it has another suffix (as ``numpy.savez_compressed`` names files)."""
+    if os.fspath(path) == "":
+        raise ValueError("an output file name is empty")
     path = pathlib.Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    return path
+    return path if path.suffix == ".npz" else path.with_name(path.name + ".npz")
 
 
 def save_npz(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
-    """Writes every time series, Z(t) on the grid and the metadata (JSON) to a compressed NPZ.
+    """Writes every time series, Z(t) on the grid and the metadata (JSON) to a compressed NPZ,
+    whole or not at all.
 
-    ``numpy.savez_compressed`` appends ``.npz`` to a name without it; the path written is
-    returned.
+    ``.npz`` is appended to a name without it (:func:`npz_path`); the path written is returned.
     """
-    path = _path(path)
+    path = npz_path(path)
     arrays = time_series(result)
     if result.solution is not None:
         arrays["Z"] = np.asarray(result.solution.Z(arrays["t"]))
     arrays["meta"] = np.array(json.dumps(_meta(result)))
-    np.savez_compressed(path, **arrays)
-    return path if path.suffix == ".npz" else path.with_name(path.name + ".npz")
+    with atomic_output(path) as handle:
+        np.savez_compressed(handle, **arrays)
+    return path
 
 
 def load_npz(path: str | pathlib.Path) -> RunData:
@@ -186,9 +192,7 @@ def save_csv(result: _core.RunResult, path: str | pathlib.Path, digits: int | No
             [(f"{name}.{c}", values[:, j]) for j, c in enumerate(names[name])]
         for variable, column in columns:
             writer.writerows(zip(times, [variable] * len(times), (_text(v, digits) for v in column)))
-    path = _path(path)
-    path.write_text(buffer.getvalue())
-    return path
+    return write_text(path, buffer.getvalue())
 
 
 def load_csv(path: str | pathlib.Path) -> RunData:
@@ -239,9 +243,7 @@ def load_csv(path: str | pathlib.Path) -> RunData:
 
 def save_json(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
     """Writes the results file (``RunResult.to_json()``, shared/scenarios.md)."""
-    path = _path(path)
-    path.write_text(result.to_json() + "\n")
-    return path
+    return write_text(path, result.to_json() + "\n")
 
 
 def load_json(path: str | pathlib.Path) -> dict:

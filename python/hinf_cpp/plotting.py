@@ -18,6 +18,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import _core
+from .outputs import atomic_output
 
 __all__ = [
     "controls_figure",
@@ -390,19 +391,24 @@ def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figu
 
 
 def save_figure(fig: Figure, path: str | pathlib.Path) -> pathlib.Path:
-    """Saves a figure; the format is the suffix: .png (150 dpi), .pdf and .svg (vector), or
-    any other format matplotlib writes.
+    """Saves a figure, whole or not at all (:func:`hinf_cpp.outputs.atomic_output`); the
+    format is the suffix: .png (150 dpi), .pdf and .svg (vector), or any other format
+    matplotlib writes.
 
     Raises
     ------
     ValueError
-        A suffix that is not an image format (the message lists the formats).
+        A suffix that is not an image format (the message lists the formats), or a path that
+        cannot be written (a directory, below a plain file).
+    OSError
+        The file could not be written (a full disk); the message names the path.
     """
     path = pathlib.Path(path)
     formats = fig.canvas.get_supported_filetypes()
-    if path.suffix.lower().lstrip(".") not in formats:
+    suffix = path.suffix.lower().lstrip(".")
+    if suffix not in formats:
         raise ValueError(f"figure file '{path}': the suffix must name an image format "
                          f"(.png, .pdf, .svg, ...; supported: {', '.join(sorted(formats))})")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=150)
+    with atomic_output(path) as handle:  # whole or not at all
+        fig.savefig(handle, format=suffix, dpi=150)
     return path

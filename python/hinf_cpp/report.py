@@ -27,6 +27,7 @@ from typing import Callable, Sequence
 from . import _core
 from .compare import METRICS, Comparison, compare
 from .export import save_csv, save_json, save_npz
+from .outputs import check_output_folder, write_text
 from .plotting import (controls_figure, coupling_figure, eigenvalues_figure, errors_figure, paths_figure,
                        save_figure)
 from .progress import ProgressCallback
@@ -110,7 +111,8 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
     scenario : Scenario
         The scenario.
     out : path
-        The folder (created if needed; files of the same names are overwritten).
+        The folder (created if needed; files of the same names are overwritten, each written
+        whole or not at all). A path that cannot be a folder is a ValueError before the runs.
     controllers, feedback, worst_case
         As in :func:`~hinf_cpp.compare.compare`.
     pdf : bool
@@ -119,8 +121,7 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
         ``progress(index, total, message)``: the runs, then each file group written.
     """
     folder = pathlib.Path(out)
-    if folder.exists() and not folder.is_dir():
-        raise ValueError(f"the report folder '{folder}' exists and is not a folder")
+    check_output_folder(folder)
     comparison = compare(scenario, controllers, feedback=feedback, worst_case=worst_case, progress=progress)
     folder.mkdir(parents=True, exist_ok=True)
     figures = _figures(comparison)
@@ -139,9 +140,7 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
     for name, text in [("metrics.md", markdown_table(header, rows)), ("metrics.csv", csv_table(*comparison.table(keys=True))),
                        ("comparison.json", comparison.to_json() + "\n"),
                        ("report.md", _report_markdown(comparison, figures, scenario))]:
-        path = folder / name
-        path.write_text(text)
-        files.append(path)
+        files.append(write_text(folder / name, text))
     for name, _, factory in figures:
         advance(f"drawing {name}")
         fig = factory()

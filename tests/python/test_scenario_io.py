@@ -1,11 +1,16 @@
-"""Scenario files (shared/scenarios.md): the Python reader (hc.load_scenario, tomllib) and the
-C++ reader (hc.parse_scenario_toml, the one hinf-sim uses) must build identical scenarios and
-reject the same bad files with a ValueError naming the key. Also bad inputs to the Python API."""
+"""Scenario files (shared/scenarios.md), read by the one C++ reader: a file (hc.load_scenario,
+the reader of hinf-sim) and its dictionary form (hc.scenario_from_dict of what tomllib reads,
+written back to TOML) build identical scenarios and reject the same bad files with a
+ValueError naming the key; both command lines print that same message. Also bad inputs to the
+Python API."""
 
 from __future__ import annotations
 
 import math
 import pathlib
+import subprocess
+import sys
+import tomllib
 
 import numpy as np
 import pytest
@@ -29,15 +34,15 @@ def write(tmp_path: pathlib.Path, name: str, text: str) -> pathlib.Path:
     return path
 
 
-def python_reader(path: pathlib.Path) -> hc.Scenario:
+def file_reader(path: pathlib.Path) -> hc.Scenario:
     return hc.load_scenario(path)
 
 
-def cpp_reader(path: pathlib.Path) -> hc.Scenario:
-    return hc.parse_scenario_toml(path.read_text(), str(path))
+def dict_reader(path: pathlib.Path) -> hc.Scenario:
+    return hc.scenario_from_dict(tomllib.loads(path.read_text()), str(path))
 
 
-READERS = {"python": python_reader, "c++": cpp_reader}
+READERS = {"file": file_reader, "dict": dict_reader}
 
 
 # ---- comparing scenarios ----
@@ -221,16 +226,15 @@ VARIANTS = {
 
 
 @pytest.mark.parametrize("variant", list(VARIANTS))
-def test_readers_agree(tmp_path, variant):
+def test_file_and_dict_agree(tmp_path, variant):
+    """The dictionary form, written back to TOML, is the same scenario, number for number."""
     path = write(tmp_path, f"{variant}.toml", VARIANTS[variant])
-    a, b = python_reader(path), cpp_reader(path)
-    assert_same_scenario(a, b)
-    assert_same_run(hc.run_scenario(a), hc.run_scenario(b))
+    assert_same_scenario(file_reader(path), dict_reader(path))
 
 
-def test_readers_agree_on_measurement_section(tmp_path):
+def test_file_and_dict_agree_on_measurement_section(tmp_path):
     path = write(tmp_path, "fig2like.toml", MEASUREMENT_TEXT)
-    a, b = python_reader(path), cpp_reader(path)
+    a, b = file_reader(path), dict_reader(path)
     assert_same_scenario(a, b)
     assert a.measurement.sigma == 0.5 and a.measurement.seed == 20000601
     assert a.measurement.filter_A == "desired"
@@ -267,7 +271,7 @@ def test_frequency_hz_equals_omega(tmp_path):
         h = a.disturbance.channels[0].harmonics[0]
         assert h.omega == pytest.approx(2 * math.pi * 0.2, rel=1e-15) and h.cosine
         assert_same_scenario(a, b)
-    assert_same_run(hc.run_scenario(python_reader(hz)), hc.run_scenario(cpp_reader(omega)))
+    assert_same_run(hc.run_scenario(file_reader(hz)), hc.run_scenario(dict_reader(omega)))
 
 
 def test_tabulated_signal_is_the_natural_cubic_spline(tmp_path):
@@ -295,7 +299,7 @@ def test_harmonic_signal_formula():
     assert s(np.float32(1.25)) == s(np.array([np.float32(1.25)]))[0]
 
 
-# ---- bad scenario files: both readers, ValueError naming the key ----
+# ---- bad scenario files: ValueError naming the key, the same message everywhere ----
 
 def drop_section(text: str, header: str) -> str:
     start = text.index(header)
@@ -381,24 +385,37 @@ def test_bad_scenario_rejected_naming_the_key(tmp_path, case):
     path = write(tmp_path, "bad.toml", text)
     results = {name: reader_error(reader, path) for name, reader in READERS.items()}
     for name, (stage, message) in results.items():
-        assert stage is not None, f"{name} reader accepted the scenario"
+        assert stage is not None, f"{name}: the scenario was accepted"
         for word in words:
-            assert word in message, f"{name} reader: {word!r} not in {message!r}"
+            assert word in message, f"{name}: {word!r} not in {message!r}"
         if stage == "read":
-            assert message.count(str(path)) == 1, f"{name} reader: the file is not named once in {message!r}"
-    # The two readers fail at the same stage with the same message (scenario.py promises
-    # "error messages match the C++ reader").
-    assert results["python"] == results["c++"]
+            assert message.count(str(path)) == 1, f"{name}: the file is not named once in {message!r}"
+    assert results["file"] == results["dict"]
+
+
+BIN = pathlib.Path(sys.executable).parent
+
+
+@pytest.mark.skipif(not ((BIN / "hinf-sim").exists() and (BIN / "hinf-cpp").exists()),
+                    reason="hinf-sim / hinf-cpp are not installed next to this Python")
+@pytest.mark.parametrize("case", list(BAD_CASES))
+def test_bad_scenario_same_message_from_both_front_ends(tmp_path, case):
+    """hinf-sim and hinf-cpp run print the library's message, one line, exit status 2."""
+    path = write(tmp_path, "bad.toml", BAD_CASES[case][0])
+    _, expected = reader_error(file_reader, path)
+    for program, args in (("hinf-sim", [BIN / "hinf-sim", path]), ("hinf-cpp", [BIN / "hinf-cpp", "run", path])):
+        result = subprocess.run([str(a) for a in args], capture_output=True, text=True, timeout=120)
+        assert result.returncode == 2, (program, result.stderr)
+        assert result.stderr == f"{program}: error: {expected}\n"
 
 
 def test_toml_syntax_error_names_the_line(tmp_path):
     path = write(tmp_path, "syntax.toml", mutate(PAPER_TEXT, "gamma = 5.0", "gamma = = 5.0"))
     line = PAPER_TEXT.splitlines().index("gamma = 5.0") + 1
-    for name, reader in READERS.items():
-        with pytest.raises(ValueError, match="invalid TOML") as info:
-            reader(path)
-        assert str(line) in str(info.value), name
-        assert str(path) in str(info.value), name
+    with pytest.raises(ValueError, match="invalid TOML") as info:
+        hc.load_scenario(path)
+    assert f"{path}:{line}:" in str(info.value)
+    assert "[controller] gamma" in str(info.value)
 
 
 def test_missing_file():

@@ -7,11 +7,23 @@
 
 namespace hinf {
 
-// Parses a scenario; unknown keys and wrong types are an InputError naming the key.
+// The one scenario reader: hinf-sim and the Python package (hinf_cpp.load_scenario,
+// scenario_from_dict) both read scenarios through it, so they accept and reject the same files
+// with the same messages.
+//
+// Parses a scenario (UTF-8 TOML; a leading byte-order mark is allowed). Everything wrong is an
+// InputError naming the source, and the key where there is one: unknown keys, wrong types,
+// integers beyond 64 bits, non-finite numbers (only gamma may be inf), empty arrays, noise
+// channels of the model in [disturbance], keys nested too deeply, text that is not UTF-8.
 // source names the text in messages (usually the file path); the scenario name defaults to
 // the file's stem.
 Scenario parse_scenario_toml(const std::string& text, const std::string& source);
+// Reads and parses a scenario file; a file that cannot be read (missing, a directory) is an
+// InputError naming the path.
 Scenario load_scenario_toml(const std::string& path);
+// A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
+// scenario), e.g. "kappa = { offset = 1.0 }".
+Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source);
 
 // The results file of scenarios.md (one JSON object, matrices as nested row-major lists,
 // non-finite numbers as null).
@@ -21,6 +33,13 @@ std::string results_json(const RunResult& result, int indent = 2);
 // errors (suffix _e_hat), the measurements y1.., sigma_min_eig, sigma_max_eig, rho_sigma_z.
 std::string results_csv(const RunResult& result);
 
+// Checks, before any computation, that an output file can be written at path: not empty,
+// not a directory, and the nearest existing folder above it is a writable folder (missing
+// folders are created by write_text_file). InputError naming the path otherwise.
+void check_output_path(const std::string& path);
+// Writes a file whole or not at all: a temporary file in the same folder, renamed over path
+// once complete (an existing device or pipe, such as /dev/stdout, is written in place).
+// Creates missing folders. InputError naming the path on any failure (a full disk included).
 void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace hinf
