@@ -21,8 +21,8 @@ std::size_t memory_budget_bytes() {
 void check_memory(double bytes, const std::string& what, const std::string& advice) {
   const double budget = static_cast<double>(memory_budget_bytes());
   if (!(bytes <= budget))
-    throw InputError(str_cat(what, " would need ", bytes / 1e9, " GB, more than a quarter of this machine's ",
-                             4.0 * budget / 1e9, " GB: ", advice));
+    throw InputError(str_cat(what, " would need ", bytes / 1e9, " GB, more than a quarter of this machine's memory (",
+                             4.0 * budget / 1e9, " GB): ", advice));
 }
 
 }  // namespace hinf
