@@ -81,6 +81,9 @@ int main(int argc, char** argv) {
               << ", L2 gain = " << m.l2_gain;
     if (result.gamma_star) std::cout << ", gamma* = " << *result.gamma_star;
     std::cout << " (total " << result.timing.total * 1e3 << " ms)\n";
+    if (result.simulation.status != hinf::RunStatus::Completed)
+      std::cerr << "hinf-sim: warning: the run " << hinf::to_string(result.simulation.status) << ": "
+                << result.simulation.status_message << "\n";
     return 0;
   } catch (const hinf::InputError& e) {
     return fail(2, e.what());

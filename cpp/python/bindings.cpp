@@ -823,7 +823,7 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
       .def_readonly("status_message", &SimulationResult::status_message)
       .def_readonly("integrator", &SimulationResult::integrator)
       .def_readonly("stats", &SimulationResult::stats)
-      .def_property_readonly("q_e", [](const SimulationResult& r) { return RowMat(r.q - r.q_d); });
+      .def_property_readonly("q_e", &SimulationResult::q_e, "q - q_d, the heading component wrapped to (-pi, pi]");
 
   m.def("simulate_state_feedback",
         [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance,

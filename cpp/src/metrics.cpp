@@ -54,9 +54,8 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
   Metrics metrics;
   const Eigen::Index count = run.t.size();
   if (count == 0) return metrics;
-  const int n = static_cast<int>(run.q.cols()), heading = model.heading_index();
-  RowMat q_e(count, n);
-  for (Eigen::Index k = 0; k < count; ++k) tracking_error(n, heading, run.q.row(k).data(), run.q_d.row(k).data(), q_e.row(k).data());
+  const int heading = model.heading_index();
+  const RowMat q_e = run.q_e();
   const RowMat u_e = run.u - run.u_d;
 
   const std::vector<int> position = model.position_indices();

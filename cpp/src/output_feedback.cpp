@@ -275,6 +275,7 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   const int heading = model.heading_index();
 
   SimulationResult r;
+  r.heading_index = heading;
   r.q.resize(count, n);
   r.q_hat.resize(count, n);
   r.q_d.resize(count, n);

@@ -315,20 +315,30 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
           return StepAction::Continue;
         });
   } catch (const SolverError& e) {
-    // A failure may be an escape that the threshold has not caught yet.
-    decide_escape();
-    if (!store) return {PiecewisePolynomial(p), SolveStats{}};
+    // A failure may be an escape that the threshold has not caught yet: a step size that
+    // collapses, or running out of steps while X grows. Out of steps with a moderate X is only
+    // that, and is reported as such.
+    const bool growing = max_abs(x.data(), p) > 1e3 * scale;
+    if (growing || !is_too_much_work(e)) {
+      try {
+        decide_escape();
+      } catch (const SolverError&) {
+        // The escape test could not be completed either: report the solve's own failure.
+      }
+    }
     std::string cause = e.what();
     while (!cause.empty() && (cause.back() == '.' || cause.back() == ' ')) cause.pop_back();
     std::string advice;
     if (std::isinf(gamma))
       advice = ". The solution grows too large to integrate (gamma = inf): rescale the weights or the model";
-    else
+    else if (no_escape && (growing || large))
       advice = str_cat(". The solution has no conjugate point (checked on W = c (X + c I)^-1 from t = ", t_last,
                        ") but grows too large to integrate near t = ", e.t(), ": gamma = ", gamma,
                        " is very close to the smallest admissible value; increase it");
-    throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)", " solve failed: ",
-                              cause, advice),
+    // The escape test covered the rest of the horizon: the question "does X escape?" is answered.
+    if (!store && no_escape) return {PiecewisePolynomial(p), SolveStats{}};
+    throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)",
+                              store ? " solve failed: " : " conjugate-point test failed: ", cause, advice),
                       e.t(), e.flag());
   }
   dense.finalize();

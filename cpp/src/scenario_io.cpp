@@ -604,6 +604,8 @@ std::string results_json(const RunResult& r, int indent) {
   j["Z_max_eig"] = number(r.Z_max_eig);
   j["gamma_star"] = r.gamma_star ? number(*r.gamma_star) : nlohmann::json(nullptr);
   j["coupling_violation_t"] = number(r.simulation.coupling_violation_t);
+  j["status"] = to_string(r.simulation.status);
+  j["status_message"] = r.simulation.status_message;
   j["metrics"] = {
       {"rms_position_error_last_half", number(mt.rms_position_error_last_half)},
       {"max_position_error", number(mt.max_position_error)},

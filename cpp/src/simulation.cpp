@@ -20,6 +20,13 @@ std::string to_string(RunStatus status) {
   return "unknown";
 }
 
+RowMat SimulationResult::q_e() const {
+  RowMat errors(q.rows(), q.cols());
+  for (Eigen::Index k = 0; k < q.rows(); ++k)
+    tracking_error(static_cast<int>(q.cols()), heading_index, q.row(k).data(), q_d.row(k).data(), errors.row(k).data());
+  return errors;
+}
+
 long output_count(double t0, double tf, double dt) {
   check_horizon(t0, tf);
   require(std::isfinite(dt) && dt > 0.0, "the output step dt must be > 0, got ", dt);
@@ -102,6 +109,7 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   };
 
   SimulationResult result;
+  result.heading_index = heading;
   result.q.resize(count, n);
   result.q.row(0) = q0.transpose();
   Vec y = q0;

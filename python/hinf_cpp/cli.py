@@ -65,6 +65,8 @@ def summary(result: _core.RunResult) -> str:
     if math.isfinite(result.simulation.coupling_violation_t):
         lines.append(f"  coupling condition rho(Sigma Z) < gamma^2 violated from "
                      f"t = {result.simulation.coupling_violation_t:g}")
+    if result.simulation.status != "completed":
+        lines.append(f"  status: {result.simulation.status} ({result.simulation.status_message})")
     if result.gamma_star is not None:
         lines.append(f"  gamma* = {result.gamma_star:.6g}")
     width = max(len(name) for name in METRIC_NAMES)
@@ -119,6 +121,9 @@ def cmd_run(args: argparse.Namespace) -> int:
 
         save_figure(xy_figure(result), args.plot)
     print(summary(result))
+    if result.simulation.status != "completed":
+        print(f"hinf-cpp: warning: the run {result.simulation.status}: {result.simulation.status_message}",
+              file=sys.stderr)
     return 0
 
 

@@ -135,12 +135,13 @@ def wrap_angles(angle: np.ndarray | float) -> np.ndarray:
 
 
 def heading_error(result: _core.RunResult) -> np.ndarray | None:
-    """psi - psi_d on the output grid, continuous (psi as integrated, not wrapped);
-    None when the model has no heading."""
+    """psi - psi_d on the output grid as a continuous function of time: it starts at the
+    wrapped initial error (in (-pi, pi]) and follows the rotation from there (a full turn adds
+    2 pi); None when the model has no heading."""
     index = result.trajectory.model.heading_index()
     if index < 0:
         return None
-    return np.asarray(result.simulation.q_e)[:, index]
+    return np.unwrap(np.asarray(result.simulation.q_e)[:, index])
 
 
 def _last_half(t: np.ndarray) -> np.ndarray:

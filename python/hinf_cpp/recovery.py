@@ -1,8 +1,9 @@
 """Recovery from poor initial conditions, and whether a law turns the ship around.
 
-Definitions (``e(t) = psi(t) - psi_d(t)`` is the heading error as integrated, continuous, not
-wrapped; ``wrap`` maps to (-pi, pi]; "last half" = the output-grid points with
-t >= (t0 + tf)/2):
+Definitions (``e(t) = psi(t) - psi_d(t)`` is the heading error as a continuous function of
+time that starts at the wrapped initial error, in (-pi, pi], and follows the rotation from
+there, so a full turn of the ship changes it by 2 pi; ``wrap`` maps to (-pi, pi]; "last half" =
+the output-grid points with t >= (t0 + tf)/2):
 
 recovers
     the final position error ``|p(tf) - p_d(tf)|`` is below ``position_tolerance``
@@ -19,8 +20,8 @@ turns around
     unwinding to 0; **or** the ship tracks backwards: ``|wrap(e)| > pi/2`` on more than
     ``backwards_fraction`` (default one half) of the last half. For a start at exactly
     +-180 degrees both rotations are half turns; by this definition unwinding towards
-    e = 0 is not a turn-around and winding towards +-2 pi is (the linearized laws regulate
-    the unwrapped error e to 0).
+    e = 0 is not a turn-around and winding towards +-2 pi is (the laws regulate the wrapped
+    error to 0, so a start 350 degrees off is a 10 degree error).
 settling time
     the first grid time after which the position error stays below ``position_tolerance``
     (None when the final error is not below it).
@@ -81,7 +82,7 @@ def turn_around(t: Sequence[float], heading_error: Sequence[float], margin: floa
     t : array of float
         Strictly increasing times (s), at least two.
     heading_error : array of float
-        e(t) = psi - psi_d, continuous (not wrapped), rad.
+        e(t) = psi - psi_d, continuous, starting in (-pi, pi] (see the module docstring), rad.
     margin : float
         How far (rad) |e| must go beyond max(pi, |e(t0)|) to count as passing through +-pi.
     backwards_fraction : float
@@ -130,11 +131,11 @@ class RecoveryVerdict:
     recovers: bool
     turns_around: bool
     initial_position_error: float   # m
-    initial_heading_error: float    # rad, e(t0)
+    initial_heading_error: float    # rad, e(t0), in (-pi, pi]
     final_position_error: float     # m
     final_heading_error: float      # rad, |wrap(e(tf))|
     settling_time: float | None     # s after t0
-    max_abs_heading_error: float    # rad, max |e(t)|, unwrapped
+    max_abs_heading_error: float    # rad, max |e(t)| of the continuous error
     turn: TurnAround | None
     result: _core.RunResult | None = None
     error: str | None = None

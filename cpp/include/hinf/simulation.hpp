@@ -52,8 +52,13 @@ struct SimulationResult {
   double coupling_violation_t = NAN;  // first output time with rho(Sigma Z) >= gamma^2, if any
   RunStatus status = RunStatus::Completed;
   std::string status_message;  // why the run stopped early; empty when completed
+  int heading_index = -1;      // the model's heading component (angles.hpp), -1 if none
   std::string integrator;      // how the closed loop was integrated
   SolveStats stats;
+
+  // The tracking errors q - q_d, one row per output time, the heading component wrapped to
+  // (-pi, pi].
+  RowMat q_e() const;
 };
 
 // The divergence bound of the run from q0 along the trajectory (see above).
