@@ -12,6 +12,27 @@ from scipy import linalg
 
 METHODS = ("bdf", "adams", "erk")
 
+# ---- tolerances for comparisons that involve no integrator ----
+#
+# Two DIFFERENT evaluations of one exact formula (C++ against NumPy, another summation order,
+# another eigenvalue algorithm, with or without fused multiply-add, another BLAS kernel) each
+# differ from the exact value by a few units in the last place (ulps) of the size of the terms
+# per operation: tens of ulps for the short computations compared in these tests (matrices of
+# order <= 8, a few dozen operations). They are compared at ROUNDOFF times the size of the
+# terms: a factor of ten or more above that on any IEEE machine, and still about 1e10 below
+# the effect of any mistake in a formula.
+EPS = float(np.finfo(float).eps)  # 2.2e-16, one ulp of 1.0
+ROUNDOFF = 1000.0 * EPS  # 2.2e-13
+
+
+def summation_rtol(count: int) -> float:
+    """Relative tolerance for two evaluations of a sum (or trapezoid rule) of `count`
+    nonnegative terms in different orders (C++ loop against NumPy's pairwise np.sum): each is
+    within (count - 1) eps of the exact sum (Higham, Accuracy and Stability of Numerical
+    Algorithms, 2nd ed., eq. 4.4); 4 count eps covers both and a ratio or square root of such
+    sums."""
+    return 4.0 * count * EPS
+
 PAPER_Q_D0 = np.array([1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
 PAPER_T0, PAPER_TF = 0.0, 40.0
 PAPER_GAMMA = 5.0
