@@ -180,6 +180,10 @@ std::vector<double> merged_samples(const SymmetricSolution& a, const SymmetricSo
 }  // namespace
 
 std::pair<double, double> max_rho_sigma_z(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma) {
+  require(Z.n() == Sigma.n(), "max_rho_sigma_z: Z is ", Z.n(), " x ", Z.n(), " but Sigma is ", Sigma.n(), " x ",
+          Sigma.n(), ": pass the GRDE and filter solutions of the same model");
+  require(Z.t0() == Sigma.t0() && Z.tf() == Sigma.tf(), "max_rho_sigma_z: Z is on [", Z.t0(), ", ", Z.tf(),
+          "] but Sigma on [", Sigma.t0(), ", ", Sigma.tf(), "]: pass solutions of the same horizon");
   const std::vector<double> times = merged_samples(Z, Sigma);
   if (Z.n() == 6) return detail::extremum_over(times, [&](double t) { return rho_at<6>(Z, Sigma, t); }, -1.0);
   return detail::extremum_over(times, [&](double t) { return rho_at<Eigen::Dynamic>(Z, Sigma, t); }, -1.0);

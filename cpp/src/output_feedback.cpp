@@ -168,6 +168,8 @@ class OutputFeedbackSystem {
   void set_matrices(double t) {
     B_ = model_.B(t);
     D_ = model_.D(t);
+    check_shape(B_, n_, m_, str_cat("B(", t, ") of the model '", model_.name(), "'"));
+    check_shape(D_, n_, nw_, str_cat("D(", t, ") of the model '", model_.name(), "'"));
     B_sparse_ = SparseMatrix(B_);
     D_sparse_ = SparseMatrix(D_);
     DDt_ = D_ * D_.transpose();
@@ -484,6 +486,8 @@ SimulationResult simulate_output_feedback(const RiccatiSolution& grde, Controlle
   check_finite(noise, "noise");
   require(controller.m() == model.m(), "the controller gives ", controller.m(), " inputs, the model has ",
           model.m());
+  require(controller.n() == 0 || controller.n() == n, "the controller acts on states of ", controller.n(),
+          " numbers, the model '", model.name(), "' has ", n);
   if (n == 6)
     return simulate_impl<6>(grde, controller, disturbance, q0, noise, options, output_dt, solver);
   return simulate_impl<Eigen::Dynamic>(grde, controller, disturbance, q0, noise, options, output_dt, solver);

@@ -252,6 +252,10 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   std::vector<double> x(static_cast<std::size_t>(p));
   pack_symmetric(X_start, x.data());
   const double scale = solution_scale(trajectory, kind, Q, X_start);
+  // atol is meant for solutions of order 1: a smaller solution gets a proportionally smaller one
+  // (Qf = 1e-8 I and Q = 4e-5 I with atol = 1e-10 put gamma* 1.5e-5 too high).
+  SolverOptions x_options = options;
+  x_options.atol = options.atol * std::min(1.0, scale);
 
   // With gamma = inf, S >= 0 and X cannot escape (it only grows without bound in infinite time).
   const bool can_escape = std::isfinite(gamma);
@@ -279,7 +283,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   StepStats step_stats;
   try {
     step_stats = integrate(
-        options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
+        x_options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
         [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
         t_end, x.data(), [&](const DensePiece& piece) {
           const double t = piece.t_end();
@@ -462,6 +466,7 @@ void SymmetricSolution::packed(double t, double* out, std::size_t* cursor) const
 
 void SymmetricSolution::eigenvalue_range(const std::vector<double>& times, double& lambda_min,
                                          double& lambda_max) const {
+  require(!times.empty(), "eigenvalue_range needs at least one time");
   lambda_min = std::numeric_limits<double>::infinity();
   lambda_max = -std::numeric_limits<double>::infinity();
   if (n_ == 6) extremes_over<6>(X_, times, lambda_min, lambda_max);

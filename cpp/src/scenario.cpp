@@ -46,6 +46,15 @@ void Scenario::validate() const {
   check_symmetric_weight(Q, n, "Q", false);
   check_symmetric_weight(Qf, n, "Qf", true);
   require(disturbance.dim() == nw, "[disturbance] has ", disturbance.dim(), " channels, the model has ", nw);
+  // The measurement-noise channels carry the noise of [measurement], nothing else.
+  for (int c : model->noise_channels()) {
+    const bool zero = disturbance.is_function()
+                          ? disturbance(t0)[c] == 0.0 && disturbance(0.5 * (t0 + tf))[c] == 0.0
+                          : disturbance.channels()[static_cast<std::size_t>(c)].is_constant() &&
+                                disturbance.channels()[static_cast<std::size_t>(c)].offset() == 0.0;
+    require(zero, "[disturbance] w", c + 1, " is a measurement-noise channel of the model '", model->name(),
+            "': its noise is set in [measurement] (sigma), not as a disturbance");
+  }
   check_size(initial_q0, n, "[initial] q0");
   solver.validate();
   require(std::isfinite(output_dt) && output_dt > 0.0, "[output] dt must be > 0, got ", output_dt);

@@ -70,6 +70,8 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   const int n = model.n(), m = model.m(), nw = model.nw();
   check_size(q0, n, "the initial state q0");
   require(controller.m() == m, "the controller gives ", controller.m(), " inputs, the model has ", m);
+  require(controller.n() == 0 || controller.n() == n, "the controller acts on states of ", controller.n(),
+          " numbers, the model '", model.name(), "' has ", n);
   require(disturbance.dim() == nw, "the disturbance has ", disturbance.dim(),
           " channels, the model '", model.name(), "' has ", nw);
   options.validate();
@@ -97,12 +99,18 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
       B_sparse.add_product(u.data(), dydt);
       D_sparse.add_product(w.data(), dydt);
     } else {
-      out.noalias() += model.B(t) * u + model.D(t) * w;
+      const Mat Bt = model.B(t), Dt = model.D(t);
+      check_shape(Bt, n, m, str_cat("B(", t, ") of the model '", model.name(), "'"));
+      check_shape(Dt, n, nw, str_cat("D(", t, ") of the model '", model.name(), "'"));
+      out.noalias() += Bt * u + Dt * w;
     }
   };
   auto jacobian = [&](double t, const double* yy, const double*, double* Jout) {
     Eigen::Map<const Vec> q(yy, n);
-    if (!constant_BD) B = model.B(t);
+    if (!constant_BD) {
+      B = model.B(t);
+      check_shape(B, n, m, str_cat("B(", t, ") of the model '", model.name(), "'"));
+    }
     model.dfdq(t, q, J);
     controller.control_jacobian(t, q, dudq);
     Eigen::Map<Mat>(Jout, n, n) = J + B * dudq;

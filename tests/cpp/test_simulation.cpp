@@ -19,6 +19,7 @@
 #include "hinf/signal.hpp"
 #include "hinf/simulation.hpp"
 #include "hinf/trajectory.hpp"
+#include "tolerances.hpp"
 
 namespace {
 
@@ -62,8 +63,8 @@ TEST(OutputGrid, EndsExactlyAtTfWithTheRequestedSpacing) {
   }
   // The partial interval of {0, 1, 0.3}.
   const std::vector<double> g = hinf::output_grid(0.0, 1.0, 0.3);
-  EXPECT_NEAR(g[3], 0.9, 1e-15);
-  EXPECT_NEAR(g[4] - g[3], 0.1, 1e-15);
+  EXPECT_NEAR(g[3], 0.9, hinf_test::kRoundoff);  // 3 x 0.3 in floating point
+  EXPECT_NEAR(g[4] - g[3], 0.1, hinf_test::kRoundoff);
 }
 
 TEST(OutputGrid, BadInputsThrow) {
@@ -144,10 +145,10 @@ TEST_F(PaperShip, DesiredTrajectoryMatchesIndependentRk4) {
   // u_d and A_e are the documented functions of q_d(t).
   const Vec ud = trajectory_->u_d(7.0);
   EXPECT_EQ(ud[0], 1.0);
-  EXPECT_NEAR(ud[1], 0.3 * std::sin(1.4), 1e-15);
+  EXPECT_NEAR(ud[1], 0.3 * std::sin(1.4), hinf_test::kRoundoff * 0.3);
   Mat J(6, 6);
   hinf::ShipModel().dfdq(7.0, trajectory_->q_d(7.0), J);
-  EXPECT_EQ(trajectory_->A_e(7.0), J);
+  EXPECT_EQ(trajectory_->A_e(7.0), J);  // the same code on the same q_d(7)
 }
 
 TEST_F(PaperShip, ZeroErrorAndZeroDisturbanceStaysOnTheDesiredTrajectory) {
@@ -195,19 +196,22 @@ TEST_F(PaperShip, InitialErrorDecays) {
       return std::hypot(run.q(k, 3) - run.q_d(k, 3), run.q(k, 4) - run.q_d(k, 4));
     };
     const Eigen::Index last = run.t.size() - 1;
-    EXPECT_NEAR(position_error(0), std::sqrt(2.0), 1e-14);
+    EXPECT_NEAR(position_error(0), std::sqrt(2.0), hinf_test::kRoundoff);  // hypot(-1, -1)
     std::printf("[closed loop] %-5s from the paper's initial error: |p_e| = %.3f at t = 10, %.4f "
                 "at tf\n",
                 hinf::to_string(method).c_str(), position_error(200), position_error(last));
     EXPECT_LT(position_error(last), 0.1 * std::sqrt(2.0)) << hinf::to_string(method);
     // The applied disturbance is the paper's.
-    EXPECT_NEAR(run.w(20, 0), 0.1 * std::cos(2 * M_PI * 0.2 * 1.0), 1e-15);
+    EXPECT_NEAR(run.w(20, 0), 0.1 * std::cos(2 * M_PI * 0.2 * 1.0), hinf_test::kRoundoff * 0.1);
     EXPECT_EQ(run.w(20, 4), 0.0);
     // u = u_d - B'Z(t) (q - q_d) on the grid.
     const Eigen::Index k = 37;
     const Vec qe = (run.q.row(k) - run.q_d.row(k)).transpose();
-    const Vec u_expected = run.u_d.row(k).transpose() - solution_->gain(run.t[k]) * qe;
-    EXPECT_LT((Vec(run.u.row(k).transpose()) - u_expected).cwiseAbs().maxCoeff(), 1e-12);
+    const Mat K = solution_->gain(run.t[k]);
+    const Vec u_expected = run.u_d.row(k).transpose() - K * qe;
+    // The law in the library and here: round-off of the size of its terms.
+    const double terms = run.u_d.row(k).cwiseAbs().maxCoeff() + (K.cwiseAbs() * qe.cwiseAbs()).maxCoeff();
+    EXPECT_LT((Vec(run.u.row(k).transpose()) - u_expected).cwiseAbs().maxCoeff(), hinf_test::kRoundoff * terms);
   }
   // The three integrators agree on the closed loop.
   for (std::size_t i = 1; i < runs.size(); ++i) {
@@ -229,8 +233,12 @@ TEST_F(PaperShip, KappaScalesTheGainAndTheJacobianIsExact) {
     qt[5] += 0.3;
     Vec u(2);
     controller.control(t, qt, u);
-    const Vec expected = trajectory_->u_d(t) - kappa(t) * solution_->gain(t) * (qt - trajectory_->q_d(t));
-    EXPECT_LT((u - expected).cwiseAbs().maxCoeff(), 1e-13) << t;
+    const Mat K = solution_->gain(t);
+    const Vec q_e = qt - trajectory_->q_d(t);
+    const Vec expected = trajectory_->u_d(t) - kappa(t) * K * q_e;
+    // The law in the library and here: round-off of the size of its terms.
+    const double terms = trajectory_->u_d(t).cwiseAbs().maxCoeff() + kappa(t) * (K.cwiseAbs() * q_e.cwiseAbs()).maxCoeff();
+    EXPECT_LT((u - expected).cwiseAbs().maxCoeff(), hinf_test::kRoundoff * terms) << t;
     // du/dq = -kappa K: against central differences of control() (u is affine in q).
     Mat J(2, 6), J_fd(2, 6);
     controller.control_jacobian(t, qt, J);
@@ -243,7 +251,7 @@ TEST_F(PaperShip, KappaScalesTheGainAndTheJacobianIsExact) {
       J_fd.col(j) = (up - um) / 2e-4;
     }
     EXPECT_LT((J - J_fd).cwiseAbs().maxCoeff(), 1e-9) << t;
-    EXPECT_LT((J + kappa(t) * solution_->gain(t)).cwiseAbs().maxCoeff(), 1e-13) << t;
+    EXPECT_LT((J + kappa(t) * K).cwiseAbs().maxCoeff(), hinf_test::kRoundoff * kappa(t) * K.cwiseAbs().maxCoeff()) << t;
   }
 }
 
@@ -366,17 +374,20 @@ TEST(Metrics, ConstantSignalsHaveExactIntegrals) {
   // |q_e|_Q^2 = 1 + 0 + 3*4 + 4*9 + 5*16 + 6*0.25 = 130.5, |u_e|^2 = 5.
   const hinf::Metrics mt = hinf::compute_metrics(hinf::ShipModel(), r, Q);
   const double T = 2.5;
-  EXPECT_NEAR(mt.rms_position_error_last_half, 5.0, 1e-14);
-  EXPECT_NEAR(mt.max_position_error, 5.0, 1e-14);
-  EXPECT_NEAR(mt.final_position_error, 5.0, 1e-14);
-  EXPECT_NEAR(mt.control_l2, std::sqrt(5.0 * T), 1e-14);
-  EXPECT_NEAR(mt.control_error_l2, std::sqrt(5.0 * T), 1e-14);
-  EXPECT_NEAR(mt.disturbance_l2, std::sqrt(0.14 * T), 1e-14);
-  EXPECT_NEAR(mt.l2_gain, std::sqrt((130.5 + 5.0) * T) / std::sqrt(0.14 * T), 1e-12);
+  // A handful of sums and roots of these numbers against the closed forms: round-off of the
+  // values (<= 32).
+  const double tol = hinf_test::kRoundoff * 32.0;
+  EXPECT_NEAR(mt.rms_position_error_last_half, 5.0, tol);
+  EXPECT_NEAR(mt.max_position_error, 5.0, tol);
+  EXPECT_NEAR(mt.final_position_error, 5.0, tol);
+  EXPECT_NEAR(mt.control_l2, std::sqrt(5.0 * T), tol);
+  EXPECT_NEAR(mt.control_error_l2, std::sqrt(5.0 * T), tol);
+  EXPECT_NEAR(mt.disturbance_l2, std::sqrt(0.14 * T), tol);
+  EXPECT_NEAR(mt.l2_gain, std::sqrt((130.5 + 5.0) * T) / std::sqrt(0.14 * T), tol);
   EXPECT_TRUE(std::isnan(mt.max_rho_sigma_z)) << "state feedback: no Sigma";
   EXPECT_TRUE(std::isnan(mt.rms_estimation_error_last_half));
   // The plain L2 norm.
-  EXPECT_NEAR(hinf::l2_norm(r.t, r.u), std::sqrt(5.0 * T), 1e-14);
+  EXPECT_NEAR(hinf::l2_norm(r.t, r.u), std::sqrt(5.0 * T), tol);
 }
 
 TEST(Metrics, LastHalfMaxFinalTrapezoidAndOutputFeedbackByHand) {
@@ -399,19 +410,22 @@ TEST(Metrics, LastHalfMaxFinalTrapezoidAndOutputFeedbackByHand) {
     r.q_hat(k, 5) += 1.0;
   }
   const hinf::Metrics mt = hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6));
+  // Sums and roots of these small numbers against the closed forms: round-off of values <= 20.
+  const double tol = hinf_test::kRoundoff * 20.0;
   // Last half: t >= 2, i.e. points 2, 3, 4.
-  EXPECT_NEAR(mt.rms_position_error_last_half, std::sqrt((1.0 + 4.0 + 0.25) / 3.0), 1e-14);
+  EXPECT_NEAR(mt.rms_position_error_last_half, std::sqrt((1.0 + 4.0 + 0.25) / 3.0), tol);
+  // hypot(x, 0) = |x| exactly, and the largest / last of exact inputs.
   EXPECT_EQ(mt.max_position_error, 3.0);
   EXPECT_EQ(mt.final_position_error, 0.5);
   // Trapezoid of u_e^2 = [0, 1, 4, 1, 0]: (0+1)/2 + (1+4)/2 + (4+1)/2 + (1+0)/2 = 6.
-  EXPECT_NEAR(mt.control_error_l2, std::sqrt(6.0), 1e-14);
+  EXPECT_NEAR(mt.control_error_l2, std::sqrt(6.0), tol);
   // |u|^2 = [1, 4, 9, 4, 1]: 2.5 + 6.5 + 6.5 + 2.5 = 18.
-  EXPECT_NEAR(mt.control_l2, std::sqrt(18.0), 1e-14);
+  EXPECT_NEAR(mt.control_l2, std::sqrt(18.0), tol);
   EXPECT_EQ(mt.disturbance_l2, 0.0);
   EXPECT_TRUE(std::isnan(mt.l2_gain)) << "no disturbance: the gain is undefined";
   EXPECT_EQ(mt.max_rho_sigma_z, 0.7);
   // Points 2, 3, 4: (4 + 1, 9 + 1, 16 + 1) -> sqrt(32 / 3).
-  EXPECT_NEAR(mt.rms_estimation_error_last_half, std::sqrt(32.0 / 3.0), 1e-14);
+  EXPECT_NEAR(mt.rms_estimation_error_last_half, std::sqrt(32.0 / 3.0), tol);
 }
 
 TEST(Metrics, ModelWithoutPositionGivesNaNPositionMetrics) {
@@ -423,9 +437,9 @@ TEST(Metrics, ModelWithoutPositionGivesNaNPositionMetrics) {
   EXPECT_TRUE(std::isnan(mt.rms_position_error_last_half));
   EXPECT_TRUE(std::isnan(mt.max_position_error));
   EXPECT_TRUE(std::isnan(mt.final_position_error));
-  EXPECT_NEAR(mt.control_l2, 2.0, 1e-15);
-  EXPECT_NEAR(mt.disturbance_l2, std::sqrt(2.0), 1e-15);
-  EXPECT_NEAR(mt.l2_gain, std::sqrt(4.0) / std::sqrt(2.0), 1e-15);  // u_e = 2 (u_d = 0), q_e = 0
+  EXPECT_NEAR(mt.control_l2, 2.0, hinf_test::kRoundoff * 2.0);
+  EXPECT_NEAR(mt.disturbance_l2, std::sqrt(2.0), hinf_test::kRoundoff * 2.0);
+  EXPECT_NEAR(mt.l2_gain, std::sqrt(4.0) / std::sqrt(2.0), hinf_test::kRoundoff * 2.0);  // u_e = 2 (u_d = 0), q_e = 0
 }
 
 }  // namespace

@@ -12,6 +12,27 @@ from scipy import linalg
 
 METHODS = ("bdf", "adams", "erk")
 
+# ---- tolerances for comparisons that involve no integrator ----
+#
+# Two DIFFERENT evaluations of one exact formula (C++ against NumPy, another summation order,
+# another eigenvalue algorithm, with or without fused multiply-add, another BLAS kernel) each
+# differ from the exact value by a few units in the last place (ulps) of the size of the terms
+# per operation: tens of ulps for the short computations compared in these tests (matrices of
+# order <= 8, a few dozen operations). They are compared at ROUNDOFF times the size of the
+# terms: a factor of ten or more above that on any IEEE machine, and still about 1e10 below
+# the effect of any mistake in a formula.
+EPS = float(np.finfo(float).eps)  # 2.2e-16, one ulp of 1.0
+ROUNDOFF = 1000.0 * EPS  # 2.2e-13
+
+
+def summation_rtol(count: int) -> float:
+    """Relative tolerance for two evaluations of a sum (or trapezoid rule) of `count`
+    nonnegative terms in different orders (C++ loop against NumPy's pairwise np.sum): each is
+    within (count - 1) eps of the exact sum (Higham, Accuracy and Stability of Numerical
+    Algorithms, 2nd ed., eq. 4.4); 4 count eps covers both and a ratio or square root of such
+    sums."""
+    return 4.0 * count * EPS
+
 PAPER_Q_D0 = np.array([1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
 PAPER_T0, PAPER_TF = 0.0, 40.0
 PAPER_GAMMA = 5.0
@@ -435,3 +456,186 @@ def inverse_grde_conjugate_point(sol, t0, tf, samples=8001):
     elif lowest <= 0.0:  # dips below zero between samples only
         crossing = brentq(lam, where, times[max(k - 1, 0)], xtol=1e-13)
     return float(lowest), float(where), crossing
+
+
+# ---- conjugate points of LTI Riccati equations (tests/python/test_conjugate_points.py) ----
+#
+# dZ/dtau = F'Z + ZF + R - Z S Z, Z(0) = Z0, with Z = Y X^-1 and
+#     d/dtau [X; Y] = M [X; Y],  M = [[-F, S], [R, F']],  X(0) = I, Y(0) = Z0
+# (differentiate Y = Z X). The GRDE (13) backward in tau = tf - t is F = A, S = BB' -
+# gamma^-2 DD', R = Q, Z0 = Qf (M = -H of the Hamiltonian H = [[A, -S], [-Q, -A']]); the
+# filter Riccati equation (36) forward in tau = t - t0 is F = A', S = C'N^-1C - gamma^-2 Q,
+# R = DD', Z0 = Sigma0. Z escapes to infinity (a conjugate point) exactly where X becomes
+# singular.
+#
+# The scalar watched is the smallest eigenvalue of the symmetric matrix P = X'(Y + c X), with
+# c = max(|Z0|, |R| T) > 0 the scale of Z. While Z exists X'Y = X'ZX, so P = X'(Z + c I)X is
+# positive definite (Z >= 0 for R, Z0 >= 0: Z is at least the value of the game with w = 0, or
+# the Kalman filter's covariance); P is singular where X is and indefinite just after. Unlike
+# det X it cannot miss a tangential conjugate point by a sign that does not change, nor be
+# confused by repeated eigenvalues. It is divided by (1 + c) |[X; Y]|_F^2 (never zero: [X; Y]
+# has full column rank), which makes it independent of the flow's growth.
+#
+# The [X; Y] flow is restarted every few sample intervals from an orthonormal basis U of the
+# same column space ([X; Y] = U R, QR), so that nothing overflows over long horizons with
+# unstable modes and the basis stays well scaled (restarting from [I; Z] instead, with |Z| ~ 1e5
+# near a near-escape, put spurious negative eigenvalues into P): X = U_1 R is singular where
+# U_1 is, and U_1'(U_2 + c U_1) = R^-T P R^-1 has the inertia of P. Samples are 0.2 / |M|_F
+# apart (the flow does not change on a shorter scale); segments span 20 sample
+# intervals and overlap by 2, so every time lies strictly inside some segment. Every local
+# minimum of the scalar among the samples (and the two ends of [0, T]) is refined on the sample
+# intervals around it by three nested grids, each 32 times finer (down to 1/32768 of a sample
+# interval, where the scalar's remaining dip is below 1e-9 of its variation over a sample
+# interval): a short dip below zero between samples (just below a tangential conjugate point)
+# is found there. A sign change is then located by brentq on the exact flow. Every matrix
+# exponential needed is exp(M s) with |M s|_F <= 0.2, summed as its Taylor series to degree 12
+# (remainder <= 0.2^13 / 13! e^0.2 < 1e-19); scipy.linalg.expm would give the same to round-off
+# but costs 40 us .. 5 ms per call for these small matrices (BLAS threads on a loaded machine).
+
+CONJUGATE_SAMPLES_PER_SEGMENT = 20
+CONJUGATE_OVERLAP = 2
+CONJUGATE_REFINEMENT = 32
+
+
+def riccati_flow_matrix(F, S, R) -> np.ndarray:
+    """M = [[-F, S], [R, F']] of d/dtau [X; Y] = M [X; Y] (Z = Y X^-1 solves
+    dZ/dtau = F'Z + ZF + R - Z S Z)."""
+    return np.block([[-F, S], [R, F.T]])
+
+
+def _normalized_pmin(XY: np.ndarray, n: int, c: float) -> np.ndarray:
+    """lambda_min(P) / ((1 + c) |[X; Y]|_F^2), P = X'(Y + c X) (its symmetric part), for a stack
+    of [X; Y]."""
+    X, Y = XY[..., :n, :], XY[..., n:, :]
+    P = np.swapaxes(X, -1, -2) @ (Y + c * X)
+    lowest = np.linalg.eigvalsh(0.5 * (P + np.swapaxes(P, -1, -2)))[..., 0]
+    return lowest / ((1.0 + c) * np.sum(XY**2, axis=(-2, -1)))
+
+
+def _expm_small(X: np.ndarray) -> np.ndarray:
+    """exp(X) for |X|_F <= 0.2: the Taylor series to degree 12 (Horner)."""
+    assert np.linalg.norm(X) <= 0.2 * (1.0 + 1e-12), "_expm_small needs |X|_F <= 0.2"
+    eye = np.eye(X.shape[0])
+    E = eye
+    for k in range(12, 0, -1):
+        E = eye + (X @ E) / k
+    return E
+
+
+def _powers(step: np.ndarray, count: int) -> np.ndarray:
+    """[I, step, step^2, ..., step^count]."""
+    out = [np.eye(step.shape[0])]
+    for _ in range(count):
+        out.append(step @ out[-1])
+    return np.array(out)
+
+
+def first_conjugate_point(F, S, R, Z0, T):
+    """First tau in [0, T] where X of d/dtau [X; Y] = M [X; Y], X(0) = I, Y(0) = Z0, is singular
+    (Z = Y X^-1 escapes), or None. See the comment above for the method."""
+    from scipy.optimize import brentq
+
+    F, S, R, Z0 = (np.atleast_2d(np.asarray(x, dtype=float)) for x in (F, S, R, Z0))
+    n = F.shape[0]
+    M = riccati_flow_matrix(F, S, R)
+    c = max(np.linalg.eigvalsh(Z0)[-1], np.linalg.eigvalsh(R)[-1] * T, 1e-300)
+    per, overlap, fine = CONJUGATE_SAMPLES_PER_SEGMENT, CONJUGATE_OVERLAP, CONJUGATE_REFINEMENT
+    intervals = max(per, int(math.ceil(T * np.linalg.norm(M) / 0.2)))
+    dt = T / intervals
+    coarse = _powers(_expm_small(M * dt), per)
+    # Nested grids: spacing dt / fine^level, 2 fine + 1 points (two intervals of the level above).
+    levels = [(dt / fine**level, _powers(_expm_small(M * (dt / fine**level)), 2 * fine)) for level in (1, 2, 3)]
+
+    def value(s, base):  # 0 <= s <= dt
+        return float(_normalized_pmin(_expm_small(M * s) @ base, n, c))
+
+    def crossing(a, b, base, t_base):
+        """The first zero of the scalar in [a, b] (from base at t_base; > 0 at a and <= 0 at b as
+        sampled; should the exact flow disagree at round-off level, that end)."""
+        fa, fb = value(a, base), value(b, base)
+        if fa <= 0.0 or fb > 0.0:
+            return t_base + (a if fa <= 0.0 else b)
+        return t_base + brentq(lambda s: value(s, base), a, b, xtol=1e-14 * max(T, 1.0), rtol=4 * EPS)
+
+    def refine(base, t_base, width):
+        """Nested grids over [t_base, t_base + width dt] (width = 1 or 2 sample intervals): the
+        first zero of the scalar there, or None."""
+        span = width
+        for h, table in levels:
+            points = table[: span * fine + 1] @ base
+            values = _normalized_pmin(points, n, c)
+            negative = np.flatnonzero(values <= 0.0)
+            if negative.size:
+                k = int(negative[0])
+                return t_base if k == 0 else crossing(0.0, h, points[k - 1], t_base + (k - 1) * h)
+            k = int(np.argmin(values))
+            low, high = max(k - 1, 0), min(k + 1, span * fine)
+            base, t_base, span = points[low], t_base + low * h, high - low
+        return None
+
+    first = 0
+    U = np.linalg.qr(np.vstack([np.eye(n), 0.5 * (Z0 + Z0.T)]))[0]
+    while True:
+        count = min(per, intervals - first)
+        start = first * dt
+        XY = coarse[: count + 1] @ U
+        values = _normalized_pmin(XY, n, c)
+        negative = np.flatnonzero(values <= 0.0)
+        if negative.size:
+            j = int(negative[0])
+            return start if j == 0 else crossing(0.0, dt, XY[j - 1], start + (j - 1) * dt)
+        last = first + count == intervals
+        for j in range(count + 1):
+            inner = 0 < j < count
+            edge = (j == 0 and first == 0) or (j == count and last)
+            if not (inner or edge):
+                continue
+            left = values[j - 1] if j > 0 else np.inf
+            right = values[j + 1] if j < count else np.inf
+            if values[j] <= left and values[j] <= right:
+                low, high = max(j - 1, 0), min(j + 1, count)
+                tau = refine(XY[low], start + low * dt, high - low)
+                if tau is not None:
+                    return tau
+        if last:
+            return None
+        k = count - overlap  # restart inside this segment, so the segments overlap
+        U = np.linalg.qr(XY[k])[0]
+        first += k
+
+
+def grde_conjugate_tau(A, B, D, Q, Qf, gamma, T):
+    """First conjugate point of the LTI GRDE (13) in backward time tau = tf - t, or None."""
+    S = B @ B.T - (0.0 if math.isinf(gamma) else D @ D.T / gamma**2)
+    return first_conjugate_point(A, S, Q, Qf, T)
+
+
+def filter_conjugate_tau(A, C, D, N, Q, Sigma0, gamma, T):
+    """First escape of the LTI filter Riccati equation (36) in forward time tau = t - t0, or None."""
+    S = C.T @ np.linalg.solve(N, C) - (0.0 if math.isinf(gamma) else Q / gamma**2)
+    return first_conjugate_point(A.T, S, D @ D.T, Sigma0, T)
+
+
+def threshold_by_bisection(escapes, lo, hi, rtol=1e-9):
+    """The smallest gamma without escape, for a predicate escapes(gamma) that is True below it
+    and False above it: bisection of the bracket [lo, hi] (escapes(lo), not escapes(hi))."""
+    assert escapes(lo) and not escapes(hi), (lo, hi)
+    while hi - lo > rtol * hi:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if escapes(mid) else (lo, mid)
+    return hi
+
+
+def bracket_threshold(escapes, guess):
+    """(lo, hi) around the threshold of escapes(gamma), starting at guess > 0 and moving by
+    factors of 2."""
+    lo = hi = guess
+    if escapes(guess):
+        while escapes(hi):
+            lo, hi = hi, 2.0 * hi
+            assert hi < 1e12, "no gamma without escape below 1e12"
+    else:
+        while not escapes(lo):
+            lo, hi = 0.5 * lo, lo
+            assert lo > 1e-12, "an escape-free system: threshold 0"
+    return lo, hi

@@ -34,6 +34,7 @@ from scipy.optimize import brentq
 import hinf_cpp as hc
 from _support import (
     METHODS,
+    ROUNDOFF,
     SHIP_B,
     SHIP_D,
     full_information_hinf_level,
@@ -223,6 +224,8 @@ def test_hinf_level_reference_on_scalar_closed_forms():
     a test of the imaginary axis alone would give the wrong level (0.894 instead of 2)."""
     a, b, d, q = -1.0, 1.0, 1.0, 0.5
     args = [m11(x) for x in (a, b, d, q)]
+    # The reference bisects to 1e-13 and its tests (imaginary axis at 1e-9 of |lambda|, X1
+    # condition 1e12) move the level by ~1e-12 relative at most: 1e-10.
     level = full_information_hinf_level(*args)
     assert level == pytest.approx(d / math.sqrt(b * b + a * a / q), rel=1e-10)
     assert stabilizing_game_solution(*args, 0.999 * level) == (None, "imaginary")
@@ -426,6 +429,8 @@ def test_paper_design_just_above_and_just_below(paper_star, paper_trajectory):
         hc.solve_grde(paper_trajectory, EYE6, EYE6, r.lower)
     assert info.value.gamma == r.lower
     assert 0.0 <= info.value.t_escape <= 40.0
+    # The same integration as the search's trial at r.lower (same gamma, same default solver):
+    # equal (measured bit for bit); not a tolerance between different computations.
     assert info.value.t_escape == pytest.approx(r.t_escape_lower, abs=1e-9 * 40.0)
     assert hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.lower) == pytest.approx(
         r.t_escape_lower, abs=1e-9 * 40.0)
@@ -460,7 +465,7 @@ def test_paper_gamma_star_methods_threads_and_scenario_agree(paper_star, paper_t
             assert other.converged
             assert max(other.lower, r.lower) < min(other.upper, r.upper) * (1 + 2e-6), (method, threads)
     scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
-    from_file = hc.scenario_gamma_star(scenario)
+    from_file = hc.scenario_gamma_star(scenario)  # the same search on the same problem: equal
     assert (from_file.gamma_star, from_file.lower, from_file.t_escape_lower) == (r.gamma_star, r.lower,
                                                                                  r.t_escape_lower)
 
@@ -533,12 +538,14 @@ def test_paper_output_feedback_gamma_is_the_coupling_at_t0(paper_of_star, paper_
         Z, Sigma, rho, where = design_checks(paper_trajectory, gamma, PAPER_N, EYE6)
         assert (rho >= gamma**2) == violated, (factor, rho, gamma**2)
         assert where == 0.0
-        assert np.max(np.linalg.eigvalsh(Z.Z(0.0))) == pytest.approx(rho, rel=1e-12)
+        # At t0, Sigma = I (up to round-off) and rho(Sigma Z) = lambda_max(Z): LAPACK's
+        # symmetric and nonsymmetric eigenvalue routines and the library's agree to round-off.
+        assert np.max(np.linalg.eigvalsh(Z.Z(0.0))) == pytest.approx(rho, rel=ROUNDOFF)
         lib_rho, lib_t = hc.max_rho_sigma_z(Z, Sigma)
-        assert rho * (1 - 1e-12) <= lib_rho <= rho * (1 + 1e-9) and lib_t == 0.0
+        assert rho * (1 - ROUNDOFF) <= lib_rho <= rho * (1 + 1e-9) and lib_t == 0.0
     scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
     from_file = hc.scenario_gamma_star_output_feedback(scenario)
-    assert (from_file.gamma_star, from_file.binding) == (r.gamma_star, r.binding)
+    assert (from_file.gamma_star, from_file.binding) == (r.gamma_star, r.binding)  # the same search
 
 
 def test_ship_small_sigma0_still_binds_the_coupling(paper_trajectory, paper_of_star):
@@ -632,6 +639,7 @@ def test_scalar_output_feedback_gamma_matches_closed_forms(case):
     if binding == "grde":
         assert g_coupling - g_grde < 1e-6 * g_grde < rtol * g_grde
         state_feedback = hc.gamma_star(tr, m11(q), m11(qf), options)
+        # The GRDE binds: the same bisection on the same GRDE verdicts, hence the same gamma.
         assert r.gamma_star == pytest.approx(state_feedback.gamma_star, rel=1e-12)
         assert 0.0 <= r.t_escape_lower <= 1e-3 * T  # the GRDE escapes right at t0
     else:
@@ -782,7 +790,8 @@ def test_cli_gamma_star(tmp_path, warm_cli, paper_star):
     done = cli(HINF_CPP, "gamma-star", hc.scenario_path("paper_fig1"), "--json", out)
     assert done.returncode == 0 and done.stderr == "", done.stderr
     data = json.loads(out.read_text())
-    # The file's solver section is bdf, rtol 1e-8 (the library defaults): the same search.
+    # The file's solver section is bdf, rtol 1e-8 (the library defaults): the same search, so
+    # the same numbers (up to the JSON digits for t_escape_lower).
     assert data["gamma_star"] == paper_star.gamma_star and data["lower"] == paper_star.lower
     assert data["scenario"] == "paper-fig1" and data["binding"] == "grde" and data["converged"] is True
     assert data["t_escape_lower"] == pytest.approx(paper_star.t_escape_lower, rel=1e-12)
@@ -838,6 +847,8 @@ def test_cli_run_and_hinf_sim_fill_gamma_star(tmp_path, warm_cli, paper_star):
     assert done_py.returncode == 0 and done_cpp.returncode == 0, (done_py.stderr, done_cpp.stderr)
     a, b = json.loads(py.read_text()), json.loads(cpp.read_text())
     assert a["gamma_star"] is not None and b["gamma_star"] is not None
+    # The same library search in both programs and in this process: equal up to the digits
+    # each program prints.
     assert a["gamma_star"] == pytest.approx(b["gamma_star"], rel=1e-9)
     assert a["gamma_star"] == pytest.approx(paper_star.gamma_star, rel=1e-12)
     assert a["gamma"] == 5.0 > a["gamma_star"]
@@ -886,4 +897,6 @@ def test_python_model_gamma_star_runs_serially():
     linear = hc.LinearModel(np.array([[0.5]]), np.array([[1.0]]), np.array([[1.0]]))
     linear_tr = hc.Trajectory(linear, [0.0], [0.0], 0.0, 5.0)
     reference = hc.gamma_star(linear_tr, np.eye(1), np.eye(1), hc.GammaStarOptions(threads=1, solver=one))
+    # The GRDE's inputs (A_e = dfdq = 0.5, B, D) are the same doubles for both models: the same
+    # computation, equal.
     assert asked_parallel.gamma_star == pytest.approx(reference.gamma_star, rel=1e-12)

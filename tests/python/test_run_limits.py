@@ -319,3 +319,18 @@ def test_noise_free_measurements_do_not_count_as_disturbance():
     applied = np.sqrt(np.trapezoid(np.sum(w[:, :3] ** 2, axis=1), t))
     assert result.metrics["disturbance_l2"] == pytest.approx(applied, rel=1e-12)
     assert result.metrics["l2_gain"] > 1.0
+
+
+def test_a_noise_channel_set_from_python_is_refused_like_in_a_file():
+    """The reader refuses w4..w6 in [disturbance]; a scenario built in Python gets the same rule
+    (before, w4 = 0.1 changed disturbance_l2 and l2_gain without changing the motion)."""
+    scenario = paper()
+    signals = [hc.Signal(0.1), hc.Signal(), hc.Signal(), hc.Signal(0.1), hc.Signal(), hc.Signal()]
+    scenario.disturbance = signals
+    with pytest.raises(ValueError, match=r"w4 is a measurement-noise channel"):
+        hc.run_scenario(scenario)
+    scenario.disturbance = lambda t: np.array([0.1, 0, 0, 0, 0.2, 0])
+    with pytest.raises(ValueError, match=r"w5 is a measurement-noise channel"):
+        hc.run_scenario(scenario)
+    scenario.disturbance = lambda t: np.array([0.1, 0, 0, 0, 0, 0])
+    assert hc.run_scenario(scenario).simulation.status == "completed"

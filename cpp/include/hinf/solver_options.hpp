@@ -19,7 +19,8 @@ Method method_from_string(const std::string& name);
 struct SolverOptions {
   Method method = Method::BDF;
   double rtol = 1e-8;        // relative tolerance, in [1e-14, 1e-3]
-  double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions), in (0, 1e-3]
+  double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions), in (0, 1e-3];
+                             // Riccati solves use atol * min(1, the solution's scale)
   long max_steps = 500000;   // steps of one whole solve or closed-loop run (all its restarts
                              // included); exceeding it is a SolverError
   // Riccati solves: when |X|_max passes escape_norm times the solution's scale, the escape
