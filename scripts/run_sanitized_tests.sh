@@ -64,25 +64,27 @@ asan_runtime="$(runtime libasan)"
 cxx_runtime="$(runtime libstdc++)"
 [ -f "$asan_runtime" ] && [ -f "$cxx_runtime" ] || fail "cannot find the ASan and C++ runtimes of ${core[0]}"
 preload="$asan_runtime $cxx_runtime"
-# Reports go to files (one per process, log_path.PID) and are checked at the end: a test that
-# expects a subprocess to fail cannot mistake a sanitizer report for the failure it expects.
-# abort_on_error: a report in the pytest process raises SIGABRT, so pytest's faulthandler
-# prints the Python stack, which names the test.
+# ASan's reports go to files (one per process, report.PID), checked after each suite: a test that
+# expects a subprocess to fail cannot mistake a report for the failure it expects. UBSan ignores
+# log_path when it runs together with ASan (GCC 12) and reports on stderr. abort_on_error: every
+# report of either ends its process with SIGABRT, a status no test expects (ctest counts it as a
+# failure even for a WILL_FAIL test), and in the pytest process it makes pytest's faulthandler
+# print the Python stack, which names the test.
 rm -rf "$REPORTS"
 mkdir -p "$REPORTS"
-common="abort_on_error=1:log_path=$REPORTS/report"
-export UBSAN_OPTIONS="$common:print_stacktrace=1:halt_on_error=1"
+asan_options="abort_on_error=1:log_path=$REPORTS/report"
+export UBSAN_OPTIONS="abort_on_error=1:halt_on_error=1:print_stacktrace=1"
 export HINF_SANITIZER_STAGE="$STAGE"
 
 check_reports() {
   local reports=("$REPORTS"/report.*)
   [ -e "${reports[0]}" ] || return 0
   cat "${reports[@]}" >&2
-  fail "sanitizer reports after $1 (above; files in $REPORTS)"
+  fail "ASan reports after $1 (above; files in $REPORTS)"
 }
 
 # ---- C++ tests (leak detection on: no Python here) ----
-ASAN_OPTIONS="$common:detect_leaks=1" ctest --test-dir "$BUILD" --output-on-failure -j 2 ||
+ASAN_OPTIONS="$asan_options:detect_leaks=1" ctest --test-dir "$BUILD" --output-on-failure -j 2 ||
   { check_reports ctest; fail "ctest failed"; }
 check_reports ctest
 lap ctest
@@ -92,9 +94,12 @@ lap ctest
 # PYTHONMALLOC=malloc: Python objects come from malloc, not from pymalloc's arenas, so ASan also
 # sees a use after free or an overrun of a Python object (a reference counting error in the
 # bindings); about a third more time.
+# --capture=sys: pytest captures the tests' output at the level of sys.stdout and sys.stderr,
+# not of the file descriptors, so that a UBSan report in the pytest process reaches the log
+# rather than a capture file that dies with the process.
 status=0
-ASAN_OPTIONS="$common:detect_leaks=0" LD_PRELOAD="$preload" PYTHONMALLOC=malloc \
-  "$STAGE/bin/python" -m pytest "$@" || status=$?
+ASAN_OPTIONS="$asan_options:detect_leaks=0" LD_PRELOAD="$preload" PYTHONMALLOC=malloc \
+  "$STAGE/bin/python" -m pytest --capture=sys "$@" || status=$?
 check_reports pytest
 ((status == 0)) || fail "pytest failed (status $status)"
 lap pytest
