@@ -529,7 +529,7 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     s.measurement = ms;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
-    TableReader r(*table, "[solver]", source, {"method", "rtol", "atol", "max_steps"});
+    TableReader r(*table, "[solver]", source, {"method", "rtol", "atol", "max_steps", "divergence_factor"});
     const std::string method = r.string_or("method", "bdf");
     try {
       s.solver.method = method_from_string(method);
@@ -539,6 +539,12 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     s.solver.rtol = r.number_or("rtol", s.solver.rtol);
     s.solver.atol = r.number_or("atol", s.solver.atol);
     s.solver.max_steps = static_cast<long>(r.integer_or("max_steps", s.solver.max_steps));
+    s.solver.divergence_factor = r.number_or("divergence_factor", s.solver.divergence_factor);
+    try {
+      s.solver.validate();
+    } catch (const InputError& e) {
+      throw InputError(str_cat(source, ": [solver] ", e.what()));
+    }
   }
   if (const toml::table* table = section(root, "output", source, false)) {
     TableReader r(*table, "[output]", source, {"dt"});

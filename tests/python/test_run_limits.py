@@ -334,3 +334,15 @@ def test_a_noise_channel_set_from_python_is_refused_like_in_a_file():
         hc.run_scenario(scenario)
     scenario.disturbance = lambda t: np.array([0.1, 0, 0, 0, 0, 0])
     assert hc.run_scenario(scenario).simulation.status == "completed"
+
+
+def test_divergence_factor_is_a_solver_key(tmp_path):
+    """[solver] divergence_factor sets the bound: 1.5 x max(1, 1, max |q_d| = 22 m) stops a run
+    whose disturbance (amplitude 30 on the surge force; errors up to ~200) the default bound of
+    1e3 x 22 m lets finish."""
+    text = huge_disturbance_text(30.0)
+    assert hc.run_scenario(hc.load_scenario(write(tmp_path, "a.toml", text))).simulation.status == "completed"
+    tight = replace(text, "atol = 1e-10", "atol = 1e-10\ndivergence_factor = 1.5")
+    assert hc.run_scenario(hc.load_scenario(write(tmp_path, "b.toml", tight))).simulation.status == "diverged"
+    with pytest.raises(ValueError, match=r"b\.toml: \[solver\] solver divergence_factor must be a finite number > 1"):
+        hc.load_scenario(write(tmp_path, "b.toml", replace(tight, "= 1.5", "= 1.0")))
