@@ -596,7 +596,7 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
       .def(py::init([](const std::string& method, double rtol, double atol, long max_steps, double escape_norm,
                        double divergence_factor) {
              SolverOptions o;
-             o.method = method_from_string(method);
+             o.method = from_string<Method>(method);
              o.rtol = rtol;
              o.atol = atol;
              o.max_steps = max_steps;
@@ -608,7 +608,7 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
            py::arg("method") = "bdf", py::arg("rtol") = 1e-8, py::arg("atol") = 1e-10,
            py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e6, py::arg("divergence_factor") = 1e3)
       .def_property("method", [](const SolverOptions& o) { return to_string(o.method); },
-                    [](SolverOptions& o, const std::string& s) { o.method = method_from_string(s); })
+                    [](SolverOptions& o, const std::string& s) { o.method = from_string<Method>(s); })
       .def_readwrite("rtol", &SolverOptions::rtol)
       .def_readwrite("atol", &SolverOptions::atol)
       .def_readwrite("max_steps", &SolverOptions::max_steps)

@@ -10,6 +10,7 @@
 #include "hinf/resources.hpp"
 #include "hinf/stepper.hpp"
 #include "definiteness.hpp"
+#include "size_dispatch.hpp"
 #include "extremum.hpp"
 #include "riccati_kernel.hpp"
 #include "symmetric_extremes.hpp"
@@ -360,8 +361,9 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
 std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q,
                                                  double gamma, const Mat& N_inv, const Mat& X_start,
                                                  const SolverOptions& options, bool store = true) {
-  if (trajectory.n() == 6) return integrate_riccati<6>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
-  return integrate_riccati<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+  return detail::with_state_size(trajectory.n(), [&](auto size) {
+    return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+  });
 }
 
 // Escape time of an integration without storage, NaN when there is none.
@@ -402,16 +404,10 @@ void extremes_over(const PiecewisePolynomial& X, const std::vector<double>& time
 template <int N>
 void extremes_at(const PiecewisePolynomial& X, double t, double& lo, double& hi) {
   const int n = static_cast<int>(std::lround((std::sqrt(8.0 * X.dim() + 1.0) - 1.0) / 2.0));
-  double packed[136];
-  std::vector<double> heap;
-  double* p = packed;
-  if (X.dim() > 136) {
-    heap.resize(static_cast<std::size_t>(X.dim()));
-    p = heap.data();
-  }
-  X.eval(t, p);
+  PackedScratch packed(n);
+  X.eval(t, packed.data());
   Eigen::Matrix<double, N, N> Xt(n, n);
-  unpack_symmetric(p, Xt);
+  unpack_symmetric(packed.data(), Xt);
   detail::symmetric_eigen_extremes(Xt, lo, hi);
 }
 
@@ -435,8 +431,7 @@ void continuous_bounds(const PiecewisePolynomial& X, double& lambda_min, double&
 }  // namespace
 
 void SymmetricSolution::eigenvalue_bounds(double& lambda_min, double& lambda_max) const {
-  if (n_ == 6) continuous_bounds<6>(X_, lambda_min, lambda_max);
-  else continuous_bounds<Eigen::Dynamic>(X_, lambda_min, lambda_max);
+  detail::with_state_size(n_, [&](auto size) { continuous_bounds<decltype(size)::value>(X_, lambda_min, lambda_max); });
 }
 
 SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X,
@@ -469,8 +464,7 @@ void SymmetricSolution::eigenvalue_range(const std::vector<double>& times, doubl
   require(!times.empty(), "eigenvalue_range needs at least one time");
   lambda_min = std::numeric_limits<double>::infinity();
   lambda_max = -std::numeric_limits<double>::infinity();
-  if (n_ == 6) extremes_over<6>(X_, times, lambda_min, lambda_max);
-  else extremes_over<Eigen::Dynamic>(X_, times, lambda_min, lambda_max);
+  detail::with_state_size(n_, [&](auto size) { extremes_over<decltype(size)::value>(X_, times, lambda_min, lambda_max); });
 }
 
 RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z,
@@ -490,13 +484,8 @@ Mat RiccatiSolution::gain(double t) const {
 void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
   if (constant_B_) {
     // K(j, c) = sum_i B(i, j) Z(i, c), column-major m x n.
-    double packed_stack[kMaxPackedOnStack];
-    std::vector<double> heap;
-    double* z = packed_stack;
-    if (packed_size(n_) > kMaxPackedOnStack) {
-      heap.resize(static_cast<std::size_t>(packed_size(n_)));
-      z = heap.data();
-    }
+    PackedScratch packed(n_);
+    double* z = packed.data();
     X_.eval(t, z, cursor);
     for (int k = 0; k < m_ * n_; ++k) out[k] = 0.0;
     const int n = n_, m = m_;

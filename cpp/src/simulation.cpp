@@ -12,12 +12,11 @@
 
 namespace hinf {
 
-std::string to_string(RunStatus status) {
-  switch (status) {
-    case RunStatus::Completed: return "completed";
-    case RunStatus::Diverged: return "diverged";
-  }
-  return "unknown";
+void SimulationOptions::validate() const {
+  require(std::isfinite(output_dt) && output_dt > 0.0, "the output step dt must be > 0, got ", output_dt);
+  require(std::isfinite(divergence_factor) && divergence_factor > 1.0,
+          "divergence_factor must be a finite number > 1, got ", divergence_factor);
+  solver.validate();
 }
 
 RowMat SimulationResult::q_e() const {
@@ -65,7 +64,7 @@ double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
-                                         double output_dt, const SolverOptions& options) {
+                                         const SimulationOptions& simulation) {
   const Model& model = trajectory.model();
   const int n = model.n(), m = model.m(), nw = model.nw();
   check_size(q0, n, "the initial state q0");
@@ -74,14 +73,15 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
           " numbers, the model '", model.name(), "' has ", n);
   require(disturbance.dim() == nw, "the disturbance has ", disturbance.dim(),
           " channels, the model '", model.name(), "' has ", nw);
-  options.validate();
+  simulation.validate();
+  const SolverOptions& options = simulation.solver;
   const double t0 = trajectory.t0(), tf = trajectory.tf();
-  const long count = output_count(t0, tf, output_dt);
+  const long count = output_count(t0, tf, simulation.output_dt);
   check_memory(8.0 * static_cast<double>(count) * (1 + 2 * n + 2 * m + nw),
                str_cat("the time series on the output grid of ", count, " points"),
                "increase [output] dt (or shorten the horizon)");
-  const std::vector<double> grid = output_grid(t0, tf, output_dt);
-  const double bound = divergence_bound(trajectory, q0, grid, options.divergence_factor);
+  const std::vector<double> grid = output_grid(t0, tf, simulation.output_dt);
+  const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
   const bool constant_BD = model.constant_input_matrices();

@@ -20,6 +20,7 @@
 
 #include "hinf/errors.hpp"
 #include "hinf/model.hpp"
+#include "hinf/ship.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
 #include "hinf/trajectory.hpp"

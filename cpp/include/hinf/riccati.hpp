@@ -84,7 +84,6 @@ class RiccatiSolution final : public SymmetricSolution {
   void gain(double t, double* out, std::size_t* cursor = nullptr) const;
 
  private:
-  static constexpr int kMaxPackedOnStack = 136;  // n <= 16 without heap use
   int m_;
   // Constant B as its nonzeros: K = B' Z costs one multiply-add per nonzero and column of Z,
   // computed from the packed Z.

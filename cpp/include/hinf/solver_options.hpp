@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "hinf/enum_names.hpp"
+
 namespace hinf {
 
 enum class Method {
@@ -12,9 +14,12 @@ enum class Method {
   ERK     // explicit Dormand-Prince 5(4) with its 4th-order dense output: non-stiff
 };
 
-std::string to_string(Method method);
-// "bdf", "adams" or "erk"; anything else is an InputError.
-Method method_from_string(const std::string& name);
+template <>
+struct EnumNames<Method> {
+  static constexpr const char* what = "solver method";
+  static constexpr std::array<std::pair<Method, const char*>, 3> names{
+      {{Method::BDF, "bdf"}, {Method::Adams, "adams"}, {Method::ERK, "erk"}}};
+};
 
 struct SolverOptions {
   Method method = Method::BDF;
@@ -27,9 +32,6 @@ struct SolverOptions {
   // test (riccati.hpp) decides whether X escapes to infinity (a conjugate point, paper eq. 14)
   // or is only large. Only the cost depends on it.
   double escape_norm = 1e6;
-  // Closed loops stop as diverged when the tracking error exceeds divergence_factor times the
-  // scale of the problem (simulation.hpp).
-  double divergence_factor = 1e3;
 
   void validate() const;  // InputError naming the option and its admissible range
 };

@@ -32,7 +32,6 @@ class Trajectory {
   double t0() const { return t0_; }
   double tf() const { return tf_; }
   const Vec& q_d0() const { return q_d0_; }
-  const VectorSignal& u_d_signal() const { return u_d_; }
 
   void q_d(double t, double* out, std::size_t* cursor = nullptr) const;
   Vec q_d(double t) const;
