@@ -4,3 +4,6 @@ find_package(SUNDIALS 6.4 REQUIRED COMPONENTS cvode nvecserial sunmatrixdense su
              sunnonlinsolfixedpoint)
 find_package(tomlplusplus 3.3 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
+# LAPACK: the real Schur form (dgees) and the triangular Sylvester solve (dtrsyl) of the
+# Riccati equations' Newton systems (cpp/src/lyapunov_newton.cpp).
+find_package(LAPACK REQUIRED)

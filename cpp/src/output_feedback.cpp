@@ -378,7 +378,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   };
 
   try {
-    if (solver.method == Method::ERK || solver.method == Method::BDF) {
+    if (solver.method != Method::Adams) {
       // Dormand-Prince per hold interval; for "bdf", a switch to the L-stable SDIRK4 once
       // Dormand-Prince's stiffness test fires.
       Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, solver.max_steps);
@@ -389,7 +389,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
         const double ta = interval_start(k), tb = interval_end(k);
         system.set_noise(noise.row(k).data());
         steps_in_interval = 0;
-        if (solver.method == Method::BDF && !implicit_stepper && explicit_stepper.stiff()) {
+        if (solver.method != Method::ERK && !implicit_stepper && explicit_stepper.stiff()) {
           const StepStats& used = explicit_stepper.stats();
           implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol,
                                                       std::max(1L, solver.max_steps - used.steps - used.rejected));

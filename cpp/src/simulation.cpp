@@ -121,7 +121,6 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   result.q.resize(count, n);
   result.q.row(0) = q0.transpose();
   Vec y = q0;
-  result.integrator = options.method == Method::ERK ? "dormand-prince 5(4)" : "CVODE " + to_string(options.method);
   long next = 1;  // the next output time to record
   std::size_t cursor = 0;
   const StepStats stats = integrate(options, n, rhs, jacobian, t0, tf, y.data(), [&](const DensePiece& piece) {
@@ -143,6 +142,7 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
                                     " error, or raise [solver] divergence_factor)");
     return StepAction::Stop;
   });
+  result.integrator = stats.method;
   result.stats.steps = stats.steps;
   result.stats.rejected = stats.rejected;
   result.stats.rhs_evals = stats.rhs_evals;

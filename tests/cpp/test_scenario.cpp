@@ -163,7 +163,7 @@ TEST(ScenarioFile, DefaultsOfTheContract) {
   ASSERT_EQ(r.disturbance.dim(), 6);
   EXPECT_EQ(r.disturbance(2.0), Vec::Zero(6));
   EXPECT_FALSE(r.measurement.has_value());
-  EXPECT_EQ(r.solver.method, hinf::Method::BDF);
+  EXPECT_EQ(r.solver.method, hinf::Method::Auto);
   EXPECT_EQ(r.solver.rtol, 1e-8);
   EXPECT_EQ(r.solver.atol, 1e-10);
   EXPECT_EQ(r.output_dt, 0.01);

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -30,6 +31,15 @@ struct StepStats {
   long rejected = 0;   // rejected step attempts
   long rhs_evals = 0;  // right-hand-side evaluations
   long jac_evals = 0;  // Jacobian evaluations (implicit methods)
+  std::string method;  // what integrated: "erk", "bdf", "adams", "erk, then bdf from t = ..."
+
+  StepStats& operator+=(const StepStats& more) {
+    steps += more.steps;
+    rejected += more.rejected;
+    rhs_evals += more.rhs_evals;
+    jac_evals += more.jac_evals;
+    return *this;
+  }
 };
 
 class Dopri5 {

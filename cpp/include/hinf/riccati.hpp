@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "hinf/piecewise_polynomial.hpp"
@@ -30,8 +31,11 @@ struct SolveStats {
   long steps = 0;
   long rejected = 0;  // rejected steps (error test failures)
   long rhs_evals = 0;
-  long jac_evals = 0;
+  long jac_evals = 0;  // Jacobians (dense) or Schur factorizations (Lyapunov Newton systems)
   std::size_t memory_bytes = 0;  // stored dense output
+  // The integrator that solved it: "erk", "adams", "bdf (dense Newton)", "bdf (Lyapunov
+  // Newton)", or "erk, then bdf (...) from t = ..." for Method::Auto.
+  std::string method;
 };
 
 // A symmetric-matrix-valued solution X(t) on [t0, tf] kept as dense output.
