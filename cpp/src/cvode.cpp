@@ -191,6 +191,7 @@ void Cvode::reset(double t0, const double* y0, double t_stop) {
   // The stop time is cleared once reached and after a re-init: set it every time.
   check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime", t0);
   t_stop_ = t_stop;
+  t_current_ = t_step_start_ = t0;
   newton_current_ = false;
   last_message_.clear();
   initialized_ = true;
@@ -215,6 +216,8 @@ double Cvode::step(double* y_out) {
   double t = 0.0;
   const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
   check(flag, "CVode", t);
+  t_step_start_ = t_current_;
+  t_current_ = t;
   const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
   for (int i = 0; i < dim_; ++i) y_out[i] = y[i];
   return t;
@@ -234,13 +237,12 @@ double Cvode::advance(double tout, double* y_out) {
 
 const DensePiece& Cvode::last_step_piece() {
   int order = 0;
-  double h_last = 0.0, t_now = 0.0;
   check(CVodeGetLastOrder(mem_, &order), "CVodeGetLastOrder", 0.0);
-  check(CVodeGetLastStep(mem_, &h_last), "CVodeGetLastStep", 0.0);
-  check(CVodeGetCurrentTime(mem_, &t_now), "CVodeGetCurrentTime", 0.0);
+  // The step from the previous step's end to the current time, both exactly as CVODE has them.
+  const double t_now = t_current_, h_last = t_current_ - t_step_start_;
   // Taylor form at the step's end t_n: y(t_n + s) = sum_k b_k (s / h)^k with b_k = y^(k)(t_n) h^k / k!
-  // (h = h_last, signed). With t = t_n - h + theta h, s / h = theta - 1, so the coefficients in
-  // theta are d_j = sum_{k >= j} C(k, j) (-1)^(k - j) b_k.
+  // (h signed). With t = t_n - h + theta h, s / h = theta - 1, so the coefficients in theta are
+  // d_j = sum_{k >= j} C(k, j) (-1)^(k - j) b_k.
   double scale = 1.0, factorial = 1.0;
   for (int k = 0; k <= order; ++k) {
     if (k > 0) {
@@ -261,7 +263,7 @@ const DensePiece& Cvode::last_step_piece() {
       binomial = binomial * (k - j) / (j + 1);
     }
   }
-  piece_ = DensePiece{t_now - h_last, h_last, order, dim_, piece_coeffs_.data()};
+  piece_ = DensePiece{t_step_start_, t_now, order, dim_, piece_coeffs_.data()};
   return piece_;
 }
 

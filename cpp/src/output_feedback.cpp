@@ -156,16 +156,8 @@ class OutputFeedbackSystem {
   }
 
  private:
-  // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L', for the Sigma_ and Z_ of the last
-  // evaluate_signals; NaN if Sigma is not positive definite.
-  double rho_of_current() {
-    Eigen::LLT<MatN> llt(Sigma_);
-    if (llt.info() != Eigen::Success) return NAN;
-    T_ = llt.matrixL();
-    A_f_.noalias() = Z_ * T_;
-    G_.noalias() = T_.transpose() * A_f_;
-    return detail::symmetric_eigen_max(G_);
-  }
+  // rho(Sigma Z) for the Sigma_ and Z_ of the last evaluate_signals.
+  double rho_of_current() { return detail::spectral_radius_of_product(Sigma_, Z_, T_, G_); }
 
   void set_matrices(double t) {
     B_ = model_.B(t);
@@ -256,7 +248,7 @@ DensePiece hermite_piece(double t_start, double h, int dim, const double* y0, co
     c2[i] = 3.0 * (y1[i] - y0[i]) - h * (2.0 * f0[i] + f1[i]);
     c3[i] = 2.0 * (y0[i] - y1[i]) + h * (f0[i] + f1[i]);
   }
-  return DensePiece{t_start, h, 3, dim, coeffs.data()};
+  return DensePiece{t_start, t_start + h, 3, dim, coeffs.data()};
 }
 
 template <int N>
@@ -315,7 +307,9 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
     system.outputs(t, x, r.q_d.row(k).data(), r.u_d.row(k).data(), r.u.row(k).data(), r.w.row(k).data(),
                    est.y.row(k).data(), est.sigma_min_eig[k], est.sigma_max_eig[k], est.rho_sigma_z[k]);
     const double rho = est.rho_sigma_z[k];
-    if (!(est.sigma_min_eig[k] > 0.0))
+    // Sigma >= 0 may decay to about zero (no process noise); beyond round-off below zero it has
+    // lost definiteness.
+    if (!(est.sigma_min_eig[k] >= -kSemidefiniteTolerance * std::abs(est.sigma_max_eig[k])))
       throw SolverError(str_cat("the filter Riccati solution Sigma(t) lost positive definiteness at t = ",
                                 t, " (smallest eigenvalue ", est.sigma_min_eig[k],
                                 "); tighten the solver tolerances or increase gamma"),
@@ -347,24 +341,24 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   // After each accepted step of hold interval k (x holds the state at its end): records the
   // output times the step covers, then stops the run if it diverged.
   auto on_step = [&](const DensePiece& piece, long k) {
-    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
-    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
-      piece.eval(std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h), at_grid.data());
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end + slack) {
+      piece.eval(piece.theta(grid[static_cast<std::size_t>(next)]), at_grid.data());
       record(next, at_grid.data());
       system.set_noise(noise.row(k).data());
       ++next;
     }
     if (++steps_in_interval > per_interval)
       throw SolverError(str_cat("more than ", per_interval, " steps in the noise hold interval [", interval_start(k),
-                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end(), ")"),
-                        piece.t_end(), "TOO_MUCH_WORK");
-    trajectory.q_d(piece.t_end(), q_d.data(), &q_cursor);
+                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end, ")"),
+                        piece.t_end, "TOO_MUCH_WORK");
+    trajectory.q_d(piece.t_end, q_d.data(), &q_cursor);
     tracking_error(n, heading, x.data(), q_d.data(), q_e.data());
     const double error = q_e.cwiseAbs().maxCoeff();
     if (error <= bound) return StepAction::Continue;
     r.status = RunStatus::Diverged;
     r.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ", bound,
-                               " at t = ", piece.t_end(),
+                               " at t = ", piece.t_end,
                                ": the closed loop left the neighbourhood of the desired trajectory where the"
                                " linearized design is meaningful (reduce the disturbance or the initial error,"
                                " or raise [solver] divergence_factor)");

@@ -328,7 +328,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   StepStats step_stats;
   try {
     step_stats = integrate_problem(problem, x_options, t_start, t_end, x.data(), [&](const DensePiece& piece) {
-          const double t = piece.t_end();
+          const double t = piece.t_end;
           const double largest = max_abs(x.data(), p);
           if (!std::isfinite(largest)) throw SolverError("the solution became non-finite", t, "NOT_FINITE");
           t_last = t;

@@ -341,10 +341,11 @@ void check_key_parts(const std::string& text, const std::string& source) {
   long line = 1;
   int parts = 0;  // parts of the dotted run being read: "a.b.c" has 3
   bool after_dot = false;
-  std::size_t i = 0;
+  std::size_t i = 0, run_start = 0;
   while (i < text.size()) {
     const char c = text[i];
     if (bare_key_char(c) || c == '"' || c == '\'') {
+      if (!after_dot) run_start = i;
       if (bare_key_char(c)) {
         while (i < text.size() && bare_key_char(text[i])) ++i;
       } else {
@@ -353,7 +354,8 @@ void check_key_parts(const std::string& text, const std::string& source) {
       parts = after_dot ? parts + 1 : 1;
       after_dot = false;
       if (parts > kMaxKeyParts)
-        throw InputError(str_cat(source, ":", line, ": invalid TOML: a key of more than ", kMaxKeyParts,
+        throw InputError(str_cat(source, ":", line, ": invalid TOML: the key '", text.substr(run_start, 40),
+                                 "...' has more than ", kMaxKeyParts,
                                  " dotted parts (tables nested too deeply for a scenario)"));
     } else if (c == ' ' || c == '\t') {
       ++i;

@@ -90,6 +90,7 @@ class Cvode {
   void* nonlin_ = nullptr;   // SUNNonlinearSolver (Adams)
   bool initialized_ = false;
   double t_stop_ = 0.0;
+  double t_step_start_ = 0.0, t_current_ = 0.0;  // the last step, for last_step_piece()
   std::exception_ptr pending_;
   std::string last_message_;
   // Counters of the integrations before the last re-initialization (CVODE restarts its own).

@@ -93,7 +93,7 @@ class Dopri5 {
         k1 = k1_.data();
         ++stats_.steps;
         update_stiffness(hs);
-        const DensePiece piece{t_start, hs, 4, dim_, dense_.data()};
+        const DensePiece piece{t_start, t, 4, dim_, dense_.data()};
         bool stop = false;
         if constexpr (std::is_void_v<decltype(on_step(piece))>) on_step(piece);
         else stop = on_step(piece) == StepAction::Stop;

@@ -38,6 +38,11 @@ struct SolveStats {
   std::string method;
 };
 
+// A Riccati solution that should be positive semidefinite counts as such while its smallest
+// eigenvalue is above -kSemidefiniteTolerance times its largest: a solution that decays to about
+// zero (no process noise, no weight) crosses zero by round-off and integration error only.
+constexpr double kSemidefiniteTolerance = 1e-6;
+
 // A symmetric-matrix-valued solution X(t) on [t0, tf] kept as dense output.
 class SymmetricSolution {
  public:

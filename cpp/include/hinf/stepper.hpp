@@ -59,7 +59,7 @@ StepStats integrate(const SolverOptions& options, int dim, Rhs&& rhs, const Cvod
       stopped = true;
       return StepAction::Stop;
     }
-    t_switch = piece.t_end();
+    t_switch = piece.t_end;
     // Auto: steps limited by stability cost more than an implicit method's.
     if (options.method == Method::Auto && stepper.stiff() && t_switch != t1) {
       stiff = true;
