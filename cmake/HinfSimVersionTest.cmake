@@ -1,6 +1,7 @@
 # ctest script (tests/cpp/CMakeLists.txt): `hinf-sim --version` exits 0 and prints
 # "hinf-sim <the VERSION file>" and nothing else.
 #   cmake -DHINF_SIM=<hinf-sim> -DVERSION_FILE=<VERSION> -P HinfSimVersionTest.cmake
+cmake_minimum_required(VERSION 3.20)
 file(READ "${VERSION_FILE}" expected)
 string(STRIP "${expected}" expected)
 execute_process(COMMAND "${HINF_SIM}" --version RESULT_VARIABLE status OUTPUT_VARIABLE output

@@ -5,16 +5,12 @@
 # Variables (-D): BUILD_DIR, SOURCE_DIR (the project's), WORK_DIR (scratch, emptied first),
 # CONFIG, GENERATOR, MAKE_PROGRAM, CXX_COMPILER (the project's, so that the consumer compiles
 # and links like it), INCLUDEDIR and BINDIR (relative to the prefix), VERSION.
+cmake_minimum_required(VERSION 3.20)
 set(prefix "${WORK_DIR}/prefix")
 set(consumer_build "${WORK_DIR}/consumer")
 # A fresh prefix every run: a file left by an earlier install must not stand in for one that
 # the install rules no longer install.
 file(REMOVE_RECURSE "${WORK_DIR}")
-
-function(fail)
-  string(JOIN "" message ${ARGN})
-  message(FATAL_ERROR "${message}")
-endfunction()
 
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${prefix}" --config "${CONFIG}"
                 OUTPUT_QUIET COMMAND_ERROR_IS_FATAL ANY)
@@ -23,16 +19,23 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${
 # installed as well: none needs a private header of cpp/src.
 file(GLOB public_headers RELATIVE "${SOURCE_DIR}/cpp/include" "${SOURCE_DIR}/cpp/include/hinf/*.hpp")
 file(GLOB installed_headers RELATIVE "${prefix}/${INCLUDEDIR}" "${prefix}/${INCLUDEDIR}/hinf/*.hpp")
-if(NOT public_headers STREQUAL installed_headers)
-  fail("installed headers differ from cpp/include/hinf:\n  public:    ${public_headers}\n"
-       "  installed: ${installed_headers}")
+set(not_installed "")
+foreach(header IN LISTS public_headers)
+  if(NOT header IN_LIST installed_headers)
+    list(APPEND not_installed "${header}")
+  endif()
+endforeach()
+if(not_installed)
+  list(JOIN not_installed ", " not_installed)
+  message(FATAL_ERROR "public headers of cpp/include not installed in ${prefix}/${INCLUDEDIR}: "
+                      "${not_installed}")
 endif()
 foreach(header IN LISTS installed_headers)
   file(STRINGS "${prefix}/${INCLUDEDIR}/${header}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
   foreach(line IN LISTS includes)
     string(REGEX REPLACE "^[^\"]*\"([^\"]+)\".*$" "\\1" included "${line}")
     if(NOT EXISTS "${prefix}/${INCLUDEDIR}/${included}")
-      fail("${header} includes \"${included}\", which is not installed (a private header?)")
+      message(FATAL_ERROR "${header} includes \"${included}\", which is not installed (a private header?)")
     endif()
   endforeach()
 endforeach()
@@ -41,14 +44,14 @@ endforeach()
 # without them, and relocatable (the wheel is unpacked anywhere).
 file(GLOB_RECURSE cmake_files "${prefix}/*.cmake")
 if(NOT cmake_files)
-  fail("no CMake package files installed under ${prefix}")
+  message(FATAL_ERROR "no CMake package files installed under ${prefix}")
 endif()
 foreach(file IN LISTS cmake_files)
   file(READ "${file}" text)
   foreach(tree IN ITEMS "${SOURCE_DIR}" "${BUILD_DIR}")
     string(FIND "${text}" "${tree}" at)
     if(NOT at EQUAL -1)
-      fail("${file} refers to ${tree}")
+      message(FATAL_ERROR "${file} refers to ${tree}")
     endif()
   endforeach()
 endforeach()
@@ -70,7 +73,7 @@ file(REAL_PATH "${found}" found)
 file(REAL_PATH "${prefix}" real_prefix)
 string(FIND "${found}" "${real_prefix}/" at)
 if(NOT at EQUAL 0)
-  fail("find_package(hinf_cpp) found ${found}, not the package installed in ${prefix}")
+  message(FATAL_ERROR "find_package(hinf_cpp) found ${found}, not the package installed in ${prefix}")
 endif()
 
 execute_process(COMMAND "${CMAKE_COMMAND}" --build "${consumer_build}" --config "${CONFIG}"
