@@ -30,6 +30,7 @@ import warnings
 
 from . import _core
 from .outputs import check_output_folder, check_output_path, write_text
+from .compare import run_key
 from .progress import Progress
 from .scenario import load_scenario
 from .tables import markdown_table, text_table
@@ -37,17 +38,7 @@ from .tables import markdown_table, text_table
 # Words shared with hinf-sim (cpp/app/hinf_sim.cpp).
 OUT_OF_MEMORY = "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables"
 
-METRIC_NAMES = [
-    "rms_position_error_last_half",
-    "max_position_error",
-    "final_position_error",
-    "control_l2",
-    "control_error_l2",
-    "disturbance_l2",
-    "l2_gain",
-    "max_rho_sigma_z",
-    "rms_estimation_error_last_half",
-]
+METRIC_NAMES = [definition.name for definition in _core.metric_table()]
 
 
 def _format(value) -> str:
@@ -59,20 +50,22 @@ def _format(value) -> str:
 def summary(result: _core.RunResult) -> str:
     """A plain-text summary of a run: design facts, metrics, timings."""
     metrics = result.metrics
-    lines = [f"scenario {result.scenario_name}: controller {result.controller}, "
+    lines = [f"scenario {result.scenario_name}: controller {run_key(result.law, result.output_feedback)}, "
              f"gamma = {result.gamma:g}",
              f"  Z(t) eigenvalues in [{result.Z_min_eig:.4g}, {result.Z_max_eig:.4g}]"]
-    if math.isfinite(result.simulation.coupling_violation_t):
+    estimator = result.simulation.estimator
+    if estimator is not None and math.isfinite(estimator.coupling_violation_t):
         lines.append(f"  coupling condition rho(Sigma Z) < gamma^2 violated from "
-                     f"t = {result.simulation.coupling_violation_t:g}")
-    if result.simulation.status != "completed":
-        lines.append(f"  status: {result.simulation.status} ({result.simulation.status_message})")
+                     f"t = {estimator.coupling_violation_t:g}")
+    if result.simulation.status != _core.RunStatus.completed:
+        lines.append(f"  status: {result.simulation.status.name} ({result.simulation.status_message})")
     if result.gamma_star is not None:
         lines.append(f"  gamma* = {result.gamma_star:.6g}")
     width = max(len(name) for name in METRIC_NAMES)
     for name in METRIC_NAMES:
-        if math.isfinite(metrics[name]):
-            lines.append(f"  {name:<{width}}  {_format(metrics[name])}")
+        value = getattr(metrics, name)
+        if math.isfinite(value):
+            lines.append(f"  {name:<{width}}  {_format(value)}")
     t = result.timing
     lines.append(f"  time: design {t.design * 1e3:.2f} ms, simulate {t.simulate * 1e3:.2f} ms, "
                  f"total {t.total * 1e3:.2f} ms")
@@ -111,9 +104,9 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.gamma_star:
         result.gamma_star = _core.scenario_gamma_star(scenario).gamma_star
     if args.json is not None:
-        write_text(args.json, result.to_json() + "\n")
+        write_text(args.json, _core.results_json(result) + "\n")
     if args.csv is not None:
-        write_text(args.csv, result.to_csv())
+        write_text(args.csv, _core.results_csv(result))
     if args.npz is not None:
         save_npz(result, args.npz)
     if args.plot is not None:
@@ -121,8 +114,8 @@ def cmd_run(args: argparse.Namespace) -> int:
 
         save_figure(xy_figure(result), args.plot)
     print(summary(result))
-    if result.simulation.status != "completed":
-        print(f"hinf-cpp: warning: the run {result.simulation.status}: {result.simulation.status_message}",
+    if result.simulation.status != _core.RunStatus.completed:
+        print(f"hinf-cpp: warning: the run {result.simulation.status.name}: {result.simulation.status_message}",
               file=sys.stderr)
     return 0
 
@@ -133,11 +126,11 @@ def gamma_star_dict(result: _core.GammaStarResult) -> dict:
         "lower": _number(result.lower),
         "upper": _number(result.upper),
         "t_escape_lower": _number(result.t_escape_lower),
-        "binding": result.binding,
+        "binding": result.binding.name,
         "converged": result.converged,
         "evaluations": len(result.trials),
         "trials": [{"gamma": t.gamma, "passed": t.passed, "t_escape": _number(t.t_escape),
-                    "condition": t.condition} for t in result.trials],
+                    "condition": t.condition.name} for t in result.trials],
     }
 
 
@@ -156,9 +149,9 @@ def cmd_gamma_star(args: argparse.Namespace) -> int:
     print(f"  bracket [{result.lower:.8g}, {result.upper:.8g}]"
           + ("" if result.converged else "  (not converged: max_evaluations reached)"))
     if math.isfinite(result.t_escape_lower):
-        print(f"  at gamma = {result.lower:.8g}: {result.binding} fails at t = {result.t_escape_lower:.6g}")
-    elif result.binding:
-        print(f"  at gamma = {result.lower:.8g}: {result.binding} fails")
+        print(f"  at gamma = {result.lower:.8g}: {result.binding.name} fails at t = {result.t_escape_lower:.6g}")
+    elif result.binding != _core.GammaCondition.none:
+        print(f"  at gamma = {result.lower:.8g}: {result.binding.name} fails")
     print(f"  {len(result.trials)} evaluations")
     if args.json is not None:
         write_text(args.json, json.dumps({"scenario": scenario.name, **gamma_star_dict(result)}, indent=2) + "\n")
@@ -215,7 +208,7 @@ def metrics_markdown(rows: list[tuple[str, _core.RunResult]]) -> str:
     lines = [header, "|---" * (len(rows) + 1) + "|"]
     lines.append("| gamma | " + " | ".join(_format(r.gamma) for _, r in rows) + " |")
     for name in METRIC_NAMES:
-        values = [r.metrics[name] for _, r in rows]
+        values = [getattr(r.metrics, name) for _, r in rows]
         if all(not math.isfinite(v) for v in values):
             continue
         lines.append(f"| {name} | " + " | ".join(_format(v) for v in values) + " |")
@@ -289,9 +282,9 @@ def cmd_recovery(args: argparse.Namespace) -> int:
     print(text_table(*study.table()), end="")
     for v in study.verdicts:
         if v.error:
-            print(f"  {v.controller} on {v.scenario} failed: {v.error}")
+            print(f"  {v.controller.name} on {v.scenario} failed: {v.error}")
         elif v.turns_around:
-            print(f"  {v.controller} on {v.scenario} turns around: {v.turn.reason}")
+            print(f"  {v.controller.name} on {v.scenario} turns around: {v.turn.reason}")
     if args.json is not None:
         write_text(args.json, json.dumps(study.to_dict(), indent=2) + "\n")
         print(f"wrote {args.json}")
@@ -328,7 +321,7 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def cmd_paper(args: argparse.Namespace) -> int:
     from . import scenario_path
-    from .compare import compare
+    from .compare import Feedback, compare
     from .plotting import paths_figure, save_figure, xy_figure
 
     _check_outputs(folders=[args.out])
@@ -340,8 +333,8 @@ def cmd_paper(args: argparse.Namespace) -> int:
         scenarios[name] = load_scenario(scenario_path(name))
         result = _core.run_scenario(scenarios[name])
         stem = name.replace("paper_", "")
-        write_text(out / f"{stem}.json", result.to_json() + "\n")
-        write_text(out / f"{stem}.csv", result.to_csv())
+        write_text(out / f"{stem}.json", _core.results_json(result) + "\n")
+        write_text(out / f"{stem}.csv", _core.results_csv(result))
         save_figure(xy_figure(result, title=f"Paper {figure}: {result.scenario_name}"), out / f"{stem}_xy.png")
         print(summary(result))
         rows.append((figure, result))
@@ -359,10 +352,11 @@ def cmd_paper(args: argparse.Namespace) -> int:
                 "the desired start)' is the same run started on the desired trajectory, the disturbance's "
                 "gain alone.", ""]
     with Progress(quiet=args.quiet) as progress:
-        for figure, name, feedback in [("Figure 1", "paper_fig1", "state"), ("Figure 2", "paper_fig2", "output")]:
-            comparison = compare(scenarios[name], feedback=feedback, progress=progress)
+        for figure, name, feedback in [("Figure 1", "paper_fig1", Feedback.state),
+                                       ("Figure 2", "paper_fig2", Feedback.output)]:
+            comparison = compare(scenarios[name], feedback=[feedback], progress=progress)
             stem = name.replace("paper_", "")
-            mode = "state feedback" if feedback == "state" else "output feedback"
+            mode = f"{feedback.name} feedback"
             write_text(out / f"comparison_{stem}.json", comparison.to_json() + "\n")
             save_figure(paths_figure(comparison.results(),
                                      title=f"Paper {figure} scenario: the three laws, {mode}"),
@@ -388,8 +382,8 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _add_law_options(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--controllers", default="hinf,lqr,cascade",
-                        help="comma-separated laws among hinf, lqr, cascade (default: all three)")
+    parser.add_argument("--controllers", default=",".join(_core.Law.__members__),
+                        help=f"comma-separated laws among {', '.join(_core.Law.__members__)} (default: all)")
 
 
 def _add_quiet(parser: argparse.ArgumentParser) -> None:
