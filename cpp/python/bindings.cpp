@@ -63,36 +63,20 @@ class named_enum_caster : public type_caster_base<E> {
   E loaded_{};
 };
 
-template <>
-class type_caster<hinf::Method> : public named_enum_caster<hinf::Method> {
- public:
-  static constexpr auto name = io_name("Method | str", "Method");
-};
-template <>
-class type_caster<hinf::RunStatus> : public named_enum_caster<hinf::RunStatus> {
- public:
-  static constexpr auto name = io_name("RunStatus | str", "RunStatus");
-};
-template <>
-class type_caster<hinf::Law> : public named_enum_caster<hinf::Law> {
- public:
-  static constexpr auto name = io_name("Law | str", "Law");
-};
-template <>
-class type_caster<hinf::FilterLinearization> : public named_enum_caster<hinf::FilterLinearization> {
- public:
-  static constexpr auto name = io_name("FilterLinearization | str", "FilterLinearization");
-};
-template <>
-class type_caster<hinf::CouplingPolicy> : public named_enum_caster<hinf::CouplingPolicy> {
- public:
-  static constexpr auto name = io_name("CouplingPolicy | str", "CouplingPolicy");
-};
-template <>
-class type_caster<hinf::GammaCondition> : public named_enum_caster<hinf::GammaCondition> {
- public:
-  static constexpr auto name = io_name("GammaCondition | str", "GammaCondition");
-};
+// The caster of each enum; its name in signatures says what it takes and what it gives.
+#define HINF_ENUM_CASTER(E)                                                  \
+  template <>                                                                \
+  class type_caster<hinf::E> : public named_enum_caster<hinf::E> {           \
+   public:                                                                   \
+    static constexpr auto name = io_name(#E " | str", #E);                   \
+  }
+HINF_ENUM_CASTER(Method);
+HINF_ENUM_CASTER(RunStatus);
+HINF_ENUM_CASTER(Law);
+HINF_ENUM_CASTER(FilterLinearization);
+HINF_ENUM_CASTER(CouplingPolicy);
+HINF_ENUM_CASTER(GammaCondition);
+#undef HINF_ENUM_CASTER
 
 }  // namespace pybind11::detail
 
@@ -101,12 +85,20 @@ using namespace hinf;
 namespace {
 
 // An enum E as a Python enum whose members are the names of its table (enum_names.hpp), with
-// a constructor from the name: Method("erk") is Method.erk.
+// a constructor from the name: Method("erk") is Method.erk. A member equals only itself (not its
+// name: "erk" is taken as input, but Method.erk == "erk" is False, as hashes must agree).
 template <class E>
 void bind_enum(py::module_& m, const char* name, const char* doc) {
   py::enum_<E> cls(m, name, doc);
   for (const auto& [item, item_name] : EnumNames<E>::names) cls.value(item_name, item);
   cls.def(py::init([](const std::string& item_name) { return from_string<E>(item_name); }), py::arg("name"));
+  // Replaces (not overloads) pybind11's ==, whose argument would go through the caster above.
+  const auto same_member = [](E self, const py::object& other) {
+    return py::isinstance<E>(other) && other.cast<E>() == self;
+  };
+  cls.attr("__eq__") = py::cpp_function(same_member, py::name("__eq__"), py::is_method(cls), py::arg("other"));
+  const auto other_member = [same_member](E self, const py::object& other) { return !same_member(self, other); };
+  cls.attr("__ne__") = py::cpp_function(other_member, py::name("__ne__"), py::is_method(cls), py::arg("other"));
 }
 
 // ---- values from Python ----
