@@ -30,7 +30,7 @@ import warnings
 
 from . import _core
 from .outputs import check_output_folder, check_output_path, write_text
-from .compare import run_key
+from .compare import Feedback, run_key
 from .progress import Progress
 from .scenario import load_scenario
 from .tables import markdown_table, text_table
@@ -321,7 +321,7 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def cmd_paper(args: argparse.Namespace) -> int:
     from . import scenario_path
-    from .compare import Feedback, compare
+    from .compare import compare
     from .plotting import paths_figure, save_figure, xy_figure
 
     _check_outputs(folders=[args.out])
@@ -386,8 +386,28 @@ def _add_law_options(parser: argparse.ArgumentParser) -> None:
                         help=f"comma-separated laws among {', '.join(_core.Law.__members__)} (default: all)")
 
 
+def _add_comparison_options(parser: argparse.ArgumentParser) -> None:
+    """The laws, feedback modes and worst case of compare and report."""
+    _add_law_options(parser)
+    modes = [mode.name for mode in Feedback]
+    parser.add_argument("--feedback", help=f"{', '.join(modes)} or {','.join(modes)} (default: all with [measurement])")
+    parser.add_argument("--worst-case", action="store_true",
+                        help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+
+
 def _add_quiet(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+
+
+def _add_outputs(parser: argparse.ArgumentParser, json: str | None = None, plot: str | None = None,
+                 quiet: bool = False) -> None:
+    """--json (writes `json`), --plot (writes `plot`) and --quiet, those asked for."""
+    if json is not None:
+        parser.add_argument("--json", help=f"write {json} (JSON)")
+    if plot is not None:
+        parser.add_argument("--plot", help=f"write {plot} (PNG, PDF or SVG)")
+    if quiet:
+        _add_quiet(parser)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -406,13 +426,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     comp = sub.add_parser("compare", help="the H-infinity law against the baselines (lqr, cascade)")
     comp.add_argument("scenario", help="scenario file (TOML)")
-    _add_law_options(comp)
-    comp.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
-    comp.add_argument("--worst-case", action="store_true",
-                      help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
-    comp.add_argument("--json", help="write the metrics of every run (JSON)")
-    comp.add_argument("--plot", help="write the overlaid x-y paths (PNG, PDF or SVG)")
-    _add_quiet(comp)
+    _add_comparison_options(comp)
+    _add_outputs(comp, json="the metrics of every run", plot="the overlaid x-y paths", quiet=True)
     comp.set_defaults(handler=cmd_compare)
 
     rec = sub.add_parser("recovery", help="recovery from poor initial conditions, turning around")
@@ -422,18 +437,13 @@ def build_parser() -> argparse.ArgumentParser:
                      help="recovered: final position error below this (m, default 0.5)")
     rec.add_argument("--heading-tol", type=float, default=10.0,
                      help="recovered: final wrapped heading error below this (degrees, default 10)")
-    rec.add_argument("--json", help="write the verdicts (JSON)")
-    rec.add_argument("--plot", help="write the x-y paths, one panel per scenario (PNG, PDF or SVG)")
-    _add_quiet(rec)
+    _add_outputs(rec, json="the verdicts", plot="the x-y paths, one panel per scenario", quiet=True)
     rec.set_defaults(handler=cmd_recovery)
 
     rep = sub.add_parser("report", help="comparison, figures, tables and results files in a folder")
     rep.add_argument("scenario", help="scenario file (TOML)")
     rep.add_argument("--out", required=True, help="output folder")
-    _add_law_options(rep)
-    rep.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
-    rep.add_argument("--worst-case", action="store_true",
-                     help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+    _add_comparison_options(rep)
     rep.add_argument("--pdf", action="store_true", help="also write every figure as a vector PDF")
     _add_quiet(rep)
     rep.set_defaults(handler=cmd_report)
@@ -447,12 +457,12 @@ def build_parser() -> argparse.ArgumentParser:
     star.add_argument("--rtol", type=float, default=1e-7, help="relative width of the final bracket")
     star.add_argument("--max-evaluations", type=int, default=200)
     star.add_argument("--threads", type=int, default=2, help="evaluations in parallel per round")
-    star.add_argument("--json", help="write the result with every gamma tried (JSON)")
+    _add_outputs(star, json="the result with every gamma tried")
     star.set_defaults(handler=cmd_gamma_star)
 
     certify = sub.add_parser("certify", help="the certificates of paper §3 (eqs. 22-24)")
     certify.add_argument("scenario", help="scenario file (TOML)")
-    certify.add_argument("--json", help="write the certificates (JSON)")
+    _add_outputs(certify, json="the certificates")
     certify.set_defaults(handler=cmd_certify)
 
     sweep = sub.add_parser("sweep-gamma", help="measured L2 gain and L_gamma against gamma")
@@ -462,9 +472,7 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--keep-initial-error", action="store_true",
                        help="start from the scenario's initial state (default: from the desired state)")
     sweep.add_argument("--threads", type=int, default=2)
-    sweep.add_argument("--plot", help="write the figure (PNG, PDF or SVG)")
-    sweep.add_argument("--json", help="write the sweep (JSON)")
-    _add_quiet(sweep)
+    _add_outputs(sweep, json="the sweep", plot="the figure", quiet=True)
     sweep.set_defaults(handler=cmd_sweep_gamma)
 
     paper = sub.add_parser("paper", help="the paper's runs: figures, results files, metrics and the "
