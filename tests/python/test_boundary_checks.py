@@ -107,7 +107,8 @@ def test_python_model_structure_is_read_once():
     model = Counting()
     tr = hc.Trajectory(model, [1.0, 0.0], [0.0], 0.0, 1.0)
     sol = hc.solve_grde(tr, np.eye(2), np.eye(2), 5.0)
-    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0], hc.SimulationOptions(output_dt=0.1))
+    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0],
+                                     hc.SimulationOptions(output_dt=0.1))
     hc.compute_metrics(model, run, np.eye(2))
     assert model.calls == 2  # n() and position_indices(), once each
 
@@ -195,7 +196,8 @@ def test_python_model_with_position_indices_out_of_range_raises():
         good = hc.LinearModel(-np.eye(2), np.array([[0.0], [1.0]]), np.array([[0.0], [1.0]]))
         tr = hc.Trajectory(good, [1.0, 0.0], [0.0], 0.0, 1.0)
         sol = hc.solve_grde(tr, np.eye(2), np.eye(2), 5.0)
-        run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0], hc.SimulationOptions(output_dt=0.1))
+        run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0],
+                                         hc.SimulationOptions(output_dt=0.1))
         out = {}
         for name, call in [("metrics", lambda: hc.compute_metrics(OutOfRange(), run, np.eye(2))),
                            ("trajectory", lambda: hc.Trajectory(OutOfRange(), [1.0, 0.0], [0.0], 0.0, 1.0))]:
@@ -532,7 +534,8 @@ def test_standard_normal_samples_refuses_absurd_counts():
 
 def test_compute_metrics_of_a_run_of_another_model(ship_design):
     tr, sol = ship_design
-    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, SHIP_Q_D0, hc.SimulationOptions(output_dt=0.5))
+    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, SHIP_Q_D0,
+                                     hc.SimulationOptions(output_dt=0.5))
     lti = hc.LinearModel(-np.eye(2), np.ones((2, 1)), np.eye(2))
     with pytest.raises(ValueError, match=r"run.q has shape \(5, 6\), expected \(5, 2\) for the model 'linear'"):
         hc.compute_metrics(lti, run, np.eye(2))

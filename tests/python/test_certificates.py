@@ -244,7 +244,8 @@ def test_closed_loops_decay_at_the_certified_rate(paper_design, paper_trajectory
     for _ in range(12):
         e = rng.standard_normal(6)
         e *= radius / np.linalg.norm(e)
-        run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0 + e, hc.SimulationOptions(output_dt=0.01, solver=options))
+        run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0 + e,
+                                         hc.SimulationOptions(output_dt=0.01, solver=options))
         q_e = run.q_e()
         # q_e(t0) = (q_d0 + e) - q_d0: e was rounded once when added to q_d0 (|q_d0| = 1), an
         # absolute error of eps/2 per entry (2.6e-13 relative to the radius 8.4e-4).

@@ -615,7 +615,8 @@ SCALAR_OF_CASES = {
     # Yet the filter never binds: as gamma decreases to its threshold Sigma -> inf, so
     # rho(Sigma Z) >= lambda_min(Z) lambda_max(Sigma) -> inf and the coupling fails first
     # (here from 1.3988). So "filter" cannot be constructed as the binding condition.
-    "filter threshold above the GRDE's": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0, 5.0), 1e-7, hc.GammaCondition.coupling),
+    "filter threshold above the GRDE's": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0, 5.0), 1e-7,
+                                          hc.GammaCondition.coupling),
     "filter threshold, qf tiny": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1e-9, 1.0, 1e-3, 5.0), 1e-7, hc.GammaCondition.coupling),
     # Tiny N and Sigma0: Sigma stays ~1e-6, and the coupling window above the GRDE's gamma*
     # is 2.1e-7 relative (closed form), below the bracket width 1e-5: the GRDE binds.

@@ -463,8 +463,9 @@ def test_linear_closed_loop_matches_an_independent_integration(gamma):
     w1 = hc.Signal(0.0, [hc.Harmonic(0.4, 2.0)])
     problem = hc.OutputFeedbackProblem(grde, sigma, T, noise, N, Sigma0, np.eye(n))
     q0 = np.array([1.0, -0.5, 0.3])
+    solver = hc.SolverOptions("erk", 1e-11, 1e-13)
     run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde, kappa), [w1, 0.0, 0.0, 0.0], q0,
-                                      simulation=hc.SimulationOptions(0.1, solver=hc.SolverOptions("erk", 1e-11, 1e-13)))
+                                      simulation=hc.SimulationOptions(0.1, solver=solver))
     q, q_hat, Sigma = output_feedback_reference(
         t0, tf, q0, run.t, f=lambda t, x: A @ x, B=B, D=D, C=C, A_filter=lambda t, qd, qh: A,
         q_d=tr.q_d, u_d=tr.u_d, Z=grde.Z, w=lambda t: np.array([0.4 * math.sin(2.0 * t), 0.0]),
@@ -496,8 +497,9 @@ def test_no_noise_no_error_stays_on_the_trajectory(paper_trajectory, paper_solut
     so the run stays there to integration accuracy (measured 1.3e-12 for both), whatever the
     noise array holds (sigma multiplies it)."""
     design = paper_solutions[method]
-    run = hc.simulate_output_feedback(paper_problem(design, paper_noise(seed=5), sigma=0.0), hc.HinfStateFeedback(design),
-                                      None, PAPER_Q_D0, simulation=hc.SimulationOptions(solver=hc.SolverOptions(method)))
+    run = hc.simulate_output_feedback(paper_problem(design, paper_noise(seed=5), sigma=0.0),
+                                      hc.HinfStateFeedback(design), None, PAPER_Q_D0,
+                                      simulation=hc.SimulationOptions(solver=hc.SolverOptions(method)))
     assert run.t.shape == (4001,) and run.estimator.q_hat.shape == (4001, 6) and run.estimator.y.shape == (4001, 3)
     assert np.max(np.abs(run.estimator.q_hat)) < 1e-8
     assert np.max(np.abs(run.q - run.q_d)) < 1e-8
@@ -514,8 +516,9 @@ def test_no_noise_estimation_error_vanishes(paper_trajectory, paper_solutions, m
     estimation error |q_hat - q_e| decays to round-off (measured 1e-2 at 5 s, 3e-7 at 20 s,
     1.3e-12 at 40 s) and the ship tracks (position error 1.5e-11 at 40 s)."""
     design = paper_solutions[method]
-    run = hc.simulate_output_feedback(paper_problem(design, paper_noise(seed=6), sigma=0.0), hc.HinfStateFeedback(design),
-                                      None, PAPER_Q0, hc.OutputFeedbackOptions(filter_A=filter_A),
+    run = hc.simulate_output_feedback(paper_problem(design, paper_noise(seed=6), sigma=0.0),
+                                      hc.HinfStateFeedback(design), None, PAPER_Q0,
+                                      hc.OutputFeedbackOptions(filter_A=filter_A),
                                       hc.SimulationOptions(solver=hc.SolverOptions(method)))
     error = np.linalg.norm(run.estimator.q_hat - run.q_e(), axis=1)
     # q_hat(t0) = 0 and q_e(t0) = q0 - q_d0, the same subtraction: the norm of the same vector.

@@ -93,7 +93,8 @@ def test_output_feedback_problem_pickles_with_its_design(paper_solutions):
 
 def test_signals_pickle_by_value():
     times = np.linspace(-2.0, 13.0, 301)
-    for signal in (hc.Signal(), hc.Signal(0.25), hc.Signal(0.1, [hc.Harmonic(0.3, 0.2, 0.5), hc.Harmonic(1.0, 3.0, 0.0, True)]),
+    harmonics = [hc.Harmonic(0.3, 0.2, 0.5), hc.Harmonic(1.0, 3.0, 0.0, True)]
+    for signal in (hc.Signal(), hc.Signal(0.25), hc.Signal(0.1, harmonics),
                    hc.Signal.table([-2.0, 0.0, 5.5, 13.0], [1.0, -1.0, 2.5, 0.0])):
         copy = round_trip(signal)
         assert repr(copy) == repr(signal)

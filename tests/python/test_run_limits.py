@@ -89,11 +89,13 @@ def test_max_steps_bounds_the_whole_cvode_closed_loop(paper_trajectory, paper_so
     """CVODE's own limit counts per call, and the loop called it once per output time (4000
     calls), so a budget far below the loop's total number of steps never stopped it."""
     law = hc.HinfStateFeedback(paper_solutions["erk"])
-    full = hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0, hc.SimulationOptions(output_dt=0.01, solver=hc.SolverOptions(method)))
+    full = hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0,
+                                      hc.SimulationOptions(output_dt=0.01, solver=hc.SolverOptions(method)))
     budget = full.stats.steps // 3
     assert budget > 100  # far more than the steps between two output times
     with pytest.raises(hc.SolverError, match=f"max_steps = {budget}") as error:
-        hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0, hc.SimulationOptions(output_dt=0.01, solver=hc.SolverOptions(method, max_steps=budget)))
+        solver = hc.SolverOptions(method, max_steps=budget)
+        hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0, hc.SimulationOptions(0.01, solver=solver))
     assert 0.0 < error.value.t < 40.0
 
 
@@ -346,8 +348,10 @@ def test_divergence_factor_is_a_solver_key(tmp_path):
     whose disturbance (amplitude 30 on the surge force; errors up to ~200) the default bound of
     1e3 x 22 m lets finish."""
     text = huge_disturbance_text(30.0)
-    assert hc.run_scenario(hc.load_scenario(write(tmp_path, "a.toml", text))).simulation.status == hc.RunStatus.completed
+    status = hc.run_scenario(hc.load_scenario(write(tmp_path, "a.toml", text))).simulation.status
+    assert status == hc.RunStatus.completed
     tight = replace(text, "atol = 1e-10", "atol = 1e-10\ndivergence_factor = 1.5")
-    assert hc.run_scenario(hc.load_scenario(write(tmp_path, "b.toml", tight))).simulation.status == hc.RunStatus.diverged
+    status = hc.run_scenario(hc.load_scenario(write(tmp_path, "b.toml", tight))).simulation.status
+    assert status == hc.RunStatus.diverged
     with pytest.raises(ValueError, match=r"b\.toml: \[solver\] divergence_factor must be a finite number > 1"):
         hc.load_scenario(write(tmp_path, "b.toml", replace(tight, "= 1.5", "= 1.0")))

@@ -35,7 +35,8 @@ def test_zero_error_stays_on_the_desired_trajectory(paper_trajectory, paper_solu
     Measured max |q - q_d|: bdf 3.9e-7, adams 2.3e-7, erk 1.9e-9."""
     options = hc.SolverOptions(method=method)
     controller = hc.HinfStateFeedback(paper_solutions[method])
-    run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0, hc.SimulationOptions(output_dt=0.01, solver=options))
+    run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0,
+                                     hc.SimulationOptions(output_dt=0.01, solver=options))
     assert run.t.shape == (4001,) and run.q.shape == (4001, 6) and run.u.shape == (4001, 2)
     # t0 + k dt (library) against NumPy's linspace: round-off of times up to 40.
     np.testing.assert_allclose(run.t, np.linspace(0.0, 40.0, 4001), rtol=0, atol=ROUNDOFF * 40.0)
@@ -65,8 +66,9 @@ def test_closed_loop_matches_an_independent_integration(paper_trajectory, paper_
                     dense_output=True)
     assert ref.success
     controller = hc.HinfStateFeedback(sol, kappa=hc.Signal(kappa))
-    run = hc.simulate_state_feedback(paper_trajectory, controller, paper_disturbance_signals(),
-                                     PAPER_Q0, hc.SimulationOptions(output_dt=0.05, solver=hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-12)))
+    solver = hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-12)
+    run = hc.simulate_state_feedback(paper_trajectory, controller, paper_disturbance_signals(), PAPER_Q0,
+                                     hc.SimulationOptions(output_dt=0.05, solver=solver))
     keep = run.t <= t_end
     np.testing.assert_allclose(run.q[keep], ref.sol(run.t[keep]).T, rtol=0, atol=1e-7)
     # The recorded u and w are the law and the disturbance at the recorded states (the law in
@@ -199,7 +201,8 @@ def test_python_controller_matches_hinf_state_feedback(paper_trajectory, paper_s
     options = hc.SolverOptions(method=method, rtol=rtol, atol=atol)
     sol = paper_solutions[method]
     w = paper_disturbance_signals()
-    builtin = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), w, PAPER_Q0, hc.SimulationOptions(output_dt=0.01, solver=options))
+    builtin = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), w, PAPER_Q0,
+                                         hc.SimulationOptions(output_dt=0.01, solver=options))
     python = hc.simulate_state_feedback(paper_trajectory, PythonHinfLaw(sol, paper_trajectory), w,
                                         PAPER_Q0, hc.SimulationOptions(output_dt=0.01, solver=options))
     # Each run is within a few (rtol |q| + atol) of the exact closed loop (a contracting one):
@@ -242,4 +245,5 @@ def test_python_controller_exception_propagates(paper_trajectory, method):
             return np.array([1.0, 0.0])
 
     with pytest.raises(LookupError, match="controller failed"):
-        hc.simulate_state_feedback(paper_trajectory, Failing(), None, PAPER_Q_D0, hc.SimulationOptions(output_dt=0.1, solver=hc.SolverOptions(method=method)))
+        hc.simulate_state_feedback(paper_trajectory, Failing(), None, PAPER_Q_D0,
+                                   hc.SimulationOptions(output_dt=0.1, solver=hc.SolverOptions(method=method)))
