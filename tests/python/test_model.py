@@ -62,7 +62,7 @@ def test_ship_parameters_roundtrip():
     p = hc.ShipParameters(**OTHER_PARAMETERS)
     model = hc.ShipModel(p)
     for key, value in OTHER_PARAMETERS.items():
-        assert getattr(model.parameters, key) == value
+        assert getattr(model.parameters(), key) == value
     with pytest.raises(ValueError, match="m_v"):
         hc.ShipModel(hc.ShipParameters(m_v=float("nan")))
 
@@ -254,7 +254,7 @@ def test_python_linear_model_gives_the_same_grde_as_linear_model(n, method):
     rtol, atol = 1e-12, 1e-14  # of the desired trajectory's integration
     solutions = []
     for model in (hc.LinearModel(A, B, D), PyLinear(A, B, D)):
-        tr = hc.Trajectory(model, q_d0, u_d, 0.5, 4.0, rtol=rtol, atol=atol)
+        tr = hc.Trajectory(model, q_d0, u_d, 0.5, 4.0, hc.TrajectoryOptions(rtol=rtol, atol=atol))
         solutions.append((tr, hc.solve_grde(tr, Q, Qf, 10.0, options)))
     times = np.linspace(0.5, 4.0, 301)
     (tr1, s1), (tr2, s2) = solutions
@@ -324,7 +324,7 @@ def test_trajectory_uses_absolute_time(ship):
                     method="DOP853", rtol=1e-13, atol=1e-13, dense_output=True)
     times = np.linspace(3.0, 10.0, 141)
     np.testing.assert_allclose(tr.q_d(times), ref.sol(times).T, rtol=0, atol=1e-9)
-    assert (tr.t0, tr.tf, tr.n, tr.m) == (3.0, 10.0, 6, 2)
+    assert (tr.t0(), tr.tf(), tr.n(), tr.m()) == (3.0, 10.0, 6, 2)
 
 
 class Failing(hc.Model):
