@@ -50,7 +50,7 @@ TARGET_DESIGN_RUN_MS = 2.0   # trajectory + GRDE + closed loop, explicit path
 # step-size details alone).
 EQUAL_ACCURACY_FACTOR = 2.0
 
-# shared/numerics-notes.md, "The GRDE on the paper run" (ms, steps, RHS evaluations).
+# Reference measurements of an independent implementation, "the GRDE on the paper run" (ms, steps, RHS evaluations).
 NOTES = {
     "trajectory": (0.2, None, None),
     "erk": (0.28, 380, 2260),
@@ -391,7 +391,7 @@ def main(argv=None) -> int:
             "time": timed(lambda: hc.simulate_state_feedback(
                 tr, controller, sc.disturbance, sc.initial_q0,
                 hc.SimulationOptions(output_dt=tf - t0, solver=options)), N, 3)}
-    # The tolerance of numerics-notes.md's Dormand-Prince row ("tol 1e-8": atol = rtol).
+    # The tolerance of the reference measurements' Dormand-Prince row ("tol 1e-8": atol = rtol).
     notes_options = hc.SolverOptions(method="erk", rtol=1e-8, atol=1e-8)
     sol_notes = hc.solve_grde(tr, Q, Qf, gamma, notes_options)
     e0, ein = z_errors(sol_notes.Z(t0), sol_notes.Z(interior))
@@ -466,7 +466,7 @@ def report(out: dict, cpp_grde: dict, pieces: dict, fresh: dict,
               f"{1e3 * i['total']:.3f}")
 
     print("\n4. C++ pieces (rtol 1e-8 / atol 1e-10 unless noted), against "
-          "shared/numerics-notes.md")
+          "the reference measurements of an independent implementation")
     print(line)
     print(f"{'piece':<38} {'ms':>24} {'steps':>6} {'RHS':>6} {'us/step':>8} {'ns/RHS':>7}   "
           f"notes: ms / steps / RHS")

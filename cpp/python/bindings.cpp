@@ -76,6 +76,7 @@ HINF_ENUM_CASTER(Law);
 HINF_ENUM_CASTER(FilterLinearization);
 HINF_ENUM_CASTER(CouplingPolicy);
 HINF_ENUM_CASTER(GammaCondition);
+HINF_ENUM_CASTER(NewtonSystems);
 #undef HINF_ENUM_CASTER
 
 }  // namespace pybind11::detail
@@ -557,7 +558,8 @@ template <>
 struct Fields<SolverOptions> {
   static constexpr auto list = std::make_tuple(
       field("method", &SolverOptions::method), field("rtol", &SolverOptions::rtol), field("atol", &SolverOptions::atol),
-      field("max_steps", &SolverOptions::max_steps), field("escape_norm", &SolverOptions::escape_norm));
+      field("max_steps", &SolverOptions::max_steps), field("escape_norm", &SolverOptions::escape_norm),
+      field("newton_systems", &SolverOptions::newton_systems));
 };
 template <>
 struct Fields<SimulationOptions> {
@@ -611,7 +613,7 @@ struct Fields<SolveStats> {
   static constexpr auto list = std::make_tuple(
       field("steps", &SolveStats::steps), field("rejected", &SolveStats::rejected),
       field("rhs_evals", &SolveStats::rhs_evals), field("jac_evals", &SolveStats::jac_evals),
-      field("memory_bytes", &SolveStats::memory_bytes));
+      field("memory_bytes", &SolveStats::memory_bytes), field("method", &SolveStats::method));
 };
 template <>
 struct Fields<Timing> {
@@ -862,37 +864,37 @@ Signal signal_from_state(const py::tuple& state) {
   return Signal(state[1].cast<double>(), state[2].cast<std::vector<Harmonic>>());
 }
 
-// The pieces of a dense output as arrays: dim, t_start, h, degree, the coefficients in a row.
+// The pieces of a dense output as arrays: dim, t_start, t_end, degree, the coefficients in a row.
 py::tuple dense_state(const PiecewisePolynomial& p) {
   const std::size_t count = p.num_pieces();
-  Vec t_start(count), h(count);
+  Vec t_start(count), t_end(count);
   Eigen::VectorXi degree(count);
   std::vector<double> coefficients;
   for (std::size_t k = 0; k < count; ++k) {
     const DensePiece piece = p.piece(k);
     t_start[k] = piece.t_start;
-    h[k] = piece.h;
+    t_end[k] = piece.t_end;
     degree[k] = piece.degree;
     coefficients.insert(coefficients.end(), piece.coeffs, piece.coeffs + (piece.degree + 1) * piece.dim);
   }
   const Vec coefficient_row =
       Eigen::Map<const Vec>(coefficients.data(), static_cast<Eigen::Index>(coefficients.size()));
-  return py::make_tuple(p.dim(), t_start, h, degree, coefficient_row);
+  return py::make_tuple(p.dim(), t_start, t_end, degree, coefficient_row);
 }
 PiecewisePolynomial dense_from_state(const py::tuple& state) {
   check_state(state, 5, "PiecewisePolynomial");
   const int dim = state[0].cast<int>();
   check_dimension(dim, 1, "the dimension of a pickled PiecewisePolynomial");
-  const Vec t_start = state[1].cast<Vec>(), h = state[2].cast<Vec>(), coefficients = state[4].cast<Vec>();
+  const Vec t_start = state[1].cast<Vec>(), t_end = state[2].cast<Vec>(), coefficients = state[4].cast<Vec>();
   const Eigen::VectorXi degree = state[3].cast<Eigen::VectorXi>();
-  require(h.size() == t_start.size() && degree.size() == t_start.size(),
-          "a pickled PiecewisePolynomial needs as many step sizes and degrees as pieces");
+  require(t_end.size() == t_start.size() && degree.size() == t_start.size(),
+          "a pickled PiecewisePolynomial needs as many step ends and degrees as pieces");
   PiecewisePolynomial p(dim);
   Eigen::Index used = 0;
   for (Eigen::Index k = 0; k < t_start.size(); ++k) {
     require(degree[k] >= 0 && used + (degree[k] + 1) * Eigen::Index{dim} <= coefficients.size(),
             "a pickled PiecewisePolynomial has too few coefficients for its pieces");
-    p.append(t_start[k], h[k], degree[k], coefficients.data() + used);
+    p.append(DensePiece{t_start[k], t_end[k], degree[k], dim, coefficients.data() + used});
     used += (degree[k] + 1) * Eigen::Index{dim};
   }
   require(used == coefficients.size(), "a pickled PiecewisePolynomial has more coefficients than its pieces use");
@@ -991,6 +993,7 @@ PYBIND11_MODULE(_core, m) {
   bind_enum<CouplingPolicy>(m, "CouplingPolicy",
                             "What a violation of rho(Sigma Z) < gamma^2 does (output_feedback.hpp)");
   bind_enum<GammaCondition>(m, "GammaCondition", "The condition a gamma fails (analysis.hpp)");
+  bind_enum<NewtonSystems>(m, "NewtonSystems", "How BDF solves the Newton systems of a Riccati equation (solver_options.hpp)");
 
   // ---- signals ----
   bind_options<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal");
@@ -1451,7 +1454,7 @@ A model implemented in Python does not pickle.)doc")
   // ---- scenarios ----
   bind_options<MeasurementSpec>(m, "MeasurementSpec", "[measurement] of a scenario (paper §4)");
 
-  py::class_<Scenario>(m, "Scenario", R"doc(Everything one run needs (shared/scenarios.md).
+  py::class_<Scenario>(m, "Scenario", R"doc(Everything one run needs (docs/scenarios.md).
 Pickles as its scenario file (scenario_toml) and solver.escape_norm, which the file does not hold;
 a scenario whose model or signals are implemented in Python does not pickle (TypeError).)doc")
       .def(py::init<>())

@@ -429,6 +429,12 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
                                 " becomes singular. Increase gamma or Q0 - eta I. [", e.what(), "]"),
                         e.t(), "COUPLING_VIOLATED");
     const double rho = system.rho(e.t(), x.data());
+    if (rho >= (1.0 - 1e-3) * gamma2 && options.on_coupling_violation == CouplingPolicy::Flag)
+      throw SolverError(str_cat("output-feedback closed loop stopped at t = ", e.t(), ", where the coupling condition",
+                                " rho(Sigma Z) < gamma^2 is violated (flagged; rho(Sigma Z) = ", rho, ", gamma^2 = ",
+                                gamma2, "): there the estimator gain [I - gamma^-2 Sigma Z]^-1 is singular and the",
+                                " loop cannot go on. Increase gamma or Q0 - eta I. [", e.what(), "]"),
+                        e.t(), "COUPLING_VIOLATED");
     if (rho >= (1.0 - 1e-3) * gamma2)
       throw coupling_error(e.t(), rho, str_cat(" (between output times: the integration stopped there, ", e.what(), ")"));
     throw SolverError(str_cat("output-feedback closed loop: ", e.what()), e.t(), e.flag());

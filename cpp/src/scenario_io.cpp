@@ -542,8 +542,9 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     s.measurement = ms;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
-    TableReader r(*table, "[solver]", source, {"method", "rtol", "atol", "max_steps", "divergence_factor"});
+    TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});
     s.solver.method = r.enum_or("method", s.solver.method);
+    s.solver.newton_systems = r.enum_or("newton_systems", s.solver.newton_systems);
     s.solver.rtol = r.number_or("rtol", s.solver.rtol);
     s.solver.atol = r.number_or("atol", s.solver.atol);
     s.solver.max_steps = static_cast<long>(r.integer_or("max_steps", s.solver.max_steps));
@@ -715,6 +716,7 @@ std::string scenario_toml(const Scenario& s) {
     root.insert("measurement", std::move(measurement));
   }
   root.insert("solver", toml::table{{"method", to_string(s.solver.method)},
+                                    {"newton_systems", to_string(s.solver.newton_systems)},
                                     {"rtol", s.solver.rtol},
                                     {"atol", s.solver.atol},
                                     {"max_steps", static_cast<std::int64_t>(s.solver.max_steps)},

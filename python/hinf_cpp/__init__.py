@@ -7,7 +7,7 @@ core ``hinf_cpp._core``; this package adds scenario files, plots and the command
 (figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON)
 and ``hinf_cpp.analysis`` (attenuation against gamma).
 
-Conventions (docs/conventions.md): state order of the ship q = [u, v, r, x, y, psi];
+Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
 errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved
 backward in time from Z(tf) = Qf; the control is u = u_d - kappa B' Z q_e.
 

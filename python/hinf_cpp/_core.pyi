@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     Base class of the numerical failures of hinf_cpp.
@@ -23,6 +23,8 @@ class Method:
     
     Members:
     
+      auto
+    
       bdf
     
       adams
@@ -31,6 +33,7 @@ class Method:
     """
     __members__: typing.ClassVar[dict[str, Method]]
     adams: typing.ClassVar[Method]
+    auto: typing.ClassVar[Method]
     bdf: typing.ClassVar[Method]
     erk: typing.ClassVar[Method]
     def __eq__(self: Method | str, other: typing.Any) -> bool:
@@ -274,6 +277,52 @@ class GammaCondition:
     def __int__(self: GammaCondition | str) -> int:
         ...
     def __ne__(self: GammaCondition | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class NewtonSystems:
+    """
+    How BDF solves the Newton systems of a Riccati equation (solver_options.hpp)
+    
+    Members:
+    
+      auto
+    
+      dense
+    
+      lyapunov
+    """
+    __members__: typing.ClassVar[dict[str, NewtonSystems]]
+    auto: typing.ClassVar[NewtonSystems]
+    dense: typing.ClassVar[NewtonSystems]
+    lyapunov: typing.ClassVar[NewtonSystems]
+    def __eq__(self: NewtonSystems | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: NewtonSystems | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: NewtonSystems | str) -> int:
+        ...
+    def __ne__(self: NewtonSystems | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
@@ -537,12 +586,12 @@ class SolverOptions:
     Integrator and tolerances ([solver] of a scenario)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('method', 'rtol', 'atol', 'max_steps', 'escape_norm')
+    __match_args__: typing.ClassVar[tuple] = ('method', 'rtol', 'atol', 'max_steps', 'escape_norm', 'newton_systems')
     def __eq__(self, arg0: SolverOptions) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, method: Method | str = Method.bdf, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-10, max_steps: typing.SupportsInt | typing.SupportsIndex = 500000, escape_norm: typing.SupportsFloat | typing.SupportsIndex = 1000000.0) -> None:
+    def __init__(self, method: Method | str = Method.auto, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-10, max_steps: typing.SupportsInt | typing.SupportsIndex = 500000, escape_norm: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, newton_systems: NewtonSystems | str = NewtonSystems.auto) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -571,6 +620,12 @@ class SolverOptions:
         ...
     @method.setter
     def method(self, arg1: Method | str) -> None:
+        ...
+    @property
+    def newton_systems(self) -> NewtonSystems:
+        ...
+    @newton_systems.setter
+    def newton_systems(self, arg1: NewtonSystems | str) -> None:
         ...
     @property
     def rtol(self) -> float:
@@ -736,7 +791,7 @@ class SolveStats:
     Counts and stored size of a Riccati solve
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('steps', 'rejected', 'rhs_evals', 'jac_evals', 'memory_bytes')
+    __match_args__: typing.ClassVar[tuple] = ('steps', 'rejected', 'rhs_evals', 'jac_evals', 'memory_bytes', 'method')
     def __eq__(self, arg0: SolveStats) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -750,6 +805,9 @@ class SolveStats:
         ...
     @property
     def memory_bytes(self) -> int:
+        ...
+    @property
+    def method(self) -> str:
         ...
     @property
     def rejected(self) -> int:
@@ -1397,7 +1455,7 @@ class MeasurementSpec:
         ...
 class Scenario:
     """
-    Everything one run needs (shared/scenarios.md).
+    Everything one run needs (docs/scenarios.md).
     Pickles as its scenario file (scenario_toml) and solver.escape_norm, which the file does not hold;
     a scenario whose model or signals are implemented in Python does not pickle (TypeError).
     """

@@ -4,7 +4,7 @@ checked against independent truth:
 * m, M (22) and p(t) = lambda_min(Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z) (23) from
   NumPy eigenvalues of matrices built here, on fine grids;
 * the ship's remainder bound |f(q_d + e) - f(q_d) - A_e e| <= L |e|^2 sampled with the NumPy
-  ship of DESIGN.md (_support.ship_drift, ship_jacobian);
+  ship of docs/mathematics.md (_support.ship_drift, ship_jacobian);
 * closed loops started on the certified ball: V = q_e' Z q_e must decay at the certified rate;
 * for LTI plants (where the linearization is exact), the completed square
       L_gamma = q_e(t0)' Z(t0) q_e(t0) - gamma^2 || w - gamma^-2 D' Z q_e ||^2
@@ -117,7 +117,7 @@ def test_m_and_M_are_the_extreme_eigenvalues_of_Z(paper_solutions, method):
     assert lo - 1e-8 <= c.m <= lo + slack
     assert hi - slack <= c.M <= hi + 1e-8
     assert (c.m, c.M) == sol.eigenvalue_bounds()  # the same computation (certify calls it)
-    # shared/numerics-notes.md (an independent implementation), orientation only.
+    # an independent implementation, orientation only.
     assert c.m == pytest.approx(0.219, abs=1e-3) and c.M == pytest.approx(20.8, abs=0.05)
 
 

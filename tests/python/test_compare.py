@@ -3,7 +3,7 @@ H-infinity design, recovery from poor initial conditions and the turn-around det
 (hinf_cpp.recovery), and the command lines `compare` and `recovery`.
 
 Truth is computed here, independently of the library: the desired trajectory by SciPy from the
-equations of DESIGN.md, position and heading errors from the raw time series with math.atan2,
+equations of docs/mathematics.md, position and heading errors from the raw time series with math.atan2,
 the worst-case L2 gain of the linearized closed loop by bisection on the closed-loop Riccati
 equation integrated with SciPy, and the worst-case disturbance w* of eq. (16) from Z(t).
 """
@@ -102,7 +102,7 @@ def undisturbed_pe(fig1) -> hc.Scenario:
 
 
 def test_the_desired_trajectory_is_the_papers(undisturbed_pe):
-    """q_d(t) of a run against SciPy on the equations of DESIGN.md (what "tracking" means)."""
+    """q_d(t) of a run against SciPy on the equations of docs/mathematics.md (what "tracking" means)."""
     result = run_law(undisturbed_pe, "hinf")
     ref = solve_ivp(lambda t, q: ship_drift(q) + SHIP_B @ paper_u_d(t), (0.0, PE_HORIZON), PAPER_Q_D0,
                     method="DOP853", rtol=1e-11, atol=1e-12, t_eval=[25.0, 75.0, 150.0])

@@ -55,7 +55,7 @@ BIN = pathlib.Path(sys.executable).parent
 HINF_SIM, HINF_CPP = BIN / "hinf-sim", BIN / "hinf-cpp"
 HAVE_CLI = HINF_SIM.exists() and HINF_CPP.exists()
 
-# The paper run's gamma* from an independent implementation (shared/numerics-notes.md):
+# The paper run's gamma* from an independent implementation (measured with an independent implementation):
 # 1.33502, first conjugate time about 15.2 s. An EXTERNAL reference value, used only as
 # orientation with a loose tolerance; the bracket itself is checked against SciPy below.
 NOTES_PAPER_GAMMA_STAR = 1.33502
@@ -386,8 +386,9 @@ def test_design_at_the_returned_gamma_star_returns(case):
 
 @pytest.fixture(scope="module")
 def paper_star(paper_trajectory):
-    """gamma* of the paper run (Q = Qf = I) at the default options (bdf, rtol 1e-6)."""
-    return hc.gamma_star(paper_trajectory, EYE6, EYE6, hc.GammaStarOptions())
+    """gamma* of the paper run (Q = Qf = I) with the solver of paper_fig1.toml (bdf, rtol 1e-8)
+    and the default search options."""
+    return hc.gamma_star(paper_trajectory, EYE6, EYE6, hc.GammaStarOptions(solver=hc.SolverOptions("bdf")))
 
 
 def ship_inverse(paper_trajectory, gamma):
@@ -411,7 +412,7 @@ def test_paper_gamma_star_bracket_against_the_inverse_riccati(paper_star, paper_
     # (measured difference 2.5e-5 s; near gamma* the zero moves like sqrt(gamma* - gamma)).
     assert abs(r.t_escape_lower - low_cross) < 1e-3, (r.t_escape_lower, low_cross)
     assert abs(high_where - r.t_escape_lower) < 0.1  # the near-escape just above gamma*
-    # External orientation only (numerics-notes.md, an independent implementation).
+    # External orientation only (an independent implementation).
     assert abs(r.gamma_star - NOTES_PAPER_GAMMA_STAR) < 1e-3 * NOTES_PAPER_GAMMA_STAR
     assert abs(r.t_escape_lower - NOTES_PAPER_T_ESCAPE) < 0.1
 
@@ -420,21 +421,22 @@ def test_paper_design_just_above_and_just_below(paper_star, paper_trajectory):
     """At the upper end solve_grde succeeds (Z positive definite, finite, large near the
     near-escape); at the lower end it raises ConjugatePointError at t_escape_lower."""
     r = paper_star
-    sol = hc.solve_grde(paper_trajectory, EYE6, EYE6, r.upper)
+    bdf = hc.SolverOptions("bdf")  # paper_star's solver
+    sol = hc.solve_grde(paper_trajectory, EYE6, EYE6, r.upper, bdf)
     times = np.unique(np.concatenate([np.linspace(0.0, 40.0, 4001), sol.dense().breakpoints()]))
     eig = np.linalg.eigvalsh(sol.Z(times))
     assert np.all(np.isfinite(eig)) and eig.min() > 0.0
     assert eig.max() > 1e3  # gamma* is where Z stops being bounded
     with pytest.raises(hc.ConjugatePointError) as info:
-        hc.solve_grde(paper_trajectory, EYE6, EYE6, r.lower)
+        hc.solve_grde(paper_trajectory, EYE6, EYE6, r.lower, bdf)
     assert info.value.gamma == r.lower
     assert 0.0 <= info.value.t_escape <= 40.0
-    # The same integration as the search's trial at r.lower (same gamma, same default solver):
+    # The same integration as the search's trial at r.lower (same gamma, same solver):
     # equal (measured bit for bit); not a tolerance between different computations.
     assert info.value.t_escape == pytest.approx(r.t_escape_lower, abs=1e-9 * 40.0)
-    assert hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.lower) == pytest.approx(
+    assert hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.lower, bdf) == pytest.approx(
         r.t_escape_lower, abs=1e-9 * 40.0)
-    assert math.isnan(hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.upper))
+    assert math.isnan(hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.upper, bdf))
 
 
 def test_paper_trials_are_monotone_and_consistent(paper_star):
@@ -791,7 +793,7 @@ def test_cli_gamma_star(tmp_path, warm_cli, paper_star):
     done = cli(HINF_CPP, "gamma-star", hc.scenario_path("paper_fig1"), "--json", out)
     assert done.returncode == 0 and done.stderr == "", done.stderr
     data = json.loads(out.read_text())
-    # The file's solver section is bdf, rtol 1e-8 (the library defaults): the same search, so
+    # The file's solver section is bdf, rtol 1e-8 (as paper_star's): the same search, so
     # the same numbers (up to the JSON digits for t_escape_lower).
     assert data["gamma_star"] == paper_star.gamma_star and data["lower"] == paper_star.lower
     assert data["scenario"] == "paper-fig1" and data["binding"] == "grde" and data["converged"] is True

@@ -1,4 +1,4 @@
-"""Models: the ship against DESIGN.md and finite differences, the error split (26)-(31),
+"""Models: the ship against docs/mathematics.md and finite differences, the error split (26)-(31),
 Python-subclassed models, and the desired trajectory against independent integrations."""
 
 from __future__ import annotations
@@ -111,7 +111,7 @@ def test_ship_error_split_identities(ship_and_parameters):
 
 
 def design_split(q_d, q_e, p):
-    """The decomposition of DESIGN.md ("Imperfect measurements") written out in NumPy:
+    """The decomposition of docs/mathematics.md ("Imperfect measurements") written out in NumPy:
     q1 = [u, v, x, y], q2 = [r, psi]; A12 = d alpha1/d q2 and A21 = d alpha2/d q1 at 0 by
     finite differences; returns (A, alpha) in the state order [u, v, r, x, y, psi]."""
     ud, vd, rd, psid = q_d[0], q_d[1], q_d[2], q_d[5]
@@ -272,7 +272,7 @@ def test_python_linear_model_gives_the_same_grde_as_linear_model(n, method):
 # ---- the desired trajectory (paper eq. 8) ----
 
 def test_paper_trajectory_matches_an_independent_integration(paper_trajectory):
-    """q_d(t) against SciPy's DOP853 on the DESIGN.md equations, and A_e(t) against finite
+    """q_d(t) against SciPy's DOP853 on the docs/mathematics.md equations, and A_e(t) against finite
     differences of the NumPy drift at that q_d(t)."""
 
     def rhs(t, q):

@@ -1,4 +1,4 @@
-"""Scenario files (shared/scenarios.md), read by the one C++ reader: a file (hc.load_scenario,
+"""Scenario files (docs/scenarios.md), read by the one C++ reader: a file (hc.load_scenario,
 the reader of hinf-sim) and its dictionary form (hc.scenario_from_dict of what tomllib reads,
 written back to TOML) build identical scenarios and reject the same bad files with a
 ValueError naming the key; both command lines print that same message. Also bad inputs to the

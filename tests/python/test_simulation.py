@@ -50,7 +50,7 @@ def test_zero_error_stays_on_the_desired_trajectory(paper_trajectory, paper_solu
 
 def test_closed_loop_matches_an_independent_integration(paper_trajectory, paper_solutions):
     """The simulator integrates f + B u + D w with the law (17): compare with SciPy on the
-    DESIGN.md equations, the law written in NumPy from the solution's gain and the
+    docs/mathematics.md equations, the law written in NumPy from the solution's gain and the
     trajectory, and the paper's disturbance written in NumPy."""
     sol = paper_solutions["erk"]
     kappa = 0.75

@@ -37,7 +37,7 @@ class PiecewisePolynomial {
 
   // Piece k (0 <= k < num_pieces(), in increasing time once finalized), valid while this object
   // lives unchanged: appending the pieces in that order rebuilds an identical dense output.
-  DensePiece piece(std::size_t k) const { return {t_start_[k], h_[k], degree_[k], dim_, coefficients(k)}; }
+  DensePiece piece(std::size_t k) const { return {t_start_[k], t_end_[k], degree_[k], dim_, coefficients(k)}; }
 
   void eval(double t, double* out, std::size_t* cursor = nullptr) const;
   void eval_derivative(double t, double* out, std::size_t* cursor = nullptr) const;

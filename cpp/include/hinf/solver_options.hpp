@@ -43,7 +43,6 @@ constexpr int kDenseNewtonMaxStates = 7;
 
 struct SolverOptions {
   Method method = Method::Auto;
-  NewtonSystems newton_systems = NewtonSystems::Auto;  // Riccati equations with BDF
   double rtol = 1e-8;        // relative tolerance, in [1e-14, 1e-3]
   double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions), in (0, 1e-3];
                              // Riccati solves use atol * min(1, the solution's scale)
@@ -53,6 +52,7 @@ struct SolverOptions {
   // test (riccati.hpp) decides whether X escapes to infinity (a conjugate point, paper eq. 14)
   // or is only large. Only the cost depends on it.
   double escape_norm = 1e6;
+  NewtonSystems newton_systems = NewtonSystems::Auto;  // Riccati equations with BDF
 
   void validate() const;  // InputError naming the option and its admissible range
 };
