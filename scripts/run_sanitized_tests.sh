@@ -42,7 +42,7 @@ core=("$BUILD"/cpp/python/_core.*.so)
 # Rebuilt from scratch every time, so nothing stale of an earlier run is imported.
 rm -rf "$site/hinf_cpp"
 mkdir -p "$site/hinf_cpp/scenarios"
-cp python/hinf_cpp/*.py "${core[0]}" "$site/hinf_cpp/"
+cp python/hinf_cpp/*.py python/hinf_cpp/_core.pyi python/hinf_cpp/py.typed "${core[0]}" "$site/hinf_cpp/"
 cp scenarios/*.toml "$site/hinf_cpp/scenarios/"
 cp "$BUILD/cpp/hinf-sim" "$STAGE/bin/hinf-sim"
 cat >"$STAGE/bin/hinf-cpp" <<EOF
