@@ -276,16 +276,21 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   SimulationResult r;
   r.heading_index = heading;
   EstimatorSeries& est = r.estimator.emplace();
-  r.q.resize(count, n);
-  est.q_hat.resize(count, n);
-  r.q_d.resize(count, n);
-  r.u.resize(count, m);
-  r.u_d.resize(count, m);
-  r.w.resize(count, nw);
-  est.y.resize(count, p);
-  est.sigma_min_eig.resize(count);
-  est.sigma_max_eig.resize(count);
-  est.rho_sigma_z.resize(count);
+  // Sizes every per-output-time series to `rows` (keeping the first rows when `keep`).
+  const auto size_series = [&](Eigen::Index rows, bool keep) {
+    const auto matrix = [&](RowMat& series, Eigen::Index cols) {
+      if (keep) series.conservativeResize(rows, cols);
+      else series.resize(rows, cols);
+    };
+    const auto vector = [&](Vec& series) {
+      if (keep) series.conservativeResize(rows);
+      else series.resize(rows);
+    };
+    matrix(r.q, n), matrix(est.q_hat, n), matrix(r.q_d, n), matrix(r.u, m), matrix(r.u_d, m), matrix(r.w, nw);
+    matrix(est.y, p);
+    vector(est.sigma_min_eig), vector(est.sigma_max_eig), vector(est.rho_sigma_z);
+  };
+  size_series(count, false);
 
   auto coupling_error = [&](double t, double rho, const std::string& detail) {
     return CouplingConditionError(
@@ -445,16 +450,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
                       tf, "INTERNAL");
   if (r.status != RunStatus::Completed) {
     // Keep the output times recorded before the run stopped.
-    r.q.conservativeResize(next, n);
-    est.q_hat.conservativeResize(next, n);
-    r.q_d.conservativeResize(next, n);
-    r.u.conservativeResize(next, m);
-    r.u_d.conservativeResize(next, m);
-    r.w.conservativeResize(next, nw);
-    est.y.conservativeResize(next, p);
-    est.sigma_min_eig.conservativeResize(next);
-    est.sigma_max_eig.conservativeResize(next);
-    est.rho_sigma_z.conservativeResize(next);
+    size_series(next, true);
   }
   r.t = Eigen::Map<const Vec>(grid.data(), next);
   return r;
