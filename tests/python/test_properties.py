@@ -402,8 +402,9 @@ def scenario_mutations(draw):
             text = tomli_w.dumps(document)
         except (RecursionError, TypeError, ValueError):
             text = ""
-        # A key line of a table (not a line inside an array) or a table header.
-        lines = [line for line in text.split("\n") if re.match(r"[A-Za-z0-9_-]+ = |\[", line)]
+        # A key line of a table (not a line inside an array) or a table header (not [[...]],
+        # which may be repeated).
+        lines = [line for line in text.split("\n") if re.match(r"[A-Za-z0-9_-]+ = |\[[^\[]", line)]
         if lines:
             duplicates.append(draw(st.sampled_from(lines)))
     return {"scenario": name, "steps": steps, "duplicates": duplicates}
@@ -463,7 +464,7 @@ def scenario_property_body(mutation: dict, workdir: pathlib.Path) -> None:
     note_input(f"scenario mutation: {mutation!r}")
     document = mutated_document(mutation)
     source = f"mutated-{mutation['scenario']}"
-    from_dict, dict_error = attempt("scenario_from_dict", hc.scenario_from_dict, document, source)
+    _, dict_error = attempt("scenario_from_dict", hc.scenario_from_dict, document, source)
     if dict_error is not None:
         check_reader_error(dict_error, source, mutation)
 
@@ -476,7 +477,7 @@ def scenario_property_body(mutation: dict, workdir: pathlib.Path) -> None:
         text = duplicated(text, line)
     path = workdir / f"{mutation['scenario']}.toml"
     path.write_text(text)
-    from_text, text_error = attempt("parse_scenario_toml", hc.parse_scenario_toml, text, source)
+    _, text_error = attempt("parse_scenario_toml", hc.parse_scenario_toml, text, source)
     from_file, file_error = attempt("load_scenario", hc.load_scenario, path)
     for error, where in ((text_error, source), (file_error, str(path))):
         if error is not None:
