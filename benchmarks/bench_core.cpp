@@ -19,6 +19,13 @@ using namespace hinf;
 
 namespace {
 
+// The scenario's closed-loop options with another integrator.
+SimulationOptions with_solver(const Scenario& s, const SolverOptions& solver) {
+  SimulationOptions options = s.simulation_options();
+  options.solver = solver;
+  return options;
+}
+
 struct Stats {
   double median, min, max;
 };
@@ -68,13 +75,13 @@ int main(int argc, char** argv) {
                   solution->stats().rhs_evals, solution->stats().memory_bytes / 1e3);
       HinfStateFeedback controller(solution, s.kappa);
       report("state-feedback closed loop, " + to_string(method), time_it(repeat, [&] {
-               simulate_state_feedback(*trajectory, controller, s.disturbance, s.initial_q0, s.output_dt, options);
+               simulate_state_feedback(*trajectory, controller, s.disturbance, s.initial_q0, with_solver(s, options));
              }));
       report("design + closed loop, " + to_string(method), time_it(repeat, [&] {
                auto tr = std::make_shared<const Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
                auto sol = solve_grde(tr, s.Q, s.Qf, s.gamma, options);
                HinfStateFeedback c(sol, s.kappa);
-               simulate_state_feedback(*tr, c, s.disturbance, s.initial_q0, s.output_dt, options);
+               simulate_state_feedback(*tr, c, s.disturbance, s.initial_q0, with_solver(s, options));
              }));
       Scenario variant = s;
       variant.solver.method = method;

@@ -12,6 +12,7 @@
 #include "hinf/checks.hpp"
 #include "hinf/errors.hpp"
 #include "extremum.hpp"
+#include "size_dispatch.hpp"
 #include "symmetric_extremes.hpp"
 
 namespace hinf {
@@ -90,14 +91,14 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
     const std::vector<GammaTrial> ends = run(o.lower > 0.0 ? std::vector<double>{o.lower, o.upper}
                                                            : std::vector<double>{o.upper});
     high = ends.back();
-    require(high.passed, "gamma = ", o.upper, " (the upper end of the bracket) fails too (", high.condition,
+    require(high.passed, "gamma = ", o.upper, " (the upper end of the bracket) fails too (", to_string(high.condition),
             " at t = ", high.t_escape, "): raise the upper end");
     if (o.lower > 0.0) {
       low = ends.front();
       require(!low.passed, "gamma = ", o.lower, " (the lower end of the bracket) passes already: gamma* <= ",
               o.lower, "; lower the lower end");
     } else {
-      low = GammaTrial{0.0, false, NAN, "lower end 0"};
+      low = GammaTrial{0.0, false, NAN, GammaCondition::None};
     }
   } else {
     // Automatic bracket: from 1, double until a gamma passes or halve until one fails.
@@ -112,6 +113,11 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
           r.converged = true;
           return r;
         }
+        if (static_cast<int>(r.trials.size()) >= o.max_evaluations) {  // out of evaluations: what is known
+          r.gamma_star = r.upper = high.gamma;
+          r.lower = 0.0;
+          return r;
+        }
         trial = run({high.gamma / 2.0}).front();
         if (!trial.passed) break;
         high = trial;
@@ -120,8 +126,14 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
     } else {
       low = trial;
       for (;;) {
-        require(low.gamma < 1e12, "no gamma up to 1e12 passes (", low.condition, " fails at t = ",
+        require(low.gamma < 1e12, "no gamma up to 1e12 passes (", to_string(low.condition), " fails at t = ",
                 low.t_escape, ")");
+        if (static_cast<int>(r.trials.size()) >= o.max_evaluations)
+          throw SolverError(str_cat("gamma*: max_evaluations = ", o.max_evaluations,
+                                    " reached while looking for a gamma that passes (every gamma up to ", low.gamma,
+                                    " fails: ", to_string(low.condition), " at t = ", low.t_escape,
+                                    "); give the bracket's upper end or raise max_evaluations"),
+                            low.t_escape, "MAX_EVALUATIONS");
         trial = run({low.gamma * 2.0}).front();
         if (trial.passed) break;
         low = trial;
@@ -152,20 +164,16 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
   return r;
 }
 
-GammaTrial fail(double gamma, double t, const char* condition) { return GammaTrial{gamma, false, t, condition}; }
-GammaTrial pass(double gamma) { return GammaTrial{gamma, true, NAN, ""}; }
+GammaTrial fail(double gamma, double t, GammaCondition condition) { return GammaTrial{gamma, false, t, condition}; }
+GammaTrial pass(double gamma) { return GammaTrial{gamma, true, NAN, GammaCondition::None}; }
 
 template <int N>
 double rho_at(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma, double t) {
   const int n = Z.n();
-  Eigen::Matrix<double, N, N> z(n, n), s(n, n), w(n, n);
+  Eigen::Matrix<double, N, N> z(n, n), s(n, n), factor(n, n), product(n, n);
   z = Z.Z(t);
   s = Sigma.Sigma(t);
-  Eigen::LLT<Eigen::Matrix<double, N, N>> llt(s);
-  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
-  const Eigen::Matrix<double, N, N> L = llt.matrixL();
-  w.noalias() = L.transpose() * z * L;
-  return detail::symmetric_eigen_max(w);
+  return detail::spectral_radius_of_product(s, z, factor, product);
 }
 
 std::vector<double> merged_samples(const SymmetricSolution& a, const SymmetricSolution& b) {
@@ -185,8 +193,9 @@ std::pair<double, double> max_rho_sigma_z(const RiccatiSolution& Z, const Filter
   require(Z.t0() == Sigma.t0() && Z.tf() == Sigma.tf(), "max_rho_sigma_z: Z is on [", Z.t0(), ", ", Z.tf(),
           "] but Sigma on [", Sigma.t0(), ", ", Sigma.tf(), "]: pass solutions of the same horizon");
   const std::vector<double> times = merged_samples(Z, Sigma);
-  if (Z.n() == 6) return detail::extremum_over(times, [&](double t) { return rho_at<6>(Z, Sigma, t); }, -1.0);
-  return detail::extremum_over(times, [&](double t) { return rho_at<Eigen::Dynamic>(Z, Sigma, t); }, -1.0);
+  return detail::with_state_size(Z.n(), [&](auto size) {
+    return detail::extremum_over(times, [&](double t) { return rho_at<decltype(size)::value>(Z, Sigma, t); }, -1.0);
+  });
 }
 
 GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
@@ -196,7 +205,7 @@ GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const 
   grde_escape_time(trajectory, Q, Qf, std::numeric_limits<double>::infinity(), options.solver);  // input checks
   return bisect([&](double gamma) {
     const double t = grde_escape_time(trajectory, Q, Qf, gamma, options.solver);
-    return std::isnan(t) ? pass(gamma) : fail(gamma, t, "grde");
+    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
   }, options);
 }
 
@@ -213,24 +222,26 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
     try {
       Z = solve_grde(trajectory, Q, Qf, gamma, options.solver);
     } catch (const ConjugatePointError& e) {
-      return fail(gamma, e.t_escape(), "grde");
+      return fail(gamma, e.t_escape(), GammaCondition::Grde);
     } catch (const SolverError& e) {
       // Just above the GRDE's threshold Z is finite but too large to integrate and store:
       // such a gamma cannot be certified, so it fails with "grde" as the binding condition.
-      return fail(gamma, e.t(), "grde");
+      return fail(gamma, e.t(), GammaCondition::Grde);
     }
     try {
       Sigma = solve_filter_riccati(trajectory, N, Q, gamma, Sigma0, options.solver);
     } catch (const ConjugatePointError& e) {
-      return fail(gamma, e.t_escape(), "filter");
+      return fail(gamma, e.t_escape(), GammaCondition::Filter);
     } catch (const SolverError& e) {
-      return fail(gamma, e.t(), "filter");
+      return fail(gamma, e.t(), GammaCondition::Filter);
     }
     double lo = 0.0, hi = 0.0;
     Sigma->eigenvalue_bounds(lo, hi);
-    if (!(lo > 0.0)) return fail(gamma, NAN, "filter");
+    // Sigma >= 0 may decay to about zero (no process noise); below zero beyond round-off it lost
+    // definiteness.
+    if (!(lo >= -kSemidefiniteTolerance * std::abs(hi))) return fail(gamma, NAN, GammaCondition::Filter);
     const auto [rho, t] = max_rho_sigma_z(*Z, *Sigma);
-    return rho < gamma * gamma ? pass(gamma) : fail(gamma, t, "coupling");
+    return rho < gamma * gamma ? pass(gamma) : fail(gamma, t, GammaCondition::Coupling);
   }, options);
 }
 
@@ -302,7 +313,7 @@ Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q
       return L > 0.0 ? p_at(t) / (4.0 * c.M * L) : std::numeric_limits<double>::infinity();
     };
     std::tie(c.epsilon, c.epsilon_t) = detail::extremum_over(times, eps_at, 1.0);
-    c.attraction_radius = c.epsilon * std::sqrt(c.m / c.M);
+    c.attraction_radius = c.m > 0.0 ? c.epsilon * std::sqrt(c.m / c.M) : 0.0;
     c.decay_rate = c.p_min / (2.0 * c.M);
   } else {
     c.epsilon = 0.0;

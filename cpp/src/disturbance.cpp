@@ -17,10 +17,7 @@ Disturbance::Disturbance(VectorSignal signals, RiccatiSolutionPtr design)
   const Model& model = design_->trajectory().model();
   require(signals_.dim() == model.nw(), "the disturbance has ", signals_.dim(), " channels, the model '",
           model.name(), "' has ", model.nw());
-  const int n = model.n();
-  q_d_.resize(n);
-  z_.resize(packed_size(n));
-  Zq_.resize(n);
+  if (model.constant_input_matrices()) D_ = model.D(design_->t0());
 }
 
 void Disturbance::eval(double t, const double* q, double* w) const {
@@ -29,20 +26,22 @@ void Disturbance::eval(double t, const double* q, double* w) const {
   const Trajectory& trajectory = design_->trajectory();
   const Model& model = trajectory.model();
   const int n = model.n();
-  trajectory.q_d(t, q_d_.data(), &q_cursor_);
-  tracking_error(n, model.heading_index(), q, q_d_.data(), q_d_.data());  // q_e, in place
-  design_->packed(t, z_.data(), &z_cursor_);
+  Vec q_e(n), Zq(n);
+  trajectory.q_d(t, q_e.data());
+  tracking_error(n, model.heading_index(), q, q_e.data(), q_e.data());  // q - q_d, in place
+  PackedScratch z(n);
+  design_->packed(t, z.data());
   // Z q_e from the packed Z.
   for (int i = 0; i < n; ++i) {
     double s = 0.0;
-    for (int j = 0; j < n; ++j) s += z_[packed_index(i, j)] * q_d_[j];
-    Zq_[i] = s;
+    for (int j = 0; j < n; ++j) s += z.data()[packed_index(i, j)] * q_e[j];
+    Zq[i] = s;
   }
-  if (D_.size() == 0 || !model.constant_input_matrices()) D_ = model.D(t);  // D is kept when constant
+  const Mat D = D_.size() > 0 ? D_ : model.D(t);
   const double g2 = 1.0 / (design_->gamma() * design_->gamma());
-  for (Eigen::Index c = 0; c < D_.cols(); ++c) {
+  for (Eigen::Index c = 0; c < D.cols(); ++c) {
     double s = 0.0;
-    for (int i = 0; i < n; ++i) s += D_(i, c) * Zq_[i];
+    for (int i = 0; i < n; ++i) s += D(i, c) * Zq[i];
     w[c] += g2 * s;
   }
 }

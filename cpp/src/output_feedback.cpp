@@ -14,6 +14,7 @@
 #include "hinf/sdirk4.hpp"
 #include "hinf/sparse_matrix.hpp"
 #include "riccati_kernel.hpp"
+#include "size_dispatch.hpp"
 #include "symmetric_extremes.hpp"
 
 namespace hinf {
@@ -60,23 +61,24 @@ class OutputFeedbackSystem {
   using MatN = Eigen::Matrix<double, N, N>;
   using VecN = Eigen::Matrix<double, N, 1>;
 
-  OutputFeedbackSystem(const RiccatiSolution& grde, Controller& controller, const Disturbance& disturbance,
-                       const OutputFeedbackOptions& o)
-      : grde_(grde), trajectory_(grde.trajectory()), model_(trajectory_.model()), controller_(controller),
-        disturbance_(disturbance), options_(o), n_(grde.n()), m_(model_.m()), nw_(model_.nw()),
+  OutputFeedbackSystem(const OutputFeedbackProblem& problem, Controller& controller, const Disturbance& disturbance,
+                       const OutputFeedbackOptions& options)
+      : grde_(*problem.design), trajectory_(grde_.trajectory()), model_(trajectory_.model()), controller_(controller),
+        disturbance_(disturbance), problem_(problem), options_(options), n_(grde_.n()), m_(model_.m()),
+        nw_(model_.nw()),
         noise_channels_(model_.noise_channels()), heading_(model_.heading_index()),
         constant_(model_.constant_input_matrices()),
-        inv_gamma2_(std::isinf(grde.gamma()) ? 0.0 : 1.0 / (grde.gamma() * grde.gamma())) {
+        inv_gamma2_(std::isinf(grde_.gamma()) ? 0.0 : 1.0 / (grde_.gamma() * grde_.gamma())) {
     // The law of this very design (the usual case): u = u_d - kappa B' Z q_hat from the q_d,
     // u_d and Z q_hat already evaluated here, instead of a second lookup of each.
     const auto* law = dynamic_cast<const HinfStateFeedback*>(&controller);
-    if (law != nullptr && &law->solution() == &grde) own_law_ = law;
+    if (law != nullptr && &law->solution() == &grde_) own_law_ = law;
     for (auto* M : {&Z_, &Sigma_, &A_, &A_f_, &T_, &G_, &DDt_, &S_f_, &gain_lhs_, &CtNinvC_}) M->resize(n_, n_);
     for (auto* v : {&q_d_, &q_hat_, &Zq_, &alpha_, &dq_hat_, &error_, &noise_term_}) v->resize(n_);
     q_estimate_.resize(n_);
     C_ = model_.C(trajectory_.t0());
     p_ = static_cast<int>(C_.rows());
-    N_inv_ = o.N.inverse();
+    N_inv_ = problem.N.inverse();
     CtNinv_ = C_.transpose() * N_inv_;
     u_d_.resize(m_);
     u_.resize(m_);
@@ -94,7 +96,7 @@ class OutputFeedbackSystem {
   // The noise sample v held now: y = C q + sigma v.
   void set_noise(const double* v) {
     for (int i = 0; i < p_; ++i) noise_[i] = v[i];
-    noise_term_.noalias() = options_.sigma * (CtNinv_ * noise_);  // sigma C' N^-1 v
+    noise_term_.noalias() = problem_.sigma * (CtNinv_ * noise_);  // sigma C' N^-1 v
   }
 
   void rhs(double t, const double* x, double* dx) {
@@ -123,7 +125,7 @@ class OutputFeedbackSystem {
     else dq_hat.noalias() += B_ * (u_ - u_d_);
     if (inv_gamma2_ > 0.0) dq_hat.noalias() += inv_gamma2_ * (DDt_ * Zq_);
     // Filter Riccati (36): sign +1, M = A_f', R = D D', S = C' N^-1 C - gamma^-2 Q.
-    if (options_.filter_uses_estimate) {
+    if (options_.filter_A == FilterLinearization::Estimate) {
       A_f_ = A_.transpose();
     } else {
       model_.dfdq(t, q_d_, T_);
@@ -148,22 +150,14 @@ class OutputFeedbackSystem {
     for (int i = 0; i < m_; ++i) u[i] = u_[i];
     for (int i = 0; i < nw_; ++i) w[i] = w_[i];
     Eigen::Map<const Vec> q(x, n_);
-    Eigen::Map<Vec>(y, p_) = C_ * q + options_.sigma * noise_;
+    Eigen::Map<Vec>(y, p_) = C_ * q + problem_.sigma * noise_;
     detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
     rho = rho_of_current();
   }
 
  private:
-  // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L', for the Sigma_ and Z_ of the last
-  // evaluate_signals; NaN if Sigma is not positive definite.
-  double rho_of_current() {
-    Eigen::LLT<MatN> llt(Sigma_);
-    if (llt.info() != Eigen::Success) return NAN;
-    T_ = llt.matrixL();
-    A_f_.noalias() = Z_ * T_;
-    G_.noalias() = T_.transpose() * A_f_;
-    return detail::symmetric_eigen_max(G_);
-  }
+  // rho(Sigma Z) for the Sigma_ and Z_ of the last evaluate_signals.
+  double rho_of_current() { return detail::spectral_radius_of_product(Sigma_, Z_, T_, G_); }
 
   void set_matrices(double t) {
     B_ = model_.B(t);
@@ -175,7 +169,7 @@ class OutputFeedbackSystem {
     DDt_ = D_ * D_.transpose();
     CtNinvC_ = C_.transpose() * N_inv_ * C_;
     S_f_ = CtNinvC_;
-    if (inv_gamma2_ > 0.0) S_f_ -= inv_gamma2_ * options_.Q;
+    if (inv_gamma2_ > 0.0) S_f_ -= inv_gamma2_ * problem_.Q;
     diagonal_S_f_ = detail::is_diagonal(S_f_);
   }
 
@@ -214,7 +208,7 @@ class OutputFeedbackSystem {
     disturbance_.eval(t, x, w_.data());
     // E w = sigma v on the noise channels: w carries v there, or nothing when sigma = 0.
     for (int i = 0; i < p_; ++i)
-      w_[noise_channels_[static_cast<std::size_t>(i)]] = options_.sigma > 0.0 ? noise_[i] : 0.0;
+      w_[noise_channels_[static_cast<std::size_t>(i)]] = problem_.sigma > 0.0 ? noise_[i] : 0.0;
   }
 
   const RiccatiSolution& grde_;
@@ -223,6 +217,7 @@ class OutputFeedbackSystem {
   Controller& controller_;
   const HinfStateFeedback* own_law_ = nullptr;
   const Disturbance& disturbance_;
+  const OutputFeedbackProblem& problem_;
   const OutputFeedbackOptions& options_;
   int n_, m_, nw_, p_ = 0;
   std::vector<int> noise_channels_;
@@ -253,41 +248,44 @@ DensePiece hermite_piece(double t_start, double h, int dim, const double* y0, co
     c2[i] = 3.0 * (y1[i] - y0[i]) - h * (2.0 * f0[i] + f1[i]);
     c3[i] = 2.0 * (y0[i] - y1[i]) + h * (f0[i] + f1[i]);
   }
-  return DensePiece{t_start, h, 3, dim, coeffs.data()};
+  return DensePiece{t_start, t_start + h, 3, dim, coeffs.data()};
 }
 
 template <int N>
-SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controller,
-                               const Disturbance& disturbance, const Vec& q0, const RowMat& noise,
-                               const OutputFeedbackOptions& options, double output_dt,
-                               const SolverOptions& solver) {
-  OutputFeedbackSystem<N> system(grde, controller, disturbance, options);
+SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller& controller,
+                               const Disturbance& disturbance, const Vec& q0, const OutputFeedbackOptions& options,
+                               const SimulationOptions& simulation) {
+  OutputFeedbackSystem<N> system(problem, controller, disturbance, options);
+  const RiccatiSolution& grde = *problem.design;
+  const RowMat& noise = problem.noise;
+  const SolverOptions& solver = simulation.solver;
   const Trajectory& trajectory = grde.trajectory();
   const Model& model = trajectory.model();
   const int n = system.n(), p = system.p(), dim = system.dim(), m = model.m(), nw = model.nw();
-  const double t0 = trajectory.t0(), tf = trajectory.tf(), T = options.sample_period;
+  const double t0 = trajectory.t0(), tf = trajectory.tf(), T = problem.sample_period;
   const long samples = noise_sample_count(t0, tf, T);
-  const long count = output_count(t0, tf, output_dt);
+  const long count = output_count(t0, tf, simulation.output_dt);
   check_memory(8.0 * static_cast<double>(count) * (4 + 3 * n + 2 * m + nw + p),
                str_cat("the time series on the output grid of ", count, " points"),
                "increase [output] dt (or shorten the horizon)");
-  const std::vector<double> grid = output_grid(t0, tf, output_dt);
+  const std::vector<double> grid = output_grid(t0, tf, simulation.output_dt);
   const double gamma2 = grde.gamma() * grde.gamma();
-  const double bound = divergence_bound(trajectory, q0, grid, solver.divergence_factor);
+  const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
   SimulationResult r;
   r.heading_index = heading;
+  EstimatorSeries& est = r.estimator.emplace();
   r.q.resize(count, n);
-  r.q_hat.resize(count, n);
+  est.q_hat.resize(count, n);
   r.q_d.resize(count, n);
   r.u.resize(count, m);
   r.u_d.resize(count, m);
   r.w.resize(count, nw);
-  r.y.resize(count, p);
-  r.sigma_min_eig.resize(count);
-  r.sigma_max_eig.resize(count);
-  r.rho_sigma_z.resize(count);
+  est.y.resize(count, p);
+  est.sigma_min_eig.resize(count);
+  est.sigma_max_eig.resize(count);
+  est.rho_sigma_z.resize(count);
 
   auto coupling_error = [&](double t, double rho, const std::string& detail) {
     return CouplingConditionError(
@@ -304,25 +302,27 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
     system.set_noise(noise.row(sample).data());
     for (int i = 0; i < n; ++i) {
       r.q(k, i) = x[i];
-      r.q_hat(k, i) = x[n + i];
+      est.q_hat(k, i) = x[n + i];
     }
     system.outputs(t, x, r.q_d.row(k).data(), r.u_d.row(k).data(), r.u.row(k).data(), r.w.row(k).data(),
-                   r.y.row(k).data(), r.sigma_min_eig[k], r.sigma_max_eig[k], r.rho_sigma_z[k]);
-    const double rho = r.rho_sigma_z[k];
-    if (!(r.sigma_min_eig[k] > 0.0))
+                   est.y.row(k).data(), est.sigma_min_eig[k], est.sigma_max_eig[k], est.rho_sigma_z[k]);
+    const double rho = est.rho_sigma_z[k];
+    // Sigma >= 0 may decay to about zero (no process noise); beyond round-off below zero it has
+    // lost definiteness.
+    if (!(est.sigma_min_eig[k] >= -kSemidefiniteTolerance * std::abs(est.sigma_max_eig[k])))
       throw SolverError(str_cat("the filter Riccati solution Sigma(t) lost positive definiteness at t = ",
-                                t, " (smallest eigenvalue ", r.sigma_min_eig[k],
+                                t, " (smallest eigenvalue ", est.sigma_min_eig[k],
                                 "); tighten the solver tolerances or increase gamma"),
                         t, "SIGMA_NOT_POSITIVE_DEFINITE");
-    if (!(rho < gamma2) && std::isnan(r.coupling_violation_t)) {
-      r.coupling_violation_t = t;
-      if (options.stop_on_coupling_violation) throw coupling_error(t, rho, "");
+    if (!(rho < gamma2) && std::isnan(est.coupling_violation_t)) {
+      est.coupling_violation_t = t;
+      if (options.on_coupling_violation == CouplingPolicy::Error) throw coupling_error(t, rho, "");
     }
   };
 
   std::vector<double> x(static_cast<std::size_t>(dim), 0.0);
   for (int i = 0; i < n; ++i) x[static_cast<std::size_t>(i)] = q0[i];
-  pack_symmetric(options.Sigma0, x.data() + 2 * n);
+  pack_symmetric(problem.Sigma0, x.data() + 2 * n);
   record(0, x.data());
   long next = 1;  // next output time to record
   auto rhs = [&system](double t, const double* y, double* dy) { system.rhs(t, y, dy); };
@@ -341,24 +341,24 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   // After each accepted step of hold interval k (x holds the state at its end): records the
   // output times the step covers, then stops the run if it diverged.
   auto on_step = [&](const DensePiece& piece, long k) {
-    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
-    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
-      piece.eval(std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h), at_grid.data());
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end + slack) {
+      piece.eval(piece.theta(grid[static_cast<std::size_t>(next)]), at_grid.data());
       record(next, at_grid.data());
       system.set_noise(noise.row(k).data());
       ++next;
     }
     if (++steps_in_interval > per_interval)
       throw SolverError(str_cat("more than ", per_interval, " steps in the noise hold interval [", interval_start(k),
-                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end(), ")"),
-                        piece.t_end(), "TOO_MUCH_WORK");
-    trajectory.q_d(piece.t_end(), q_d.data(), &q_cursor);
+                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end, ")"),
+                        piece.t_end, "TOO_MUCH_WORK");
+    trajectory.q_d(piece.t_end, q_d.data(), &q_cursor);
     tracking_error(n, heading, x.data(), q_d.data(), q_e.data());
     const double error = q_e.cwiseAbs().maxCoeff();
     if (error <= bound) return StepAction::Continue;
     r.status = RunStatus::Diverged;
     r.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ", bound,
-                               " at t = ", piece.t_end(),
+                               " at t = ", piece.t_end,
                                ": the closed loop left the neighbourhood of the desired trajectory where the"
                                " linearized design is meaningful (reduce the disturbance or the initial error,"
                                " or raise [solver] divergence_factor)");
@@ -372,7 +372,7 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   };
 
   try {
-    if (solver.method == Method::ERK || solver.method == Method::BDF) {
+    if (solver.method != Method::Adams) {
       // Dormand-Prince per hold interval; for "bdf", a switch to the L-stable SDIRK4 once
       // Dormand-Prince's stiffness test fires.
       Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, solver.max_steps);
@@ -383,7 +383,7 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
         const double ta = interval_start(k), tb = interval_end(k);
         system.set_noise(noise.row(k).data());
         steps_in_interval = 0;
-        if (solver.method == Method::BDF && !implicit_stepper && explicit_stepper.stiff()) {
+        if (solver.method != Method::ERK && !implicit_stepper && explicit_stepper.stiff()) {
           const StepStats& used = explicit_stepper.stats();
           implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol,
                                                       std::max(1L, solver.max_steps - used.steps - used.rejected));
@@ -422,13 +422,19 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   } catch (const SolverError& e) {
     // x holds the last accepted state. Near a coupling violation the estimator gain
     // [I - gamma^-2 Sigma Z]^-1 blows up and the integration stops before the next output time.
-    if (!std::isnan(r.coupling_violation_t))
+    if (!std::isnan(est.coupling_violation_t))
       throw SolverError(str_cat("output-feedback closed loop stopped at t = ", e.t(), " after the coupling condition",
-                                " rho(Sigma Z) < gamma^2 was violated at t = ", r.coupling_violation_t,
+                                " rho(Sigma Z) < gamma^2 was violated at t = ", est.coupling_violation_t,
                                 " (flagged): past the violation the estimator gain [I - gamma^-2 Sigma Z]^-1",
                                 " becomes singular. Increase gamma or Q0 - eta I. [", e.what(), "]"),
                         e.t(), "COUPLING_VIOLATED");
     const double rho = system.rho(e.t(), x.data());
+    if (rho >= (1.0 - 1e-3) * gamma2 && options.on_coupling_violation == CouplingPolicy::Flag)
+      throw SolverError(str_cat("output-feedback closed loop stopped at t = ", e.t(), ", where the coupling condition",
+                                " rho(Sigma Z) < gamma^2 is violated (flagged; rho(Sigma Z) = ", rho, ", gamma^2 = ",
+                                gamma2, "): there the estimator gain [I - gamma^-2 Sigma Z]^-1 is singular and the",
+                                " loop cannot go on. Increase gamma or Q0 - eta I. [", e.what(), "]"),
+                        e.t(), "COUPLING_VIOLATED");
     if (rho >= (1.0 - 1e-3) * gamma2)
       throw coupling_error(e.t(), rho, str_cat(" (between output times: the integration stopped there, ", e.what(), ")"));
     throw SolverError(str_cat("output-feedback closed loop: ", e.what()), e.t(), e.flag());
@@ -440,15 +446,15 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
   if (r.status != RunStatus::Completed) {
     // Keep the output times recorded before the run stopped.
     r.q.conservativeResize(next, n);
-    r.q_hat.conservativeResize(next, n);
+    est.q_hat.conservativeResize(next, n);
     r.q_d.conservativeResize(next, n);
     r.u.conservativeResize(next, m);
     r.u_d.conservativeResize(next, m);
     r.w.conservativeResize(next, nw);
-    r.y.conservativeResize(next, p);
-    r.sigma_min_eig.conservativeResize(next);
-    r.sigma_max_eig.conservativeResize(next);
-    r.rho_sigma_z.conservativeResize(next);
+    est.y.conservativeResize(next, p);
+    est.sigma_min_eig.conservativeResize(next);
+    est.sigma_max_eig.conservativeResize(next);
+    est.rho_sigma_z.conservativeResize(next);
   }
   r.t = Eigen::Map<const Vec>(grid.data(), next);
   return r;
@@ -456,10 +462,11 @@ SimulationResult simulate_impl(const RiccatiSolution& grde, Controller& controll
 
 }  // namespace
 
-SimulationResult simulate_output_feedback(const RiccatiSolution& grde, Controller& controller,
+SimulationResult simulate_output_feedback(const OutputFeedbackProblem& problem, Controller& controller,
                                           const Disturbance& disturbance, const Vec& q0,
-                                          const RowMat& noise, const OutputFeedbackOptions& options,
-                                          double output_dt, const SolverOptions& solver) {
+                                          const OutputFeedbackOptions& options, const SimulationOptions& simulation) {
+  require(problem.design != nullptr, "the output-feedback problem needs a design (a GRDE solution)");
+  const RiccatiSolution& grde = *problem.design;
   const Trajectory& trajectory = grde.trajectory();
   const Model& model = trajectory.model();
   const int n = model.n();
@@ -473,24 +480,24 @@ SimulationResult simulate_output_feedback(const RiccatiSolution& grde, Controlle
   check_size(q0, n, "the initial state q0");
   require(disturbance.dim() == model.nw(), "the disturbance has ", disturbance.dim(),
           " channels, the model '", model.name(), "' has ", model.nw());
-  require(std::isfinite(options.sigma) && options.sigma >= 0.0, "[measurement] sigma must be >= 0, got ",
-          options.sigma);
-  check_symmetric_weight(options.N, p, "N", true);
-  check_symmetric_weight(options.Sigma0, n, "Sigma0", true);
-  check_symmetric_weight(options.Q, n, "Q", false);
-  solver.validate();
-  const long samples = noise_sample_count(trajectory.t0(), trajectory.tf(), options.sample_period);
-  require(noise.rows() == samples && noise.cols() == p, "the noise must have ", samples, " rows (one per ",
-          options.sample_period, " s sample) and ", p, " columns, got (", noise.rows(), ", ",
-          noise.cols(), ")");
-  check_finite(noise, "noise");
+  require(std::isfinite(problem.sigma) && problem.sigma >= 0.0, "[measurement] sigma must be >= 0, got ",
+          problem.sigma);
+  check_symmetric_weight(problem.N, p, "N", true);
+  check_symmetric_weight(problem.Sigma0, n, "Sigma0", true);
+  check_symmetric_weight(problem.Q, n, "Q", false);
+  simulation.validate();
+  const long samples = noise_sample_count(trajectory.t0(), trajectory.tf(), problem.sample_period);
+  require(problem.noise.rows() == samples && problem.noise.cols() == p, "the noise must have ", samples,
+          " rows (one per ", problem.sample_period, " s sample) and ", p, " columns, got (", problem.noise.rows(),
+          ", ", problem.noise.cols(), ")");
+  check_finite(problem.noise, "noise");
   require(controller.m() == model.m(), "the controller gives ", controller.m(), " inputs, the model has ",
           model.m());
   require(controller.n() == 0 || controller.n() == n, "the controller acts on states of ", controller.n(),
           " numbers, the model '", model.name(), "' has ", n);
-  if (n == 6)
-    return simulate_impl<6>(grde, controller, disturbance, q0, noise, options, output_dt, solver);
-  return simulate_impl<Eigen::Dynamic>(grde, controller, disturbance, q0, noise, options, output_dt, solver);
+  return detail::with_state_size(n, [&](auto size) {
+    return simulate_impl<decltype(size)::value>(problem, controller, disturbance, q0, options, simulation);
+  });
 }
 
 }  // namespace hinf

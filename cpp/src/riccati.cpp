@@ -10,6 +10,8 @@
 #include "hinf/resources.hpp"
 #include "hinf/stepper.hpp"
 #include "definiteness.hpp"
+#include "lyapunov_newton.hpp"
+#include "size_dispatch.hpp"
 #include "extremum.hpp"
 #include "riccati_kernel.hpp"
 #include "symmetric_extremes.hpp"
@@ -57,6 +59,14 @@ class RiccatiProblem {
     coefficients_at(t);
     unpack_symmetric(x, X_);
     detail::riccati_jacobian(sign_, M_, S_, X_, T_, G_, J);
+  }
+
+  // The Jacobian in matrix form: J E = sign (M_cl' E + E M_cl) with M_cl = M - S X.
+  double sign() const { return sign_; }
+  void closed_loop(double t, const double* x, Mat& M_cl) {
+    coefficients_at(t);
+    unpack_symmetric(x, X_);
+    M_cl = M_ - S_ * X_;
   }
 
  private:
@@ -122,6 +132,44 @@ class RiccatiProblem {
   VecN q_d_;
   MatN M_, R_, S_, R0_, S0_, shifted_, X_, A_, T_, G_;
 };
+
+// BDF's Newton systems of a Riccati problem as Lyapunov equations (lyapunov_newton.hpp).
+template <int N>
+class RiccatiNewton final : public NewtonSystem {
+ public:
+  explicit RiccatiNewton(RiccatiProblem<N>& problem) : problem_(problem), lyapunov_(problem.n()) {}
+  void refresh(double t, const double* y) override {
+    problem_.closed_loop(t, y, M_cl_);
+    lyapunov_.factor(M_cl_);
+  }
+  bool solve(double gamma, const double* b, double* x) override {
+    return lyapunov_.solve(gamma * problem_.sign(), b, x);
+  }
+
+ private:
+  RiccatiProblem<N>& problem_;
+  detail::LyapunovNewton lyapunov_;
+  Mat M_cl_;
+};
+
+// integrate() of the Riccati problem with its Newton systems solved the cheaper way; the method
+// used, with the Newton solver of BDF, is in the stats.
+template <int N, class OnStep>
+StepStats integrate_problem(RiccatiProblem<N>& problem, const SolverOptions& options, double t_start,
+                            double t_end, double* x, OnStep&& on_step) {
+  const int p = packed_size(problem.n());
+  const bool lyapunov = options.newton_systems == NewtonSystems::Lyapunov ||
+                        (options.newton_systems == NewtonSystems::Auto && problem.n() > kDenseNewtonMaxStates);
+  RiccatiNewton<N> newton(problem);
+  StepStats stats = integrate(
+      options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
+      [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
+      t_end, x, on_step, lyapunov ? &newton : nullptr);
+  const std::string newton_kind = lyapunov ? "bdf (Lyapunov Newton)" : "bdf (dense Newton)";
+  const std::size_t at = stats.method.find("bdf");
+  if (at != std::string::npos) stats.method.replace(at, 3, newton_kind);
+  return stats;
+}
 
 double max_abs(const double* y, int p) {
   double value = 0.0;
@@ -211,15 +259,12 @@ double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q
   detail::DefinitenessSearch<N> search(n);
   double found = NAN;
   try {
-    integrate(
-        o, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
-        [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_from,
-        t_end, w.data(), [&](const DensePiece& piece) {
-          const double theta = search.first_loss(piece);
-          if (std::isnan(theta)) return StepAction::Continue;
-          found = piece.time(theta);
-          return StepAction::Stop;
-        });
+    integrate_problem(problem, o, t_from, t_end, w.data(), [&](const DensePiece& piece) {
+      const double theta = search.first_loss(piece);
+      if (std::isnan(theta)) return StepAction::Continue;
+      found = piece.time(theta);
+      return StepAction::Stop;
+    });
   } catch (const SolverError& e) {
     if (is_too_much_work(e))
       throw SolverError(str_cat("the conjugate-point test of the ",
@@ -282,11 +327,8 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   PiecewisePolynomial dense(p);
   StepStats step_stats;
   try {
-    step_stats = integrate(
-        x_options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
-        [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
-        t_end, x.data(), [&](const DensePiece& piece) {
-          const double t = piece.t_end();
+    step_stats = integrate_problem(problem, x_options, t_start, t_end, x.data(), [&](const DensePiece& piece) {
+          const double t = piece.t_end;
           const double largest = max_abs(x.data(), p);
           if (!std::isfinite(largest)) throw SolverError("the solution became non-finite", t, "NOT_FINITE");
           t_last = t;
@@ -352,6 +394,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   stats.rhs_evals = step_stats.rhs_evals;
   stats.jac_evals = step_stats.jac_evals;
   stats.memory_bytes = dense.memory_bytes();
+  stats.method = step_stats.method;
   return {std::move(dense), stats};
 }
 
@@ -360,8 +403,9 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
 std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q,
                                                  double gamma, const Mat& N_inv, const Mat& X_start,
                                                  const SolverOptions& options, bool store = true) {
-  if (trajectory.n() == 6) return integrate_riccati<6>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
-  return integrate_riccati<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+  return detail::with_state_size(trajectory.n(), [&](auto size) {
+    return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+  });
 }
 
 // Escape time of an integration without storage, NaN when there is none.
@@ -402,16 +446,10 @@ void extremes_over(const PiecewisePolynomial& X, const std::vector<double>& time
 template <int N>
 void extremes_at(const PiecewisePolynomial& X, double t, double& lo, double& hi) {
   const int n = static_cast<int>(std::lround((std::sqrt(8.0 * X.dim() + 1.0) - 1.0) / 2.0));
-  double packed[136];
-  std::vector<double> heap;
-  double* p = packed;
-  if (X.dim() > 136) {
-    heap.resize(static_cast<std::size_t>(X.dim()));
-    p = heap.data();
-  }
-  X.eval(t, p);
+  PackedScratch packed(n);
+  X.eval(t, packed.data());
   Eigen::Matrix<double, N, N> Xt(n, n);
-  unpack_symmetric(p, Xt);
+  unpack_symmetric(packed.data(), Xt);
   detail::symmetric_eigen_extremes(Xt, lo, hi);
 }
 
@@ -435,8 +473,7 @@ void continuous_bounds(const PiecewisePolynomial& X, double& lambda_min, double&
 }  // namespace
 
 void SymmetricSolution::eigenvalue_bounds(double& lambda_min, double& lambda_max) const {
-  if (n_ == 6) continuous_bounds<6>(X_, lambda_min, lambda_max);
-  else continuous_bounds<Eigen::Dynamic>(X_, lambda_min, lambda_max);
+  detail::with_state_size(n_, [&](auto size) { continuous_bounds<decltype(size)::value>(X_, lambda_min, lambda_max); });
 }
 
 SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X,
@@ -469,8 +506,7 @@ void SymmetricSolution::eigenvalue_range(const std::vector<double>& times, doubl
   require(!times.empty(), "eigenvalue_range needs at least one time");
   lambda_min = std::numeric_limits<double>::infinity();
   lambda_max = -std::numeric_limits<double>::infinity();
-  if (n_ == 6) extremes_over<6>(X_, times, lambda_min, lambda_max);
-  else extremes_over<Eigen::Dynamic>(X_, times, lambda_min, lambda_max);
+  detail::with_state_size(n_, [&](auto size) { extremes_over<decltype(size)::value>(X_, times, lambda_min, lambda_max); });
 }
 
 RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z,
@@ -490,13 +526,8 @@ Mat RiccatiSolution::gain(double t) const {
 void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
   if (constant_B_) {
     // K(j, c) = sum_i B(i, j) Z(i, c), column-major m x n.
-    double packed_stack[kMaxPackedOnStack];
-    std::vector<double> heap;
-    double* z = packed_stack;
-    if (packed_size(n_) > kMaxPackedOnStack) {
-      heap.resize(static_cast<std::size_t>(packed_size(n_)));
-      z = heap.data();
-    }
+    PackedScratch packed(n_);
+    double* z = packed.data();
     X_.eval(t, z, cursor);
     for (int k = 0; k < m_ * n_; ++k) out[k] = 0.0;
     const int n = n_, m = m_;

@@ -9,8 +9,17 @@
 #include "hinf/controller.hpp"
 #include "hinf/errors.hpp"
 #include "hinf/output_feedback.hpp"
+#include "hinf/ship.hpp"
 
 namespace hinf {
+
+SimulationOptions Scenario::simulation_options() const {
+  SimulationOptions options;
+  options.output_dt = output_dt;
+  options.divergence_factor = divergence_factor;
+  options.solver = solver;
+  return options;
+}
 
 Scenario Scenario::resolved() const {
   require(model != nullptr, "the scenario has no model");
@@ -56,15 +65,12 @@ void Scenario::validate() const {
             "': its noise is set in [measurement] (sigma), not as a disturbance");
   }
   check_size(initial_q0, n, "[initial] q0");
-  solver.validate();
-  require(std::isfinite(output_dt) && output_dt > 0.0, "[output] dt must be > 0, got ", output_dt);
+  simulation_options().validate();
   const auto [kappa_min, kappa_min_t] = kappa.minimum(t0, tf);
   require(std::isfinite(kappa_min) && kappa_min > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(",
           kappa_min_t, ") = ", kappa_min);
   output_grid(t0, tf, output_dt);  // checks dt
-  require(law == "hinf" || law == "lqr" || law == "cascade", "[controller] law must be \"hinf\", \"lqr\" or",
-          " \"cascade\", got \"", law, "\"");
-  if (law == "cascade") {
+  if (law == Law::Cascade) {
     require(dynamic_cast<const ShipModel*>(model.get()) != nullptr,
             "[controller] law = \"cascade\" is written for the ship model; the model is '", model->name(), "'");
     for (double g : {cascade.k, cascade.k1, cascade.k2})
@@ -88,11 +94,6 @@ void Scenario::validate() const {
     require(eig.eigenvalues()(0) > 0.0,
             "[measurement] Q0 - eta I must be positive definite (Sigma(t0) = (Q0 - eta I)^-1): its smallest"
             " eigenvalue is ", eig.eigenvalues()(0), "; increase Q0 or decrease eta");
-    require(ms.filter_A == "estimate" || ms.filter_A == "desired",
-            "[measurement] filter_A must be \"estimate\" or \"desired\", got \"", ms.filter_A, "\"");
-    require(ms.on_coupling_violation == "error" || ms.on_coupling_violation == "flag",
-            "[measurement] on_coupling_violation must be \"error\" or \"flag\", got \"",
-            ms.on_coupling_violation, "\"");
     require(static_cast<int>(model->noise_channels().size()) == p, "the model '", model->name(),
             "' has no noise channel for each of its ", p, " measured outputs");
   }
@@ -139,45 +140,46 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
 
   RunResult result;
   result.scenario_name = s.name;
-  result.controller = s.law;
-  result.gamma = s.law == "lqr" ? std::numeric_limits<double>::infinity() : s.gamma;
+  result.law = s.law;
+  result.output_feedback = s.measurement.has_value();
+  result.gamma = s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
   result.trajectory = trajectory_of(s);
   // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
   // The cascade law with state feedback does not use it: there it is only reported, and a
   // gamma at or below gamma* leaves it out instead of failing the run.
-  const bool design_needed = s.law != "cascade" || s.measurement || s.worst_case;
+  const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
   try {
     result.solution = solve_grde(result.trajectory, s.Q, s.Qf, result.gamma, s.solver);
   } catch (const ConjugatePointError&) {
     if (design_needed) throw;
   }
   RiccatiSolutionPtr game = result.solution;  // the H-infinity design at the scenario's gamma
-  if (s.worst_case && s.law == "lqr") game = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
+  if (s.worst_case && s.law == Law::Lqr) game = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
   result.timing.design = seconds_since(start);
 
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
-  if (s.law == "cascade") controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
+  if (s.law == Law::Cascade) controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
   else controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
   const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
   if (s.measurement) {
     const MeasurementSpec& ms = *s.measurement;
-    OutputFeedbackOptions o;
-    o.sigma = ms.sigma;
-    o.sample_period = ms.sample_period;
-    o.N = ms.N;
-    o.Sigma0 = initial_sigma(s);
-    o.Q = s.Q;
-    o.filter_uses_estimate = ms.filter_A == "estimate";
-    o.stop_on_coupling_violation = ms.on_coupling_violation == "error";
-    result.controller += "-output-feedback";
-    const RowMat seeded = noise == nullptr ? scenario_noise(s) : RowMat();
-    result.simulation = simulate_output_feedback(*result.solution, *controller, disturbance, s.initial_q0,
-                                                 noise == nullptr ? seeded : *noise, o, s.output_dt,
-                                                 s.solver);
+    OutputFeedbackProblem problem;
+    problem.design = result.solution;
+    problem.sigma = ms.sigma;
+    problem.sample_period = ms.sample_period;
+    problem.noise = noise == nullptr ? scenario_noise(s) : *noise;
+    problem.N = ms.N;
+    problem.Sigma0 = initial_sigma(s);
+    problem.Q = s.Q;
+    OutputFeedbackOptions options;
+    options.filter_A = ms.filter_A;
+    options.on_coupling_violation = ms.on_coupling_violation;
+    result.simulation = simulate_output_feedback(problem, *controller, disturbance, s.initial_q0, options,
+                                                 s.simulation_options());
   } else {
-    result.simulation = simulate_state_feedback(*result.trajectory, *controller, disturbance,
-                                                s.initial_q0, s.output_dt, s.solver);
+    result.simulation =
+        simulate_state_feedback(*result.trajectory, *controller, disturbance, s.initial_q0, s.simulation_options());
   }
   result.timing.simulate = seconds_since(simulate_start);
 

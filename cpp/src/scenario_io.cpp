@@ -17,6 +17,7 @@
 #include <toml++/toml.h>
 
 #include "hinf/errors.hpp"
+#include "hinf/ship.hpp"
 
 namespace hinf {
 
@@ -92,6 +93,17 @@ class TableReader {
   std::string string(const std::string& key) {
     if (!has(key)) fail(key, "is required");
     return string_or(key, "");
+  }
+  // A closed choice given by its name (enum_names.hpp).
+  template <class E>
+  E enum_or(const std::string& key, E fallback) {
+    if (!has(key)) return fallback;
+    const std::string name = string(key);
+    try {
+      return from_string<E>(name);
+    } catch (const InputError& e) {
+      fail(key, e.what());
+    }
   }
   std::int64_t integer_or(const std::string& key, std::int64_t fallback) {
     const toml::node* node = get(key);
@@ -232,7 +244,7 @@ const toml::table* section(const toml::table& root, const std::string& name, con
 }
 
 ModelPtr parse_model(const toml::table& table, const std::string& source) {
-  TableReader r(table, "[model]", source, {"kind", "m_u", "m_v", "m_r", "d_u", "d_v", "d_r", "A", "B", "D"});
+  TableReader r(table, "[model]", source, {"kind", "m_u", "m_v", "m_r", "d_u", "d_v", "d_r", "A", "B", "D", "C"});
   const std::string kind = r.string("kind");
   ModelPtr model;
   if (kind == "ship") {
@@ -243,7 +255,7 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
     p.d_u = r.number_or("d_u", p.d_u);
     p.d_v = r.number_or("d_v", p.d_v);
     p.d_r = r.number_or("d_r", p.d_r);
-    for (const char* key : {"A", "B", "D"})
+    for (const char* key : {"A", "B", "D", "C"})
       if (r.has(key)) r.fail(key, "is a key of kind = \"linear\", not of kind = \"ship\"");
     model = std::make_shared<ShipModel>(p);
   } else if (kind == "linear") {
@@ -268,7 +280,9 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
     const Mat B = r.matrix("B", n, dimensions("B", "n x m").second, false);
     Mat D = Mat::Identity(n, n);
     if (r.has("D")) D = r.matrix("D", n, dimensions("D", "n x nw").second, false);
-    model = std::make_shared<LinearModel>(A, B, D);
+    Mat C;  // a measurement y = C q adds one noise channel per output (model.hpp)
+    if (r.has("C")) C = r.matrix("C", dimensions("C", "p x n").first, n, false);
+    model = std::make_shared<LinearModel>(A, B, D, C);
   } else {
     r.fail("kind", "unknown model kind \"" + kind + "\": use \"ship\" or \"linear\"");
   }
@@ -327,10 +341,11 @@ void check_key_parts(const std::string& text, const std::string& source) {
   long line = 1;
   int parts = 0;  // parts of the dotted run being read: "a.b.c" has 3
   bool after_dot = false;
-  std::size_t i = 0;
+  std::size_t i = 0, run_start = 0;
   while (i < text.size()) {
     const char c = text[i];
     if (bare_key_char(c) || c == '"' || c == '\'') {
+      if (!after_dot) run_start = i;
       if (bare_key_char(c)) {
         while (i < text.size() && bare_key_char(text[i])) ++i;
       } else {
@@ -339,7 +354,8 @@ void check_key_parts(const std::string& text, const std::string& source) {
       parts = after_dot ? parts + 1 : 1;
       after_dot = false;
       if (parts > kMaxKeyParts)
-        throw InputError(str_cat(source, ":", line, ": invalid TOML: a key of more than ", kMaxKeyParts,
+        throw InputError(str_cat(source, ":", line, ": invalid TOML: the key '", text.substr(run_start, 40),
+                                 "...' has more than ", kMaxKeyParts,
                                  " dotted parts (tables nested too deeply for a scenario)"));
     } else if (c == ' ' || c == '\t') {
       ++i;
@@ -434,9 +450,6 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   Scenario s;
   s.name = top.string_or("name", file_stem(source));
   s.description = top.string_or("description", "");
-  for (const char* name : {"model", "horizon", "desired", "controller", "disturbance", "initial",
-                           "measurement", "solver", "output"})
-    top.get(name);
 
   s.model = parse_model(*section(root, "model", source, true), source);
   const int n = s.model->n(), m = s.model->m(), nw = s.model->nw();
@@ -461,7 +474,7 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     const toml::node* gamma = r.get("gamma");
     if (gamma == nullptr) r.fail("gamma", "is required");
     s.gamma = r.as_number(*gamma, "gamma", true);  // inf: the LQR limit
-    s.law = r.string_or("law", s.law);
+    s.law = r.enum_or("law", s.law);
     if (const toml::node* node = r.get("cascade")) {
       const toml::table* table = node->as_table();
       if (table == nullptr) r.fail("cascade", "expected a table { k = ..., k1 = ..., k2 = ... }, got " + type_name(*node));
@@ -524,21 +537,23 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     }
     if (r.has("Q0")) ms.Q0 = r.matrix("Q0", n, n, true);
     ms.eta = r.number_or("eta", ms.eta);
-    ms.filter_A = r.string_or("filter_A", ms.filter_A);
-    ms.on_coupling_violation = r.string_or("on_coupling_violation", ms.on_coupling_violation);
+    ms.filter_A = r.enum_or("filter_A", ms.filter_A);
+    ms.on_coupling_violation = r.enum_or("on_coupling_violation", ms.on_coupling_violation);
     s.measurement = ms;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
-    TableReader r(*table, "[solver]", source, {"method", "rtol", "atol", "max_steps"});
-    const std::string method = r.string_or("method", "bdf");
-    try {
-      s.solver.method = method_from_string(method);
-    } catch (const InputError& e) {
-      r.fail("method", e.what());
-    }
+    TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});
+    s.solver.method = r.enum_or("method", s.solver.method);
+    s.solver.newton_systems = r.enum_or("newton_systems", s.solver.newton_systems);
     s.solver.rtol = r.number_or("rtol", s.solver.rtol);
     s.solver.atol = r.number_or("atol", s.solver.atol);
     s.solver.max_steps = static_cast<long>(r.integer_or("max_steps", s.solver.max_steps));
+    s.divergence_factor = r.number_or("divergence_factor", s.divergence_factor);
+    try {
+      s.simulation_options().validate();
+    } catch (const InputError& e) {
+      throw InputError(str_cat(source, ": [solver] ", e.what()));
+    }
   }
   if (const toml::table* table = section(root, "output", source, false)) {
     TableReader r(*table, "[output]", source, {"dt"});
@@ -593,30 +608,142 @@ nlohmann::json matrix_json(const Mat& M) {
 
 }  // namespace
 
+namespace {
+
+// The TOML form of a signal: a number for a constant, a table otherwise.
+void insert_signal(toml::table& table, const std::string& key, const Signal& signal) {
+  if (signal.is_constant()) {
+    table.insert(key, signal.offset());
+    return;
+  }
+  toml::table spec;
+  if (signal.is_table()) {
+    toml::array t, value;
+    for (double x : signal.table_t()) t.push_back(x);
+    for (double x : signal.table_values()) value.push_back(x);
+    spec.insert("table", toml::table{{"t", std::move(t)}, {"value", std::move(value)}});
+  } else {
+    spec.insert("offset", signal.offset());
+    toml::array harmonics;
+    for (const Harmonic& h : signal.harmonics())
+      harmonics.push_back(toml::table{{"amplitude", h.amplitude},
+                                      {"omega", h.omega},
+                                      {"phase", h.phase},
+                                      {"shape", h.cosine ? "cos" : "sin"}});
+    spec.insert("harmonics", std::move(harmonics));
+  }
+  table.insert(key, std::move(spec));
+}
+
+// Channels prefix1, prefix2, ...: every one (all_channels), or only the non-zero ones that are
+// not in `excluded`.
+void insert_vector_signal(toml::table& table, const std::string& prefix, const VectorSignal& signals,
+                          const std::string& what, bool all_channels, const std::vector<int>& excluded = {}) {
+  require(!signals.is_function(), what, " is a function of t (a Python callable, say): it cannot be written to a",
+          " scenario file; give it as signals (constants, harmonics or tables)");
+  for (int i = 0; i < signals.dim(); ++i) {
+    const Signal& channel = signals.channels()[static_cast<std::size_t>(i)];
+    const bool zero = channel.is_constant() && channel.offset() == 0.0;
+    const bool is_excluded = std::find(excluded.begin(), excluded.end(), i) != excluded.end();
+    if (all_channels || (!zero && !is_excluded)) insert_signal(table, str_cat(prefix, i + 1), channel);
+  }
+}
+
+toml::array vector_toml(const Vec& v) {
+  toml::array a;
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v[i]);
+  return a;
+}
+
+toml::array matrix_toml(const Mat& M) {
+  toml::array rows;
+  for (Eigen::Index i = 0; i < M.rows(); ++i) rows.push_back(vector_toml(M.row(i).transpose()));
+  return rows;
+}
+
+toml::table model_toml(const Model& model) {
+  if (const auto* ship = dynamic_cast<const ShipModel*>(&model)) {
+    const ShipParameters& p = ship->parameters();
+    return toml::table{{"kind", "ship"}, {"m_u", p.m_u}, {"m_v", p.m_v}, {"m_r", p.m_r},
+                       {"d_u", p.d_u}, {"d_v", p.d_v}, {"d_r", p.d_r}};
+  }
+  if (const auto* linear = dynamic_cast<const LinearModel*>(&model)) {
+    toml::table table{{"kind", "linear"}, {"A", matrix_toml(linear->A())}, {"B", matrix_toml(linear->B(0.0))},
+                      {"D", matrix_toml(linear->process_D())}};
+    if (linear->measurement_C().size() > 0) table.insert("C", matrix_toml(linear->measurement_C()));
+    return table;
+  }
+  throw InputError(str_cat("the model '", model.name(), "' has no scenario-file form (only kind = \"ship\" and",
+                           " kind = \"linear\" have one)"));
+}
+
+}  // namespace
+
+std::string scenario_toml(const Scenario& s) {
+  require(s.model != nullptr, "the scenario has no model");
+  const Model& model = *s.model;
+  toml::table root;
+  root.insert("name", s.name);
+  if (!s.description.empty()) root.insert("description", s.description);
+  root.insert("model", model_toml(model));
+  root.insert("horizon", toml::table{{"t0", s.t0}, {"tf", s.tf}});
+  toml::table desired{{"q0", vector_toml(s.desired_q0)}};
+  insert_vector_signal(desired, "u", s.desired_u, "[desired] u_d", /*all_channels=*/true);
+  root.insert("desired", std::move(desired));
+  toml::table controller{{"gamma", s.gamma}, {"law", to_string(s.law)}};
+  if (s.Q.size() > 0) controller.insert("Q", matrix_toml(s.Q));
+  if (s.Qf.size() > 0) controller.insert("Qf", matrix_toml(s.Qf));
+  insert_signal(controller, "kappa", s.kappa);
+  controller.insert("cascade", toml::table{{"k", s.cascade.k}, {"k1", s.cascade.k1}, {"k2", s.cascade.k2}});
+  root.insert("controller", std::move(controller));
+  toml::table disturbance{{"worst_case", s.worst_case}};
+  insert_vector_signal(disturbance, "w", s.disturbance, "[disturbance]", /*all_channels=*/false,
+                       model.noise_channels());
+  root.insert("disturbance", std::move(disturbance));
+  root.insert("initial", toml::table{{"q0", vector_toml(s.initial_q0)}});
+  if (s.measurement) {
+    const MeasurementSpec& ms = *s.measurement;
+    require(ms.seed <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()),
+            "[measurement] seed = ", ms.seed, " does not fit in a scenario file's 64-bit signed integer");
+    toml::table measurement{{"sigma", ms.sigma},
+                            {"sample_period", ms.sample_period},
+                            {"seed", static_cast<std::int64_t>(ms.seed)},
+                            {"eta", ms.eta},
+                            {"filter_A", to_string(ms.filter_A)},
+                            {"on_coupling_violation", to_string(ms.on_coupling_violation)}};
+    if (ms.N.size() > 0) measurement.insert("N", matrix_toml(ms.N));
+    if (ms.Q0.size() > 0) measurement.insert("Q0", matrix_toml(ms.Q0));
+    root.insert("measurement", std::move(measurement));
+  }
+  root.insert("solver", toml::table{{"method", to_string(s.solver.method)},
+                                    {"newton_systems", to_string(s.solver.newton_systems)},
+                                    {"rtol", s.solver.rtol},
+                                    {"atol", s.solver.atol},
+                                    {"max_steps", static_cast<std::int64_t>(s.solver.max_steps)},
+                                    {"divergence_factor", s.divergence_factor}});
+  root.insert("output", toml::table{{"dt", s.output_dt}});
+  std::ostringstream os;
+  os << toml::toml_formatter(root, toml::toml_formatter::default_flags & ~toml::format_flags::allow_literal_strings);
+  return os.str() + "\n";
+}
+
 std::string results_json(const RunResult& r, int indent) {
   const Metrics& mt = r.metrics;
   nlohmann::json j;
   j["scenario"] = r.scenario_name;
-  j["controller"] = r.controller;
+  j["controller"] = to_string(r.law) + (r.output_feedback ? "-output-feedback" : "");
   j["gamma"] = number(r.gamma);
   j["Z0"] = r.solution ? matrix_json(r.Z0) : nlohmann::json(nullptr);
   j["Z_min_eig"] = number(r.Z_min_eig);
   j["Z_max_eig"] = number(r.Z_max_eig);
   j["gamma_star"] = r.gamma_star ? number(*r.gamma_star) : nlohmann::json(nullptr);
-  j["coupling_violation_t"] = number(r.simulation.coupling_violation_t);
+  j["coupling_violation_t"] =
+      number(r.simulation.estimator ? r.simulation.estimator->coupling_violation_t : NAN);
   j["status"] = to_string(r.simulation.status);
   j["status_message"] = r.simulation.status_message;
-  j["metrics"] = {
-      {"rms_position_error_last_half", number(mt.rms_position_error_last_half)},
-      {"max_position_error", number(mt.max_position_error)},
-      {"final_position_error", number(mt.final_position_error)},
-      {"control_l2", number(mt.control_l2)},
-      {"control_error_l2", number(mt.control_error_l2)},
-      {"disturbance_l2", number(mt.disturbance_l2)},
-      {"l2_gain", number(mt.l2_gain)},
-      {"max_rho_sigma_z", number(mt.max_rho_sigma_z)},
-      {"rms_estimation_error_last_half", number(mt.rms_estimation_error_last_half)},
-  };
+  j["metrics"] = nlohmann::json::object();
+  for (const MetricDefinition& metric : metric_table()) j["metrics"][metric.name] = number(mt.*metric.value);
+
   j["timing_s"] = {{"design", r.timing.design},
                    {"simulate", r.timing.simulate},
                    {"analysis", r.timing.analysis},
@@ -643,10 +770,10 @@ std::string results_csv(const RunResult& r) {
   for (int i = 1; i <= model.m(); ++i) os << ",u" << i;
   for (int i = 1; i <= model.m(); ++i) os << ",u" << i << "_d";
   for (int i = 1; i <= model.nw(); ++i) os << ",w" << i;
-  const bool estimated = s.q_hat.rows() == s.t.size() && s.t.size() > 0;
-  if (estimated) {
+  const EstimatorSeries* e = s.estimator ? &*s.estimator : nullptr;
+  if (e != nullptr) {
     for (const std::string& name : names) os << "," << name << "_e_hat";
-    for (Eigen::Index i = 1; i <= s.y.cols(); ++i) os << ",y" << i;
+    for (Eigen::Index i = 1; i <= e->y.cols(); ++i) os << ",y" << i;
     os << ",sigma_min_eig,sigma_max_eig,rho_sigma_z";
   }
   os << "\n";
@@ -654,10 +781,10 @@ std::string results_csv(const RunResult& r) {
     os << s.t[k];
     for (const RowMat* M : {&s.q, &s.q_d, &s.u, &s.u_d, &s.w})
       for (Eigen::Index i = 0; i < M->cols(); ++i) os << "," << (*M)(k, i);
-    if (estimated) {
-      for (Eigen::Index i = 0; i < s.q_hat.cols(); ++i) os << "," << s.q_hat(k, i);
-      for (Eigen::Index i = 0; i < s.y.cols(); ++i) os << "," << s.y(k, i);
-      os << "," << s.sigma_min_eig[k] << "," << s.sigma_max_eig[k] << "," << s.rho_sigma_z[k];
+    if (e != nullptr) {
+      for (Eigen::Index i = 0; i < e->q_hat.cols(); ++i) os << "," << e->q_hat(k, i);
+      for (Eigen::Index i = 0; i < e->y.cols(); ++i) os << "," << e->y(k, i);
+      os << "," << e->sigma_min_eig[k] << "," << e->sigma_max_eig[k] << "," << e->rho_sigma_z[k];
     }
     os << "\n";
   }

@@ -12,12 +12,11 @@
 
 namespace hinf {
 
-std::string to_string(RunStatus status) {
-  switch (status) {
-    case RunStatus::Completed: return "completed";
-    case RunStatus::Diverged: return "diverged";
-  }
-  return "unknown";
+void SimulationOptions::validate() const {
+  require(std::isfinite(output_dt) && output_dt > 0.0, "the output step dt must be > 0, got ", output_dt);
+  require(std::isfinite(divergence_factor) && divergence_factor > 1.0,
+          "divergence_factor must be a finite number > 1, got ", divergence_factor);
+  solver.validate();
 }
 
 RowMat SimulationResult::q_e() const {
@@ -65,7 +64,7 @@ double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
-                                         double output_dt, const SolverOptions& options) {
+                                         const SimulationOptions& simulation) {
   const Model& model = trajectory.model();
   const int n = model.n(), m = model.m(), nw = model.nw();
   check_size(q0, n, "the initial state q0");
@@ -74,14 +73,15 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
           " numbers, the model '", model.name(), "' has ", n);
   require(disturbance.dim() == nw, "the disturbance has ", disturbance.dim(),
           " channels, the model '", model.name(), "' has ", nw);
-  options.validate();
+  simulation.validate();
+  const SolverOptions& options = simulation.solver;
   const double t0 = trajectory.t0(), tf = trajectory.tf();
-  const long count = output_count(t0, tf, output_dt);
+  const long count = output_count(t0, tf, simulation.output_dt);
   check_memory(8.0 * static_cast<double>(count) * (1 + 2 * n + 2 * m + nw),
                str_cat("the time series on the output grid of ", count, " points"),
                "increase [output] dt (or shorten the horizon)");
-  const std::vector<double> grid = output_grid(t0, tf, output_dt);
-  const double bound = divergence_bound(trajectory, q0, grid, options.divergence_factor);
+  const std::vector<double> grid = output_grid(t0, tf, simulation.output_dt);
+  const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
   const bool constant_BD = model.constant_input_matrices();
@@ -121,28 +121,28 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   result.q.resize(count, n);
   result.q.row(0) = q0.transpose();
   Vec y = q0;
-  result.integrator = options.method == Method::ERK ? "dormand-prince 5(4)" : "CVODE " + to_string(options.method);
   long next = 1;  // the next output time to record
   std::size_t cursor = 0;
   const StepStats stats = integrate(options, n, rhs, jacobian, t0, tf, y.data(), [&](const DensePiece& piece) {
-    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
-    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
-      const double theta = std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h);
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end + slack) {
+      const double theta = piece.theta(grid[static_cast<std::size_t>(next)]);
       piece.eval(theta, result.q.row(next).data());
       ++next;
     }
-    trajectory.q_d(piece.t_end(), q_d.data(), &cursor);
+    trajectory.q_d(piece.t_end, q_d.data(), &cursor);
     tracking_error(n, heading, y.data(), q_d.data(), q_e.data());
     const double error = q_e.cwiseAbs().maxCoeff();
     if (error <= bound) return StepAction::Continue;
     result.status = RunStatus::Diverged;
     result.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ",
-                                    bound, " at t = ", piece.t_end(),
+                                    bound, " at t = ", piece.t_end,
                                     ": the closed loop left the neighbourhood of the desired trajectory where the"
                                     " linearized design is meaningful (reduce the disturbance or the initial"
                                     " error, or raise [solver] divergence_factor)");
     return StepAction::Stop;
   });
+  result.integrator = stats.method;
   result.stats.steps = stats.steps;
   result.stats.rejected = stats.rejected;
   result.stats.rhs_evals = stats.rhs_evals;

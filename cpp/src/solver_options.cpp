@@ -6,23 +6,6 @@
 
 namespace hinf {
 
-std::string to_string(Method method) {
-  switch (method) {
-    case Method::BDF: return "bdf";
-    case Method::Adams: return "adams";
-    case Method::ERK: return "erk";
-  }
-  return "unknown";
-}
-
-Method method_from_string(const std::string& name) {
-  if (name == "bdf") return Method::BDF;
-  if (name == "adams") return Method::Adams;
-  if (name == "erk") return Method::ERK;
-  throw InputError(str_cat("unknown solver method '", name,
-                           "': use \"bdf\", \"adams\" or \"erk\""));
-}
-
 void SolverOptions::validate() const {
   // Looser tolerances do not give an answer (rtol = 1 or atol = 1e10 "succeed" with errors of
   // the size of the solution); tighter ones than 1e-14 are below double precision.
@@ -32,8 +15,6 @@ void SolverOptions::validate() const {
   require(max_steps >= 1 && max_steps <= 1000000000L, "solver max_steps must be in [1, 1e9], got ", max_steps);
   require(std::isfinite(escape_norm) && escape_norm > 1.0, "solver escape_norm must be a finite number > 1, got ",
           escape_norm);
-  require(std::isfinite(divergence_factor) && divergence_factor > 1.0,
-          "solver divergence_factor must be a finite number > 1, got ", divergence_factor);
 }
 
 }  // namespace hinf

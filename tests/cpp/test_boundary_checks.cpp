@@ -16,6 +16,7 @@
 #include "hinf/errors.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/model.hpp"
+#include "hinf/ship.hpp"
 #include "hinf/piecewise_polynomial.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
@@ -126,9 +127,9 @@ TEST(ComputeMetrics, FaultyModelOrARunOfAnotherModelIsAnInputError) {
                 .find("run.q has shape (3, 2), expected (3, 6) for the model 'ship'"),
             std::string::npos);
   hinf::SimulationResult run = zero_run(6, 2, 6);
-  run.q_hat = RowMat::Zero(3, 2);
+  run.estimator.emplace().q_hat = RowMat::Zero(3, 2);
   EXPECT_NE(input_error([&] { hinf::compute_metrics(ship, run, Mat::Identity(6, 6)); })
-                .find("run.q_hat has shape (3, 2), expected (3, 6)"),
+                .find("run.estimator.q_hat has shape (3, 2), expected (3, 6)"),
             std::string::npos);
   EXPECT_NE(input_error([&] { hinf::compute_metrics(ship, zero_run(6, 2, 6), Mat::Identity(2, 2)); })
                 .find("Incompatible dimensions of Q: expected (6, 6) but found (2, 2)"),
@@ -187,7 +188,7 @@ TEST(Controllers, NaNTimeIsNotLookedUpInTheCursorPiece) {
 TEST(PiecewisePolynomial, NaNWithACursorIsAnInputError) {
   hinf::PiecewisePolynomial p(1);
   const double c[] = {1.0, 2.0};  // y = 1 + 2 theta on [0, 1]
-  p.append(0.0, 1.0, 1, c);
+  p.append(hinf::DensePiece{0.0, 0.0 + 1.0, 1, p.dim(), c});
   p.finalize();
   std::size_t cursor = 0;
   double y = 0.0;

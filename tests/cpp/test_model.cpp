@@ -4,6 +4,7 @@
 #include <random>
 
 #include "hinf/model.hpp"
+#include "hinf/ship.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -17,11 +17,21 @@
 #include "hinf/model.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
+#include "hinf/ship.hpp"
 #include "hinf/simulation.hpp"
 #include "hinf/trajectory.hpp"
 #include "tolerances.hpp"
 
 namespace {
+
+// The closed-loop options of a test: output step and integrator.
+hinf::SimulationOptions sim(double output_dt, const hinf::SolverOptions& solver) {
+  hinf::SimulationOptions options;
+  options.output_dt = output_dt;
+  options.solver = solver;
+  return options;
+}
+
 
 using hinf::Mat;
 using hinf::Method;
@@ -162,7 +172,7 @@ TEST_F(PaperShip, ZeroErrorAndZeroDisturbanceStaysOnTheDesiredTrajectory) {
     o.rtol = 1e-9;
     o.atol = 1e-11;
     const hinf::SimulationResult run = hinf::simulate_state_feedback(
-        *trajectory_, controller, hinf::VectorSignal::zeros(6), paper_q_d0(), 0.05, o);
+        *trajectory_, controller, hinf::VectorSignal::zeros(6), paper_q_d0(), sim(0.05, o));
     ASSERT_EQ(run.t.size(), static_cast<Eigen::Index>(grid.size()));
     for (std::size_t k = 0; k < grid.size(); ++k) ASSERT_EQ(run.t[static_cast<Eigen::Index>(k)], grid[k]);
     ASSERT_EQ(run.q.rows(), run.t.size());
@@ -189,8 +199,7 @@ TEST_F(PaperShip, InitialErrorDecays) {
   std::vector<hinf::SimulationResult> runs;
   for (Method method : kMethods) {
     hinf::HinfStateFeedback controller(solution_);
-    runs.push_back(hinf::simulate_state_feedback(*trajectory_, controller, paper_disturbance(), q0,
-                                                 0.05, options(method)));
+    runs.push_back(hinf::simulate_state_feedback(*trajectory_, controller, paper_disturbance(), q0, sim(0.05, options(method))));
     const hinf::SimulationResult& run = runs.back();
     auto position_error = [&](Eigen::Index k) {
       return std::hypot(run.q(k, 3) - run.q_d(k, 3), run.q(k, 4) - run.q_d(k, 4));
@@ -294,7 +303,7 @@ TEST(SimulationTimeVarying, ClosedLoopErrorHasTheClosedForm) {
       o.rtol = 1e-10;
       o.atol = 1e-12;
       const hinf::SimulationResult run = hinf::simulate_state_feedback(
-          *trajectory, controller, hinf::VectorSignal::zeros(1), Vec::Constant(1, 2.0 + e0), 0.1, o);
+          *trajectory, controller, hinf::VectorSignal::zeros(1), Vec::Constant(1, 2.0 + e0), sim(0.1, o));
       double max_err = 0.0, max_u_err = 0.0;
       for (Eigen::Index k = 0; k < run.t.size(); ++k) {
         const double t = run.t[k];
@@ -314,27 +323,27 @@ TEST_F(PaperShip, BadInputsThrow) {
   hinf::HinfStateFeedback controller(solution_);
   const hinf::VectorSignal w = hinf::VectorSignal::zeros(6);
   const SolverOptions ok;
-  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, Vec::Zero(5), 0.1, ok),
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, Vec::Zero(5), sim(0.1, ok)),
                hinf::InputError);
-  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, Vec::Zero(7), 0.1, ok),
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, Vec::Zero(7), sim(0.1, ok)),
                hinf::InputError);
   Vec nan_q0 = paper_q_d0();
   nan_q0[2] = kNaN;
-  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, nan_q0, 0.1, ok),
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, nan_q0, sim(0.1, ok)),
                hinf::InputError);
   EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, hinf::VectorSignal::zeros(3),
-                                             paper_q_d0(), 0.1, ok),
+                                             paper_q_d0(), sim(0.1, ok)),
                hinf::InputError);
   EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, hinf::VectorSignal::zeros(7),
-                                             paper_q_d0(), 0.1, ok),
+                                             paper_q_d0(), sim(0.1, ok)),
                hinf::InputError);
   for (double dt : {0.0, -0.01, kNaN})
-    EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, paper_q_d0(), dt, ok),
+    EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, paper_q_d0(), sim(dt, ok)),
                  hinf::InputError)
         << "dt = " << dt;
   SolverOptions bad = ok;
   bad.rtol = 0.0;
-  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, paper_q_d0(), 0.1, bad),
+  EXPECT_THROW(hinf::simulate_state_feedback(*trajectory_, controller, w, paper_q_d0(), sim(0.1, bad)),
                hinf::InputError);
 }
 
@@ -396,18 +405,19 @@ TEST(Metrics, LastHalfMaxFinalTrapezoidAndOutputFeedbackByHand) {
   hinf::SimulationResult r = synthetic({0.0, 1.0, 2.0, 3.0, 4.0}, 6, 2, 6);
   const double xe[] = {0.0, 3.0, 1.0, 2.0, 0.5};
   const double ue[] = {0.0, 1.0, 2.0, 1.0, 0.0};
-  r.rho_sigma_z = Vec(5);
-  r.rho_sigma_z << 0.1, 0.7, 0.3, 0.2, 0.4;
-  r.q_hat = RowMat::Zero(5, 6);
+  hinf::EstimatorSeries& estimator = r.estimator.emplace();
+  estimator.rho_sigma_z = Vec(5);
+  estimator.rho_sigma_z << 0.1, 0.7, 0.3, 0.2, 0.4;
+  estimator.q_hat = RowMat::Zero(5, 6);
   for (Eigen::Index k = 0; k < 5; ++k) {
     r.q(k, 3) = 5.0 + xe[k];
     r.q_d(k, 3) = 5.0;
     r.u(k, 0) = 1.0 + ue[k];
     r.u_d(k, 0) = 1.0;
     // Estimate: q_e + (k, 0, ..., 0, 1): |q_hat - q_e|^2 = k^2 + 1.
-    r.q_hat.row(k) = (r.q.row(k) - r.q_d.row(k));
-    r.q_hat(k, 0) += static_cast<double>(k);
-    r.q_hat(k, 5) += 1.0;
+    estimator.q_hat.row(k) = (r.q.row(k) - r.q_d.row(k));
+    estimator.q_hat(k, 0) += static_cast<double>(k);
+    estimator.q_hat(k, 5) += 1.0;
   }
   const hinf::Metrics mt = hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6));
   // Sums and roots of these small numbers against the closed forms: round-off of values <= 20.

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "hinf/enum_names.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
 
@@ -32,12 +33,29 @@ struct GammaStarOptions {
   void validate() const;
 };
 
+// The condition a gamma fails.
+enum class GammaCondition {
+  None,     // passed (or, for the bracket's lower end 0, never evaluated)
+  Grde,     // a conjugate point of the GRDE (13)
+  Filter,   // the filter Riccati equation (36) escapes or loses positive definiteness
+  Coupling  // rho(Sigma Z) >= gamma^2 somewhere on [t0, tf]
+};
+template <>
+struct EnumNames<GammaCondition> {
+  static constexpr const char* what = "gamma* condition";
+  static constexpr std::array<std::pair<GammaCondition, const char*>, 4> names{
+      {{GammaCondition::None, "none"},
+       {GammaCondition::Grde, "grde"},
+       {GammaCondition::Filter, "filter"},
+       {GammaCondition::Coupling, "coupling"}}};
+};
+
 struct GammaTrial {
-  double gamma;
-  bool passed;
-  double t_escape;        // failure time (escape, coupling violation, or where a solution too
+  double gamma = NAN;
+  bool passed = false;
+  double t_escape = NAN;  // failure time (escape, coupling violation, or where a solution too
                           // close to its escape could not be integrated), NaN if passed
-  std::string condition;  // what failed: "grde", "filter" or "coupling"; empty if passed
+  GammaCondition condition = GammaCondition::None;  // what failed; None if passed
 };
 
 struct GammaStarResult {
@@ -45,7 +63,7 @@ struct GammaStarResult {
   double lower = NAN;       // final bracket: lower fails (0 when every gamma > 0 passes)
   double upper = NAN;
   double t_escape_lower = NAN;  // where the lower end fails
-  std::string binding;          // the condition that fails at the lower end
+  GammaCondition binding = GammaCondition::None;  // the condition that fails at the lower end
   bool converged = false;       // false: max_evaluations reached first
   std::vector<GammaTrial> trials;  // every gamma tried, in the order evaluated
 };

@@ -24,16 +24,14 @@ class Disturbance {
   // The design of the worst-case part (null without one); q in eval() has design()->n() numbers.
   const RiccatiSolutionPtr& design() const { return design_; }
   const VectorSignal& signals() const { return signals_; }
-  // w at time t for the actual state q (n numbers); writes dim() numbers. Keeps a lookup
-  // cursor: use one object per thread.
+  // w at time t for the actual state q (n numbers); writes dim() numbers. Safe to call from
+  // several threads at once (it keeps no state between calls).
   void eval(double t, const double* q, double* w) const;
 
  private:
   VectorSignal signals_;
   RiccatiSolutionPtr design_;
-  mutable Mat D_;
-  mutable Vec q_d_, z_, Zq_;
-  mutable std::size_t q_cursor_ = 0, z_cursor_ = 0;
+  Mat D_;  // D of the design's model, when constant
 };
 
 }  // namespace hinf

@@ -1,9 +1,14 @@
-// Metrics of a closed-loop run (scenarios.md, "The results file"). Integrals are trapezoid
-// sums over the output grid; "position" is the model's position_indices() (x, y for the ship).
-// A metric that does not apply (no position, no disturbance, no output feedback) is NaN. The
-// heading error is wrapped to (-pi, pi] (angles.hpp). A run that stopped early (status
-// Diverged) reports only max_position_error, over the part it ran.
+// Metrics of a closed-loop run. metric_table() is their one definition (name, label, unit,
+// definition): the results file, the bindings, the Python tables and docs/results.md all
+// come from it. Integrals are trapezoid sums over the output grid; "position" is the model's
+// position_indices() (x, y for the ship), "heading" its heading_index(); the heading error is
+// wrapped to (-pi, pi] (angles.hpp); "last half" is the grid points with t >= (t0 + tf)/2.
+// A metric that does not apply (no position, no heading, no disturbance, no output feedback)
+// is NaN. A run that stopped early (status Diverged) reports only max_position_error, over
+// the part it ran.
 #pragma once
+
+#include <array>
 
 #include "hinf/model.hpp"
 #include "hinf/simulation.hpp"
@@ -11,16 +16,29 @@
 namespace hinf {
 
 struct Metrics {
-  double rms_position_error_last_half = NAN;  // sqrt(mean over t >= (t0+tf)/2 of |p_e|^2)
-  double max_position_error = NAN;            // max |p_e|
-  double final_position_error = NAN;          // |p_e(tf)|
-  double control_l2 = NAN;                    // sqrt(int |u|^2)
-  double control_error_l2 = NAN;              // sqrt(int |u - u_d|^2)
-  double disturbance_l2 = NAN;                // sqrt(int |w|^2), every applied channel
-  double l2_gain = NAN;                       // sqrt(int |q_e|_Q^2 + |u_e|^2) / disturbance_l2
-  double max_rho_sigma_z = NAN;               // output feedback: max rho(Sigma Z)
-  double rms_estimation_error_last_half = NAN;  // output feedback: of |q_hat - q_e|
+  double rms_position_error_last_half = NAN;
+  double max_position_error = NAN;
+  double final_position_error = NAN;
+  double rms_heading_error_last_half = NAN;
+  double final_heading_error = NAN;
+  double control_l2 = NAN;
+  double control_error_l2 = NAN;
+  double disturbance_l2 = NAN;
+  double l2_gain = NAN;
+  double max_rho_sigma_z = NAN;
+  double rms_estimation_error_last_half = NAN;
 };
+
+struct MetricDefinition {
+  const char* name;        // key in the results file and in Python's RunResult.metrics
+  const char* label;       // for tables
+  const char* unit;        // for the ship; "-" is dimensionless
+  const char* definition;  // what is computed
+  double Metrics::*value;  // where compute_metrics() puts it
+};
+
+constexpr std::size_t kMetricCount = 11;
+const std::array<MetricDefinition, kMetricCount>& metric_table();
 
 Metrics compute_metrics(const Model& model, const SimulationResult& run, const Mat& Q);
 

@@ -99,56 +99,6 @@ void check_structure(const ModelStructure& structure);
 // model implemented in Python is read once and validated (the Python bindings).
 void validate_model(const Model& model, double t);
 
-// The underactuated surface ship of paper eqs. (1)-(6) (DESIGN.md):
-//   state q = [u, v, r, x, y, psi]: surge, sway (m/s), yaw rate (rad/s) in the body frame;
-//             inertial position x, y (m) and heading psi (rad);
-//   control [u1, u2]: surge force and yaw torque (per unit mass / inertia);
-//   disturbance w = [w1..w6]: w1..w3 act on the u, v, r equations (D = diag(1,1,1,0,0,0));
-//             w4..w6 are the measurement-noise channels of paper §4 (they enter through E).
-//     du/dt   = m_u v r - d_u u + u1 + w1
-//     dv/dt   = m_v u r - d_v v      + w2
-//     dr/dt   = m_r u v - d_r r + u2 + w3
-//     dx/dt   = u cos(psi) - v sin(psi)
-//     dy/dt   = u sin(psi) + v cos(psi)
-//     dpsi/dt = r
-struct ShipParameters {
-  double m_u = 0.5;
-  double m_v = -2.0;
-  double m_r = 0.5;
-  double d_u = 1.0;
-  double d_v = 2.0;
-  double d_r = 1.0;
-};
-
-class ShipModel final : public Model {
- public:
-  explicit ShipModel(const ShipParameters& parameters = {});
-  const ShipParameters& parameters() const { return p_; }
-
-  std::string name() const override { return "ship"; }
-  int n() const override { return 6; }
-  int m() const override { return 2; }
-  int nw() const override { return 6; }
-  void f(double t, const ConstVecRef& q, VecRef out) const override;
-  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat B(double t) const override;
-  Mat D(double t) const override;
-  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
-                   VecRef alpha) const override;
-  // Position and heading are measured: C = [0 I3], noise on w4..w6.
-  Mat C(double t) const override;
-  // Global bound (any radius): L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2); see
-  // model.cpp for the derivation.
-  double remainder_bound(double t, const ConstVecRef& q_d, double radius) const override;
-  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
-  std::vector<std::string> state_names() const override;
-  std::vector<int> position_indices() const override { return {3, 4}; }
-  int heading_index() const override { return 5; }
-
- private:
-  ShipParameters p_;
-};
-
 // A linear time-invariant model dq/dt = A q + B u + D w (for LTI studies and tests).
 // With a measurement matrix C (p x n), w gets p more channels for the measurement noise:
 // w = [process disturbance (D.cols()), measurement noise (p)], and D is padded with zeros.
@@ -167,6 +117,9 @@ class LinearModel final : public Model {
   std::vector<int> noise_channels() const override;
   double remainder_bound(double, const ConstVecRef&, double) const override { return 0.0; }
   const Mat& A() const { return A_; }
+  // The matrices as given to the constructor: D without the noise channels, C empty if none.
+  Mat process_D() const { return D_.leftCols(D_.cols() - C_.rows()); }
+  const Mat& measurement_C() const { return C_; }
 
  private:
   Mat A_, B_, D_, C_;

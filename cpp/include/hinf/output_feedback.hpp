@@ -19,10 +19,12 @@
 // time, and every interval is a restart. One-step methods restart at no cost, multistep
 // methods restart at first order. Per SolverOptions::method:
 //   erk    Dormand-Prince 5(4), its step size carried from interval to interval;
-//   bdf    the same while the problem is not stiff; once Dormand-Prince's stiffness test fires,
-//          the L-stable SDIRK4 (sdirk4.hpp) takes over, keeping its Jacobian across intervals;
+//   auto, bdf  the same while the problem is not stiff; once Dormand-Prince's stiffness test
+//          fires, the L-stable SDIRK4 (sdirk4.hpp) takes over, keeping its Jacobian across
+//          intervals (a multistep BDF would restart at first order at every sample);
 //   adams  CVODE Adams restarted at every sample (correct but slow).
-// SimulationResult::integrator says what was used.
+// SimulationResult::integrator says what was used. The measured heading (and the heading
+// innovation) is an angle, wrapped to (-pi, pi] (angles.hpp).
 #pragma once
 
 #include <cstdint>
@@ -30,6 +32,7 @@
 #include "hinf/riccati.hpp"
 #include "hinf/controller.hpp"
 #include "hinf/disturbance.hpp"
+#include "hinf/enum_names.hpp"
 #include "hinf/signal.hpp"
 #include "hinf/simulation.hpp"
 
@@ -41,25 +44,55 @@ long noise_sample_count(double t0, double tf, double period);
 // Marsaglia polar method): the same numbers for the same seed on every run.
 RowMat standard_normal_samples(std::uint64_t seed, long count, int channels);
 
-struct OutputFeedbackOptions {
-  double sigma = 0.0;            // noise standard deviation: E w = sigma v on the noise channels
-  double sample_period = 0.01;   // T (s)
-  Mat N;                         // filter weight N = E E' (p x p, positive definite)
-  Mat Sigma0;                    // Sigma(t0) = (Q0 - eta I)^-1 (n x n, positive definite)
-  Mat Q;                         // weight of the performance index, in (36)
-  bool filter_uses_estimate = true;    // filter_A = "estimate" (true) or "desired"
-  bool stop_on_coupling_violation = true;  // false: continue and report the first violation
+// Which A the filter Riccati equation (36) uses (scenario key [measurement] filter_A).
+enum class FilterLinearization {
+  Estimate,  // A(q_hat(t)): the decomposition (26)-(31) at the current estimate
+  Desired    // A_e(t): the linearization along the desired trajectory
+};
+template <>
+struct EnumNames<FilterLinearization> {
+  static constexpr const char* what = "filter_A";
+  static constexpr std::array<std::pair<FilterLinearization, const char*>, 2> names{
+      {{FilterLinearization::Estimate, "estimate"}, {FilterLinearization::Desired, "desired"}}};
 };
 
-// Simulates the output-feedback closed loop: filter and estimator of the design `grde` (Z,
-// gamma; its trajectory), control by `controller` at the estimated state q_d + q_hat.
-// noise: standard normal samples, one row per hold interval (noise_sample_count rows) and one
-// column per measured output. Fills q_hat, y, sigma_min_eig, sigma_max_eig, rho_sigma_z and
-// coupling_violation_t of the result. Throws CouplingConditionError when rho(Sigma Z) >=
-// gamma^2 at an output time (unless stop_on_coupling_violation is false).
-SimulationResult simulate_output_feedback(const RiccatiSolution& grde, Controller& controller,
+// What a violation of the coupling condition rho(Sigma Z) < gamma^2 does (scenario key
+// [measurement] on_coupling_violation).
+enum class CouplingPolicy {
+  Error,  // a CouplingConditionError at the first output time with a violation
+  Flag    // continue, and report the first violation's time in the estimator series
+};
+template <>
+struct EnumNames<CouplingPolicy> {
+  static constexpr const char* what = "on_coupling_violation";
+  static constexpr std::array<std::pair<CouplingPolicy, const char*>, 2> names{
+      {{CouplingPolicy::Error, "error"}, {CouplingPolicy::Flag, "flag"}}};
+};
+
+// The output-feedback problem: the design, the measurement noise and the filter's weights.
+struct OutputFeedbackProblem {
+  RiccatiSolutionPtr design;    // Z of the GRDE (13): its gamma and trajectory
+  double sigma = 0.0;           // noise standard deviation: E w = sigma v on the noise channels
+  double sample_period = 0.01;  // T (s): v is held over [t0 + k T, t0 + (k+1) T)
+  RowMat noise;                 // v: standard normal samples, one row per hold interval
+                                // (noise_sample_count rows), one column per measured output
+  Mat N;                        // filter weight N = E E' (p x p, positive definite)
+  Mat Sigma0;                   // Sigma(t0) = (Q0 - eta I)^-1 (n x n, positive definite)
+  Mat Q;                        // weight of the performance index, in (36)
+};
+
+struct OutputFeedbackOptions {
+  FilterLinearization filter_A = FilterLinearization::Estimate;
+  CouplingPolicy on_coupling_violation = CouplingPolicy::Error;
+};
+
+// Simulates the output-feedback closed loop: filter and estimator of the problem's design
+// (Z, gamma; its trajectory), control by `controller` at the estimated state q_d + q_hat.
+// The result carries the estimator series. Throws CouplingConditionError when
+// rho(Sigma Z) >= gamma^2 at an output time (unless options.on_coupling_violation is Flag).
+SimulationResult simulate_output_feedback(const OutputFeedbackProblem& problem, Controller& controller,
                                           const Disturbance& disturbance, const Vec& q0,
-                                          const RowMat& noise, const OutputFeedbackOptions& options,
-                                          double output_dt, const SolverOptions& solver);
+                                          const OutputFeedbackOptions& options = {},
+                                          const SimulationOptions& simulation = {});
 
 }  // namespace hinf

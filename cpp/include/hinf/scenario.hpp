@@ -1,4 +1,4 @@
-// A scenario: everything one run needs (shared/scenarios.md is the contract of its TOML form).
+// A scenario: everything one run needs (docs/scenarios.md is the reference of its TOML form).
 // Both front ends (the Python package and the hinf-sim executable) build a Scenario and call
 // run_scenario(), so they give the same numbers.
 #pragma once
@@ -9,7 +9,9 @@
 
 #include "hinf/analysis.hpp"
 #include "hinf/metrics.hpp"
+#include "hinf/output_feedback.hpp"
 #include "hinf/riccati.hpp"
+#include "hinf/ship.hpp"
 #include "hinf/signal.hpp"
 #include "hinf/simulation.hpp"
 #include "hinf/solver_options.hpp"
@@ -24,8 +26,21 @@ struct MeasurementSpec {
   Mat N;                        // filter weight N = E E' (empty: sigma^2 I)
   Mat Q0;                       // Sigma(t0) = (Q0 - eta I)^-1 (empty: 2 I)
   double eta = 1.0;
-  std::string filter_A = "estimate";  // "estimate": A(q_hat(t)); "desired": A_e(t)
-  std::string on_coupling_violation = "error";  // "error" or "flag" (continue, report the time)
+  FilterLinearization filter_A = FilterLinearization::Estimate;
+  CouplingPolicy on_coupling_violation = CouplingPolicy::Error;
+};
+
+// The tracking law of a scenario ([controller] law).
+enum class Law {
+  Hinf,    // the paper's H-infinity law (17)/(18), and (34) with measurements
+  Lqr,     // the same design at gamma = inf; with [measurement] also the Kalman-Bucy filter
+  Cascade  // the cascaded ship baseline (ship.hpp); with [measurement] on the H-infinity estimate
+};
+template <>
+struct EnumNames<Law> {
+  static constexpr const char* what = "law";
+  static constexpr std::array<std::pair<Law, const char*>, 3> names{
+      {{Law::Hinf, "hinf"}, {Law::Lqr, "lqr"}, {Law::Cascade, "cascade"}}};
 };
 
 struct Scenario {
@@ -40,10 +55,7 @@ struct Scenario {
   Mat Q;                      // empty: identity
   Mat Qf;                     // empty: identity
   Signal kappa = Signal(1.0);
-  // The tracking law: "hinf" (paper 17/18 and 34), "lqr" (the same design at gamma = inf;
-  // with [measurement]: the Kalman-Bucy filter too) or "cascade" (CascadeController; with
-  // [measurement] it acts on the H-infinity estimate of the design at gamma).
-  std::string law = "hinf";
+  Law law = Law::Hinf;
   CascadeGains cascade;
   VectorSignal disturbance;   // w(t), nw channels (dim 0: all zero)
   // Adds the worst-case disturbance gamma^-2 D' Z q_e of paper eq. (16) (Z of the H-infinity
@@ -51,14 +63,17 @@ struct Scenario {
   bool worst_case = false;
   Vec initial_q0;             // q(t0)
   std::optional<MeasurementSpec> measurement;
-  SolverOptions solver;
-  double output_dt = 0.01;
+  SolverOptions solver;             // every integration: the Riccati equations and the closed loop
+  double output_dt = 0.01;          // [output] dt
+  double divergence_factor = 1e3;   // [solver] divergence_factor (simulation.hpp)
 
   // A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I (a 1 x 1
   // N is that many times I), Q0 = 2 I).
   Scenario resolved() const;
   // Throws InputError naming the first problem found. Call on a resolved scenario.
   void validate() const;
+  // output_dt, divergence_factor and solver, for the closed loop.
+  SimulationOptions simulation_options() const;
 };
 
 struct Timing {
@@ -70,7 +85,8 @@ struct Timing {
 
 struct RunResult {
   std::string scenario_name;
-  std::string controller;
+  Law law = Law::Hinf;
+  bool output_feedback = false;
   double gamma = 0.0;
   TrajectoryPtr trajectory;
   RiccatiSolutionPtr solution;  // the law's design; null only for the cascade law with state

@@ -1,4 +1,4 @@
-// Scenario files (TOML, shared/scenarios.md) and the results files (JSON, CSV).
+// Scenario files (TOML, docs/scenarios.md) and the results files (JSON, CSV; docs/results.md).
 #pragma once
 
 #include <string>
@@ -21,6 +21,10 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
 // Reads and parses a scenario file; a file that cannot be read (missing, a directory) is an
 // InputError naming the path.
 Scenario load_scenario_toml(const std::string& path);
+// The inverse of parse_scenario_toml: the scenario as a scenario file that reads back to an
+// equal scenario (numbers written exactly). A model or signal that has no file form (a model
+// or a signal implemented in Python) is an InputError naming it.
+std::string scenario_toml(const Scenario& scenario);
 // A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 // scenario), e.g. "kappa = { offset = 1.0 }".
 Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source);

@@ -5,22 +5,33 @@
 // A closed loop that leaves the neighbourhood of the desired trajectory where the linearized
 // design means anything stops early with status Diverged: when the tracking error |q_e|_inf
 // (heading wrapped, angles.hpp) exceeds
-//     divergence_bound = options.divergence_factor * max(1, |q_e(t0)|_inf, max_t |q_d(t)|_inf).
+//     divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, max_t |q_d(t)|_inf).
 // Its time series then end at the last output time before that.
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hinf/controller.hpp"
 #include "hinf/disturbance.hpp"
+#include "hinf/enum_names.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/signal.hpp"
 #include "hinf/solver_options.hpp"
 #include "hinf/trajectory.hpp"
 
 namespace hinf {
+
+// How a closed loop is simulated (scenario keys [output] dt and [solver]).
+struct SimulationOptions {
+  double output_dt = 0.01;         // step of the output grid (s)
+  double divergence_factor = 1e3;  // stop as diverged beyond this times the problem's scale (> 1)
+  SolverOptions solver;            // the integrator of the closed loop
+
+  void validate() const;  // InputError naming the option and its admissible range
+};
 
 // t0, t0 + dt, t0 + 2 dt, ..., ending exactly at tf: the last interval may be shorter, or up
 // to 1e-6 dt longer (rather than leave a sliver of an interval).
@@ -33,7 +44,22 @@ enum class RunStatus {
   Completed,  // integrated over the whole horizon
   Diverged    // stopped when the tracking error exceeded the divergence bound (see above)
 };
-std::string to_string(RunStatus status);
+template <>
+struct EnumNames<RunStatus> {
+  static constexpr const char* what = "run status";
+  static constexpr std::array<std::pair<RunStatus, const char*>, 2> names{
+      {{RunStatus::Completed, "completed"}, {RunStatus::Diverged, "diverged"}}};
+};
+
+// The estimator's series of an output-feedback run (paper §4), on the same output grid.
+struct EstimatorSeries {
+  RowMat q_hat;         // estimate of the error q_e (n)
+  RowMat y;             // measurement y (p)
+  Vec sigma_min_eig;    // eigenvalue bounds of the filter Riccati solution Sigma(t)
+  Vec sigma_max_eig;
+  Vec rho_sigma_z;      // spectral radius of Sigma(t) Z(t)
+  double coupling_violation_t = NAN;  // first output time with rho(Sigma Z) >= gamma^2, if any
+};
 
 // Time series on the output grid, one row per time.
 struct SimulationResult {
@@ -43,13 +69,7 @@ struct SimulationResult {
   RowMat u;    // applied control (m)
   RowMat u_d;  // desired control (m)
   RowMat w;    // applied disturbance (nw), noise channels included for output feedback
-  // Output feedback only (empty otherwise):
-  RowMat q_hat;           // estimate of the error q_e (n)
-  RowMat y;               // measurement y (p)
-  Vec sigma_min_eig;      // eigenvalue bounds of the filter Riccati Sigma(t)
-  Vec sigma_max_eig;
-  Vec rho_sigma_z;        // spectral radius of Sigma(t) Z(t)
-  double coupling_violation_t = NAN;  // first output time with rho(Sigma Z) >= gamma^2, if any
+  std::optional<EstimatorSeries> estimator;  // output feedback only
   RunStatus status = RunStatus::Completed;
   std::string status_message;  // why the run stopped early; empty when completed
   int heading_index = -1;      // the model's heading component (angles.hpp), -1 if none
@@ -67,6 +87,6 @@ double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::
 
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
-                                         double output_dt, const SolverOptions& options);
+                                         const SimulationOptions& options = {});
 
 }  // namespace hinf

@@ -22,10 +22,6 @@ class SparseMatrix {
   void add_product(const double* x, double* y) const {
     for (const Entry& e : entries_) y[e.row] += e.value * x[e.col];
   }
-  // y += M' x
-  void add_transpose_product(const double* x, double* y) const {
-    for (const Entry& e : entries_) y[e.col] += e.value * x[e.row];
-  }
   // f(row, col, value) for every nonzero.
   template <class F>
   void for_each(F&& f) const {

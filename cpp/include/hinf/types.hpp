@@ -3,6 +3,7 @@
 
 #include <Eigen/Dense>
 #include <cstddef>
+#include <vector>
 
 namespace hinf {
 
@@ -42,5 +43,21 @@ void unpack_symmetric(const double* packed, Matrix& S) {
       ++k;
     }
 }
+
+// Scratch space for one packed symmetric n x n matrix: on the stack up to n = 16, on the heap
+// beyond (lookups in hot loops should not allocate for the usual sizes).
+class PackedScratch {
+ public:
+  explicit PackedScratch(int n) : size_(packed_size(n)) {
+    if (size_ > kOnStack) heap_.resize(static_cast<std::size_t>(size_));
+  }
+  double* data() { return size_ > kOnStack ? heap_.data() : stack_; }
+
+ private:
+  static constexpr int kOnStack = packed_size(16);
+  int size_;
+  double stack_[kOnStack];
+  std::vector<double> heap_;
+};
 
 }  // namespace hinf

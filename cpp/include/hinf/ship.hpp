@@ -1,0 +1,99 @@
+// Everything specific to the paper's underactuated ship, in one place: the model (paper eqs.
+// 1-6, with its error split (26)-(31) and analytic remainder bound) and the cascaded baseline
+// law that uses its parameters. Generic code does not include this header; the scenario
+// reader and the scenario runner (input/output) do.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hinf/controller.hpp"
+#include "hinf/model.hpp"
+#include "hinf/trajectory.hpp"
+
+namespace hinf {
+
+// The underactuated surface ship of paper eqs. (1)-(6) (docs/mathematics.md):
+//   state q = [u, v, r, x, y, psi]: surge, sway (m/s), yaw rate (rad/s) in the body frame;
+//             inertial position x, y (m) and heading psi (rad);
+//   control [u1, u2]: surge force and yaw torque (per unit mass / inertia);
+//   disturbance w = [w1..w6]: w1..w3 act on the u, v, r equations (D = diag(1,1,1,0,0,0));
+//             w4..w6 are the measurement-noise channels of paper §4 (they enter through E).
+//     du/dt   = m_u v r - d_u u + u1 + w1
+//     dv/dt   = m_v u r - d_v v      + w2
+//     dr/dt   = m_r u v - d_r r + u2 + w3
+//     dx/dt   = u cos(psi) - v sin(psi)
+//     dy/dt   = u sin(psi) + v cos(psi)
+//     dpsi/dt = r
+struct ShipParameters {
+  double m_u = 0.5;
+  double m_v = -2.0;
+  double m_r = 0.5;
+  double d_u = 1.0;
+  double d_v = 2.0;
+  double d_r = 1.0;
+};
+
+class ShipModel final : public Model {
+ public:
+  explicit ShipModel(const ShipParameters& parameters = {});
+  const ShipParameters& parameters() const { return p_; }
+
+  std::string name() const override { return "ship"; }
+  int n() const override { return 6; }
+  int m() const override { return 2; }
+  int nw() const override { return 6; }
+  void f(double t, const ConstVecRef& q, VecRef out) const override;
+  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
+  Mat B(double t) const override;
+  Mat D(double t) const override;
+  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+                   VecRef alpha) const override;
+  // Position and heading are measured: C = [0 I3], noise on w4..w6.
+  Mat C(double t) const override;
+  // Global bound (any radius): L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2); see
+  // model.cpp for the derivation.
+  double remainder_bound(double t, const ConstVecRef& q_d, double radius) const override;
+  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
+  std::vector<std::string> state_names() const override;
+  std::vector<int> position_indices() const override { return {3, 4}; }
+  int heading_index() const override { return 5; }
+
+ private:
+  ShipParameters p_;
+};
+
+// A cascaded tracking controller for the ship, of the type of Lefeber, Pettersen & Nijmeijer
+// (IEEE TCST 11(1), 2003), used as a baseline. With z1 = x cos(psi) + y sin(psi) (the same for
+// the desired state), z1e = z1 - z1d, z3e = psi - psi_d wrapped to (-pi, pi], u_e = u - u_d,
+// v_e = v - v_d, r_e = r - r_d and gains k, k1, k2 > 0:
+//     p  = z1e - (m_v / d_v) u_e,
+//     u1 = u1d + (d_u + d_v / m_v) u_e - (m_u + 1 / m_v) r_d v_e + k (d_v / m_v) p,
+//     u2 = u2d - m_r (u v - u_d v_d) + d_r r_e - k1 z3e - k2 r_e.
+// The yaw loop is an exact feedback linearization; the surge loop relies on the desired yaw
+// rate r_d being persistently exciting: on a straight line (r_d = 0) a lateral offset is not
+// corrected (docs/baselines.md). Needs the ShipModel (it uses its parameters).
+struct CascadeGains {
+  double k = 0.2;   // surge/position loop (0.2 converges fastest on the paper's path)
+  double k1 = 2.0;  // heading
+  double k2 = 3.0;  // yaw rate
+};
+
+class CascadeController final : public Controller {
+ public:
+  CascadeController(TrajectoryPtr trajectory, const CascadeGains& gains = {});
+  std::string name() const override { return "cascade"; }
+  int n() const override { return 6; }
+  int m() const override { return 2; }
+  void control(double t, const ConstVecRef& q, VecRef u) override;
+  const CascadeGains& gains() const { return gains_; }
+
+ private:
+  TrajectoryPtr trajectory_;
+  ShipParameters p_;
+  CascadeGains gains_;
+  std::size_t cursor_ = 0;
+  Vec q_d_, u_d_;
+};
+
+}  // namespace hinf
