@@ -12,6 +12,7 @@
 #include <complex>
 #include <functional>
 #include <limits>
+#include <cstdint>
 #include <random>
 
 namespace hinf_ref {
@@ -174,11 +175,30 @@ struct Lti {
   Mat A, B, D, Q;
 };
 
-inline Mat normal_matrix(std::mt19937_64& rng, Eigen::Index rows, Eigen::Index cols) {
-  std::normal_distribution<double> normal;
+// Seeded random numbers that are the same with every standard library: std::mt19937_64 is
+// specified bit for bit, std::normal_distribution and std::uniform_real_distribution are not.
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : engine_(seed) {}
+  // Uniform in [0, 1) from the top 53 bits.
+  double uniform() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+  double uniform(double a, double b) { return a + (b - a) * uniform(); }
+  // Standard normal by Box-Muller (1 - uniform() is in (0, 1]: the logarithm is finite).
+  double normal() {
+    const double r = std::sqrt(-2.0 * std::log(1.0 - uniform()));
+    return r * std::cos(2.0 * M_PI * uniform());
+  }
+  // An integer in [0, n).
+  int below(int n) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(n)); }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+inline Mat normal_matrix(Rng& rng, Eigen::Index rows, Eigen::Index cols) {
   Mat M(rows, cols);
   for (Eigen::Index j = 0; j < cols; ++j)
-    for (Eigen::Index i = 0; i < rows; ++i) M(i, j) = normal(rng);
+    for (Eigen::Index i = 0; i < rows; ++i) M(i, j) = rng.normal();
   return M;
 }
 
@@ -187,7 +207,7 @@ inline double spectral_abscissa(const Mat& A) { return A.eigenvalues().real().ma
 // A (spectral abscissa `abscissa`), B (n x m), D (n x nw) with standard normal entries from the
 // seed; Q = L L' / n + 0.1 I > 0.
 inline Lti random_lti(std::uint64_t seed, int n, int m, int nw, double abscissa) {
-  std::mt19937_64 rng(seed);
+  Rng rng(seed);
   Lti s;
   s.A = normal_matrix(rng, n, n);
   s.A.diagonal().array() += abscissa - spectral_abscissa(s.A);

@@ -216,22 +216,20 @@ TEST_F(PaperCertificates, ShipRemainderBoundIsABound) {
   EXPECT_TRUE(c.remainder_is_bound);
   EXPECT_NE(c.remainder_method.find("analytic"), std::string::npos) << c.remainder_method;
   const double L = c.remainder_L;
-  std::mt19937_64 rng(2024);
-  std::uniform_real_distribution<double> when(0.0, 40.0), exponent(-4.0, 1.0);
-  std::normal_distribution<double> normal;
+  hinf_ref::Rng rng(2024);
   double worst = 0.0;
   for (int k = 0; k < 6000; ++k) {
-    const double t = when(rng);
+    const double t = rng.uniform(0.0, 40.0);
     const Vec q_d = trajectory_->q_d(t);
     Vec e = Vec::Zero(6);
     if (k % 2) {
-      for (int i = 0; i < 6; ++i) e[i] = normal(rng);
+      for (int i = 0; i < 6; ++i) e[i] = rng.normal();
     } else {
-      const int count = 2 + static_cast<int>(rng() % 2);
-      for (int j = 0; j < count; ++j) e[static_cast<int>(rng() % 6)] = normal(rng);
+      const int count = 2 + rng.below(2);
+      for (int j = 0; j < count; ++j) e[rng.below(6)] = rng.normal();
     }
     if (e.norm() == 0.0) continue;
-    const double radius = std::pow(10.0, exponent(rng));
+    const double radius = std::pow(10.0, rng.uniform(-4.0, 1.0));
     e *= radius / e.norm();
     const Vec f1 = hinf_ref::ship_drift(q_d + e), f0 = hinf_ref::ship_drift(q_d);
     const Vec Je = hinf_ref::ship_jacobian(q_d) * e;
@@ -284,12 +282,11 @@ TEST_F(PaperCertificates, ClosedLoopsFromTheCertifiedBallDecayAtTheCertifiedRate
     hinf::SimulationOptions options;
     options.output_dt = 0.05;
     options.solver = solver(Method::ERK, 1e-10, 1e-14);
-    std::mt19937_64 rng(1999);
-    std::normal_distribution<double> normal;
+    hinf_ref::Rng rng(1999);
     double slowest = kInf;
     for (int run_index = 0; run_index < 3; ++run_index) {
       Vec e(6);
-      for (int i = 0; i < 6; ++i) e[i] = normal(rng);
+      for (int i = 0; i < 6; ++i) e[i] = rng.normal();
       e *= c.attraction_radius / e.norm();
       const hinf::SimulationResult run = hinf::simulate_state_feedback(*trajectory_, law, hinf::VectorSignal::zeros(6),
                                                                        trajectory_->q_d0() + e, options);
@@ -333,7 +330,7 @@ TEST(Certificates, LinearModelWithTimeVaryingKappa) {
   // Full-rank B and Q = diag(1, 2, 3), where p(t) is not trivially lambda_min(Q), and kappa(t) =
   // 0.75 + 0.5 sin t (kappa_min = 1/4 at t = 3 pi / 2): p_min against Eigen on a fine grid; the
   // remainder of a LinearModel is 0, so epsilon and the attraction radius are infinite.
-  std::mt19937_64 rng(5);
+  hinf_ref::Rng rng(5);
   const Mat A = hinf_ref::normal_matrix(rng, 3, 3) - Mat::Identity(3, 3);
   const Mat B = hinf_ref::normal_matrix(rng, 3, 3), D = hinf_ref::normal_matrix(rng, 3, 2);
   const Mat Q = Vec(Eigen::Vector3d(1.0, 2.0, 3.0)).asDiagonal();
