@@ -173,6 +173,26 @@ TEST(CascadeLaw, YawLoopIsAnExactLinearization) {
   }
 }
 
+TEST(CascadeLaw, TracksThePapersPersistentlyExcitingPath) {
+  // On the paper's S path (r_d oscillates: persistently exciting) the cascade law converges, if
+  // slowly: from 0.28 m and 5.7 degrees off, 150 s without disturbance bring the position error
+  // below 1% of the start (measured in Python: 4.5e-4 of it) and the heading error with it.
+  Vec q_d0 = Vec::Zero(6);
+  q_d0[0] = 1.0;
+  const auto tr = ship_trajectory(ShipParameters{}, q_d0, paper_u_d(), 150.0);
+  CascadeController law(tr);
+  const Vec q0 = q_d0 + state(0.0, 0.0, 0.0, -0.2, 0.2, 0.1);
+  hinf::SimulationOptions options;
+  options.output_dt = 0.1;
+  const hinf::SimulationResult run = hinf::simulate_state_feedback(*tr, law, hinf::VectorSignal::zeros(6), q0, options);
+  const Eigen::Index last = run.t.size() - 1;
+  const double start = std::hypot(0.2, 0.2);
+  const double end = std::hypot(run.q(last, 3) - run.q_d(last, 3), run.q(last, 4) - run.q_d(last, 4));
+  std::printf("[cascade] paper path: position error %.3f m at t0, %.2e m at 150 s\n", start, end);
+  EXPECT_LT(end, 0.01 * start);
+  EXPECT_LT(std::abs(hinf_ref::wrapped(run.q(last, 5) - run.q_d(last, 5))), 0.01 * 0.1);
+}
+
 TEST(CascadeLaw, StraightLineLeavesALateralOffsetUncorrected) {
   // u_d = (1, 0): q_d(t) = (1, 0, 0, t, 0, 0). Start 0.5 m to the side and 0.5 m behind, on the
   // desired heading and speed. psi_e = r_e = 0 stay (yaw loop), so r = 0, then v = 0 stays

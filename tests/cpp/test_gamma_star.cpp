@@ -649,14 +649,21 @@ TEST(GammaStarOutputFeedback, ScalarCasesMatchTheClosedForms) {
   struct Case {
     const char* label;
     ScalarOutputFeedback p;
+    double rtol;
+    GammaCondition binding;
   };
   const Case cases[] = {
       // Sigma0 = 1: rho = sigma0 z(t0) at t0 exceeds gamma^2 up to 2.2975 (GRDE 1.8488).
-      {"coupling at t0", {0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 0.25, 1.0, 5.0}},
+      {"coupling at t0", {0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 0.25, 1.0, 5.0}, 1e-7, GammaCondition::Coupling},
       // q = 4 > gamma^2 c^2 / N makes s_f < 0: the filter escapes below 1.3904 (GRDE 0.8727).
       // Yet the filter never binds: as gamma decreases to its threshold Sigma -> inf, so
       // rho(Sigma Z) -> inf and the coupling fails first (here from 1.3988).
-      {"filter threshold above the GRDE's", {-1.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0, 5.0}},
+      {"filter threshold above the GRDE's", {-1.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0, 5.0}, 1e-7,
+       GammaCondition::Coupling},
+      {"filter threshold, qf tiny", {-1.0, 1.0, 1.0, 1.0, 4.0, 1e-9, 1.0, 1e-3, 5.0}, 1e-7, GammaCondition::Coupling},
+      // Tiny N and Sigma0: Sigma stays ~1e-6, and the coupling's window above the GRDE's gamma*
+      // (closed forms: 2e-7 relative) is below the bracket's width 1e-5: the GRDE binds.
+      {"tiny N and Sigma0", {0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 2e-12, 2e-12, 5.0}, 1e-5, GammaCondition::Grde},
   };
   for (const Case& c : cases) {
     const ScalarOutputFeedback& p = c.p;
@@ -664,14 +671,24 @@ TEST(GammaStarOutputFeedback, ScalarCasesMatchTheClosedForms) {
     const double expected = std::max({g_grde, g_filter, g_coupling});
     const auto tr = p.trajectory();
     GammaStarOptions o;
-    o.rtol = 1e-7;
+    o.rtol = c.rtol;
     const GammaStarResult r = hinf::gamma_star_output_feedback(tr, m11(p.q), m11(p.qf), m11(p.N), m11(p.s0), o);
     std::printf("[gamma* output feedback] %-34s grde %.6f filter %.6f coupling %.6f: library %.8f (%s)\n", c.label,
                 g_grde, g_filter, g_coupling, r.gamma_star, hinf::to_string(r.binding).c_str());
     ASSERT_TRUE(r.converged) << c.label;
-    EXPECT_EQ(r.binding, GammaCondition::Coupling) << c.label;
+    EXPECT_EQ(r.binding, c.binding) << c.label;
+    // The search's accuracy: 1e-6 (analysis.hpp) or its bracket, whichever is wider.
+    EXPECT_LT(std::abs(r.gamma_star - expected) / expected, std::max(1e-6, 2 * c.rtol)) << c.label;
+    if (c.binding == GammaCondition::Grde) {
+      EXPECT_LT(g_coupling - g_grde, 1e-6 * g_grde) << c.label;
+      // The same bisection on the same GRDE verdicts as the state-feedback search: the same gamma.
+      const GammaStarResult state = hinf::gamma_star(tr, m11(p.q), m11(p.qf), o);
+      EXPECT_NEAR(r.gamma_star, state.gamma_star, 1e-12 * state.gamma_star) << c.label;
+      EXPECT_GE(r.t_escape_lower, 0.0) << c.label;
+      EXPECT_LE(r.t_escape_lower, 1e-3 * p.T) << c.label;  // the GRDE escapes right at t0
+      continue;
+    }
     EXPECT_GT(g_coupling, std::max(g_grde, g_filter) * (1 + 10 * o.rtol)) << c.label;
-    EXPECT_LT(std::abs(r.gamma_star - expected) / expected, 1e-6) << c.label;
     if (g_filter > g_grde) {
       // Between the filter's and the coupling's thresholds the filter is bounded and positive,
       // but the coupling fails; below the filter's, (36) escapes where the closed form says.

@@ -308,6 +308,59 @@ TEST(FilterRiccati, TheAreIsAFixedPoint) {
   for (int k = 0; k <= 200; ++k) EXPECT_LT(max_rel(sol->Sigma(10.0 * k / 200), are.X), 1e-8) << k;
 }
 
+TEST(FilterRiccati, ResidualAlongThePaperTrajectory) {
+  // Time-varying A_e(t) (the hand-written Jacobian at q_d(t)): dSigma/dt - (A_e Sigma + Sigma A_e'
+  // - Sigma (C'N^-1 C - Q / gamma^2) Sigma + D D') = 0 on a grid and at the step midpoints,
+  // relative to the size of the terms. Dense output at the default tolerances (rtol 1e-8):
+  // values to ~1e-8, derivatives an order less (measured in Python: bdf 1.3e-6, adams 5.5e-7,
+  // erk 6.3e-8): 1e-5.
+  Vec q_d0 = Vec::Zero(6);
+  q_d0[0] = 1.0;
+  const hinf::VectorSignal u_d(std::vector<hinf::Signal>{
+      hinf::Signal(1.0), hinf::Signal(0.0, {hinf::Harmonic{0.3, 0.2, 0.0, false}})});
+  const auto tr = std::make_shared<const hinf::Trajectory>(std::make_shared<const hinf::ShipModel>(), q_d0, u_d, 0.0, 40.0);
+  const Mat I = Mat::Identity(6, 6), N = 0.25 * Mat::Identity(3, 3), C = hinf_ref::ship_C();
+  const Mat S = C.transpose() * N.inverse() * C - I / 25.0;
+  const Mat DDt = hinf_ref::ship_D_process() * hinf_ref::ship_D_process().transpose();
+  for (Method method : kMethods) {
+    const auto sol = hinf::solve_filter_riccati(tr, N, I, 5.0, I, solver(method));
+    std::vector<double> times;
+    for (int k = 0; k <= 800; ++k) times.push_back(40.0 * k / 800);
+    const std::vector<double> steps = sol->dense().breakpoints();
+    EXPECT_NEAR(steps.front(), 0.0, 1e-12);
+    EXPECT_NEAR(steps.back(), 40.0, 1e-12);
+    for (std::size_t k = 0; k + 1 < steps.size(); ++k) times.push_back(0.5 * (steps[k] + steps[k + 1]));
+    double worst = 0.0, lowest = kInf, lo_eig = kInf, hi_eig = -kInf, largest = 0.0;
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const double t = times[k];
+      const Mat Sigma = sol->Sigma(t);
+      EXPECT_EQ((Sigma - Sigma.transpose()).cwiseAbs().maxCoeff(), 0.0);  // one triangle, mirrored
+      const Mat A = hinf_ref::ship_jacobian(tr->q_d(t));
+      const Mat ASigma = A * Sigma, SSS = Sigma * S * Sigma;
+      const Mat residual = sol->dSigma_dt(t) - (ASigma + ASigma.transpose() - SSS + DDt);
+      const double scale = 2.0 * ASigma.cwiseAbs().maxCoeff() + SSS.cwiseAbs().maxCoeff() + 1.0;
+      worst = std::max(worst, residual.cwiseAbs().maxCoeff() / scale);
+      const Vec eig = Eigen::SelfAdjointEigenSolver<Mat>(Sigma).eigenvalues();
+      lowest = std::min(lowest, eig[0]);
+      if (k <= 800) {
+        lo_eig = std::min(lo_eig, eig[0]);
+        hi_eig = std::max(hi_eig, eig[5]);
+        largest = std::max(largest, eig.cwiseAbs().maxCoeff());
+      }
+    }
+    std::printf("[filter residual] %-5s: max relative residual %.2e along the paper trajectory\n",
+                hinf::to_string(method).c_str(), worst);
+    EXPECT_LT(worst, 1e-5) << hinf::to_string(method);
+    EXPECT_GT(lowest, 0.0);
+    EXPECT_LT((sol->Sigma(0.0) - I).cwiseAbs().maxCoeff(), kRoundoff);
+    // The library's extreme eigenvalues over the grid against Eigen's: round-off of |Sigma|.
+    double lo = 0.0, hi = 0.0;
+    sol->eigenvalue_range(std::vector<double>(times.begin(), times.begin() + 801), lo, hi);
+    EXPECT_NEAR(lo, lo_eig, kRoundoff * largest);
+    EXPECT_NEAR(hi, hi_eig, kRoundoff * largest);
+  }
+}
+
 // ======================================================================= the closed loop
 
 // The closed loop of paper §4 written from its equations, for the RK4 reference:
@@ -1167,6 +1220,55 @@ TEST_F(PaperFigure2, SameSeedSameRunBitForBitAnotherSeedAnotherRun) {
   // Figure 1's scenario has no measurements: no noise to draw.
   EXPECT_THROW(hinf::scenario_noise(hinf::load_scenario_toml(std::string(HINF_SOURCE_DIR) + "/scenarios/paper_fig1.toml")),
                hinf::InputError);
+}
+
+TEST_F(PaperFigure2, RunScenarioIsTheApiRun) {
+  // run_scenario on paper_fig2.toml is simulate_output_feedback with Sigma0 = (Q0 - eta I)^-1 =
+  // (2 I - I)^-1 = I, N = sigma^2 I = 0.25 I, Q = I, the seeded noise and the file's signals:
+  // the same computation on the same numbers, equal.
+  Vec q_d0 = Vec::Zero(6);
+  q_d0[0] = 1.0;
+  const auto tr = ship_trajectory(40.0);
+  const Mat I = Mat::Identity(6, 6);
+  const auto design = hinf::solve_grde(tr, I, I, 5.0);
+  const hinf::OutputFeedbackProblem problem = paper_problem(design, 0.5, 20000601);
+  hinf::HinfStateFeedback law(design, hinf::Signal(1.0));
+  const hinf::SimulationResult api =
+      hinf::simulate_output_feedback(problem, law, paper_disturbance(), paper_q0(), {}, simulation(0.01, SolverOptions()));
+  const hinf::SimulationResult& file = run_->simulation;
+  ASSERT_EQ(api.t.size(), file.t.size());
+  EXPECT_TRUE(api.q.cwiseEqual(file.q).all());
+  EXPECT_TRUE(api.u.cwiseEqual(file.u).all());
+  EXPECT_TRUE(api.w.cwiseEqual(file.w).all());
+  EXPECT_TRUE(api.estimator->q_hat.cwiseEqual(file.estimator->q_hat).all());
+  EXPECT_TRUE(api.estimator->y.cwiseEqual(file.estimator->y).all());
+  EXPECT_TRUE(api.estimator->rho_sigma_z.cwiseEqual(file.estimator->rho_sigma_z).all());
+}
+
+TEST_F(PaperFigure2, MethodsAgree) {
+  // The loop is not stiff: "bdf" stays with Dormand-Prince. erk and adams (for the GRDE, the
+  // filter and the loop) give the same run to their accuracy: each within ~10 rtol per unit of
+  // the solution's size (|q| <= ~40 m over 40 s); 100 x rtol x the scale (measured 2e-8 erk,
+  // 2e-7 adams).
+  const hinf::SimulationResult& bdf = run_->simulation;
+  EXPECT_NE(bdf.integrator.find("dormand-prince"), std::string::npos) << bdf.integrator;
+  EXPECT_EQ(bdf.integrator.find("SDIRK4"), std::string::npos) << bdf.integrator;
+  const double scale = std::max(1.0, bdf.q.cwiseAbs().maxCoeff());
+  for (Method method : {Method::ERK, Method::Adams}) {
+    hinf::Scenario s = *scenario_;
+    s.solver.method = method;
+    const hinf::SimulationResult other = hinf::run_scenario(s).simulation;
+    if (method == Method::Adams) {
+      EXPECT_NE(other.integrator.find("Adams"), std::string::npos) << other.integrator;
+    }
+    const double dq = (other.q - bdf.q).cwiseAbs().maxCoeff();
+    const double dq_hat = (other.estimator->q_hat - bdf.estimator->q_hat).cwiseAbs().maxCoeff();
+    std::printf("[paper fig. 2] %-5s vs bdf: max |dq| %.2e, max |dq_hat| %.2e\n", hinf::to_string(method).c_str(), dq,
+                dq_hat);
+    EXPECT_LT(dq, 100.0 * s.solver.rtol * scale);
+    EXPECT_LT(dq_hat, 100.0 * s.solver.rtol * scale);
+    EXPECT_LT(max_rel(other.estimator->rho_sigma_z, bdf.estimator->rho_sigma_z), 100.0 * s.solver.rtol);
+  }
 }
 
 }  // namespace
