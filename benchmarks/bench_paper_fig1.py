@@ -50,7 +50,7 @@ TARGET_DESIGN_RUN_MS = 2.0   # trajectory + GRDE + closed loop, explicit path
 # step-size details alone).
 EQUAL_ACCURACY_FACTOR = 2.0
 
-# shared/numerics-notes.md, "The GRDE on the paper run" (ms, steps, RHS evaluations).
+# Reference measurements of an independent implementation, "the GRDE on the paper run" (ms, steps, RHS evaluations).
 NOTES = {
     "trajectory": (0.2, None, None),
     "erk": (0.28, 380, 2260),
@@ -158,13 +158,15 @@ def fresh_child(repeat: int) -> None:
     options = hc.SolverOptions(method="erk", rtol=RTOL, atol=ATOL)
     controller = hc.HinfStateFeedback(hc.solve_grde(tr, Q, Qf, gamma, options), kappa)
     result["simulate erk"] = timed(lambda: hc.simulate_state_feedback(
-        tr, controller, sc.disturbance, sc.initial_q0, sc.output_dt, options), repeat, warmup=3)
+        tr, controller, sc.disturbance, sc.initial_q0,
+        hc.SimulationOptions(output_dt=sc.output_dt, solver=options)), repeat, warmup=3)
 
     def design_and_run():
         trajectory_ = trajectory()
         sol = hc.solve_grde(trajectory_, Q, Qf, gamma, options)
         return hc.simulate_state_feedback(trajectory_, hc.HinfStateFeedback(sol, kappa),
-                                          sc.disturbance, sc.initial_q0, sc.output_dt, options)
+                                          sc.disturbance, sc.initial_q0,
+                                          hc.SimulationOptions(output_dt=sc.output_dt, solver=options))
 
     result["design + closed loop erk"] = timed(design_and_run, repeat, warmup=3)
     print(json.dumps(result))
@@ -275,9 +277,9 @@ def main(argv=None) -> int:
         sol = hc.solve_grde(tr, Q, Qf, gamma, options)
         e0, ein = z_errors(sol.Z(t0), sol.Z(interior))
         timing = timed(lambda: hc.solve_grde(tr, Q, Qf, gamma, options), N, warmup=3)
-        cpp_grde[method] = {"time": timing, "steps": sol.stats.steps,
-                            "rhs_evals": sol.stats.rhs_evals, "jac_evals": sol.stats.jac_evals,
-                            "memory_bytes": sol.stats.memory_bytes, "err_t0": e0,
+        cpp_grde[method] = {"time": timing, "steps": sol.stats().steps,
+                            "rhs_evals": sol.stats().rhs_evals, "jac_evals": sol.stats().jac_evals,
+                            "memory_bytes": sol.stats().memory_bytes, "err_t0": e0,
                             "err_interior": ein, "Z0": sol.Z(t0)}
     grde_rows = []
     for cpp_method, method, jac, label, why in GRDE_PAIRS:
@@ -309,7 +311,7 @@ def main(argv=None) -> int:
         sol = hc.solve_grde(trajectory, Q, Qf, gamma, options)
         controller = hc.HinfStateFeedback(sol, kappa)
         return hc.simulate_state_feedback(trajectory, controller, sc.disturbance,
-                                          sc.initial_q0, sc.output_dt, options)
+                                          sc.initial_q0, hc.SimulationOptions(output_dt=sc.output_dt, solver=options))
 
     q_ref = ref_run["q"]
     final_ref = float(np.hypot(*ref_run["q_e"][-1, 3:5]))
@@ -320,7 +322,7 @@ def main(argv=None) -> int:
         timing = timed(lambda: cpp_design_and_run(options), N, warmup=3)
         cpp_run[method] = {"time": timing, "sim_steps": sim.stats.steps,
                            "sim_rhs_evals": sim.stats.rhs_evals,
-                           "final_position_error": float(np.hypot(*sim.q_e[-1, 3:5])),
+                           "final_position_error": float(np.hypot(*sim.q_e()[-1, 3:5])),
                            "max_q_err_vs_reference": max_abs(sim.q - q_ref)}
     run_rows = []
     for cpp_method, method, jac, label, why in RUN_PAIRS:
@@ -369,7 +371,7 @@ def main(argv=None) -> int:
     # ---- 4. C++ pieces ----
     print("\n4. C++ pieces ...", flush=True)
     pieces = {"trajectory": {"time": timed(cpp_trajectory, N, warmup=3),
-                             "steps": tr.num_steps}}
+                             "steps": tr.stats().steps}}
     sol_erk = hc.solve_grde(tr, Q, Qf, gamma, cpp_options("erk"))
     pieces["HinfStateFeedback"] = {"time": timed(lambda: hc.HinfStateFeedback(sol_erk, kappa),
                                                  N, warmup=3)}
@@ -378,23 +380,25 @@ def main(argv=None) -> int:
         sol = hc.solve_grde(tr, Q, Qf, gamma, options)
         controller = hc.HinfStateFeedback(sol, kappa)
         sim = hc.simulate_state_feedback(tr, controller, sc.disturbance, sc.initial_q0,
-                                         sc.output_dt, options)
+                                         hc.SimulationOptions(output_dt=sc.output_dt, solver=options))
         pieces[f"simulate {method}"] = {
             "time": timed(lambda: hc.simulate_state_feedback(
-                tr, controller, sc.disturbance, sc.initial_q0, sc.output_dt, options), N, 3),
+                tr, controller, sc.disturbance, sc.initial_q0,
+                hc.SimulationOptions(output_dt=sc.output_dt, solver=options)), N, 3),
             "steps": sim.stats.steps, "rhs_evals": sim.stats.rhs_evals}
         # The same integration with a 2-point output grid: no per-grid-point work.
         pieces[f"simulate {method}, no output grid"] = {
             "time": timed(lambda: hc.simulate_state_feedback(
-                tr, controller, sc.disturbance, sc.initial_q0, tf - t0, options), N, 3)}
-    # The tolerance of numerics-notes.md's Dormand-Prince row ("tol 1e-8": atol = rtol).
+                tr, controller, sc.disturbance, sc.initial_q0,
+                hc.SimulationOptions(output_dt=tf - t0, solver=options)), N, 3)}
+    # The tolerance of the reference measurements' Dormand-Prince row ("tol 1e-8": atol = rtol).
     notes_options = hc.SolverOptions(method="erk", rtol=1e-8, atol=1e-8)
     sol_notes = hc.solve_grde(tr, Q, Qf, gamma, notes_options)
     e0, ein = z_errors(sol_notes.Z(t0), sol_notes.Z(interior))
     pieces["GRDE erk, rtol = atol = 1e-8"] = {
         "time": timed(lambda: hc.solve_grde(tr, Q, Qf, gamma, notes_options), N, 3),
-        "steps": sol_notes.stats.steps, "rhs_evals": sol_notes.stats.rhs_evals,
-        "memory_bytes": sol_notes.stats.memory_bytes, "err_t0": e0, "err_interior": ein}
+        "steps": sol_notes.stats().steps, "rhs_evals": sol_notes.stats().rhs_evals,
+        "memory_bytes": sol_notes.stats().memory_bytes, "err_t0": e0, "err_interior": ein}
     scipy_notes = ref.solve_grde(scipy_traj, p, "RK45", 1e-8, 1e-8)
     e0s, eins = z_errors(ref.grde_Z0(scipy_notes), ref.grde_Z(scipy_notes, interior))
     pieces["SciPy RK45, rtol = atol = 1e-8"] = {
@@ -462,7 +466,7 @@ def report(out: dict, cpp_grde: dict, pieces: dict, fresh: dict,
               f"{1e3 * i['total']:.3f}")
 
     print("\n4. C++ pieces (rtol 1e-8 / atol 1e-10 unless noted), against "
-          "shared/numerics-notes.md")
+          "the reference measurements of an independent implementation")
     print(line)
     print(f"{'piece':<38} {'ms':>24} {'steps':>6} {'RHS':>6} {'us/step':>8} {'ns/RHS':>7}   "
           f"notes: ms / steps / RHS")

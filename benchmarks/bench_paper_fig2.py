@@ -89,14 +89,14 @@ def final_position_error(q_e: np.ndarray) -> float:
     return float(np.hypot(*q_e[-1, 3:5]))
 
 
-def output_feedback_options(sc):
-    """The OutputFeedbackOptions run_scenario builds from [measurement]."""
+def output_feedback_problem(sc, design, noise):
+    """The OutputFeedbackProblem (and options) run_scenario builds from [measurement]."""
     m = sc.measurement
     N = np.asarray(m.N)
     N = N[0, 0] * np.eye(3) if N.size == 1 else N
     Sigma0 = np.linalg.inv(m.Q0 - m.eta * np.eye(6))
-    return hc.OutputFeedbackOptions(m.sigma, m.sample_period, N, Sigma0, sc.Q,
-                                    filter_A=m.filter_A)
+    problem = hc.OutputFeedbackProblem(design, m.sigma, m.sample_period, noise, N, Sigma0, sc.Q)
+    return problem, hc.OutputFeedbackOptions(m.filter_A, m.on_coupling_violation)
 
 
 def scipy_pieces(noise, grde_method: str, loop_method: str, jacobian: bool = True):
@@ -210,7 +210,7 @@ def main(argv=None) -> int:
     ref_seconds = time.perf_counter() - start
     tight = hc.run_scenario(scenario_with(sc, "erk", REFERENCE_RTOL, REFERENCE_ATOL)).simulation
     cross = {"q": max_abs(tight.q - reference["q"]),
-             "q_hat": max_abs(tight.q_hat - reference["q_hat"])}
+             "q_hat": max_abs(tight.estimator.q_hat - reference["q_hat"])}
     final_ref = final_position_error(reference["q_e"])
     print(f"  {ref_seconds:.1f} s. Cross-check against hinf_cpp erk at the same tolerances: "
           f"max|dq| {cross['q']:.1e}, max|dq_hat| {cross['q_hat']:.1e}; final position error "
@@ -229,23 +229,23 @@ def main(argv=None) -> int:
         sim = result.simulation
         cpp[method] = {
             "result": result,
-            "final_position_error": result.metrics["final_position_error"],
+            "final_position_error": result.metrics.final_position_error,
             "err_q_vs_reference": max_abs(sim.q - reference["q"]),
-            "err_q_hat_vs_reference": max_abs(sim.q_hat - reference["q_hat"]),
-            "trajectory_steps": result.trajectory.num_steps,
-            "grde_steps": result.solution.stats.steps,
-            "grde_rhs_evals": result.solution.stats.rhs_evals,
-            "grde_jac_evals": result.solution.stats.jac_evals,
+            "err_q_hat_vs_reference": max_abs(sim.estimator.q_hat - reference["q_hat"]),
+            "trajectory_steps": result.trajectory.stats().steps,
+            "grde_steps": result.solution.stats().steps,
+            "grde_rhs_evals": result.solution.stats().rhs_evals,
+            "grde_jac_evals": result.solution.stats().jac_evals,
             "loop_steps": sim.stats.steps, "loop_rejected": sim.stats.rejected,
             "loop_rhs_evals": sim.stats.rhs_evals, "loop_integrator": sim.integrator,
-            "metrics": dict(result.metrics),
+            "metrics": {d.name: getattr(result.metrics, d.name) for d in hc.metric_table()},
         }
     rows = []
     for cpp_method, grde_method, loop_method, label, why in PAIRS:
         pieces, run, metrics = scipy_pieces(noise, grde_method, loop_method)
         c = cpp[cpp_method]
         sim = c["result"].simulation
-        agreement = {"q": max_abs(run["q"] - sim.q), "q_hat": max_abs(run["q_hat"] - sim.q_hat),
+        agreement = {"q": max_abs(run["q"] - sim.q), "q_hat": max_abs(run["q_hat"] - sim.estimator.q_hat),
                      "u": max_abs(run["u"] - sim.u),
                      "metrics": max(abs(v - c["metrics"][k]) for k, v in metrics.items())}
         worst = max(agreement["q"], agreement["q_hat"], agreement["metrics"])
@@ -283,21 +283,21 @@ def main(argv=None) -> int:
 
     # ---- 4. C++ pieces: where the time of a run goes ----
     print("\n4. C++ pieces ...", flush=True)
-    options = output_feedback_options(sc)
     tr = hc.Trajectory(sc.model, sc.desired_q0, sc.desired_u, sc.t0, sc.tf)
     pieces = {"trajectory": {"time": timed(lambda: hc.Trajectory(
         sc.model, sc.desired_q0, sc.desired_u, sc.t0, sc.tf), N, warmup=3),
-        "steps": tr.num_steps}}
+        "steps": tr.stats().steps}}
     for method in ("bdf", "erk"):
         solver = hc.SolverOptions(method=method, rtol=RTOL, atol=ATOL)
         sol = hc.solve_grde(tr, sc.Q, sc.Qf, sc.gamma, solver)
         pieces[f"GRDE {method}"] = {
             "time": timed(lambda: hc.solve_grde(tr, sc.Q, sc.Qf, sc.gamma, solver), N, 3),
-            "steps": sol.stats.steps, "rhs_evals": sol.stats.rhs_evals}
+            "steps": sol.stats().steps, "rhs_evals": sol.stats().rhs_evals}
 
         def simulate(output_dt, sol=sol, solver=solver):
-            return hc.simulate_output_feedback(sol, sc.kappa, sc.disturbance, sc.initial_q0,
-                                               noise, options, output_dt, solver)
+            problem, options = output_feedback_problem(sc, sol, noise)
+            return hc.simulate_output_feedback(problem, hc.HinfStateFeedback(sol, sc.kappa), sc.disturbance,
+                                               sc.initial_q0, options, hc.SimulationOptions(output_dt, solver=solver))
 
         sim = simulate(sc.output_dt)
         same = max_abs(sim.q - cpp[method]["result"].simulation.q)

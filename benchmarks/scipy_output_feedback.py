@@ -15,7 +15,7 @@ NumPy and :func:`scipy.integrate.solve_ivp`:
                                   + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y - C q_d - C q_hat)
        filter (36)    dSigma/dt = A Sigma + Sigma A' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D D'
    with Sigma(t0) = (Q0 - eta I)^-1, q_hat(t0) = 0, and A(q_hat), alpha(q_hat) the ship's split
-   of the error dynamics (shared/DESIGN.md, paper eqs. 26-31; filter_A = "estimate"). The
+   of the error dynamics (docs/mathematics.md, paper eqs. 26-31; filter_A = "estimate"). The
    noise is piecewise constant, so the loop is integrated with one ``solve_ivp`` call per
    hold interval (4000 calls of 0.01 s over [0, 40]), the end state of one interval starting
    the next. The output grid (0.01 s) is the hold grid, so each interval's end state is the
@@ -92,7 +92,7 @@ PAPER_FIG2_MEASUREMENT = Measurement()
 
 def ship_error_split(q_d: np.ndarray, q_e: np.ndarray, p: ref.Problem = PAPER_FIG2):
     """(A(q_e), alpha(q_e)) with A(q_e) q_e + alpha(q_e) = f(q_d + q_e) - f(q_d) exactly and
-    A(0) = df/dq(q_d): the split of shared/DESIGN.md, q1 = [u, v, x, y], q2 = [r, psi]."""
+    A(0) = df/dq(q_d): the split of docs/mathematics.md, q1 = [u, v, x, y], q2 = [r, psi]."""
     ud, vd, rd, psid = q_d[0], q_d[1], q_d[2], q_d[5]
     ue, ve, re, pe = q_e[0], q_e[1], q_e[2], q_e[5]
     c, s = math.cos(psid + pe), math.sin(psid + pe)

@@ -54,7 +54,7 @@ __all__ = [
 
 
 # --------------------------------------------------------------------------------------------
-# The problem: the ship of paper eqs. (1)-(6) and the Figure-1 scenario (shared/scenarios.md)
+# The problem: the ship of paper eqs. (1)-(6) and the Figure-1 scenario (docs/scenarios.md)
 # --------------------------------------------------------------------------------------------
 
 
@@ -276,7 +276,7 @@ def simulate_closed_loop(trajectory, grde, p: Problem = PAPER_FIG1, method: str 
 
 
 def compute_metrics(run: dict, p: Problem = PAPER_FIG1) -> dict:
-    """The state-feedback metrics of shared/scenarios.md (trapezoid integrals on the grid)."""
+    """The state-feedback metrics of docs/scenarios.md (trapezoid integrals on the grid)."""
     t, q_e = run["t"], run["q_e"]
     u_e = run["u"] - run["u_d"]
     position_error = np.hypot(q_e[:, 3], q_e[:, 4])

@@ -7,7 +7,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
-APT_PACKAGES=(build-essential pkg-config libeigen3-dev libsundials-dev libtomlplusplus-dev
+APT_PACKAGES=(build-essential pkg-config libeigen3-dev libsundials-dev liblapack-dev libtomlplusplus-dev
               nlohmann-json3-dev libgtest-dev python3-venv)
 missing=()
 for package in "${APT_PACKAGES[@]}"; do

@@ -1,6 +1,7 @@
 // hinf-sim: runs a scenario file without Python and writes the results file.
 //
 //   hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]
+//   hinf-sim --version
 //
 // --gamma-star also computes gamma* (paper eq. 14) of the state-feedback design and puts it in
 // the results file.
@@ -45,7 +46,11 @@ int main(int argc, char** argv) {
     };
     try {
       if (arg == "-h" || arg == "--help") {
-        std::cout << kUsage << "\n";
+        std::cout << kUsage << "\n       hinf-sim --version\n";
+        return 0;
+      } else if (arg == "--version") {
+        // HINF_VERSION: the VERSION file, defined by cpp/CMakeLists.txt.
+        std::cout << "hinf-sim " << HINF_VERSION << "\n";
         return 0;
       } else if (arg == "--json") {
         json_path = value("--json");

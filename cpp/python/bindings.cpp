@@ -1,7 +1,16 @@
-// Python bindings of hinf_core: one block per type, argument names as in C++.
+// Python bindings of hinf_core, mirroring the C++ API (cpp/include/hinf/*.hpp):
+//   * the same names, argument order and defaults as C++ (defaults read from default-constructed
+//     C++ structs);
+//   * a C++ member function is a Python method (trajectory.n(), solution.gamma()); a data member
+//     of a C++ struct is a property: read/write for option structs, read-only for results;
+//   * enums are Python enums named by their name tables (enum_names.hpp: Method.bdf, Law.hinf),
+//     and every argument or field of an enum type also takes the name as a str;
+//   * C++ out-parameters become return values (Model.f(t, q) returns f; eigenvalue_bounds()
+//     returns (min, max)).
 // C++ InputError arrives as ValueError; numerical failures as hinf_cpp.HinfError subclasses
 // (SolverError, ConjugatePointError, CouplingConditionError) with their data as attributes.
 // Long calls release the GIL; Python callables and Python subclasses re-acquire it.
+// Scenarios, models, options and results pickle (see the pickling section).
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -11,24 +20,87 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 #include "hinf/analysis.hpp"
+#include "hinf/angles.hpp"
 #include "hinf/checks.hpp"
 #include "hinf/controller.hpp"
+#include "hinf/enum_names.hpp"
 #include "hinf/errors.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/model.hpp"
 #include "hinf/output_feedback.hpp"
+#include "hinf/piecewise_polynomial.hpp"
 #include "hinf/riccati.hpp"
 #include "hinf/scenario.hpp"
 #include "hinf/scenario_io.hpp"
+#include "hinf/ship.hpp"
 #include "hinf/simulation.hpp"
 #include "hinf/trajectory.hpp"
 
 namespace py = pybind11;
+
+// ---- enums from their names ----
+// Wherever an enum is expected, its name (a str) is taken too: SolverOptions(method="erk"),
+// scenario.law = "lqr". An unknown name is a ValueError listing the names (from_string). The
+// stubs show the argument as "Method | str".
+namespace pybind11::detail {
+
+template <class E>
+class named_enum_caster : public type_caster_base<E> {
+ public:
+  bool load(handle src, bool convert) {
+    if (!isinstance<str>(src)) return type_caster_base<E>::load(src, convert);
+    loaded_ = hinf::from_string<E>(src.cast<std::string>());
+    this->value = &loaded_;
+    return true;
+  }
+
+ private:
+  E loaded_{};
+};
+
+// The caster of each enum; its name in signatures says what it takes and what it gives.
+#define HINF_ENUM_CASTER(E)                                                  \
+  template <>                                                                \
+  class type_caster<hinf::E> : public named_enum_caster<hinf::E> {           \
+   public:                                                                   \
+    static constexpr auto name = io_name(#E " | str", #E);                   \
+  }
+HINF_ENUM_CASTER(Method);
+HINF_ENUM_CASTER(RunStatus);
+HINF_ENUM_CASTER(Law);
+HINF_ENUM_CASTER(FilterLinearization);
+HINF_ENUM_CASTER(CouplingPolicy);
+HINF_ENUM_CASTER(GammaCondition);
+HINF_ENUM_CASTER(NewtonSystems);
+#undef HINF_ENUM_CASTER
+
+}  // namespace pybind11::detail
+
 using namespace hinf;
 
 namespace {
+
+// An enum E as a Python enum whose members are the names of its table (enum_names.hpp), with
+// a constructor from the name: Method("erk") is Method.erk. A member equals only itself (not its
+// name: "erk" is taken as input, but Method.erk == "erk" is False, as hashes must agree).
+template <class E>
+void bind_enum(py::module_& m, const char* name, const char* doc) {
+  py::enum_<E> cls(m, name, doc);
+  for (const auto& [item, item_name] : EnumNames<E>::names) cls.value(item_name, item);
+  cls.def(py::init([](const std::string& item_name) { return from_string<E>(item_name); }), py::arg("name"));
+  // Replaces (not overloads) pybind11's ==, whose argument would go through the caster above.
+  const auto same_member = [](E self, const py::object& other) {
+    return py::isinstance<E>(other) && other.cast<E>() == self;
+  };
+  cls.attr("__eq__") = py::cpp_function(same_member, py::name("__eq__"), py::is_method(cls), py::arg("other"));
+  const auto other_member = [same_member](E self, const py::object& other) { return !same_member(self, other); };
+  cls.attr("__ne__") = py::cpp_function(other_member, py::name("__ne__"), py::is_method(cls), py::arg("other"));
+}
 
 // ---- values from Python ----
 // What Python hands over (arguments, and what user callables return) is checked here before
@@ -447,24 +519,462 @@ void register_exceptions(py::module_& m) {
   });
 }
 
-std::string repr_options(const SolverOptions& o) {
-  return str_cat("SolverOptions(method='", to_string(o.method), "', rtol=", o.rtol, ", atol=", o.atol,
-                 ", max_steps=", o.max_steps, ", escape_norm=", o.escape_norm,
-                 ", divergence_factor=", o.divergence_factor, ")");
+// ---- structs, field by field ----
+// Fields<T>::list names the data members of a C++ struct once, in declaration order. The
+// properties of its Python class, the keyword constructor (defaults from T{}), __repr__,
+// __eq__ and pickling are all made from that list.
+template <class T, class V>
+struct Field {
+  using Value = V;
+  const char* name;
+  V T::*member;
+};
+template <class T, class V>
+constexpr Field<T, V> field(const char* name, V T::*member) {
+  return {name, member};
 }
 
-py::dict metrics_dict(const Metrics& mt) {
-  py::dict d;
-  d["rms_position_error_last_half"] = mt.rms_position_error_last_half;
-  d["max_position_error"] = mt.max_position_error;
-  d["final_position_error"] = mt.final_position_error;
-  d["control_l2"] = mt.control_l2;
-  d["control_error_l2"] = mt.control_error_l2;
-  d["disturbance_l2"] = mt.disturbance_l2;
-  d["l2_gain"] = mt.l2_gain;
-  d["max_rho_sigma_z"] = mt.max_rho_sigma_z;
-  d["rms_estimation_error_last_half"] = mt.rms_estimation_error_last_half;
-  return d;
+template <class T>
+struct Fields {};  // specialized for every struct bound field by field
+
+template <>
+struct Fields<Harmonic> {
+  static constexpr auto list =
+      std::make_tuple(field("amplitude", &Harmonic::amplitude), field("omega", &Harmonic::omega),
+                      field("phase", &Harmonic::phase), field("cosine", &Harmonic::cosine));
+};
+template <>
+struct Fields<ShipParameters> {
+  static constexpr auto list = std::make_tuple(
+      field("m_u", &ShipParameters::m_u), field("m_v", &ShipParameters::m_v), field("m_r", &ShipParameters::m_r),
+      field("d_u", &ShipParameters::d_u), field("d_v", &ShipParameters::d_v), field("d_r", &ShipParameters::d_r));
+};
+template <>
+struct Fields<CascadeGains> {
+  static constexpr auto list =
+      std::make_tuple(field("k", &CascadeGains::k), field("k1", &CascadeGains::k1), field("k2", &CascadeGains::k2));
+};
+template <>
+struct Fields<SolverOptions> {
+  static constexpr auto list = std::make_tuple(
+      field("method", &SolverOptions::method), field("rtol", &SolverOptions::rtol), field("atol", &SolverOptions::atol),
+      field("max_steps", &SolverOptions::max_steps), field("escape_norm", &SolverOptions::escape_norm),
+      field("newton_systems", &SolverOptions::newton_systems));
+};
+template <>
+struct Fields<SimulationOptions> {
+  static constexpr auto list = std::make_tuple(field("output_dt", &SimulationOptions::output_dt),
+                                               field("divergence_factor", &SimulationOptions::divergence_factor),
+                                               field("solver", &SimulationOptions::solver));
+};
+template <>
+struct Fields<TrajectoryOptions> {
+  static constexpr auto list =
+      std::make_tuple(field("rtol", &TrajectoryOptions::rtol), field("atol", &TrajectoryOptions::atol),
+                      field("max_steps", &TrajectoryOptions::max_steps));
+};
+template <>
+struct Fields<GammaStarOptions> {
+  static constexpr auto list = std::make_tuple(
+      field("lower", &GammaStarOptions::lower), field("upper", &GammaStarOptions::upper),
+      field("rtol", &GammaStarOptions::rtol), field("max_evaluations", &GammaStarOptions::max_evaluations),
+      field("threads", &GammaStarOptions::threads), field("solver", &GammaStarOptions::solver));
+};
+template <>
+struct Fields<OutputFeedbackProblem> {
+  static constexpr auto list = std::make_tuple(
+      field("design", &OutputFeedbackProblem::design), field("sigma", &OutputFeedbackProblem::sigma),
+      field("sample_period", &OutputFeedbackProblem::sample_period), field("noise", &OutputFeedbackProblem::noise),
+      field("N", &OutputFeedbackProblem::N), field("Sigma0", &OutputFeedbackProblem::Sigma0),
+      field("Q", &OutputFeedbackProblem::Q));
+};
+template <>
+struct Fields<OutputFeedbackOptions> {
+  static constexpr auto list =
+      std::make_tuple(field("filter_A", &OutputFeedbackOptions::filter_A),
+                      field("on_coupling_violation", &OutputFeedbackOptions::on_coupling_violation));
+};
+template <>
+struct Fields<MeasurementSpec> {
+  static constexpr auto list = std::make_tuple(
+      field("sigma", &MeasurementSpec::sigma), field("sample_period", &MeasurementSpec::sample_period),
+      field("seed", &MeasurementSpec::seed), field("N", &MeasurementSpec::N), field("Q0", &MeasurementSpec::Q0),
+      field("eta", &MeasurementSpec::eta), field("filter_A", &MeasurementSpec::filter_A),
+      field("on_coupling_violation", &MeasurementSpec::on_coupling_violation));
+};
+template <>
+struct Fields<StepStats> {
+  static constexpr auto list =
+      std::make_tuple(field("steps", &StepStats::steps), field("rejected", &StepStats::rejected),
+                      field("rhs_evals", &StepStats::rhs_evals), field("jac_evals", &StepStats::jac_evals));
+};
+template <>
+struct Fields<SolveStats> {
+  static constexpr auto list = std::make_tuple(
+      field("steps", &SolveStats::steps), field("rejected", &SolveStats::rejected),
+      field("rhs_evals", &SolveStats::rhs_evals), field("jac_evals", &SolveStats::jac_evals),
+      field("memory_bytes", &SolveStats::memory_bytes), field("method", &SolveStats::method));
+};
+template <>
+struct Fields<Timing> {
+  static constexpr auto list = std::make_tuple(field("design", &Timing::design), field("simulate", &Timing::simulate),
+                                               field("analysis", &Timing::analysis), field("total", &Timing::total));
+};
+template <>
+struct Fields<GammaTrial> {
+  static constexpr auto list =
+      std::make_tuple(field("gamma", &GammaTrial::gamma), field("passed", &GammaTrial::passed),
+                      field("t_escape", &GammaTrial::t_escape), field("condition", &GammaTrial::condition));
+};
+template <>
+struct Fields<GammaStarResult> {
+  static constexpr auto list = std::make_tuple(
+      field("gamma_star", &GammaStarResult::gamma_star), field("lower", &GammaStarResult::lower),
+      field("upper", &GammaStarResult::upper), field("t_escape_lower", &GammaStarResult::t_escape_lower),
+      field("binding", &GammaStarResult::binding), field("converged", &GammaStarResult::converged),
+      field("trials", &GammaStarResult::trials));
+};
+template <>
+struct Fields<Certificates> {
+  static constexpr auto list = std::make_tuple(
+      field("m", &Certificates::m), field("M", &Certificates::M), field("kappa_min", &Certificates::kappa_min),
+      field("p_min", &Certificates::p_min), field("p_min_t", &Certificates::p_min_t),
+      field("remainder_L", &Certificates::remainder_L), field("remainder_method", &Certificates::remainder_method),
+      field("remainder_is_bound", &Certificates::remainder_is_bound), field("epsilon", &Certificates::epsilon),
+      field("epsilon_t", &Certificates::epsilon_t), field("attraction_radius", &Certificates::attraction_radius),
+      field("decay_rate", &Certificates::decay_rate));
+};
+template <>
+struct Fields<EstimatorSeries> {
+  static constexpr auto list = std::make_tuple(
+      field("q_hat", &EstimatorSeries::q_hat), field("y", &EstimatorSeries::y),
+      field("sigma_min_eig", &EstimatorSeries::sigma_min_eig), field("sigma_max_eig", &EstimatorSeries::sigma_max_eig),
+      field("rho_sigma_z", &EstimatorSeries::rho_sigma_z),
+      field("coupling_violation_t", &EstimatorSeries::coupling_violation_t));
+};
+template <>
+struct Fields<SimulationResult> {
+  static constexpr auto list = std::make_tuple(
+      field("t", &SimulationResult::t), field("q", &SimulationResult::q), field("q_d", &SimulationResult::q_d),
+      field("u", &SimulationResult::u), field("u_d", &SimulationResult::u_d), field("w", &SimulationResult::w),
+      field("estimator", &SimulationResult::estimator), field("status", &SimulationResult::status),
+      field("status_message", &SimulationResult::status_message),
+      field("heading_index", &SimulationResult::heading_index), field("integrator", &SimulationResult::integrator),
+      field("stats", &SimulationResult::stats));
+};
+template <>
+struct Fields<RunResult> {
+  static constexpr auto list = std::make_tuple(
+      field("scenario_name", &RunResult::scenario_name), field("law", &RunResult::law),
+      field("output_feedback", &RunResult::output_feedback), field("gamma", &RunResult::gamma),
+      field("trajectory", &RunResult::trajectory), field("solution", &RunResult::solution),
+      field("Z0", &RunResult::Z0), field("Z_min_eig", &RunResult::Z_min_eig), field("Z_max_eig", &RunResult::Z_max_eig),
+      field("gamma_star", &RunResult::gamma_star), field("simulation", &RunResult::simulation),
+      field("metrics", &RunResult::metrics), field("timing", &RunResult::timing));
+};
+
+template <class T, class = void>
+struct has_fields : std::false_type {};
+template <class T>
+struct has_fields<T, std::void_t<decltype(Fields<T>::list)>> : std::true_type {};
+
+template <class T>
+constexpr std::size_t field_count = std::tuple_size_v<std::decay_t<decltype(Fields<T>::list)>>;
+
+template <class T, class F>
+void for_each_field(F&& f) {
+  std::apply([&](const auto&... each) { (f(each), ...); }, Fields<T>::list);
+}
+
+template <class T>
+struct is_optional : std::false_type {};
+template <class T>
+struct is_optional<std::optional<T>> : std::true_type {};
+template <class T>
+struct is_vector : std::false_type {};
+template <class T>
+struct is_vector<std::vector<T>> : std::true_type {};
+
+// Equal values: NaN equals NaN (a value compared with its copy or its pickle), arrays of the
+// same shape and entries, structs field by field.
+template <class V>
+bool same(const V& a, const V& b) {
+  if constexpr (std::is_floating_point_v<V>) {
+    return a == b || (std::isnan(a) && std::isnan(b));
+  } else if constexpr (std::is_base_of_v<Eigen::DenseBase<V>, V>) {
+    return a.rows() == b.rows() && a.cols() == b.cols() &&
+           (a.array() == b.array() || (a.array().isNaN() && b.array().isNaN())).all();
+  } else if constexpr (is_optional<V>::value) {
+    return a.has_value() == b.has_value() && (!a || same(*a, *b));
+  } else if constexpr (is_vector<V>::value) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const auto& x, const auto& y) { return same(x, y); });
+  } else if constexpr (std::is_same_v<V, Metrics>) {
+    for (const MetricDefinition& d : metric_table())
+      if (!same(a.*(d.value), b.*(d.value))) return false;
+    return true;
+  } else if constexpr (has_fields<V>::value) {
+    bool equal = true;
+    for_each_field<V>([&](const auto& f) { equal = equal && same(a.*(f.member), b.*(f.member)); });
+    return equal;
+  } else {
+    return a == b;
+  }
+}
+
+// repr of a field's value: an enum by its name (which is also accepted as input).
+template <class V>
+std::string value_repr(const V& value) {
+  if constexpr (std::is_enum_v<V>) return str_cat("'", to_string(value), "'");
+  else return py::repr(py::cast(value, py::return_value_policy::copy)).template cast<std::string>();
+}
+
+// Properties for the fields: read/write for options, read-only for results. Enums are returned
+// by value (a Python enum object must not alias the struct's memory); other members as views.
+// The class's __match_args__ lists the field names, for code that goes through all of them.
+template <class T, class... Options>
+void def_fields(py::class_<T, Options...>& cls, bool writable) {
+  py::list names;  // __match_args__: the field names, in order (as a dataclass has them)
+  for_each_field<T>([&](const auto& f) { names.append(f.name); });
+  cls.attr("__match_args__") = py::tuple(names);
+  for_each_field<T>([&](const auto& f) {
+    using V = typename std::decay_t<decltype(f)>::Value;
+    const auto member = f.member;
+    if constexpr (std::is_enum_v<V>) {
+      const auto get = [member](const T& o) { return o.*member; };
+      if (writable) cls.def_property(f.name, get, [member](T& o, V v) { o.*member = v; });
+      else cls.def_property_readonly(f.name, get);
+    } else if (writable) {
+      cls.def_readwrite(f.name, member);
+    } else {
+      cls.def_readonly(f.name, member);
+    }
+  });
+}
+
+// The keyword constructor T(field1=T{}.field1, ...), followed by check(object).
+template <class T, class Check, class... Options, std::size_t... I>
+void def_field_init(py::class_<T, Options...>& cls, Check check, std::index_sequence<I...>) {
+  using List = std::decay_t<decltype(Fields<T>::list)>;
+  const T defaults{};
+  cls.def(py::init([check](typename std::tuple_element_t<I, List>::Value... values) {
+            T object;
+            ((object.*(std::get<I>(Fields<T>::list).member) = std::move(values)), ...);
+            check(object);
+            return object;
+          }),
+          (py::arg(std::get<I>(Fields<T>::list).name) = defaults.*(std::get<I>(Fields<T>::list).member))...);
+}
+template <class T, class... Options, class Check>
+void def_field_init(py::class_<T, Options...>& cls, Check check) {
+  def_field_init(cls, check, std::make_index_sequence<field_count<T>>());
+}
+
+// __getstate__ / __setstate__ (by value, field by field), and unless told otherwise __eq__.
+template <class T, class... Options>
+void def_value_protocol(py::class_<T, Options...>& cls, bool equality = true) {
+  const std::string type = py::str(cls.attr("__name__"));
+  cls.def(py::pickle(
+      [](const T& o) {
+        py::list state;
+        for_each_field<T>([&](const auto& f) { state.append(py::cast(o.*(f.member), py::return_value_policy::copy)); });
+        return py::tuple(state);
+      },
+      [type](const py::tuple& state) {
+        require(state.size() == field_count<T>, "a pickled ", type, " has ", field_count<T>, " fields, got ",
+                state.size());
+        T o;
+        std::size_t i = 0;
+        for_each_field<T>([&](const auto& f) {
+          using V = typename std::decay_t<decltype(f)>::Value;
+          o.*(f.member) = state[i++].template cast<V>();
+        });
+        return o;
+      }));
+  if (equality) cls.def("__eq__", [](const T& a, const T& b) { return same(a, b); }, py::is_operator());
+}
+
+// __repr__: Type(field=value, ...), text that builds an equal object.
+template <class T, class... Options>
+void def_field_repr(py::class_<T, Options...>& cls) {
+  const std::string type = py::str(cls.attr("__name__"));
+  cls.def("__repr__", [type](const T& o) {
+    std::string text = type + "(";
+    const char* separator = "";
+    for_each_field<T>([&](const auto& f) {
+      text += str_cat(separator, f.name, "=", value_repr(o.*(f.member)));
+      separator = ", ";
+    });
+    return text + ")";
+  });
+}
+
+// An option struct: keyword constructor (then check), read/write fields, repr, pickle, ==.
+template <class T, class Check>
+py::class_<T> bind_options(py::module_& m, const char* name, const char* doc, Check check) {
+  py::class_<T> cls(m, name, doc);
+  def_field_init(cls, check);
+  def_fields(cls, /*writable=*/true);
+  def_field_repr(cls);
+  def_value_protocol(cls);
+  return cls;
+}
+template <class T, class = void>
+struct has_validate : std::false_type {};
+template <class T>
+struct has_validate<T, std::void_t<decltype(std::declval<const T&>().validate())>> : std::true_type {};
+
+// ... checked by T::validate() where T has one.
+template <class T>
+py::class_<T> bind_options(py::module_& m, const char* name, const char* doc) {
+  return bind_options<T>(m, name, doc, [](const T& options) {
+    if constexpr (has_validate<T>::value) options.validate();
+  });
+}
+
+// A result struct: read-only fields, pickle, == (unless equality is false); small ones also a repr.
+template <class T>
+py::class_<T> bind_result(py::module_& m, const char* name, const char* doc, bool repr, bool equality = true) {
+  py::class_<T> cls(m, name, doc);
+  def_fields(cls, /*writable=*/false);
+  if (repr) def_field_repr(cls);
+  def_value_protocol(cls, equality);
+  return cls;
+}
+
+// ---- pickling of the classes that are not plain structs ----
+
+[[noreturn]] void cannot_pickle(const std::string& what, const std::string& why) {
+  throw py::type_error(str_cat("cannot pickle ", what, ": ", why));
+}
+
+void check_state(const py::tuple& state, std::size_t size, const char* type) {
+  require(state.size() == size, "a pickled ", type, " has ", size, " items, got ", state.size());
+}
+
+// (offset, harmonics) or (table_t, table_values).
+py::tuple signal_state(const Signal& s) {
+  if (s.is_table()) return py::make_tuple<py::return_value_policy::copy>("table", s.table_t(), s.table_values());
+  return py::make_tuple<py::return_value_policy::copy>("harmonics", s.offset(), s.harmonics());
+}
+Signal signal_from_state(const py::tuple& state) {
+  check_state(state, 3, "Signal");
+  if (state[0].cast<std::string>() == "table")
+    return Signal::table(state[1].cast<std::vector<double>>(), state[2].cast<std::vector<double>>());
+  return Signal(state[1].cast<double>(), state[2].cast<std::vector<Harmonic>>());
+}
+
+// The pieces of a dense output as arrays: dim, t_start, t_end, degree, the coefficients in a row.
+py::tuple dense_state(const PiecewisePolynomial& p) {
+  const std::size_t count = p.num_pieces();
+  Vec t_start(count), t_end(count);
+  Eigen::VectorXi degree(count);
+  std::vector<double> coefficients;
+  for (std::size_t k = 0; k < count; ++k) {
+    const DensePiece piece = p.piece(k);
+    t_start[k] = piece.t_start;
+    t_end[k] = piece.t_end;
+    degree[k] = piece.degree;
+    coefficients.insert(coefficients.end(), piece.coeffs, piece.coeffs + (piece.degree + 1) * piece.dim);
+  }
+  const Vec coefficient_row =
+      Eigen::Map<const Vec>(coefficients.data(), static_cast<Eigen::Index>(coefficients.size()));
+  return py::make_tuple(p.dim(), t_start, t_end, degree, coefficient_row);
+}
+PiecewisePolynomial dense_from_state(const py::tuple& state) {
+  check_state(state, 5, "PiecewisePolynomial");
+  const int dim = state[0].cast<int>();
+  check_dimension(dim, 1, "the dimension of a pickled PiecewisePolynomial");
+  const Vec t_start = state[1].cast<Vec>(), t_end = state[2].cast<Vec>(), coefficients = state[4].cast<Vec>();
+  const Eigen::VectorXi degree = state[3].cast<Eigen::VectorXi>();
+  require(t_end.size() == t_start.size() && degree.size() == t_start.size(),
+          "a pickled PiecewisePolynomial needs as many step ends and degrees as pieces");
+  PiecewisePolynomial p(dim);
+  Eigen::Index used = 0;
+  for (Eigen::Index k = 0; k < t_start.size(); ++k) {
+    require(degree[k] >= 0 && used + (degree[k] + 1) * Eigen::Index{dim} <= coefficients.size(),
+            "a pickled PiecewisePolynomial has too few coefficients for its pieces");
+    p.append(DensePiece{t_start[k], t_end[k], degree[k], dim, coefficients.data() + used});
+    used += (degree[k] + 1) * Eigen::Index{dim};
+  }
+  require(used == coefficients.size(), "a pickled PiecewisePolynomial has more coefficients than its pieces use");
+  p.finalize();
+  return p;
+}
+
+// RiccatiSolution and FilterRiccatiSolution: (trajectory, gamma, dense output, stats).
+template <class Solution, class... Options>
+void def_solution_pickle(py::class_<Solution, Options...>& cls) {
+  cls.def(py::pickle(
+      [](const Solution& s) {
+        return py::make_tuple<py::return_value_policy::copy>(s.trajectory_ptr(), s.gamma(), s.dense(), s.stats());
+      },
+      [](const py::tuple& state) {
+        check_state(state, 4, "Riccati solution");
+        auto trajectory = state[0].cast<TrajectoryPtr>();
+        require(trajectory != nullptr, "a pickled Riccati solution needs its trajectory");
+        auto dense = state[2].cast<PiecewisePolynomial>();
+        require(dense.dim() == packed_size(trajectory->n()), "a pickled Riccati solution of n = ", trajectory->n(),
+                " needs ", packed_size(trajectory->n()), " components, got ", dense.dim());
+        return std::make_shared<Solution>(std::move(trajectory), state[1].cast<double>(), std::move(dense),
+                                          state[3].cast<SolveStats>());
+      }));
+}
+
+// scenario_toml, or a TypeError saying why the scenario cannot be pickled.
+std::string scenario_text(const Scenario& s) {
+  try {
+    std::string text = scenario_toml(s);
+    parse_scenario_toml(text, "<pickle>");  // what cannot be read back is an error now, not on load
+    return text;
+  } catch (const InputError& e) {
+    cannot_pickle(str_cat("the scenario '", s.name, "'"), e.what());
+  }
+}
+
+std::string metrics_repr(const Metrics& metrics) {
+  std::string text = "Metrics(";
+  const char* separator = "";
+  for (const MetricDefinition& d : metric_table()) {
+    text += str_cat(separator, d.name, "=", value_repr(metrics.*(d.value)));
+    separator = ", ";
+  }
+  return text + ")";
+}
+
+// Checks of an OutputFeedbackProblem that need no model (simulate_output_feedback checks the
+// sizes against the design's model): a matrix left empty is checked there.
+void check_problem(const OutputFeedbackProblem& p) {
+  require(std::isfinite(p.sigma) && p.sigma >= 0.0, "sigma must be >= 0, got ", p.sigma);
+  require(std::isfinite(p.sample_period) && p.sample_period > 0.0, "sample_period must be > 0, got ",
+          p.sample_period);
+  if (p.N.size() > 0) check_symmetric_weight(p.N, static_cast<int>(p.N.rows()), "N", true);
+  if (p.Sigma0.size() > 0) check_symmetric_weight(p.Sigma0, static_cast<int>(p.Sigma0.rows()), "Sigma0", true);
+  if (p.Q.size() > 0 && p.Sigma0.size() > 0)
+    check_symmetric_weight(p.Q, static_cast<int>(p.Sigma0.rows()), "Q (the size of Sigma0)", false);
+  if (p.noise.size() > 0) check_finite(p.noise, "noise");
+}
+
+// eigenvalue_bounds() and eigenvalue_range(times) as (min, max).
+template <class Solution>
+py::tuple bounds(const Solution& s) {
+  double lo = 0, hi = 0;
+  s.eigenvalue_bounds(lo, hi);
+  return py::make_tuple(lo, hi);
+}
+template <class Solution>
+py::tuple range(const Solution& s, const std::vector<double>& times) {
+  require(!times.empty(), "eigenvalue_range needs at least one time");
+  double lo = 0, hi = 0;
+  s.eigenvalue_range(times, lo, hi);
+  return py::make_tuple(lo, hi);
+}
+
+// X(t) of a symmetric solution, vectorized over t.
+template <class Solution, class Member>
+py::object matrix_of_t(const Solution& s, const py::object& t, Member member) {
+  const int n = s.n();
+  return vectorize(t, n, n, [&s, n, member](double tt, double* out) { Eigen::Map<Mat>(out, n, n) = (s.*member)(tt); });
 }
 
 }  // namespace
@@ -474,51 +984,67 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = HINF_VERSION;
   register_exceptions(m);
 
+  // ---- enums (enum_names.hpp) ----
+  bind_enum<Method>(m, "Method", "Integrator of every ODE solve (solver_options.hpp)");
+  bind_enum<RunStatus>(m, "RunStatus", "How a closed-loop run ended (simulation.hpp)");
+  bind_enum<Law>(m, "Law", "The tracking law of a scenario (scenario.hpp)");
+  bind_enum<FilterLinearization>(m, "FilterLinearization",
+                                 "Which A the filter Riccati equation (36) uses (output_feedback.hpp)");
+  bind_enum<CouplingPolicy>(m, "CouplingPolicy",
+                            "What a violation of rho(Sigma Z) < gamma^2 does (output_feedback.hpp)");
+  bind_enum<GammaCondition>(m, "GammaCondition", "The condition a gamma fails (analysis.hpp)");
+  bind_enum<NewtonSystems>(m, "NewtonSystems", "How BDF solves the Newton systems of a Riccati equation (solver_options.hpp)");
+
   // ---- signals ----
-  py::class_<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal")
-      .def(py::init([](double amplitude, double omega, double phase, bool cosine) {
-             return Harmonic{amplitude, omega, phase, cosine};
-           }),
-           py::arg("amplitude"), py::arg("omega"), py::arg("phase") = 0.0, py::arg("cosine") = false)
-      .def_readwrite("amplitude", &Harmonic::amplitude)
-      .def_readwrite("omega", &Harmonic::omega)
-      .def_readwrite("phase", &Harmonic::phase)
-      .def_readwrite("cosine", &Harmonic::cosine)
-      .def("__repr__", [](const Harmonic& h) {
-        return str_cat("Harmonic(amplitude=", h.amplitude, ", omega=", h.omega, ", phase=", h.phase,
-                       ", cosine=", h.cosine ? "True" : "False", ")");
-      });
+  bind_options<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal");
 
   py::class_<Signal>(m, "Signal", "A scalar signal of absolute time: offset + harmonics, or a table")
       .def(py::init<>())
       .def(py::init<double>(), py::arg("constant"))
       .def(py::init<double, std::vector<Harmonic>>(), py::arg("offset"), py::arg("harmonics"))
-      .def_static("table", &Signal::table, py::arg("t"), py::arg("values"))
+      .def_static("table", &Signal::table, py::arg("t"), py::arg("values"),
+                  "Natural cubic spline through (t_i, v_i); at least two points, strictly increasing t")
       .def("__call__", [](const Signal& s, const py::object& t) {
         return vectorize(t, 0, 0, [&s](double tt, double* out) { out[0] = s(tt); });
-      })
-      .def_property_readonly("offset", &Signal::offset)
-      .def_property_readonly("harmonics", &Signal::harmonics)
-      .def_property_readonly("is_table", &Signal::is_table)
-      .def_property_readonly("table_t", &Signal::table_t)
-      .def_property_readonly("table_values", &Signal::table_values)
-      .def("__repr__", [](const Signal& s) { return "Signal(" + s.describe() + ")"; });
+      }, py::arg("t"))
+      .def("minimum", &Signal::minimum, py::arg("t0"), py::arg("tf"),
+           "(the smallest value on [t0, tf], where it is taken)")
+      .def("is_table", &Signal::is_table)
+      .def("is_constant", &Signal::is_constant)
+      .def("offset", &Signal::offset)
+      .def("harmonics", &Signal::harmonics)
+      .def("table_t", &Signal::table_t)
+      .def("table_values", &Signal::table_values)
+      .def("describe", &Signal::describe)
+      .def("__repr__", [](const Signal& s) { return "Signal(" + s.describe() + ")"; })
+      .def(py::pickle(&signal_state, &signal_from_state));
   py::implicitly_convertible<double, Signal>();
 
   py::class_<VectorSignal>(m, "VectorSignal", "A vector signal: one Signal per channel, or a function of t")
       .def(py::init([](const py::sequence& channels) { return VectorSignal(to_signals(channels, "channels")); }),
-           py::arg("channels"))
+           py::arg("channels"), "one Signal (or number) per channel")
       .def(py::init([](int dim, const py::function& function) {
              return vector_signal_from_callable(function, dim, "function");
            }),
            py::arg("dim"), py::arg("function"), "function(t) must return an array of dim numbers")
       .def_static("zeros", &VectorSignal::zeros, py::arg("dim"))
-      .def_property_readonly("dim", &VectorSignal::dim)
-      .def_property_readonly("is_function", &VectorSignal::is_function)
-      .def_property_readonly("channels", &VectorSignal::channels)
+      .def("dim", &VectorSignal::dim)
+      .def("is_function", &VectorSignal::is_function)
+      .def("channels", &VectorSignal::channels)
       .def("__call__", [](const VectorSignal& s, const py::object& t) {
         return vectorize(t, s.dim(), 0, [&s](double tt, double* out) { s.eval(tt, out); });
-      });
+      }, py::arg("t"))
+      .def(py::pickle(
+          [](const VectorSignal& s) {
+            if (s.is_function())
+              cannot_pickle("a VectorSignal that is a function of t", "only signals of channels pickle");
+            return py::make_tuple<py::return_value_policy::copy>(s.dim(), s.channels());
+          },
+          [](const py::tuple& state) {
+            check_state(state, 2, "VectorSignal");
+            auto channels = state[1].cast<std::vector<Signal>>();
+            return channels.empty() ? VectorSignal::zeros(state[0].cast<int>()) : VectorSignal(std::move(channels));
+          }));
 
   // ---- models ----
   py::class_<Model, PyModel, py::smart_holder>(m, "Model", R"doc(
@@ -526,7 +1052,8 @@ Control-affine model dq/dt = f(t, q) + B(t) u + D(t) w (paper eq. 7).
 Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t). Its structure
 (n, m, nw, name, state_names, position_indices, heading_index, noise_channels,
 constant_input_matrices) is read once, when the library first needs it, and validated; it must not
-change afterwards. What f, dfdq, B, D, C and error_split return is checked at every call.)doc")
+change afterwards. What f, dfdq, B, D, C and error_split return is checked at every call.
+A model implemented in Python does not pickle.)doc")
       .def(py::init<>())
       .def("name", &Model::name)
       .def("n", &Model::n)
@@ -554,90 +1081,95 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
         Vec alpha(model.n());
         model.error_split(t, q_d, q_e, A, alpha);
         return py::make_tuple(A, alpha);
-      }, py::arg("t"), py::arg("q_d"), py::arg("q_e"))
+      }, py::arg("t"), py::arg("q_d"), py::arg("q_e"), "(A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31)")
       .def("C", &Model::C, py::arg("t"), "measurement matrix of y = C q + E w (paper eq. 25)")
       .def("noise_channels", &Model::noise_channels, "the w channels that carry measurement noise")
+      .def("remainder_bound", [](const Model& model, double t, const Vec& q_d, double radius) {
+        check_size(q_d, model.n(), "q_d");
+        return model.remainder_bound(t, q_d, radius);
+      }, py::arg("t"), py::arg("q_d"), py::arg("radius"),
+         "L with |f_e - A_e q_e| <= L |q_e|^2 for |q_e| <= radius, or NaN if the model has none")
       .def("state_names", &Model::state_names)
       .def("position_indices", &Model::position_indices)
-      .def("heading_index", &Model::heading_index);
-
-  py::class_<ShipParameters>(m, "ShipParameters")
-      .def(py::init([](double m_u, double m_v, double m_r, double d_u, double d_v, double d_r) {
-             return ShipParameters{m_u, m_v, m_r, d_u, d_v, d_r};
-           }),
-           py::arg("m_u") = 0.5, py::arg("m_v") = -2.0, py::arg("m_r") = 0.5, py::arg("d_u") = 1.0,
-           py::arg("d_v") = 2.0, py::arg("d_r") = 1.0)
-      .def_readwrite("m_u", &ShipParameters::m_u)
-      .def_readwrite("m_v", &ShipParameters::m_v)
-      .def_readwrite("m_r", &ShipParameters::m_r)
-      .def_readwrite("d_u", &ShipParameters::d_u)
-      .def_readwrite("d_v", &ShipParameters::d_v)
-      .def_readwrite("d_r", &ShipParameters::d_r)
-      .def("__repr__", [](const ShipParameters& p) {
-        return str_cat("ShipParameters(m_u=", p.m_u, ", m_v=", p.m_v, ", m_r=", p.m_r, ", d_u=", p.d_u,
-                       ", d_v=", p.d_v, ", d_r=", p.d_r, ")");
+      .def("heading_index", &Model::heading_index)
+      .def("__getstate__", [](const Model& model) -> py::tuple {
+        cannot_pickle(str_cat("the model '", model.name(), "'"),
+                      "a model implemented in Python does not pickle (ShipModel and LinearModel do)");
       });
+
+  bind_options<ShipParameters>(m, "ShipParameters", "Parameters of the ship of paper eqs. (1)-(6)");
 
   py::class_<ShipModel, Model, py::smart_holder>(m, "ShipModel", "The underactuated ship of paper eqs. (1)-(6)")
       .def(py::init<const ShipParameters&>(), py::arg("parameters") = ShipParameters{})
-      .def_property_readonly("parameters", &ShipModel::parameters);
+      .def("parameters", &ShipModel::parameters)
+      .def(py::pickle(
+          [](const ShipModel& model) { return py::make_tuple<py::return_value_policy::copy>(model.parameters()); },
+          [](const py::tuple& state) {
+            check_state(state, 1, "ShipModel");
+            return std::make_shared<ShipModel>(state[0].cast<ShipParameters>());
+          }));
 
   py::class_<LinearModel, Model, py::smart_holder>(
       m, "LinearModel",
       "dq/dt = A q + B u + D w; with C (p x n), y = C q + noise on p extra w channels")
-      .def(py::init([](Mat A, Mat B, Mat D, const std::optional<Mat>& C) {
-             return std::make_shared<LinearModel>(std::move(A), std::move(B), std::move(D), C.value_or(Mat()));
-           }),
-           py::arg("A"), py::arg("B"), py::arg("D"), py::arg("C") = py::none())
-      .def_property_readonly("A", &LinearModel::A);
+      .def(py::init<Mat, Mat, Mat, Mat>(), py::arg("A"), py::arg("B"), py::arg("D"), py::arg("C") = Mat())
+      .def("A", &LinearModel::A)
+      .def("process_D", &LinearModel::process_D, "D as given to the constructor (without the noise channels)")
+      .def("measurement_C", &LinearModel::measurement_C, "C as given to the constructor (empty if none)")
+      .def(py::pickle(
+          [](const LinearModel& model) {
+            return py::make_tuple(model.A(), model.B(0.0), model.process_D(), model.measurement_C());
+          },
+          [](const py::tuple& state) {
+            check_state(state, 4, "LinearModel");
+            return std::make_shared<LinearModel>(state[0].cast<Mat>(), state[1].cast<Mat>(), state[2].cast<Mat>(),
+                                                 state[3].cast<Mat>());
+          }));
 
-  // ---- solver options ----
-  py::class_<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)")
-      .def(py::init([](const std::string& method, double rtol, double atol, long max_steps, double escape_norm,
-                       double divergence_factor) {
-             SolverOptions o;
-             o.method = from_string<Method>(method);
-             o.rtol = rtol;
-             o.atol = atol;
-             o.max_steps = max_steps;
-             o.escape_norm = escape_norm;
-             o.divergence_factor = divergence_factor;
-             o.validate();
-             return o;
-           }),
-           py::arg("method") = "bdf", py::arg("rtol") = 1e-8, py::arg("atol") = 1e-10,
-           py::arg("max_steps") = 500000, py::arg("escape_norm") = 1e6, py::arg("divergence_factor") = 1e3)
-      .def_property("method", [](const SolverOptions& o) { return to_string(o.method); },
-                    [](SolverOptions& o, const std::string& s) { o.method = from_string<Method>(s); })
-      .def_readwrite("rtol", &SolverOptions::rtol)
-      .def_readwrite("atol", &SolverOptions::atol)
-      .def_readwrite("max_steps", &SolverOptions::max_steps)
-      .def_readwrite("escape_norm", &SolverOptions::escape_norm)
-      .def_readwrite("divergence_factor", &SolverOptions::divergence_factor)
-      .def("validate", &SolverOptions::validate)
-      .def("__repr__", &repr_options);
+  // ---- options ----
+  bind_options<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)");
+  bind_options<SimulationOptions>(m, "SimulationOptions",
+                                  "How a closed loop is simulated ([output] dt and [solver] of a scenario)");
+  bind_options<TrajectoryOptions>(m, "TrajectoryOptions", "Tolerances of the desired trajectory's integration");
 
-  // ---- trajectory ----
+  // ---- dense output, trajectory ----
+  py::class_<PiecewisePolynomial>(m, "PiecewisePolynomial", "Dense output of an ODE solve: one polynomial per step")
+      .def("dim", &PiecewisePolynomial::dim)
+      .def("num_pieces", &PiecewisePolynomial::num_pieces)
+      .def("empty", &PiecewisePolynomial::empty)
+      .def("t_min", &PiecewisePolynomial::t_min)
+      .def("t_max", &PiecewisePolynomial::t_max)
+      .def("eval", [](const PiecewisePolynomial& p, const py::object& t) {
+        return vectorize(t, p.dim(), 0, [&p](double tt, double* out) { p.eval(tt, out); });
+      }, py::arg("t"))
+      .def("eval_derivative", [](const PiecewisePolynomial& p, const py::object& t) {
+        return vectorize(t, p.dim(), 0, [&p](double tt, double* out) { p.eval_derivative(tt, out); });
+      }, py::arg("t"))
+      .def("breakpoints", &PiecewisePolynomial::breakpoints, "the ends of the pieces, increasing")
+      .def("memory_bytes", &PiecewisePolynomial::memory_bytes)
+      .def(py::pickle(&dense_state, &dense_from_state));
+
+  bind_result<StepStats>(m, "StepStats", "Counts of an integration", /*repr=*/true);
+
   py::class_<Trajectory, py::smart_holder>(m, "Trajectory", "Desired trajectory of paper eq. (8) with dense output")
-      .def(py::init([](ModelPtr model, Vec q_d0, const py::object& u_d, double t0, double tf, double rtol,
-                       double atol) {
+      .def(py::init([](ModelPtr model, Vec q_d0, const py::object& u_d, double t0, double tf,
+                       const TrajectoryOptions& options) {
              require(model != nullptr, "Trajectory needs a model");
              VectorSignal inputs = to_vector_signal(u_d, model->m(), "u_d");
-             TrajectoryOptions options;
-             options.rtol = rtol;
-             options.atol = atol;
              py::gil_scoped_release release;
-             return std::make_shared<Trajectory>(std::move(model), std::move(q_d0), std::move(inputs), t0,
-                                                 tf, options);
+             return std::make_shared<Trajectory>(std::move(model), std::move(q_d0), std::move(inputs), t0, tf,
+                                                 options);
            }),
            py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("tf"),
-           py::arg("rtol") = 1e-10, py::arg("atol") = 1e-12,
+           py::arg("options") = TrajectoryOptions{},
            "u_d: a VectorSignal, a callable u_d(t) -> array, or a list of Signals/numbers")
-      .def_property_readonly("model", &Trajectory::model_ptr)
-      .def_property_readonly("t0", &Trajectory::t0)
-      .def_property_readonly("tf", &Trajectory::tf)
-      .def_property_readonly("n", &Trajectory::n)
-      .def_property_readonly("m", &Trajectory::m)
+      .def("model", &Trajectory::model_ptr)
+      .def("n", &Trajectory::n)
+      .def("m", &Trajectory::m)
+      .def("t0", &Trajectory::t0)
+      .def("tf", &Trajectory::tf)
+      .def("q_d0", &Trajectory::q_d0)
+      .def("u_d_signal", &Trajectory::u_d_signal)
       .def("q_d", [](const Trajectory& tr, const py::object& t) {
         return vectorize(t, tr.n(), 0, [&tr](double tt, double* out) { tr.q_d(tt, out); });
       }, py::arg("t"))
@@ -649,90 +1181,75 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
           Eigen::Map<Mat>(out, tr.n(), tr.n()) = tr.A_e(tt);
         });
       }, py::arg("t"))
-      .def_property_readonly("num_steps", [](const Trajectory& tr) { return tr.stats().steps; });
+      .def("dense", &Trajectory::dense, py::return_value_policy::reference_internal)
+      .def("stats", &Trajectory::stats)
+      .def(py::pickle(
+          [](const Trajectory& tr) {
+            return py::make_tuple<py::return_value_policy::copy>(tr.model_ptr(), tr.q_d0(), tr.u_d_signal(), tr.t0(),
+                                                                 tr.tf(), tr.dense(), tr.stats());
+          },
+          [](const py::tuple& state) {
+            check_state(state, 7, "Trajectory");
+            return std::make_shared<Trajectory>(state[0].cast<ModelPtr>(), state[1].cast<Vec>(),
+                                                state[2].cast<VectorSignal>(), state[3].cast<double>(),
+                                                state[4].cast<double>(), state[5].cast<PiecewisePolynomial>(),
+                                                state[6].cast<StepStats>());
+          }));
 
-  // ---- GRDE ----
-  py::class_<SolveStats>(m, "SolveStats")
-      .def_readonly("steps", &SolveStats::steps)
-      .def_readonly("rejected", &SolveStats::rejected)
-      .def_readonly("rhs_evals", &SolveStats::rhs_evals)
-      .def_readonly("jac_evals", &SolveStats::jac_evals)
-      .def_readonly("memory_bytes", &SolveStats::memory_bytes)
-      .def("__repr__", [](const SolveStats& s) {
-        return str_cat("SolveStats(steps=", s.steps, ", rejected=", s.rejected, ", rhs_evals=", s.rhs_evals,
-                       ", jac_evals=", s.jac_evals, ", memory_bytes=", s.memory_bytes, ")");
-      });
+  // ---- Riccati equations ----
+  bind_result<SolveStats>(m, "SolveStats", "Counts and stored size of a Riccati solve", /*repr=*/true);
 
-  py::class_<RiccatiSolution, py::smart_holder>(m, "RiccatiSolution", "Z(t) of the GRDE (13) on [t0, tf]")
-      .def_property_readonly("trajectory", &RiccatiSolution::trajectory_ptr)
-      .def_property_readonly("gamma", &RiccatiSolution::gamma)
-      .def_property_readonly("t0", &RiccatiSolution::t0)
-      .def_property_readonly("tf", &RiccatiSolution::tf)
-      .def_property_readonly("n", &RiccatiSolution::n)
-      .def_property_readonly("m", &RiccatiSolution::m)
-      .def_property_readonly("stats", &RiccatiSolution::stats)
+  py::class_<SymmetricSolution, py::smart_holder>(m, "SymmetricSolution",
+                                                  "A symmetric-matrix-valued solution X(t) on [t0, tf] (dense output)")
+      .def("trajectory", &SymmetricSolution::trajectory_ptr)
+      .def("n", &SymmetricSolution::n)
+      .def("gamma", &SymmetricSolution::gamma)
+      .def("t0", &SymmetricSolution::t0)
+      .def("tf", &SymmetricSolution::tf)
+      .def("value", [](const SymmetricSolution& s, const py::object& t) {
+        return matrix_of_t(s, t, &SymmetricSolution::value);
+      }, py::arg("t"), "X(t): (n, n) for a number, (len(t), n, n) for an array")
+      .def("derivative", [](const SymmetricSolution& s, const py::object& t) {
+        return matrix_of_t(s, t, &SymmetricSolution::derivative);
+      }, py::arg("t"))
+      .def("eigenvalue_range", &range<SymmetricSolution>, py::arg("times"),
+           "(smallest, largest) eigenvalue of X over the given times")
+      .def("eigenvalue_bounds", &bounds<SymmetricSolution>,
+           "(m, M) with m I <= X(t) <= M I on [t0, tf] (paper eq. 22)")
+      .def("dense", &SymmetricSolution::dense, py::return_value_policy::reference_internal)
+      .def("stats", &SymmetricSolution::stats);
+
+  py::class_<RiccatiSolution, SymmetricSolution, py::smart_holder> riccati(m, "RiccatiSolution",
+                                                                           "Z(t) of the GRDE (13) on [t0, tf]");
+  riccati.def("m", &RiccatiSolution::m)
       .def("Z", [](const RiccatiSolution& s, const py::object& t) {
-        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
-          Eigen::Map<Mat>(out, s.n(), s.n()) = s.Z(tt);
-        });
+        return matrix_of_t(s, t, &RiccatiSolution::Z);
       }, py::arg("t"), "Z(t): (n, n) for a number, (len(t), n, n) for an array")
       .def("dZdt", [](const RiccatiSolution& s, const py::object& t) {
-        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
-          Eigen::Map<Mat>(out, s.n(), s.n()) = s.dZdt(tt);
-        });
+        return matrix_of_t(s, t, &RiccatiSolution::dZdt);
       }, py::arg("t"))
       .def("gain", [](const RiccatiSolution& s, const py::object& t) {
         return vectorize(t, s.m(), s.n(), [&s](double tt, double* out) { s.gain(tt, out); });
-      }, py::arg("t"), "K(t) = B' Z(t): (m, n) for a number, (len(t), m, n) for an array")
-      .def("step_times", [](const RiccatiSolution& s) { return s.dense().breakpoints(); })
-      .def("eigenvalue_bounds", [](const RiccatiSolution& s) {
-        double lo = 0, hi = 0;
-        s.eigenvalue_bounds(lo, hi);
-        return py::make_tuple(lo, hi);
-      }, "(m, M) with m I <= Z(t) <= M I on [t0, tf] (paper eq. 22)")
-      .def("eigenvalue_range", [](const RiccatiSolution& s, const std::vector<double>& times) {
-        require(!times.empty(), "eigenvalue_range needs at least one time");
-        double lo = 0, hi = 0;
-        s.eigenvalue_range(times, lo, hi);
-        return py::make_tuple(lo, hi);
-      }, py::arg("times"));
+      }, py::arg("t"), "K(t) = B' Z(t): (m, n) for a number, (len(t), m, n) for an array");
+  def_solution_pickle(riccati);
 
-  py::class_<FilterRiccatiSolution, py::smart_holder>(m, "FilterRiccatiSolution",
-                                                      "Sigma(t) of the filter Riccati equation (36), A = A_e(t)")
-      .def_property_readonly("trajectory", &FilterRiccatiSolution::trajectory_ptr)
-      .def_property_readonly("gamma", &FilterRiccatiSolution::gamma)
-      .def_property_readonly("t0", &FilterRiccatiSolution::t0)
-      .def_property_readonly("tf", &FilterRiccatiSolution::tf)
-      .def_property_readonly("n", &FilterRiccatiSolution::n)
-      .def_property_readonly("stats", &FilterRiccatiSolution::stats)
-      .def("Sigma", [](const FilterRiccatiSolution& s, const py::object& t) {
-        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
-          Eigen::Map<Mat>(out, s.n(), s.n()) = s.Sigma(tt);
-        });
-      }, py::arg("t"))
+  py::class_<FilterRiccatiSolution, SymmetricSolution, py::smart_holder> filter(
+      m, "FilterRiccatiSolution", "Sigma(t) of the filter Riccati equation (36), A = A_e(t)");
+  filter.def("Sigma", [](const FilterRiccatiSolution& s, const py::object& t) {
+          return matrix_of_t(s, t, &FilterRiccatiSolution::Sigma);
+        }, py::arg("t"))
       .def("dSigma_dt", [](const FilterRiccatiSolution& s, const py::object& t) {
-        return vectorize(t, s.n(), s.n(), [&s](double tt, double* out) {
-          Eigen::Map<Mat>(out, s.n(), s.n()) = s.dSigma_dt(tt);
-        });
-      }, py::arg("t"))
-      .def("step_times", [](const FilterRiccatiSolution& s) { return s.dense().breakpoints(); })
-      .def("eigenvalue_bounds", [](const FilterRiccatiSolution& s) {
-        double lo = 0, hi = 0;
-        s.eigenvalue_bounds(lo, hi);
-        return py::make_tuple(lo, hi);
-      }, "the extreme eigenvalues of Sigma(t) on [t0, tf]")
-      .def("eigenvalue_range", [](const FilterRiccatiSolution& s, const std::vector<double>& times) {
-        require(!times.empty(), "eigenvalue_range needs at least one time");
-        double lo = 0, hi = 0;
-        s.eigenvalue_range(times, lo, hi);
-        return py::make_tuple(lo, hi);
-      }, py::arg("times"));
+        return matrix_of_t(s, t, &FilterRiccatiSolution::dSigma_dt);
+      }, py::arg("t"));
+  def_solution_pickle(filter);
 
+  m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
+        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
+        "Solve the GRDE (13) backward from Z(tf) = Qf; raises ConjugatePointError when gamma <= gamma*");
   m.def("solve_filter_riccati", &solve_filter_riccati, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
         py::call_guard<py::gil_scoped_release>(),
         "Solve the filter Riccati equation (36) forward from Sigma(t0) = Sigma0 with A = A_e(t)");
-
   m.def("grde_escape_time", &grde_escape_time, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
         py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
         "Time of the first conjugate point of the GRDE on [t0, tf] (integrating backward), NaN if none");
@@ -741,11 +1258,7 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
         py::call_guard<py::gil_scoped_release>(),
         "Time of the first escape of the filter Riccati equation (36) on [t0, tf], NaN if none");
 
-  m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
-        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
-        "Solve the GRDE (13) backward from Z(tf) = Qf; raises ConjugatePointError when gamma <= gamma*");
-
-  // ---- controllers and simulation ----
+  // ---- controllers and disturbances ----
   py::class_<Controller, PyController, py::smart_holder>(m, "Controller",
                                                          "Tracking controller u = control(t, q)")
       .def(py::init<>())
@@ -766,111 +1279,67 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
              return std::make_shared<HinfStateFeedback>(std::move(solution), to_signal(kappa, "kappa"));
            }),
            py::arg("solution"), py::arg("kappa") = Signal(1.0))
-      .def_property_readonly("kappa", &HinfStateFeedback::kappa);
+      .def("solution", &HinfStateFeedback::solution, py::return_value_policy::reference_internal)
+      .def("kappa", &HinfStateFeedback::kappa)
+      .def("checked_kappa", &HinfStateFeedback::checked_kappa, py::arg("t"), "kappa(t); a ValueError if not > 0");
 
-  py::class_<CascadeGains>(m, "CascadeGains", "Gains k, k1, k2 > 0 of the cascade baseline")
-      .def(py::init([](double k, double k1, double k2) { return CascadeGains{k, k1, k2}; }), py::arg("k") = 0.2,
-           py::arg("k1") = 2.0, py::arg("k2") = 3.0)
-      .def_readwrite("k", &CascadeGains::k)
-      .def_readwrite("k1", &CascadeGains::k1)
-      .def_readwrite("k2", &CascadeGains::k2)
-      .def("__repr__", [](const CascadeGains& g) {
-        return str_cat("CascadeGains(k=", g.k, ", k1=", g.k1, ", k2=", g.k2, ")");
-      });
+  bind_options<CascadeGains>(m, "CascadeGains", "Gains k, k1, k2 > 0 of the cascade baseline");
 
   py::class_<CascadeController, Controller, py::smart_holder>(
       m, "CascadeController", "Cascaded tracking baseline for the ship (Lefeber, Pettersen, Nijmeijer type)")
       .def(py::init<TrajectoryPtr, const CascadeGains&>(), py::arg("trajectory"), py::arg("gains") = CascadeGains{})
-      .def_property_readonly("gains", &CascadeController::gains);
+      .def("gains", &CascadeController::gains);
   m.def("wrap_angle", &wrap_angle, py::arg("angle"), "the angle wrapped to (-pi, pi]");
 
   py::class_<Disturbance>(m, "Disturbance",
                           "w(t, q) = signals(t) [+ gamma^-2 D' Z q_e, the worst case of paper eq. (16)]")
-      .def(py::init([](const py::object& signals, int dim) {
-             return Disturbance(to_vector_signal(signals, dim, "signals"));
-           }),
-           py::arg("signals"), py::arg("dim"))
-      .def(py::init([](const py::object& signals, const RiccatiSolutionPtr& design) {
-             require(design != nullptr, "the worst-case disturbance needs a design");
-             return Disturbance(to_vector_signal(signals, design->trajectory().model().nw(), "signals"), design);
-           }),
-           py::arg("signals"), py::arg("worst_case_design"))
-      .def_property_readonly("dim", &Disturbance::dim)
-      .def_property_readonly("worst_case", &Disturbance::worst_case)
-      .def("__call__", [](const Disturbance& d, double t, const Vec& q) {
+      .def(py::init<VectorSignal>(), py::arg("signals"))
+      .def(py::init<VectorSignal, RiccatiSolutionPtr>(), py::arg("signals"), py::arg("design"),
+           "signals plus the worst-case disturbance of the design (a finite gamma)")
+      .def("dim", &Disturbance::dim)
+      .def("worst_case", &Disturbance::worst_case)
+      .def("design", &Disturbance::design)
+      .def("signals", &Disturbance::signals)
+      .def("eval", [](const Disturbance& d, double t, const Vec& q) {
         check_finite(t, "t");
         if (d.design()) check_size(q, d.design()->n(), "q");
         Vec w(d.dim());
         d.eval(t, q.data(), w.data());
         return w;
-      }, py::arg("t"), py::arg("q"));
+      }, py::arg("t"), py::arg("q"), "w at time t for the actual state q (used by the worst case only)");
+  py::implicitly_convertible<VectorSignal, Disturbance>();
 
-  py::class_<SimulationResult>(m, "SimulationResult", "Time series on the output grid, one row per time")
-      .def_readonly("t", &SimulationResult::t)
-      .def_readonly("q", &SimulationResult::q)
-      .def_readonly("q_d", &SimulationResult::q_d)
-      .def_readonly("u", &SimulationResult::u)
-      .def_readonly("u_d", &SimulationResult::u_d)
-      .def_readonly("w", &SimulationResult::w)
-      .def_readonly("q_hat", &SimulationResult::q_hat)
-      .def_readonly("y", &SimulationResult::y)
-      .def_readonly("sigma_min_eig", &SimulationResult::sigma_min_eig)
-      .def_readonly("sigma_max_eig", &SimulationResult::sigma_max_eig)
-      .def_readonly("rho_sigma_z", &SimulationResult::rho_sigma_z)
-      .def_readonly("coupling_violation_t", &SimulationResult::coupling_violation_t)
-      .def_property_readonly("status", [](const SimulationResult& r) { return to_string(r.status); },
-                             "\"completed\", or \"diverged\" (stopped early: the tracking error left the divergence bound)")
-      .def_readonly("status_message", &SimulationResult::status_message)
-      .def_readonly("integrator", &SimulationResult::integrator)
-      .def_readonly("stats", &SimulationResult::stats)
-      .def_property_readonly("q_e", &SimulationResult::q_e, "q - q_d, the heading component wrapped to (-pi, pi]");
+  // ---- simulation ----
+  bind_result<EstimatorSeries>(m, "EstimatorSeries", "The estimator's series of an output-feedback run (paper §4)",
+                               /*repr=*/false);
 
+  bind_result<SimulationResult>(m, "SimulationResult", "Time series on the output grid, one row per time",
+                                /*repr=*/false)
+      .def_property_readonly("estimator", [](const SimulationResult& r) -> const EstimatorSeries* {
+        return r.estimator ? &*r.estimator : nullptr;
+      }, py::return_value_policy::reference_internal, "the estimator's series (output feedback), else None")
+      .def("q_e", &SimulationResult::q_e, "q - q_d, the heading component wrapped to (-pi, pi]");
+
+  m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
+  m.def("output_count", &output_count, py::arg("t0"), py::arg("tf"), py::arg("dt"));
   m.def("simulate_state_feedback",
-        [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance,
-           const Vec& q0, double output_dt, const SolverOptions& options) {
+        [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance, const Vec& q0,
+           const SimulationOptions& options) {
           check_controller_fits(controller, trajectory.model());
           const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
           py::gil_scoped_release release;
-          return simulate_state_feedback(trajectory, controller, w, q0, output_dt, options);
+          return simulate_state_feedback(trajectory, controller, w, q0, options);
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
-        py::arg("output_dt") = 0.01, py::arg("options") = SolverOptions{});
-  py::class_<OutputFeedbackOptions>(m, "OutputFeedbackOptions", "Set-up of the output-feedback loop (paper §4)")
-      .def(py::init([](double sigma, double sample_period, Mat N, Mat Sigma0, Mat Q, const std::string& filter_A,
-                       bool stop_on_coupling_violation) {
-             OutputFeedbackOptions o;
-             o.sigma = sigma;
-             o.sample_period = sample_period;
-             o.N = std::move(N);
-             o.Sigma0 = std::move(Sigma0);
-             o.Q = std::move(Q);
-             require(filter_A == "estimate" || filter_A == "desired",
-                     "filter_A must be \"estimate\" or \"desired\", got \"", filter_A, "\"");
-             // What can be checked without the model (simulate_output_feedback checks the sizes).
-             require(std::isfinite(sigma) && sigma >= 0.0, "sigma must be >= 0, got ", sigma);
-             require(std::isfinite(sample_period) && sample_period > 0.0, "sample_period must be > 0, got ",
-                     sample_period);
-             check_symmetric_weight(o.N, static_cast<int>(o.N.rows()), "N", true);
-             check_symmetric_weight(o.Sigma0, static_cast<int>(o.Sigma0.rows()), "Sigma0", true);
-             check_symmetric_weight(o.Q, static_cast<int>(o.Sigma0.rows()), "Q (the size of Sigma0)", false);
-             o.filter_uses_estimate = filter_A == "estimate";
-             o.stop_on_coupling_violation = stop_on_coupling_violation;
-             return o;
-           }),
-           py::arg("sigma"), py::arg("sample_period"), py::arg("N"), py::arg("Sigma0"), py::arg("Q"),
-           py::arg("filter_A") = "estimate", py::arg("stop_on_coupling_violation") = true)
-      .def_readwrite("sigma", &OutputFeedbackOptions::sigma)
-      .def_readwrite("sample_period", &OutputFeedbackOptions::sample_period)
-      .def_readwrite("N", &OutputFeedbackOptions::N)
-      .def_readwrite("Sigma0", &OutputFeedbackOptions::Sigma0)
-      .def_readwrite("Q", &OutputFeedbackOptions::Q)
-      .def_property("filter_A",
-                    [](const OutputFeedbackOptions& o) { return o.filter_uses_estimate ? "estimate" : "desired"; },
-                    [](OutputFeedbackOptions& o, const std::string& v) {
-                      require(v == "estimate" || v == "desired", "filter_A must be \"estimate\" or \"desired\"");
-                      o.filter_uses_estimate = v == "estimate";
-                    })
-      .def_readwrite("stop_on_coupling_violation", &OutputFeedbackOptions::stop_on_coupling_violation);
+        py::arg("options") = SimulationOptions{},
+        "Closed loop under state feedback (paper eq. 7); disturbance: a Disturbance, a VectorSignal, a callable"
+        " w(t) -> array, a list of Signals/numbers, or None (zero)");
+
+  bind_options<OutputFeedbackProblem>(m, "OutputFeedbackProblem",
+                                      "The output-feedback problem: design, measurement noise, filter weights"
+                                      " (paper §4); noise: standard normal samples, one row per hold interval",
+                                      &check_problem);
+  bind_options<OutputFeedbackOptions>(m, "OutputFeedbackOptions", "Choices of the output-feedback loop (paper §4)");
 
   m.def("noise_sample_count", &noise_sample_count, py::arg("t0"), py::arg("tf"), py::arg("period"));
   m.def("standard_normal_samples",
@@ -887,81 +1356,64 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
         py::arg("seed"), py::arg("count"), py::arg("channels"),
         "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
   m.def("simulate_output_feedback",
-        [](const RiccatiSolutionPtr& grde, const py::object& controller, const py::object& disturbance,
-           const Vec& q0, const RowMat& noise, const OutputFeedbackOptions& options, double output_dt,
-           const SolverOptions& solver) {
-          require(grde != nullptr, "simulate_output_feedback needs a GRDE solution");
-          const Disturbance w = to_disturbance(disturbance, grde->trajectory().model().nw());
-          // A Controller, or kappa (a Signal or a number) for the H-infinity law (34).
-          std::shared_ptr<Controller> law;
-          if (py::isinstance<Controller>(controller)) law = controller.cast<std::shared_ptr<Controller>>();
-          else law = std::make_shared<HinfStateFeedback>(grde,
-                                                         to_signal(controller, "controller (a Controller, or kappa)"));
-          check_controller_fits(*law, grde->trajectory().model());
+        [](const OutputFeedbackProblem& problem, Controller& controller, const py::object& disturbance,
+           const Vec& q0, const OutputFeedbackOptions& options, const SimulationOptions& simulation) {
+          require(problem.design != nullptr, "the output-feedback problem needs a design (a GRDE solution)");
+          const Model& model = problem.design->trajectory().model();
+          check_controller_fits(controller, model);
+          const Disturbance w = to_disturbance(disturbance, model.nw());
           py::gil_scoped_release release;
-          return simulate_output_feedback(*grde, *law, w, q0, noise, options, output_dt, solver);
+          return simulate_output_feedback(problem, controller, w, q0, options, simulation);
         },
-        py::arg("grde"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"), py::arg("noise"),
-        py::arg("options"), py::arg("output_dt") = 0.01, py::arg("solver") = SolverOptions{},
-        "Output-feedback closed loop (paper 34-36): filter and estimator of grde, control by `controller` (a"
-        " Controller, or kappa for the H-infinity law) at the estimate; noise: standard normal samples, one"
-        " row per hold interval");
-  m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
-  m.def("compute_metrics", [](const Model& model, const SimulationResult& run, const Mat& Q) {
-    return metrics_dict(compute_metrics(model, run, Q));
-  }, py::arg("model"), py::arg("run"), py::arg("Q"));
+        py::arg("problem"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
+        py::arg("options") = OutputFeedbackOptions{}, py::arg("simulation") = SimulationOptions{},
+        "Output-feedback closed loop (paper 34-36): filter and estimator of the problem's design, control by"
+        " `controller` at the estimated state; disturbance as in simulate_state_feedback");
+
+  // ---- metrics (metrics.hpp: metric_table() is their one definition) ----
+  py::class_<MetricDefinition>(m, "MetricDefinition", "One metric of a run: name, label, unit, definition")
+      .def_readonly("name", &MetricDefinition::name, "its key in the results file and Metrics' property")
+      .def_readonly("label", &MetricDefinition::label)
+      .def_readonly("unit", &MetricDefinition::unit)
+      .def_readonly("definition", &MetricDefinition::definition)
+      .def("__repr__", [](const MetricDefinition& d) { return str_cat("MetricDefinition('", d.name, "')"); });
+  m.def("metric_table", [] { return std::vector<MetricDefinition>(metric_table().begin(), metric_table().end()); },
+        "The metrics of a run, in the order of the results file");
+
+  py::class_<Metrics> metrics(m, "Metrics", "Metrics of a closed-loop run (metric_table() defines each)");
+  for (const MetricDefinition& d : metric_table()) {
+    const auto member = d.value;
+    metrics.def_property_readonly(d.name, [member](const Metrics& x) { return x.*member; }, d.definition);
+  }
+  metrics.def("__repr__", &metrics_repr)
+      .def("__eq__", [](const Metrics& a, const Metrics& b) { return same(a, b); }, py::is_operator())
+      .def(py::pickle(
+          [](const Metrics& x) {
+            py::list state;
+            for (const MetricDefinition& d : metric_table()) state.append(x.*(d.value));
+            return py::tuple(state);
+          },
+          [](const py::tuple& state) {
+            check_state(state, kMetricCount, "Metrics");
+            Metrics x;
+            std::size_t i = 0;
+            for (const MetricDefinition& d : metric_table()) x.*(d.value) = state[i++].cast<double>();
+            return x;
+          }));
+  m.def("compute_metrics", &compute_metrics, py::arg("model"), py::arg("run"), py::arg("Q"));
+  m.def("l2_norm", &l2_norm, py::arg("t"), py::arg("series"),
+        "sqrt of the trapezoid integral of the squared row norms of series over times t");
 
   // ---- gamma* and certificates (paper §3) ----
-  py::class_<GammaStarOptions>(m, "GammaStarOptions",
-                                "Options of the gamma* search. threads: gammas evaluated in parallel per round"
-                                " (one for a model implemented in Python, whose calls hold the GIL)")
-      .def(py::init([](double lower, double upper, double rtol, int max_evaluations, int threads,
-                       const SolverOptions& solver) {
-             GammaStarOptions o;
-             o.lower = lower;
-             o.upper = upper;
-             o.rtol = rtol;
-             o.max_evaluations = max_evaluations;
-             o.threads = threads;
-             o.solver = solver;
-             o.validate();
-             return o;
-           }),
-           py::arg("lower") = 0.0, py::arg("upper") = 0.0, py::arg("rtol") = 1e-7, py::arg("max_evaluations") = 200,
-           py::arg("threads") = 2, py::arg("solver") = SolverOptions{})
-      .def_readwrite("lower", &GammaStarOptions::lower)
-      .def_readwrite("upper", &GammaStarOptions::upper)
-      .def_readwrite("rtol", &GammaStarOptions::rtol)
-      .def_readwrite("max_evaluations", &GammaStarOptions::max_evaluations)
-      .def_readwrite("threads", &GammaStarOptions::threads)
-      .def_readwrite("solver", &GammaStarOptions::solver)
-      .def("__repr__", [](const GammaStarOptions& o) {
-        return str_cat("GammaStarOptions(lower=", o.lower, ", upper=", o.upper, ", rtol=", o.rtol,
-                       ", max_evaluations=", o.max_evaluations, ", threads=", o.threads, ")");
-      });
-
-  py::class_<GammaTrial>(m, "GammaTrial", "One gamma tried by the gamma* search")
-      .def_readonly("gamma", &GammaTrial::gamma)
-      .def_readonly("passed", &GammaTrial::passed)
-      .def_readonly("t_escape", &GammaTrial::t_escape)
-      .def_readonly("condition", &GammaTrial::condition)
-      .def("__repr__", [](const GammaTrial& t) {
-        return str_cat("GammaTrial(gamma=", t.gamma, ", passed=", t.passed ? "True" : "False",
-                       t.passed ? "" : str_cat(", condition='", t.condition, "', t=", t.t_escape), ")");
-      });
-
-  py::class_<GammaStarResult>(m, "GammaStarResult", "gamma*, the final bracket and every gamma tried")
-      .def_readonly("gamma_star", &GammaStarResult::gamma_star)
-      .def_readonly("lower", &GammaStarResult::lower)
-      .def_readonly("upper", &GammaStarResult::upper)
-      .def_readonly("t_escape_lower", &GammaStarResult::t_escape_lower)
-      .def_readonly("binding", &GammaStarResult::binding)
-      .def_readonly("converged", &GammaStarResult::converged)
-      .def_readonly("trials", &GammaStarResult::trials)
+  bind_options<GammaStarOptions>(m, "GammaStarOptions",
+                                 "Options of the gamma* search. threads: gammas evaluated in parallel per round"
+                                 " (one for a model implemented in Python, whose calls hold the GIL)");
+  bind_result<GammaTrial>(m, "GammaTrial", "One gamma tried by the gamma* search", /*repr=*/true);
+  bind_result<GammaStarResult>(m, "GammaStarResult", "gamma*, the final bracket and every gamma tried", /*repr=*/false)
       .def("__repr__", [](const GammaStarResult& r) {
         return str_cat("GammaStarResult(gamma_star=", r.gamma_star, ", bracket=[", r.lower, ", ", r.upper,
-                       "], binding='", r.binding, "', t_escape_lower=", r.t_escape_lower, ", evaluations=",
-                       r.trials.size(), ")");
+                       "], binding='", to_string(r.binding), "', t_escape_lower=", r.t_escape_lower,
+                       ", evaluations=", r.trials.size(), ")");
       });
 
   m.def("gamma_star",
@@ -989,41 +1441,22 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
         },
         py::arg("Z"), py::arg("Sigma"), "(max over [t0, tf] of rho(Sigma Z), where)");
 
-  py::class_<Certificates>(m, "Certificates", "The stability certificates of paper §3 (eqs. 22-24)")
-      .def_readonly("m", &Certificates::m)
-      .def_readonly("M", &Certificates::M)
-      .def_readonly("kappa_min", &Certificates::kappa_min)
-      .def_readonly("p_min", &Certificates::p_min)
-      .def_readonly("p_min_t", &Certificates::p_min_t)
-      .def_readonly("remainder_L", &Certificates::remainder_L)
-      .def_readonly("remainder_method", &Certificates::remainder_method)
-      .def_readonly("remainder_is_bound", &Certificates::remainder_is_bound)
-      .def_readonly("epsilon", &Certificates::epsilon)
-      .def_readonly("epsilon_t", &Certificates::epsilon_t)
-      .def_readonly("attraction_radius", &Certificates::attraction_radius)
-      .def_readonly("decay_rate", &Certificates::decay_rate);
+  bind_result<Certificates>(m, "Certificates", "The stability certificates of paper §3 (eqs. 22-24)", /*repr=*/true);
   m.def("certify",
-        [](const RiccatiSolution& solution, const Mat& Q, const py::object& kappa) {
+        [](const RiccatiSolution& Z, const py::object& kappa, const Mat& Q) {
           const Signal k = to_signal(kappa, "kappa");
           py::gil_scoped_release release;
-          return certify(solution, k, Q);
+          return certify(Z, k, Q);
         },
-        py::arg("solution"), py::arg("Q"), py::arg("kappa") = Signal(1.0),
-        "The certificates of paper §3 for a design Z (its gamma), the weight Q and kappa(t)");
+        py::arg("Z"), py::arg("kappa"), py::arg("Q"),
+        "The certificates of paper §3 for a design Z (its gamma), the gain scaling kappa(t) and the weight Q");
 
   // ---- scenarios ----
-  py::class_<MeasurementSpec>(m, "MeasurementSpec", "[measurement] of a scenario (paper §4)")
-      .def(py::init<>())
-      .def_readwrite("sigma", &MeasurementSpec::sigma)
-      .def_readwrite("sample_period", &MeasurementSpec::sample_period)
-      .def_readwrite("seed", &MeasurementSpec::seed)
-      .def_readwrite("N", &MeasurementSpec::N)
-      .def_readwrite("Q0", &MeasurementSpec::Q0)
-      .def_readwrite("eta", &MeasurementSpec::eta)
-      .def_readwrite("filter_A", &MeasurementSpec::filter_A)
-      .def_readwrite("on_coupling_violation", &MeasurementSpec::on_coupling_violation);
+  bind_options<MeasurementSpec>(m, "MeasurementSpec", "[measurement] of a scenario (paper §4)");
 
-  py::class_<Scenario>(m, "Scenario", "Everything one run needs (shared/scenarios.md)")
+  py::class_<Scenario>(m, "Scenario", R"doc(Everything one run needs (docs/scenarios.md).
+Pickles as its scenario file (scenario_toml) and solver.escape_norm, which the file does not hold;
+a scenario whose model or signals are implemented in Python does not pickle (TypeError).)doc")
       .def(py::init<>())
       .def_readwrite("name", &Scenario::name)
       .def_readwrite("description", &Scenario::description)
@@ -1041,53 +1474,47 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
       .def_readwrite("Qf", &Scenario::Qf)
       .def_property("kappa", [](const Scenario& s) { return s.kappa; },
                     [](Scenario& s, const py::object& v) { s.kappa = to_signal(v, "kappa"); })
-      .def_readwrite("law", &Scenario::law)
+      .def_property("law", [](const Scenario& s) { return s.law; }, [](Scenario& s, Law law) { s.law = law; })
       .def_readwrite("cascade", &Scenario::cascade)
-      .def_readwrite("worst_case", &Scenario::worst_case)
       .def_property("disturbance", [](const Scenario& s) { return s.disturbance; },
                     [](Scenario& s, const py::object& v) {
                       require(s.model != nullptr, "set Scenario.model before disturbance");
                       s.disturbance = to_vector_signal(v, s.model->nw(), "disturbance");
                     })
+      .def_readwrite("worst_case", &Scenario::worst_case)
       .def_readwrite("initial_q0", &Scenario::initial_q0)
       .def_readwrite("measurement", &Scenario::measurement)
       .def_readwrite("solver", &Scenario::solver)
       .def_readwrite("output_dt", &Scenario::output_dt)
+      .def_readwrite("divergence_factor", &Scenario::divergence_factor)
       .def("resolved", &Scenario::resolved)
       .def("validate", &Scenario::validate)
+      .def("simulation_options", &Scenario::simulation_options)
       .def("copy", [](const Scenario& s) { return Scenario(s); }, "an independent copy (signals and model shared)")
-      .def("__copy__", [](const Scenario& s) { return Scenario(s); });
+      .def("__copy__", [](const Scenario& s) { return Scenario(s); })
+      .def(py::pickle(
+          [](const Scenario& s) { return py::make_tuple(scenario_text(s), s.solver.escape_norm); },
+          [](const py::tuple& state) {
+            check_state(state, 2, "Scenario");
+            Scenario s = parse_scenario_toml(state[0].cast<std::string>(), "<pickle>");
+            s.solver.escape_norm = state[1].cast<double>();
+            return s;
+          }));
 
-  py::class_<Timing>(m, "Timing")
-      .def_readonly("design", &Timing::design)
-      .def_readonly("simulate", &Timing::simulate)
-      .def_readonly("analysis", &Timing::analysis)
-      .def_readonly("total", &Timing::total);
+  bind_result<Timing>(m, "Timing", "Wall-clock seconds of a run", /*repr=*/true);
 
-  py::class_<RunResult>(m, "RunResult", "Result of run_scenario")
-      .def_readonly("scenario_name", &RunResult::scenario_name)
-      .def_readonly("controller", &RunResult::controller)
-      .def_readonly("gamma", &RunResult::gamma)
-      .def_readonly("trajectory", &RunResult::trajectory)
-      .def_readonly("solution", &RunResult::solution)
-      .def_readonly("Z0", &RunResult::Z0)
-      .def_readonly("Z_min_eig", &RunResult::Z_min_eig)
-      .def_readonly("Z_max_eig", &RunResult::Z_max_eig)
-      .def_readwrite("gamma_star", &RunResult::gamma_star)
-      .def_readonly("simulation", &RunResult::simulation)
-      .def_readonly("timing", &RunResult::timing)
-      .def_property_readonly("metrics", [](const RunResult& r) { return metrics_dict(r.metrics); })
-      .def("to_json", &results_json, py::arg("indent") = 2)
-      .def("to_csv", &results_csv);
+  bind_result<RunResult>(m, "RunResult",
+                                           "Result of run_scenario (gamma_star may be set afterwards, as hinf-sim"
+                                           " does, for the results file); == is not defined (its trajectory and"
+                                           " design are shared objects)",
+                                           /*repr=*/false, /*equality=*/false)
+      .def_readwrite("gamma_star", &RunResult::gamma_star);
 
-  m.def("run_scenario",
-        [](const Scenario& scenario, const std::optional<RowMat>& noise) {
-          py::gil_scoped_release release;
-          return noise ? run_scenario_with_noise(scenario, *noise) : run_scenario(scenario);
-        },
-        py::arg("scenario"), py::arg("noise") = py::none(),
-        "Run a scenario; with [measurement], noise (standard normal samples, one row per hold interval)"
-        " replaces the seeded noise so that a run can be replayed exactly");
+  m.def("run_scenario", &run_scenario, py::arg("scenario"), py::call_guard<py::gil_scoped_release>(), "Run a scenario");
+  m.def("run_scenario_with_noise", &run_scenario_with_noise, py::arg("scenario"), py::arg("noise"),
+        py::call_guard<py::gil_scoped_release>(),
+        "Run a scenario with [measurement] on the given noise samples (one row per hold interval, one column per"
+        " measured output) instead of the seeded ones, so that a run can be replayed exactly");
   m.def("scenario_gamma_star",
         [](const Scenario& scenario, const GammaStarOptions& options) {
           return scenario_gamma_star(scenario, serial_for_python_models(scenario.model.get(), options));
@@ -1104,11 +1531,16 @@ change afterwards. What f, dfdq, B, D, C and error_split return is checked at ev
         py::call_guard<py::gil_scoped_release>(), "The certificates of paper §3 for a scenario's design");
   m.def("scenario_noise", &scenario_noise, py::arg("scenario"),
         "The seeded standard normal noise samples of a scenario with [measurement]");
+
+  // ---- scenario and results files (scenario_io.hpp) ----
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
-        "The C++ scenario parser (the one hinf-sim uses)");
-  // The one scenario reader (scenario_io.cpp) for the Python package: files and signals.
-  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"),
-        "Reads a scenario file with the reader of hinf-sim (same checks, same messages)");
+        "The one scenario reader (the one hinf-sim uses): same checks, same messages");
+  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), "Reads a scenario file (parse_scenario_toml)");
+  m.def("scenario_toml", &scenario_toml, py::arg("scenario"),
+        "The scenario as a scenario file that reads back to an equal scenario");
   m.def("parse_signal_toml", &parse_signal_toml, py::arg("text"), py::arg("key"), py::arg("source"),
         "A Signal from a TOML document whose one key is `key` (as in a scenario)");
+  m.def("results_json", &results_json, py::arg("result"), py::arg("indent") = 2,
+        "The results file of scenarios.md (JSON; non-finite numbers as null)");
+  m.def("results_csv", &results_csv, py::arg("result"), "The time series on the output grid (CSV, one row per time)");
 }

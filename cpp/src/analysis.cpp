@@ -113,6 +113,11 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
           r.converged = true;
           return r;
         }
+        if (static_cast<int>(r.trials.size()) >= o.max_evaluations) {  // out of evaluations: what is known
+          r.gamma_star = r.upper = high.gamma;
+          r.lower = 0.0;
+          return r;
+        }
         trial = run({high.gamma / 2.0}).front();
         if (!trial.passed) break;
         high = trial;
@@ -123,6 +128,12 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
       for (;;) {
         require(low.gamma < 1e12, "no gamma up to 1e12 passes (", to_string(low.condition), " fails at t = ",
                 low.t_escape, ")");
+        if (static_cast<int>(r.trials.size()) >= o.max_evaluations)
+          throw SolverError(str_cat("gamma*: max_evaluations = ", o.max_evaluations,
+                                    " reached while looking for a gamma that passes (every gamma up to ", low.gamma,
+                                    " fails: ", to_string(low.condition), " at t = ", low.t_escape,
+                                    "); give the bracket's upper end or raise max_evaluations"),
+                            low.t_escape, "MAX_EVALUATIONS");
         trial = run({low.gamma * 2.0}).front();
         if (trial.passed) break;
         low = trial;
@@ -159,14 +170,10 @@ GammaTrial pass(double gamma) { return GammaTrial{gamma, true, NAN, GammaConditi
 template <int N>
 double rho_at(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma, double t) {
   const int n = Z.n();
-  Eigen::Matrix<double, N, N> z(n, n), s(n, n), w(n, n);
+  Eigen::Matrix<double, N, N> z(n, n), s(n, n), factor(n, n), product(n, n);
   z = Z.Z(t);
   s = Sigma.Sigma(t);
-  Eigen::LLT<Eigen::Matrix<double, N, N>> llt(s);
-  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
-  const Eigen::Matrix<double, N, N> L = llt.matrixL();
-  w.noalias() = L.transpose() * z * L;
-  return detail::symmetric_eigen_max(w);
+  return detail::spectral_radius_of_product(s, z, factor, product);
 }
 
 std::vector<double> merged_samples(const SymmetricSolution& a, const SymmetricSolution& b) {
@@ -230,7 +237,9 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
     }
     double lo = 0.0, hi = 0.0;
     Sigma->eigenvalue_bounds(lo, hi);
-    if (!(lo > 0.0)) return fail(gamma, NAN, GammaCondition::Filter);
+    // Sigma >= 0 may decay to about zero (no process noise); below zero beyond round-off it lost
+    // definiteness.
+    if (!(lo >= -kSemidefiniteTolerance * std::abs(hi))) return fail(gamma, NAN, GammaCondition::Filter);
     const auto [rho, t] = max_rho_sigma_z(*Z, *Sigma);
     return rho < gamma * gamma ? pass(gamma) : fail(gamma, t, GammaCondition::Coupling);
   }, options);
@@ -304,7 +313,7 @@ Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q
       return L > 0.0 ? p_at(t) / (4.0 * c.M * L) : std::numeric_limits<double>::infinity();
     };
     std::tie(c.epsilon, c.epsilon_t) = detail::extremum_over(times, eps_at, 1.0);
-    c.attraction_radius = c.epsilon * std::sqrt(c.m / c.M);
+    c.attraction_radius = c.m > 0.0 ? c.epsilon * std::sqrt(c.m / c.M) : 0.0;
     c.decay_rate = c.p_min / (2.0 * c.M);
   } else {
     c.epsilon = 0.0;

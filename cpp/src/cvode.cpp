@@ -43,6 +43,36 @@ struct CvodeCallbacks {
     }
   }
 
+  // The matrix-embedded linear solver around a NewtonSystem: CVODE (6.4) never calls its setup
+  // and passes no matrix, so the solve refreshes the Jacobian itself, with CVODE's rules.
+  static SUNLinearSolver_Type newton_type(SUNLinearSolver) { return SUNLINEARSOLVER_MATRIX_EMBEDDED; }
+
+  static int newton_solve(SUNLinearSolver LS, SUNMatrix, N_Vector x, N_Vector b, realtype) {
+    auto* self = static_cast<Cvode*>(LS->content);
+    try {
+      realtype t = 0.0, gamma = 0.0, rl1 = 0.0;
+      N_Vector ypred = nullptr, yn = nullptr, fn = nullptr, zn1 = nullptr;
+      void* user_data = nullptr;
+      CVodeGetNonlinearSystemData(self->mem_, &t, &ypred, &yn, &fn, &gamma, &rl1, &zn1, &user_data);
+      long steps = 0, convfails = 0;
+      CVodeGetNumSteps(self->mem_, &steps);
+      CVodeGetNumNonlinSolvConvFails(self->mem_, &convfails);
+      if (!self->newton_current_ || steps >= self->newton_step_ + Cvode::kNewtonRefreshSteps ||
+          convfails > self->newton_convfails_) {
+        self->newton_->refresh(t, N_VGetArrayPointer(ypred));
+        self->newton_current_ = true;
+        self->newton_step_ = steps;
+        self->newton_convfails_ = convfails;
+        ++self->newton_refreshes_;
+      }
+      const bool ok = self->newton_->solve(gamma, N_VGetArrayPointer(b), N_VGetArrayPointer(x));
+      return ok ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+    } catch (...) {
+      self->pending_ = std::current_exception();
+      return SUNLS_PACKAGE_FAIL_UNREC;
+    }
+  }
+
   static void error_handler(int, const char* module, const char* function, char* msg,
                             void* user_data) {
     auto* self = static_cast<Cvode*>(user_data);
@@ -62,9 +92,9 @@ std::string flag_name(long flag) {
 }  // namespace
 
 Cvode::Cvode(int dim, Method method, double rtol, double atol, long max_steps, Rhs rhs,
-             Jacobian jacobian)
+             Jacobian jacobian, NewtonSystem* newton)
     : dim_(dim), max_steps_(max_steps), method_(method), method_name_(to_string(method)), rhs_(std::move(rhs)),
-      jacobian_(std::move(jacobian)) {
+      jacobian_(std::move(jacobian)), newton_(method == Method::BDF ? newton : nullptr) {
   if (method != Method::BDF && method != Method::Adams)
     throw InputError("Cvode supports the methods \"bdf\" and \"adams\"");
   SUNContext ctx = nullptr;
@@ -84,7 +114,15 @@ Cvode::Cvode(int dim, Method method, double rtol, double atol, long max_steps, R
     check(CVodeSetUserData(mem_, this), "CVodeSetUserData", 0.0);
     check(CVodeSStolerances(mem_, rtol, atol), "CVodeSStolerances", 0.0);
     check(CVodeSetMaxNumSteps(mem_, max_steps), "CVodeSetMaxNumSteps", 0.0);
-    if (method == Method::BDF) {
+    if (method == Method::BDF && newton_ != nullptr) {
+      SUNLinearSolver ls = SUNLinSolNewEmpty(ctx);
+      if (ls == nullptr) throw SolverError("CVODE: out of memory creating the linear solver", 0.0, "CV_MEM_FAIL");
+      ls->content = this;
+      ls->ops->gettype = CvodeCallbacks::newton_type;
+      ls->ops->solve = CvodeCallbacks::newton_solve;
+      linsol_ = ls;
+      check(CVodeSetLinearSolver(mem_, ls, nullptr), "CVodeSetLinearSolver", 0.0);
+    } else if (method == Method::BDF) {
       matrix_ = SUNDenseMatrix(dim, dim, ctx);
       linsol_ = SUNLinSol_Dense(static_cast<N_Vector>(y_), static_cast<SUNMatrix>(matrix_), ctx);
       check(CVodeSetLinearSolver(mem_, static_cast<SUNLinearSolver>(linsol_),
@@ -109,7 +147,10 @@ Cvode::~Cvode() { release(); }
 void Cvode::release() {
   if (mem_ != nullptr) CVodeFree(&mem_);
   if (nonlin_ != nullptr) SUNNonlinSolFree(static_cast<SUNNonlinearSolver>(nonlin_));
-  if (linsol_ != nullptr) SUNLinSolFree(static_cast<SUNLinearSolver>(linsol_));
+  if (linsol_ != nullptr) {
+    if (newton_ != nullptr) SUNLinSolFreeEmpty(static_cast<SUNLinearSolver>(linsol_));
+    else SUNLinSolFree(static_cast<SUNLinearSolver>(linsol_));
+  }
   if (matrix_ != nullptr) SUNMatDestroy(static_cast<SUNMatrix>(matrix_));
   if (dky_ != nullptr) N_VDestroy(static_cast<N_Vector>(dky_));
   if (y_ != nullptr) N_VDestroy(static_cast<N_Vector>(y_));
@@ -150,6 +191,8 @@ void Cvode::reset(double t0, const double* y0, double t_stop) {
   // The stop time is cleared once reached and after a re-init: set it every time.
   check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime", t0);
   t_stop_ = t_stop;
+  t_current_ = t_step_start_ = t0;
+  newton_current_ = false;
   last_message_.clear();
   initialized_ = true;
 }
@@ -173,6 +216,8 @@ double Cvode::step(double* y_out) {
   double t = 0.0;
   const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
   check(flag, "CVode", t);
+  t_step_start_ = t_current_;
+  t_current_ = t;
   const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
   for (int i = 0; i < dim_; ++i) y_out[i] = y[i];
   return t;
@@ -192,13 +237,12 @@ double Cvode::advance(double tout, double* y_out) {
 
 const DensePiece& Cvode::last_step_piece() {
   int order = 0;
-  double h_last = 0.0, t_now = 0.0;
   check(CVodeGetLastOrder(mem_, &order), "CVodeGetLastOrder", 0.0);
-  check(CVodeGetLastStep(mem_, &h_last), "CVodeGetLastStep", 0.0);
-  check(CVodeGetCurrentTime(mem_, &t_now), "CVodeGetCurrentTime", 0.0);
+  // The step from the previous step's end to the current time, both exactly as CVODE has them.
+  const double t_now = t_current_, h_last = t_current_ - t_step_start_;
   // Taylor form at the step's end t_n: y(t_n + s) = sum_k b_k (s / h)^k with b_k = y^(k)(t_n) h^k / k!
-  // (h = h_last, signed). With t = t_n - h + theta h, s / h = theta - 1, so the coefficients in
-  // theta are d_j = sum_{k >= j} C(k, j) (-1)^(k - j) b_k.
+  // (h signed). With t = t_n - h + theta h, s / h = theta - 1, so the coefficients in theta are
+  // d_j = sum_{k >= j} C(k, j) (-1)^(k - j) b_k.
   double scale = 1.0, factorial = 1.0;
   for (int k = 0; k <= order; ++k) {
     if (k > 0) {
@@ -219,7 +263,7 @@ const DensePiece& Cvode::last_step_piece() {
       binomial = binomial * (k - j) / (j + 1);
     }
   }
-  piece_ = DensePiece{t_now - h_last, h_last, order, dim_, piece_coeffs_.data()};
+  piece_ = DensePiece{t_step_start_, t_now, order, dim_, piece_coeffs_.data()};
   return piece_;
 }
 
@@ -232,6 +276,7 @@ long Cvode::counter(int (*get)(void*, long*)) const {
 long Cvode::num_steps() const { return steps_before_ + counter(CVodeGetNumSteps); }
 long Cvode::num_rhs_evals() const { return rhs_evals_before_ + counter(CVodeGetNumRhsEvals); }
 long Cvode::num_jac_evals() const {
+  if (newton_ != nullptr) return newton_refreshes_;
   return jac_evals_before_ + (method_ == Method::BDF ? counter(CVodeGetNumJacEvals) : 0);
 }
 long Cvode::num_error_test_failures() const {

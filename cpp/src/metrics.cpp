@@ -1,6 +1,8 @@
 #include "hinf/metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "hinf/angles.hpp"
 #include "hinf/checks.hpp"
@@ -17,17 +19,38 @@ double trapezoid(const Vec& t, const Vec& values) {
   return sum;
 }
 
-// sqrt of the plain mean of squared[k] over the grid points with t >= (t0 + tf) / 2.
-double rms_over_last_half(const Vec& t, const Vec& squared) {
+// The largest finite-or-not magnitude, and the magnitudes divided by it: squares of values
+// beyond 1e154 overflow, squares of the scaled ones do not.
+double scale_of(const Vec& magnitudes) {
+  const double largest = magnitudes.size() > 0 ? magnitudes.maxCoeff() : 0.0;
+  return largest > 0.0 && std::isfinite(largest) ? largest : 1.0;
+}
+
+// sqrt(integral of magnitude^2) by the trapezoid rule.
+double root_integral_of_squares(const Vec& t, const Vec& magnitudes) {
+  const double scale = scale_of(magnitudes);
+  return scale * std::sqrt(std::max(0.0, trapezoid(t, (magnitudes / scale).array().square().matrix())));
+}
+
+// sqrt of the plain mean of magnitude^2 over the grid points with t >= (t0 + tf) / 2.
+double rms_over_last_half(const Vec& t, const Vec& magnitudes) {
   const double t_half = 0.5 * (t[0] + t[t.size() - 1]);
+  const double scale = scale_of(magnitudes);
   double sum = 0.0;
   long used = 0;
   for (Eigen::Index k = 0; k < t.size(); ++k)
     if (t[k] >= t_half) {
-      sum += squared[k];
+      sum += (magnitudes[k] / scale) * (magnitudes[k] / scale);
       ++used;
     }
-  return used > 0 ? std::sqrt(sum / used) : NAN;
+  return used > 0 ? scale * std::sqrt(sum / used) : NAN;
+}
+
+// The Euclidean norm of each row (without overflow).
+Vec row_norms(const RowMat& series) {
+  Vec norms(series.rows());
+  for (Eigen::Index k = 0; k < series.rows(); ++k) norms[k] = series.row(k).stableNorm();
+  return norms;
 }
 
 }  // namespace
@@ -43,10 +66,10 @@ const std::array<MetricDefinition, kMetricCount>& metric_table() {
        "sqrt(mean over the last half of wrap(psi - psi_d)^2)", &Metrics::rms_heading_error_last_half},
       {"final_heading_error", "final heading error", "rad", "|wrap(psi - psi_d)| at tf",
        &Metrics::final_heading_error},
-      {"control_l2", "control effort ||u||", "input s^1/2", "sqrt(integral of |u|^2)", &Metrics::control_l2},
-      {"control_error_l2", "control effort ||u - u_d||", "input s^1/2", "sqrt(integral of |u - u_d|^2)",
+      {"control_l2", "control L2 norm", "input s^1/2", "sqrt(integral of |u|^2)", &Metrics::control_l2},
+      {"control_error_l2", "control correction L2 norm", "input s^1/2", "sqrt(integral of |u - u_d|^2)",
        &Metrics::control_error_l2},
-      {"disturbance_l2", "disturbance ||w||", "w s^1/2",
+      {"disturbance_l2", "disturbance L2 norm", "w s^1/2",
        "sqrt(integral of |w|^2) over every applied channel (the noise channels when sigma > 0)",
        &Metrics::disturbance_l2},
       {"l2_gain", "L2 gain", "-",
@@ -63,9 +86,7 @@ const std::array<MetricDefinition, kMetricCount>& metric_table() {
   return table;
 }
 
-double l2_norm(const Vec& t, const RowMat& series) {
-  return std::sqrt(trapezoid(t, series.rowwise().squaredNorm()));
-}
+double l2_norm(const Vec& t, const RowMat& series) { return root_integral_of_squares(t, row_norms(series)); }
 
 Metrics compute_metrics(const Model& model, const SimulationResult& run, const Mat& Q) {
   // The run must be one of this model: its columns are indexed by the model's states.
@@ -92,33 +113,33 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
   const std::vector<int> position = model.position_indices();
   const bool completed = run.status == RunStatus::Completed;
   if (!position.empty()) {
-    Vec error(count);
-    for (Eigen::Index k = 0; k < count; ++k) {
-      double s = 0.0;
-      for (int i : position) s += q_e(k, i) * q_e(k, i);
-      error[k] = std::sqrt(s);
-    }
+    RowMat position_error(count, static_cast<Eigen::Index>(position.size()));
+    for (std::size_t c = 0; c < position.size(); ++c) position_error.col(static_cast<Eigen::Index>(c)) = q_e.col(position[c]);
+    const Vec error = row_norms(position_error);
     metrics.max_position_error = error.maxCoeff();
     if (completed) {
-      metrics.rms_position_error_last_half = rms_over_last_half(run.t, error.array().square().matrix());
+      metrics.rms_position_error_last_half = rms_over_last_half(run.t, error);
       metrics.final_position_error = error[count - 1];
     }
   }
   // A run that stopped early has no last half, no final error and no integral over [t0, tf].
   if (!completed) return metrics;
   if (heading >= 0) {
-    metrics.rms_heading_error_last_half = rms_over_last_half(run.t, q_e.col(heading).array().square().matrix());
+    metrics.rms_heading_error_last_half = rms_over_last_half(run.t, q_e.col(heading).cwiseAbs());
     metrics.final_heading_error = std::abs(q_e(count - 1, heading));
   }
   metrics.control_l2 = l2_norm(run.t, run.u);
   metrics.control_error_l2 = l2_norm(run.t, u_e);
   metrics.disturbance_l2 = l2_norm(run.t, run.w);
+  // |(Q^1/2 q_e, u_e)| at each output time, computed on the values scaled by their largest.
   Vec performance(count);
   for (Eigen::Index k = 0; k < count; ++k) {
-    const Vec e = q_e.row(k).transpose();
-    performance[k] = e.dot(Q * e) + u_e.row(k).squaredNorm();
+    const double scale = std::max({q_e.row(k).cwiseAbs().maxCoeff(), u_e.row(k).cwiseAbs().maxCoeff(),
+                                   std::numeric_limits<double>::min()});
+    const Vec e = q_e.row(k).transpose() / scale;
+    performance[k] = scale * std::sqrt(std::max(0.0, e.dot(Q * e) + (u_e.row(k) / scale).squaredNorm()));
   }
-  const double output_l2 = std::sqrt(std::max(0.0, trapezoid(run.t, performance)));
+  const double output_l2 = root_integral_of_squares(run.t, performance);
   metrics.l2_gain = metrics.disturbance_l2 > 0.0 ? output_l2 / metrics.disturbance_l2 : NAN;
 
   if (run.estimator) {
@@ -126,8 +147,7 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
     RowMat estimation_error = run.estimator->q_hat - q_e;
     if (heading >= 0)
       for (Eigen::Index k = 0; k < count; ++k) estimation_error(k, heading) = wrap_angle(estimation_error(k, heading));
-    const Vec squared = estimation_error.rowwise().squaredNorm();
-    metrics.rms_estimation_error_last_half = rms_over_last_half(run.t, squared);
+    metrics.rms_estimation_error_last_half = rms_over_last_half(run.t, row_norms(estimation_error));
   }
   return metrics;
 }

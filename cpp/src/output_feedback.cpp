@@ -156,16 +156,8 @@ class OutputFeedbackSystem {
   }
 
  private:
-  // rho(Sigma Z) = lambda_max(L' Z L) with Sigma = L L', for the Sigma_ and Z_ of the last
-  // evaluate_signals; NaN if Sigma is not positive definite.
-  double rho_of_current() {
-    Eigen::LLT<MatN> llt(Sigma_);
-    if (llt.info() != Eigen::Success) return NAN;
-    T_ = llt.matrixL();
-    A_f_.noalias() = Z_ * T_;
-    G_.noalias() = T_.transpose() * A_f_;
-    return detail::symmetric_eigen_max(G_);
-  }
+  // rho(Sigma Z) for the Sigma_ and Z_ of the last evaluate_signals.
+  double rho_of_current() { return detail::spectral_radius_of_product(Sigma_, Z_, T_, G_); }
 
   void set_matrices(double t) {
     B_ = model_.B(t);
@@ -256,7 +248,7 @@ DensePiece hermite_piece(double t_start, double h, int dim, const double* y0, co
     c2[i] = 3.0 * (y1[i] - y0[i]) - h * (2.0 * f0[i] + f1[i]);
     c3[i] = 2.0 * (y0[i] - y1[i]) + h * (f0[i] + f1[i]);
   }
-  return DensePiece{t_start, h, 3, dim, coeffs.data()};
+  return DensePiece{t_start, t_start + h, 3, dim, coeffs.data()};
 }
 
 template <int N>
@@ -284,16 +276,21 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   SimulationResult r;
   r.heading_index = heading;
   EstimatorSeries& est = r.estimator.emplace();
-  r.q.resize(count, n);
-  est.q_hat.resize(count, n);
-  r.q_d.resize(count, n);
-  r.u.resize(count, m);
-  r.u_d.resize(count, m);
-  r.w.resize(count, nw);
-  est.y.resize(count, p);
-  est.sigma_min_eig.resize(count);
-  est.sigma_max_eig.resize(count);
-  est.rho_sigma_z.resize(count);
+  // Sizes every per-output-time series to `rows` (keeping the first rows when `keep`).
+  const auto size_series = [&](Eigen::Index rows, bool keep) {
+    const auto matrix = [&](RowMat& series, Eigen::Index cols) {
+      if (keep) series.conservativeResize(rows, cols);
+      else series.resize(rows, cols);
+    };
+    const auto vector = [&](Vec& series) {
+      if (keep) series.conservativeResize(rows);
+      else series.resize(rows);
+    };
+    matrix(r.q, n), matrix(est.q_hat, n), matrix(r.q_d, n), matrix(r.u, m), matrix(r.u_d, m), matrix(r.w, nw);
+    matrix(est.y, p);
+    vector(est.sigma_min_eig), vector(est.sigma_max_eig), vector(est.rho_sigma_z);
+  };
+  size_series(count, false);
 
   auto coupling_error = [&](double t, double rho, const std::string& detail) {
     return CouplingConditionError(
@@ -315,7 +312,9 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
     system.outputs(t, x, r.q_d.row(k).data(), r.u_d.row(k).data(), r.u.row(k).data(), r.w.row(k).data(),
                    est.y.row(k).data(), est.sigma_min_eig[k], est.sigma_max_eig[k], est.rho_sigma_z[k]);
     const double rho = est.rho_sigma_z[k];
-    if (!(est.sigma_min_eig[k] > 0.0))
+    // Sigma >= 0 may decay to about zero (no process noise); beyond round-off below zero it has
+    // lost definiteness.
+    if (!(est.sigma_min_eig[k] >= -kSemidefiniteTolerance * std::abs(est.sigma_max_eig[k])))
       throw SolverError(str_cat("the filter Riccati solution Sigma(t) lost positive definiteness at t = ",
                                 t, " (smallest eigenvalue ", est.sigma_min_eig[k],
                                 "); tighten the solver tolerances or increase gamma"),
@@ -347,24 +346,24 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   // After each accepted step of hold interval k (x holds the state at its end): records the
   // output times the step covers, then stops the run if it diverged.
   auto on_step = [&](const DensePiece& piece, long k) {
-    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
-    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
-      piece.eval(std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h), at_grid.data());
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end + slack) {
+      piece.eval(piece.theta(grid[static_cast<std::size_t>(next)]), at_grid.data());
       record(next, at_grid.data());
       system.set_noise(noise.row(k).data());
       ++next;
     }
     if (++steps_in_interval > per_interval)
       throw SolverError(str_cat("more than ", per_interval, " steps in the noise hold interval [", interval_start(k),
-                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end(), ")"),
-                        piece.t_end(), "TOO_MUCH_WORK");
-    trajectory.q_d(piece.t_end(), q_d.data(), &q_cursor);
+                                ", ", interval_end(k), "] (stopped at t = ", piece.t_end, ")"),
+                        piece.t_end, "TOO_MUCH_WORK");
+    trajectory.q_d(piece.t_end, q_d.data(), &q_cursor);
     tracking_error(n, heading, x.data(), q_d.data(), q_e.data());
     const double error = q_e.cwiseAbs().maxCoeff();
     if (error <= bound) return StepAction::Continue;
     r.status = RunStatus::Diverged;
     r.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ", bound,
-                               " at t = ", piece.t_end(),
+                               " at t = ", piece.t_end,
                                ": the closed loop left the neighbourhood of the desired trajectory where the"
                                " linearized design is meaningful (reduce the disturbance or the initial error,"
                                " or raise [solver] divergence_factor)");
@@ -378,7 +377,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   };
 
   try {
-    if (solver.method == Method::ERK || solver.method == Method::BDF) {
+    if (solver.method != Method::Adams) {
       // Dormand-Prince per hold interval; for "bdf", a switch to the L-stable SDIRK4 once
       // Dormand-Prince's stiffness test fires.
       Dopri5 explicit_stepper(dim, solver.rtol, solver.atol, solver.max_steps);
@@ -389,7 +388,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
         const double ta = interval_start(k), tb = interval_end(k);
         system.set_noise(noise.row(k).data());
         steps_in_interval = 0;
-        if (solver.method == Method::BDF && !implicit_stepper && explicit_stepper.stiff()) {
+        if (solver.method != Method::ERK && !implicit_stepper && explicit_stepper.stiff()) {
           const StepStats& used = explicit_stepper.stats();
           implicit_stepper = std::make_unique<Sdirk4>(dim, solver.rtol, solver.atol,
                                                       std::max(1L, solver.max_steps - used.steps - used.rejected));
@@ -435,6 +434,12 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
                                 " becomes singular. Increase gamma or Q0 - eta I. [", e.what(), "]"),
                         e.t(), "COUPLING_VIOLATED");
     const double rho = system.rho(e.t(), x.data());
+    if (rho >= (1.0 - 1e-3) * gamma2 && options.on_coupling_violation == CouplingPolicy::Flag)
+      throw SolverError(str_cat("output-feedback closed loop stopped at t = ", e.t(), ", where the coupling condition",
+                                " rho(Sigma Z) < gamma^2 is violated (flagged; rho(Sigma Z) = ", rho, ", gamma^2 = ",
+                                gamma2, "): there the estimator gain [I - gamma^-2 Sigma Z]^-1 is singular and the",
+                                " loop cannot go on. Increase gamma or Q0 - eta I. [", e.what(), "]"),
+                        e.t(), "COUPLING_VIOLATED");
     if (rho >= (1.0 - 1e-3) * gamma2)
       throw coupling_error(e.t(), rho, str_cat(" (between output times: the integration stopped there, ", e.what(), ")"));
     throw SolverError(str_cat("output-feedback closed loop: ", e.what()), e.t(), e.flag());
@@ -445,16 +450,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
                       tf, "INTERNAL");
   if (r.status != RunStatus::Completed) {
     // Keep the output times recorded before the run stopped.
-    r.q.conservativeResize(next, n);
-    est.q_hat.conservativeResize(next, n);
-    r.q_d.conservativeResize(next, n);
-    r.u.conservativeResize(next, m);
-    r.u_d.conservativeResize(next, m);
-    r.w.conservativeResize(next, nw);
-    est.y.conservativeResize(next, p);
-    est.sigma_min_eig.conservativeResize(next);
-    est.sigma_max_eig.conservativeResize(next);
-    est.rho_sigma_z.conservativeResize(next);
+    size_series(next, true);
   }
   r.t = Eigen::Map<const Vec>(grid.data(), next);
   return r;

@@ -10,6 +10,7 @@
 #include "hinf/resources.hpp"
 #include "hinf/stepper.hpp"
 #include "definiteness.hpp"
+#include "lyapunov_newton.hpp"
 #include "size_dispatch.hpp"
 #include "extremum.hpp"
 #include "riccati_kernel.hpp"
@@ -58,6 +59,14 @@ class RiccatiProblem {
     coefficients_at(t);
     unpack_symmetric(x, X_);
     detail::riccati_jacobian(sign_, M_, S_, X_, T_, G_, J);
+  }
+
+  // The Jacobian in matrix form: J E = sign (M_cl' E + E M_cl) with M_cl = M - S X.
+  double sign() const { return sign_; }
+  void closed_loop(double t, const double* x, Mat& M_cl) {
+    coefficients_at(t);
+    unpack_symmetric(x, X_);
+    M_cl = M_ - S_ * X_;
   }
 
  private:
@@ -123,6 +132,44 @@ class RiccatiProblem {
   VecN q_d_;
   MatN M_, R_, S_, R0_, S0_, shifted_, X_, A_, T_, G_;
 };
+
+// BDF's Newton systems of a Riccati problem as Lyapunov equations (lyapunov_newton.hpp).
+template <int N>
+class RiccatiNewton final : public NewtonSystem {
+ public:
+  explicit RiccatiNewton(RiccatiProblem<N>& problem) : problem_(problem), lyapunov_(problem.n()) {}
+  void refresh(double t, const double* y) override {
+    problem_.closed_loop(t, y, M_cl_);
+    lyapunov_.factor(M_cl_);
+  }
+  bool solve(double gamma, const double* b, double* x) override {
+    return lyapunov_.solve(gamma * problem_.sign(), b, x);
+  }
+
+ private:
+  RiccatiProblem<N>& problem_;
+  detail::LyapunovNewton lyapunov_;
+  Mat M_cl_;
+};
+
+// integrate() of the Riccati problem with its Newton systems solved the cheaper way; the method
+// used, with the Newton solver of BDF, is in the stats.
+template <int N, class OnStep>
+StepStats integrate_problem(RiccatiProblem<N>& problem, const SolverOptions& options, double t_start,
+                            double t_end, double* x, OnStep&& on_step) {
+  const int p = packed_size(problem.n());
+  const bool lyapunov = options.newton_systems == NewtonSystems::Lyapunov ||
+                        (options.newton_systems == NewtonSystems::Auto && problem.n() > kDenseNewtonMaxStates);
+  RiccatiNewton<N> newton(problem);
+  StepStats stats = integrate(
+      options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
+      [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
+      t_end, x, on_step, lyapunov ? &newton : nullptr);
+  const std::string newton_kind = lyapunov ? "bdf (Lyapunov Newton)" : "bdf (dense Newton)";
+  const std::size_t at = stats.method.find("bdf");
+  if (at != std::string::npos) stats.method.replace(at, 3, newton_kind);
+  return stats;
+}
 
 double max_abs(const double* y, int p) {
   double value = 0.0;
@@ -212,15 +259,12 @@ double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q
   detail::DefinitenessSearch<N> search(n);
   double found = NAN;
   try {
-    integrate(
-        o, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
-        [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_from,
-        t_end, w.data(), [&](const DensePiece& piece) {
-          const double theta = search.first_loss(piece);
-          if (std::isnan(theta)) return StepAction::Continue;
-          found = piece.time(theta);
-          return StepAction::Stop;
-        });
+    integrate_problem(problem, o, t_from, t_end, w.data(), [&](const DensePiece& piece) {
+      const double theta = search.first_loss(piece);
+      if (std::isnan(theta)) return StepAction::Continue;
+      found = piece.time(theta);
+      return StepAction::Stop;
+    });
   } catch (const SolverError& e) {
     if (is_too_much_work(e))
       throw SolverError(str_cat("the conjugate-point test of the ",
@@ -283,11 +327,8 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   PiecewisePolynomial dense(p);
   StepStats step_stats;
   try {
-    step_stats = integrate(
-        x_options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
-        [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
-        t_end, x.data(), [&](const DensePiece& piece) {
-          const double t = piece.t_end();
+    step_stats = integrate_problem(problem, x_options, t_start, t_end, x.data(), [&](const DensePiece& piece) {
+          const double t = piece.t_end;
           const double largest = max_abs(x.data(), p);
           if (!std::isfinite(largest)) throw SolverError("the solution became non-finite", t, "NOT_FINITE");
           t_last = t;
@@ -353,6 +394,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   stats.rhs_evals = step_stats.rhs_evals;
   stats.jac_evals = step_stats.jac_evals;
   stats.memory_bytes = dense.memory_bytes();
+  stats.method = step_stats.method;
   return {std::move(dense), stats};
 }
 
@@ -439,17 +481,14 @@ SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, Pie
     : trajectory_(std::move(trajectory)), n_(trajectory_->n()), gamma_(gamma), X_(std::move(X)),
       stats_(stats) {}
 
-Mat SymmetricSolution::value(double t) const {
-  std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
-  X_.eval(t, p.data());
-  Mat out(n_, n_);
-  unpack_symmetric(p.data(), out);
-  return out;
-}
+Mat SymmetricSolution::value(double t) const { return unpacked(t, false); }
 
-Mat SymmetricSolution::derivative(double t) const {
+Mat SymmetricSolution::derivative(double t) const { return unpacked(t, true); }
+
+Mat SymmetricSolution::unpacked(double t, bool derivative) const {
   std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
-  X_.eval_derivative(t, p.data());
+  if (derivative) X_.eval_derivative(t, p.data());
+  else X_.eval(t, p.data());
   Mat out(n_, n_);
   unpack_symmetric(p.data(), out);
   return out;

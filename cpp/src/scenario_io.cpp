@@ -341,10 +341,11 @@ void check_key_parts(const std::string& text, const std::string& source) {
   long line = 1;
   int parts = 0;  // parts of the dotted run being read: "a.b.c" has 3
   bool after_dot = false;
-  std::size_t i = 0;
+  std::size_t i = 0, run_start = 0;
   while (i < text.size()) {
     const char c = text[i];
     if (bare_key_char(c) || c == '"' || c == '\'') {
+      if (!after_dot) run_start = i;
       if (bare_key_char(c)) {
         while (i < text.size() && bare_key_char(text[i])) ++i;
       } else {
@@ -353,7 +354,8 @@ void check_key_parts(const std::string& text, const std::string& source) {
       parts = after_dot ? parts + 1 : 1;
       after_dot = false;
       if (parts > kMaxKeyParts)
-        throw InputError(str_cat(source, ":", line, ": invalid TOML: a key of more than ", kMaxKeyParts,
+        throw InputError(str_cat(source, ":", line, ": invalid TOML: the key '", text.substr(run_start, 40),
+                                 "...' has more than ", kMaxKeyParts,
                                  " dotted parts (tables nested too deeply for a scenario)"));
     } else if (c == ' ' || c == '\t') {
       ++i;
@@ -540,8 +542,9 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     s.measurement = ms;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
-    TableReader r(*table, "[solver]", source, {"method", "rtol", "atol", "max_steps", "divergence_factor"});
+    TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});
     s.solver.method = r.enum_or("method", s.solver.method);
+    s.solver.newton_systems = r.enum_or("newton_systems", s.solver.newton_systems);
     s.solver.rtol = r.number_or("rtol", s.solver.rtol);
     s.solver.atol = r.number_or("atol", s.solver.atol);
     s.solver.max_steps = static_cast<long>(r.integer_or("max_steps", s.solver.max_steps));
@@ -713,6 +716,7 @@ std::string scenario_toml(const Scenario& s) {
     root.insert("measurement", std::move(measurement));
   }
   root.insert("solver", toml::table{{"method", to_string(s.solver.method)},
+                                    {"newton_systems", to_string(s.solver.newton_systems)},
                                     {"rtol", s.solver.rtol},
                                     {"atol", s.solver.atol},
                                     {"max_steps", static_cast<std::int64_t>(s.solver.max_steps)},
@@ -745,7 +749,8 @@ std::string results_json(const RunResult& r, int indent) {
                    {"analysis", r.timing.analysis},
                    {"total", r.timing.total}};
   const SolveStats grde = r.solution ? r.solution->stats() : SolveStats{};
-  j["solver"] = {{"grde_steps", grde.steps},
+  j["solver"] = {{"grde_method", grde.method},
+                 {"grde_steps", grde.steps},
                  {"grde_rhs_evals", grde.rhs_evals},
                  {"grde_memory_bytes", grde.memory_bytes},
                  {"simulation_steps", r.simulation.stats.steps},

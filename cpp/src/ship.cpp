@@ -63,7 +63,7 @@ Mat ShipModel::D(double) const {
   return D;
 }
 
-// DESIGN.md, "Imperfect measurements": q1 = [u, v, x, y] (indices 0, 1, 3, 4) and
+// docs/mathematics.md, "Imperfect measurements": q1 = [u, v, x, y] (indices 0, 1, 3, 4) and
 // q2 = [r, psi] (indices 2, 5), all errors; psi = psi_d + psi_e, r = r_d + r_e.
 void ShipModel::error_split(double, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
                             VecRef alpha) const {
@@ -72,7 +72,7 @@ void ShipModel::error_split(double, const ConstVecRef& q_d, const ConstVecRef& q
   const double psi = psid + psie;
   const double c = std::cos(psi), s = std::sin(psi), cd = std::cos(psid), sd = std::sin(psid);
 
-  // alpha1(q2) and alpha2(q1) of the DESIGN.md decomposition.
+  // alpha1(q2) and alpha2(q1) of the decomposition (docs/mathematics.md).
   const double alpha1_u = p_.m_u * vd * re;
   const double alpha1_v = p_.m_v * ud * re;
   const double alpha1_x = ud * (c - cd) - vd * (s - sd);

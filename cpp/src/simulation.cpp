@@ -121,28 +121,28 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   result.q.resize(count, n);
   result.q.row(0) = q0.transpose();
   Vec y = q0;
-  result.integrator = options.method == Method::ERK ? "dormand-prince 5(4)" : "CVODE " + to_string(options.method);
   long next = 1;  // the next output time to record
   std::size_t cursor = 0;
   const StepStats stats = integrate(options, n, rhs, jacobian, t0, tf, y.data(), [&](const DensePiece& piece) {
-    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end()));
-    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end() + slack) {
-      const double theta = std::min(1.0, (grid[static_cast<std::size_t>(next)] - piece.t_start) / piece.h);
+    const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end));
+    while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end + slack) {
+      const double theta = piece.theta(grid[static_cast<std::size_t>(next)]);
       piece.eval(theta, result.q.row(next).data());
       ++next;
     }
-    trajectory.q_d(piece.t_end(), q_d.data(), &cursor);
+    trajectory.q_d(piece.t_end, q_d.data(), &cursor);
     tracking_error(n, heading, y.data(), q_d.data(), q_e.data());
     const double error = q_e.cwiseAbs().maxCoeff();
     if (error <= bound) return StepAction::Continue;
     result.status = RunStatus::Diverged;
     result.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ",
-                                    bound, " at t = ", piece.t_end(),
+                                    bound, " at t = ", piece.t_end,
                                     ": the closed loop left the neighbourhood of the desired trajectory where the"
                                     " linearized design is meaningful (reduce the disturbance or the initial"
                                     " error, or raise [solver] divergence_factor)");
     return StepAction::Stop;
   });
+  result.integrator = stats.method;
   result.stats.steps = stats.steps;
   result.stats.rejected = stats.rejected;
   result.stats.rhs_evals = stats.rhs_evals;

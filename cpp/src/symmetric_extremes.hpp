@@ -82,21 +82,54 @@ struct TridiagonalForm {
   double scale = 0.0, margin = 0.0;
 };
 
+// The extremes are computed on A / max |a_ij| and scaled back, so that entries beyond 1e154
+// (whose squares overflow in the recurrence) are handled.
 template <class MatN>
 void symmetric_eigen_extremes(const MatN& A, double& lambda_min, double& lambda_max) {
   if (A.rows() == 1) {
     lambda_min = lambda_max = A(0, 0);
     return;
   }
-  const TridiagonalForm<MatN> form(A);
-  lambda_max = form.largest();
-  lambda_min = form.smallest();
+  const double scale = A.cwiseAbs().maxCoeff();
+  if (!(scale > 0.0) || !std::isfinite(scale)) {  // zero, or not finite: nothing to scale
+    const TridiagonalForm<MatN> form(A);
+    lambda_max = form.largest();
+    lambda_min = form.smallest();
+    return;
+  }
+  const TridiagonalForm<MatN> form(A / scale);
+  lambda_max = scale * form.largest();
+  lambda_min = scale * form.smallest();
 }
 
 template <class MatN>
 double symmetric_eigen_max(const MatN& A) {
-  if (A.rows() == 1) return A(0, 0);
-  return TridiagonalForm<MatN>(A).largest();
+  double lo = 0.0, hi = 0.0;
+  symmetric_eigen_extremes(A, lo, hi);
+  return hi;
+}
+
+// The spectral radius of Sigma Z for symmetric positive semidefinite Sigma and Z: the largest
+// eigenvalue of L' Sigma L with Z = L L' (or of L' Z L with Sigma = L L'). A factor that is
+// semidefinite only (a solution that decayed to about zero) is replaced by its eigenvalues
+// clamped at zero. sigma_work, z_work and product are workspaces of A's size.
+template <class MatN>
+double spectral_radius_of_product(const MatN& Sigma, const MatN& Z, MatN& factor, MatN& product) {
+  Eigen::LLT<MatN> llt(Z);
+  const MatN* other = &Sigma;
+  if (llt.info() != Eigen::Success) {
+    llt.compute(Sigma);
+    other = &Z;
+  }
+  if (llt.info() == Eigen::Success) {
+    factor = llt.matrixL();
+  } else {
+    const Eigen::SelfAdjointEigenSolver<MatN> eig(Sigma);
+    factor = eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
+    other = &Z;
+  }
+  product.noalias() = factor.transpose() * (*other) * factor;
+  return std::max(0.0, symmetric_eigen_max(product));
 }
 
 }  // namespace hinf::detail

@@ -8,14 +8,9 @@ namespace hinf {
 Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf,
                        const TrajectoryOptions& options)
     : model_(std::move(model)), q_d0_(std::move(q_d0)), u_d_(std::move(u_d)), t0_(t0), tf_(tf) {
-  require(model_ != nullptr, "Trajectory needs a model");
-  check_horizon(t0, tf);
-  validate_model(*model_, t0);
+  check_arguments();
   const int n = model_->n();
   const int m = model_->m();
-  check_size(q_d0_, n, "the desired initial state q_d0");
-  require(u_d_.dim() == m, "the desired input u_d has ", u_d_.dim(), " channels, the model '",
-          model_->name(), "' has ", m, " inputs");
   require(options.rtol > 0 && options.atol > 0 && options.max_steps > 0,
           "trajectory tolerances and max_steps must be > 0");
 
@@ -46,6 +41,27 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
   }
   dense_.finalize();
   stats_ = stepper.stats();
+}
+
+Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf, PiecewisePolynomial dense,
+                       StepStats stats)
+    : model_(std::move(model)), q_d0_(std::move(q_d0)), u_d_(std::move(u_d)), t0_(t0), tf_(tf),
+      dense_(std::move(dense)), stats_(stats) {
+  check_arguments();
+  require(dense_.dim() == model_->n() && !dense_.empty(), "the dense output of a trajectory needs ", model_->n(),
+          " components and at least one piece, got ", dense_.dim(), " components and ", dense_.num_pieces(),
+          " pieces");
+  require(dense_.t_min() <= t0 && dense_.t_max() >= tf, "the dense output covers [", dense_.t_min(), ", ",
+          dense_.t_max(), "], not the horizon [", t0, ", ", tf, "]");
+}
+
+void Trajectory::check_arguments() const {
+  require(model_ != nullptr, "Trajectory needs a model");
+  check_horizon(t0_, tf_);
+  validate_model(*model_, t0_);
+  check_size(q_d0_, model_->n(), "the desired initial state q_d0");
+  require(u_d_.dim() == model_->m(), "the desired input u_d has ", u_d_.dim(), " channels, the model '",
+          model_->name(), "' has ", model_->m(), " inputs");
 }
 
 void Trajectory::q_d(double t, double* out, std::size_t* cursor) const {

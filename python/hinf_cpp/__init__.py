@@ -7,68 +7,22 @@ core ``hinf_cpp._core``; this package adds scenario files, plots and the command
 (figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON)
 and ``hinf_cpp.analysis`` (attenuation against gamma).
 
-Conventions (docs/conventions.md): state order of the ship q = [u, v, r, x, y, psi];
+Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
 errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved
 backward in time from Z(tf) = Qf; the control is u = u_d - kappa B' Z q_e.
+
+The C++ API (``cpp/include/hinf/*.hpp``) is exported as it is: the same names, argument order
+and defaults; a C++ member function is a method (``trajectory.tf()``), a field of a C++ struct
+a property (``result.metrics.l2_gain``); enums (``Law``, ``Method``, ...) also take their names
+as strings (``scenario.law = "lqr"``). Scenarios, models, options and results pickle.
 """
 
 from importlib import resources as _resources
 import pathlib as _pathlib
 
-from ._core import (
-    CascadeController,
-    CascadeGains,
-    Certificates,
-    ConjugatePointError,
-    Controller,
-    CouplingConditionError,
-    Disturbance,
-    FilterRiccatiSolution,
-    GammaStarOptions,
-    GammaStarResult,
-    GammaTrial,
-    Harmonic,
-    HinfError,
-    HinfStateFeedback,
-    LinearModel,
-    MeasurementSpec,
-    Model,
-    OutputFeedbackOptions,
-    RiccatiSolution,
-    RunResult,
-    Scenario,
-    ShipModel,
-    ShipParameters,
-    Signal,
-    SimulationResult,
-    SolverError,
-    SolverOptions,
-    SolveStats,
-    Trajectory,
-    VectorSignal,
-    __version__,
-    certify,
-    compute_metrics,
-    filter_escape_time,
-    gamma_star,
-    gamma_star_output_feedback,
-    grde_escape_time,
-    max_rho_sigma_z,
-    noise_sample_count,
-    output_grid,
-    parse_scenario_toml,
-    run_scenario,
-    scenario_certificates,
-    scenario_gamma_star,
-    scenario_gamma_star_output_feedback,
-    scenario_noise,
-    simulate_output_feedback,
-    simulate_state_feedback,
-    solve_filter_riccati,
-    solve_grde,
-    standard_normal_samples,
-    wrap_angle,
-)
+from . import _core
+from ._core import *  # noqa: F403 - the C++ API, typed in _core.pyi
+from ._core import __version__
 from .scenario import load_scenario, scenario_from_dict, signal_from_spec
 
 
@@ -81,61 +35,5 @@ def scenario_path(name: str) -> _pathlib.Path:
     return path
 
 
-__all__ = [
-    "CascadeController",
-    "CascadeGains",
-    "Certificates",
-    "ConjugatePointError",
-    "Controller",
-    "CouplingConditionError",
-    "Disturbance",
-    "FilterRiccatiSolution",
-    "GammaStarOptions",
-    "GammaStarResult",
-    "GammaTrial",
-    "Harmonic",
-    "HinfError",
-    "HinfStateFeedback",
-    "LinearModel",
-    "MeasurementSpec",
-    "Model",
-    "OutputFeedbackOptions",
-    "RiccatiSolution",
-    "RunResult",
-    "Scenario",
-    "ShipModel",
-    "ShipParameters",
-    "Signal",
-    "SimulationResult",
-    "SolveStats",
-    "SolverError",
-    "SolverOptions",
-    "Trajectory",
-    "VectorSignal",
-    "__version__",
-    "certify",
-    "compute_metrics",
-    "filter_escape_time",
-    "gamma_star",
-    "gamma_star_output_feedback",
-    "grde_escape_time",
-    "max_rho_sigma_z",
-    "load_scenario",
-    "noise_sample_count",
-    "output_grid",
-    "parse_scenario_toml",
-    "run_scenario",
-    "scenario_certificates",
-    "scenario_from_dict",
-    "scenario_gamma_star",
-    "scenario_gamma_star_output_feedback",
-    "scenario_noise",
-    "scenario_path",
-    "signal_from_spec",
-    "simulate_output_feedback",
-    "simulate_state_feedback",
-    "solve_filter_riccati",
-    "solve_grde",
-    "standard_normal_samples",
-    "wrap_angle",
-]
+__all__ = sorted([name for name in vars(_core) if not name.startswith("_")]
+                 + ["__version__", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec"])

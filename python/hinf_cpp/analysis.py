@@ -21,7 +21,7 @@ def cost_L_gamma(result: _core.RunResult, Q: np.ndarray, Qf: np.ndarray) -> floa
     """L_gamma of paper eq. (12) on the run's output grid (trapezoid rule):
     int (|q_e|_Q^2 + |u_e|^2 - gamma^2 |w|^2) dt + |q_e(tf)|_Qf^2, w every applied channel."""
     sim = result.simulation
-    q_e = sim.q_e
+    q_e = sim.q_e()
     u_e = sim.u - sim.u_d
     integrand = (np.einsum("ki,ij,kj->k", q_e, Q, q_e) + np.sum(u_e**2, axis=1)
                  - result.gamma**2 * np.sum(sim.w**2, axis=1))
@@ -102,7 +102,7 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
         gamma_star=star,
         gamma_star_output_feedback=star_of,
         gammas=gammas,
-        l2_gain=np.array([r.metrics["l2_gain"] for r in results]),
+        l2_gain=np.array([r.metrics.l2_gain for r in results]),
         cost=np.array([cost_L_gamma(r, resolved.Q, resolved.Qf) for r in results]),
         zero_initial_error=zero_initial_error,
     )
@@ -136,15 +136,9 @@ def sweep_figure(sweep: GammaSweep):
 
 
 def certificates_dict(c: _core.Certificates) -> dict:
-    """The certificates as a JSON-ready dictionary (non-finite numbers as None)."""
-    def number(x):
-        return float(x) if x is not None and math.isfinite(x) else None
+    """The certificates as a JSON-ready dictionary, every field of :class:`Certificates` in
+    order (non-finite numbers as None)."""
+    def value(x):
+        return None if isinstance(x, float) and not math.isfinite(x) else x
 
-    return {
-        "m": number(c.m), "M": number(c.M), "kappa_min": number(c.kappa_min),
-        "p_min": number(c.p_min), "p_min_t": number(c.p_min_t),
-        "remainder_L": number(c.remainder_L), "remainder_method": c.remainder_method,
-        "remainder_is_bound": c.remainder_is_bound,
-        "epsilon": number(c.epsilon), "epsilon_t": number(c.epsilon_t),
-        "attraction_radius": number(c.attraction_radius), "decay_rate": number(c.decay_rate),
-    }
+    return {name: value(getattr(c, name)) for name in c.__match_args__}

@@ -30,6 +30,7 @@ import warnings
 
 from . import _core
 from .outputs import check_output_folder, check_output_path, write_text
+from .compare import Feedback, run_key
 from .progress import Progress
 from .scenario import load_scenario
 from .tables import markdown_table, text_table
@@ -37,17 +38,7 @@ from .tables import markdown_table, text_table
 # Words shared with hinf-sim (cpp/app/hinf_sim.cpp).
 OUT_OF_MEMORY = "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables"
 
-METRIC_NAMES = [
-    "rms_position_error_last_half",
-    "max_position_error",
-    "final_position_error",
-    "control_l2",
-    "control_error_l2",
-    "disturbance_l2",
-    "l2_gain",
-    "max_rho_sigma_z",
-    "rms_estimation_error_last_half",
-]
+METRIC_NAMES = [definition.name for definition in _core.metric_table()]
 
 
 def _format(value) -> str:
@@ -59,20 +50,22 @@ def _format(value) -> str:
 def summary(result: _core.RunResult) -> str:
     """A plain-text summary of a run: design facts, metrics, timings."""
     metrics = result.metrics
-    lines = [f"scenario {result.scenario_name}: controller {result.controller}, "
+    lines = [f"scenario {result.scenario_name}: controller {run_key(result.law, result.output_feedback)}, "
              f"gamma = {result.gamma:g}",
              f"  Z(t) eigenvalues in [{result.Z_min_eig:.4g}, {result.Z_max_eig:.4g}]"]
-    if math.isfinite(result.simulation.coupling_violation_t):
+    estimator = result.simulation.estimator
+    if estimator is not None and math.isfinite(estimator.coupling_violation_t):
         lines.append(f"  coupling condition rho(Sigma Z) < gamma^2 violated from "
-                     f"t = {result.simulation.coupling_violation_t:g}")
-    if result.simulation.status != "completed":
-        lines.append(f"  status: {result.simulation.status} ({result.simulation.status_message})")
+                     f"t = {estimator.coupling_violation_t:g}")
+    if result.simulation.status != _core.RunStatus.completed:
+        lines.append(f"  status: {result.simulation.status.name} ({result.simulation.status_message})")
     if result.gamma_star is not None:
         lines.append(f"  gamma* = {result.gamma_star:.6g}")
     width = max(len(name) for name in METRIC_NAMES)
     for name in METRIC_NAMES:
-        if math.isfinite(metrics[name]):
-            lines.append(f"  {name:<{width}}  {_format(metrics[name])}")
+        value = getattr(metrics, name)
+        if math.isfinite(value):
+            lines.append(f"  {name:<{width}}  {_format(value)}")
     t = result.timing
     lines.append(f"  time: design {t.design * 1e3:.2f} ms, simulate {t.simulate * 1e3:.2f} ms, "
                  f"total {t.total * 1e3:.2f} ms")
@@ -111,9 +104,9 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.gamma_star:
         result.gamma_star = _core.scenario_gamma_star(scenario).gamma_star
     if args.json is not None:
-        write_text(args.json, result.to_json() + "\n")
+        write_text(args.json, _core.results_json(result) + "\n")
     if args.csv is not None:
-        write_text(args.csv, result.to_csv())
+        write_text(args.csv, _core.results_csv(result))
     if args.npz is not None:
         save_npz(result, args.npz)
     if args.plot is not None:
@@ -121,8 +114,8 @@ def cmd_run(args: argparse.Namespace) -> int:
 
         save_figure(xy_figure(result), args.plot)
     print(summary(result))
-    if result.simulation.status != "completed":
-        print(f"hinf-cpp: warning: the run {result.simulation.status}: {result.simulation.status_message}",
+    if result.simulation.status != _core.RunStatus.completed:
+        print(f"hinf-cpp: warning: the run {result.simulation.status.name}: {result.simulation.status_message}",
               file=sys.stderr)
     return 0
 
@@ -133,11 +126,11 @@ def gamma_star_dict(result: _core.GammaStarResult) -> dict:
         "lower": _number(result.lower),
         "upper": _number(result.upper),
         "t_escape_lower": _number(result.t_escape_lower),
-        "binding": result.binding,
+        "binding": result.binding.name,
         "converged": result.converged,
         "evaluations": len(result.trials),
         "trials": [{"gamma": t.gamma, "passed": t.passed, "t_escape": _number(t.t_escape),
-                    "condition": t.condition} for t in result.trials],
+                    "condition": t.condition.name} for t in result.trials],
     }
 
 
@@ -156,9 +149,9 @@ def cmd_gamma_star(args: argparse.Namespace) -> int:
     print(f"  bracket [{result.lower:.8g}, {result.upper:.8g}]"
           + ("" if result.converged else "  (not converged: max_evaluations reached)"))
     if math.isfinite(result.t_escape_lower):
-        print(f"  at gamma = {result.lower:.8g}: {result.binding} fails at t = {result.t_escape_lower:.6g}")
-    elif result.binding:
-        print(f"  at gamma = {result.lower:.8g}: {result.binding} fails")
+        print(f"  at gamma = {result.lower:.8g}: {result.binding.name} fails at t = {result.t_escape_lower:.6g}")
+    elif result.binding != _core.GammaCondition.none:
+        print(f"  at gamma = {result.lower:.8g}: {result.binding.name} fails")
     print(f"  {len(result.trials)} evaluations")
     if args.json is not None:
         write_text(args.json, json.dumps({"scenario": scenario.name, **gamma_star_dict(result)}, indent=2) + "\n")
@@ -215,7 +208,7 @@ def metrics_markdown(rows: list[tuple[str, _core.RunResult]]) -> str:
     lines = [header, "|---" * (len(rows) + 1) + "|"]
     lines.append("| gamma | " + " | ".join(_format(r.gamma) for _, r in rows) + " |")
     for name in METRIC_NAMES:
-        values = [r.metrics[name] for _, r in rows]
+        values = [getattr(r.metrics, name) for _, r in rows]
         if all(not math.isfinite(v) for v in values):
             continue
         lines.append(f"| {name} | " + " | ".join(_format(v) for v in values) + " |")
@@ -289,9 +282,9 @@ def cmd_recovery(args: argparse.Namespace) -> int:
     print(text_table(*study.table()), end="")
     for v in study.verdicts:
         if v.error:
-            print(f"  {v.controller} on {v.scenario} failed: {v.error}")
+            print(f"  {v.controller.name} on {v.scenario} failed: {v.error}")
         elif v.turns_around:
-            print(f"  {v.controller} on {v.scenario} turns around: {v.turn.reason}")
+            print(f"  {v.controller.name} on {v.scenario} turns around: {v.turn.reason}")
     if args.json is not None:
         write_text(args.json, json.dumps(study.to_dict(), indent=2) + "\n")
         print(f"wrote {args.json}")
@@ -340,8 +333,8 @@ def cmd_paper(args: argparse.Namespace) -> int:
         scenarios[name] = load_scenario(scenario_path(name))
         result = _core.run_scenario(scenarios[name])
         stem = name.replace("paper_", "")
-        write_text(out / f"{stem}.json", result.to_json() + "\n")
-        write_text(out / f"{stem}.csv", result.to_csv())
+        write_text(out / f"{stem}.json", _core.results_json(result) + "\n")
+        write_text(out / f"{stem}.csv", _core.results_csv(result))
         save_figure(xy_figure(result, title=f"Paper {figure}: {result.scenario_name}"), out / f"{stem}_xy.png")
         print(summary(result))
         rows.append((figure, result))
@@ -359,10 +352,11 @@ def cmd_paper(args: argparse.Namespace) -> int:
                 "the desired start)' is the same run started on the desired trajectory, the disturbance's "
                 "gain alone.", ""]
     with Progress(quiet=args.quiet) as progress:
-        for figure, name, feedback in [("Figure 1", "paper_fig1", "state"), ("Figure 2", "paper_fig2", "output")]:
-            comparison = compare(scenarios[name], feedback=feedback, progress=progress)
+        for figure, name, feedback in [("Figure 1", "paper_fig1", Feedback.state),
+                                       ("Figure 2", "paper_fig2", Feedback.output)]:
+            comparison = compare(scenarios[name], feedback=[feedback], progress=progress)
             stem = name.replace("paper_", "")
-            mode = "state feedback" if feedback == "state" else "output feedback"
+            mode = f"{feedback.name} feedback"
             write_text(out / f"comparison_{stem}.json", comparison.to_json() + "\n")
             save_figure(paths_figure(comparison.results(),
                                      title=f"Paper {figure} scenario: the three laws, {mode}"),
@@ -388,12 +382,32 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _add_law_options(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--controllers", default="hinf,lqr,cascade",
-                        help="comma-separated laws among hinf, lqr, cascade (default: all three)")
+    parser.add_argument("--controllers", default=",".join(_core.Law.__members__),
+                        help=f"comma-separated laws among {', '.join(_core.Law.__members__)} (default: all)")
+
+
+def _add_comparison_options(parser: argparse.ArgumentParser) -> None:
+    """The laws, feedback modes and worst case of compare and report."""
+    _add_law_options(parser)
+    modes = [mode.name for mode in Feedback]
+    parser.add_argument("--feedback", help=f"{', '.join(modes)} or {','.join(modes)} (default: all with [measurement])")
+    parser.add_argument("--worst-case", action="store_true",
+                        help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
 
 
 def _add_quiet(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+
+
+def _add_outputs(parser: argparse.ArgumentParser, json: str | None = None, plot: str | None = None,
+                 quiet: bool = False) -> None:
+    """--json (writes `json`), --plot (writes `plot`) and --quiet, those asked for."""
+    if json is not None:
+        parser.add_argument("--json", help=f"write {json} (JSON)")
+    if plot is not None:
+        parser.add_argument("--plot", help=f"write {plot} (PNG, PDF or SVG)")
+    if quiet:
+        _add_quiet(parser)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -412,13 +426,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     comp = sub.add_parser("compare", help="the H-infinity law against the baselines (lqr, cascade)")
     comp.add_argument("scenario", help="scenario file (TOML)")
-    _add_law_options(comp)
-    comp.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
-    comp.add_argument("--worst-case", action="store_true",
-                      help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
-    comp.add_argument("--json", help="write the metrics of every run (JSON)")
-    comp.add_argument("--plot", help="write the overlaid x-y paths (PNG, PDF or SVG)")
-    _add_quiet(comp)
+    _add_comparison_options(comp)
+    _add_outputs(comp, json="the metrics of every run", plot="the overlaid x-y paths", quiet=True)
     comp.set_defaults(handler=cmd_compare)
 
     rec = sub.add_parser("recovery", help="recovery from poor initial conditions, turning around")
@@ -428,18 +437,13 @@ def build_parser() -> argparse.ArgumentParser:
                      help="recovered: final position error below this (m, default 0.5)")
     rec.add_argument("--heading-tol", type=float, default=10.0,
                      help="recovered: final wrapped heading error below this (degrees, default 10)")
-    rec.add_argument("--json", help="write the verdicts (JSON)")
-    rec.add_argument("--plot", help="write the x-y paths, one panel per scenario (PNG, PDF or SVG)")
-    _add_quiet(rec)
+    _add_outputs(rec, json="the verdicts", plot="the x-y paths, one panel per scenario", quiet=True)
     rec.set_defaults(handler=cmd_recovery)
 
     rep = sub.add_parser("report", help="comparison, figures, tables and results files in a folder")
     rep.add_argument("scenario", help="scenario file (TOML)")
     rep.add_argument("--out", required=True, help="output folder")
-    _add_law_options(rep)
-    rep.add_argument("--feedback", help="state, output or state,output (default: both with [measurement])")
-    rep.add_argument("--worst-case", action="store_true",
-                     help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+    _add_comparison_options(rep)
     rep.add_argument("--pdf", action="store_true", help="also write every figure as a vector PDF")
     _add_quiet(rep)
     rep.set_defaults(handler=cmd_report)
@@ -453,12 +457,12 @@ def build_parser() -> argparse.ArgumentParser:
     star.add_argument("--rtol", type=float, default=1e-7, help="relative width of the final bracket")
     star.add_argument("--max-evaluations", type=int, default=200)
     star.add_argument("--threads", type=int, default=2, help="evaluations in parallel per round")
-    star.add_argument("--json", help="write the result with every gamma tried (JSON)")
+    _add_outputs(star, json="the result with every gamma tried")
     star.set_defaults(handler=cmd_gamma_star)
 
     certify = sub.add_parser("certify", help="the certificates of paper §3 (eqs. 22-24)")
     certify.add_argument("scenario", help="scenario file (TOML)")
-    certify.add_argument("--json", help="write the certificates (JSON)")
+    _add_outputs(certify, json="the certificates")
     certify.set_defaults(handler=cmd_certify)
 
     sweep = sub.add_parser("sweep-gamma", help="measured L2 gain and L_gamma against gamma")
@@ -468,9 +472,7 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--keep-initial-error", action="store_true",
                        help="start from the scenario's initial state (default: from the desired state)")
     sweep.add_argument("--threads", type=int, default=2)
-    sweep.add_argument("--plot", help="write the figure (PNG, PDF or SVG)")
-    sweep.add_argument("--json", help="write the sweep (JSON)")
-    _add_quiet(sweep)
+    _add_outputs(sweep, json="the sweep", plot="the figure", quiet=True)
     sweep.set_defaults(handler=cmd_sweep_gamma)
 
     paper = sub.add_parser("paper", help="the paper's runs: figures, results files, metrics and the "

@@ -7,20 +7,21 @@ on the H-infinity estimate) and, for a scenario with ``[measurement]``, both wit
 state feedback (the measurement removed) and with output feedback. It returns the runs and
 one metrics dictionary per run, and says which disturbance every number is for.
 
-Metrics (on the output grid; "last half" = the grid points with t >= (t0 + tf)/2):
+Laws are :class:`hinf_cpp.Law` values and feedback modes :class:`Feedback` values; their
+names (``"hinf,lqr"``, ``"state,output"``) are accepted where they come in and written where
+they go out (tables, JSON).
 
-- the library's metrics of the results file (``RunResult.metrics``, ``docs/mathematics.md``);
-- ``rms_heading_error_last_half``: sqrt of the mean over the last half of wrap(psi - psi_d)^2,
-  wrap to (-pi, pi] (rad);
-- ``final_heading_error``: |wrap(psi - psi_d)| at tf (rad);
-- ``l2_gain_from_desired``: the ``l2_gain`` of the same law and disturbance started on the
-  desired trajectory (q(t0) = q_d(t0)), so that it is the disturbance's gain alone, not the
-  response to the initial error (equal to ``l2_gain`` when the scenario starts there).
+Metrics (:data:`METRICS`): the library's metrics of the results file (``metric_table()``,
+``RunResult.metrics``, ``docs/mathematics.md``) and one of the comparison's own,
+``l2_gain_from_desired``: the ``l2_gain`` of the same law and disturbance started on the
+desired trajectory (q(t0) = q_d(t0)), so that it is the disturbance's gain alone, not the
+response to the initial error (equal to ``l2_gain`` when the scenario starts there).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import enum
 import json
 import math
 from typing import Any, Iterable, Sequence
@@ -31,101 +32,112 @@ from . import _core
 from .progress import ProgressCallback
 
 __all__ = [
-    "CONTROLLERS",
-    "FEEDBACK_MODES",
     "METRICS",
     "Comparison",
     "ComparisonRun",
+    "Feedback",
     "MetricInfo",
     "compare",
     "describe_disturbance",
     "heading_error",
-    "heading_metrics",
     "parse_controllers",
     "parse_feedback",
+    "run_key",
     "run_law",
     "wrap_angles",
 ]
 
-CONTROLLERS = ("hinf", "lqr", "cascade")
-FEEDBACK_MODES = ("state", "output")
+
+class Feedback(enum.Enum):
+    """What a run's law acts on: the true state, or the estimate from the measurements."""
+
+    state = "state"    # perfect state feedback ([measurement] removed)
+    output = "output"  # output feedback (paper §4): filter, estimator, law on the estimate
 
 
 @dataclasses.dataclass(frozen=True)
 class MetricInfo:
-    """One row of the comparison table."""
+    """A metric of the comparison table that the library does not compute (the attributes of
+    :class:`hinf_cpp.MetricDefinition`)."""
 
-    key: str
+    name: str
     label: str
     unit: str
     definition: str
 
 
-METRICS = [
-    MetricInfo("rms_position_error_last_half", "RMS position error, last half", "m",
-               "sqrt(mean over t >= (t0+tf)/2 of x_e^2 + y_e^2)"),
-    MetricInfo("max_position_error", "max position error", "m", "max over [t0, tf] of sqrt(x_e^2 + y_e^2)"),
-    MetricInfo("final_position_error", "final position error", "m", "sqrt(x_e^2 + y_e^2) at tf"),
-    MetricInfo("rms_heading_error_last_half", "RMS heading error (wrapped), last half", "rad",
-               "sqrt(mean over t >= (t0+tf)/2 of wrap(psi - psi_d)^2), wrap to (-pi, pi]"),
-    MetricInfo("final_heading_error", "final heading error (wrapped)", "rad", "|wrap(psi - psi_d)| at tf"),
-    MetricInfo("control_l2", "control effort ||u||", "-", "sqrt(integral of |u|^2)"),
-    MetricInfo("control_error_l2", "control effort ||u - u_d||", "-", "sqrt(integral of |u - u_d|^2)"),
-    MetricInfo("disturbance_l2", "disturbance ||w||", "-",
-               "sqrt(integral of |w|^2) over every applied channel (measurement noise included)"),
-    MetricInfo("l2_gain", "L2 gain (from the scenario's start)", "-",
-               "sqrt(integral of |q_e|_Q^2 + |u_e|^2) / ||w||; includes the response to the initial error"),
-    MetricInfo("l2_gain_from_desired", "L2 gain (from the desired start)", "-",
-               "l2_gain of the same law and disturbance started at q(t0) = q_d(t0): the disturbance's alone"),
-    MetricInfo("max_rho_sigma_z", "max rho(Sigma Z)", "-", "max over t of the spectral radius of Sigma Z"),
-    MetricInfo("rms_estimation_error_last_half", "RMS estimation error, last half", "-",
-               "sqrt(mean over t >= (t0+tf)/2 of |q_hat - q_e|^2)"),
-]
+_L2_GAIN_FROM_DESIRED = MetricInfo(
+    "l2_gain_from_desired", "L2 gain (from the desired start)", "-",
+    "l2_gain of the same law and disturbance started at q(t0) = q_d(t0): the disturbance's alone")
 
 
-def parse_controllers(spec: str | Iterable[str] | None) -> list[str]:
-    """The laws to compare, from ``"hinf,lqr"`` or a list; None means all three.
+def _comparison_metrics() -> list:
+    """The rows of the comparison table: the library's metrics, l2_gain_from_desired after l2_gain."""
+    rows = []
+    for definition in _core.metric_table():
+        rows.append(definition)
+        if definition.name == "l2_gain":
+            rows.append(_L2_GAIN_FROM_DESIRED)
+    return rows
+
+
+METRICS = _comparison_metrics()
+
+
+def _names(spec: str | Iterable[Any]) -> tuple[list[str], str]:
+    """The names of a comma-separated list or a sequence (enums by their name), and the spec as text."""
+    raw = spec.split(",") if isinstance(spec, str) else list(spec)
+    names = [item.name if hasattr(type(item), "__members__") else str(item).strip() for item in raw]
+    return names, ",".join(names)
+
+
+def parse_controllers(spec: str | Iterable[str | _core.Law] | None) -> list[_core.Law]:
+    """The laws to compare, from ``"hinf,lqr"`` or a list of names or laws; None means all three.
 
     Raises
     ------
     ValueError
         For an empty list, an empty or unknown name, or a name given twice.
     """
+    laws = _core.Law.__members__
     if spec is None:
-        return list(CONTROLLERS)
-    raw = spec.split(",") if isinstance(spec, str) else list(spec)
-    names = [str(name).strip() for name in raw]
-    choices = ", ".join(CONTROLLERS)
+        return list(laws.values())
+    names, text = _names(spec)
+    choices = ", ".join(laws)
     if not names or names == [""]:
         raise ValueError(f"no controller given: choose one or more of {choices} (comma-separated)")
     for name in names:
         if not name:
-            raise ValueError(f"empty controller name in '{','.join(map(str, raw))}': choose from {choices}")
-        if name not in CONTROLLERS:
+            raise ValueError(f"empty controller name in '{text}': choose from {choices}")
+        if name not in laws:
             raise ValueError(f"unknown controller '{name}': choose from {choices}")
     seen = set()
     for name in names:
         if name in seen:
             raise ValueError(f"controller '{name}' is given twice")
         seen.add(name)
-    return names
+    return [laws[name] for name in names]
 
 
-def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str] | None) -> list[str]:
-    """The feedback modes to run: ``"state"`` and/or ``"output"``.
+def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str | Feedback] | None) -> list[Feedback]:
+    """The feedback modes to run, from ``"state,output"`` or a list of names or modes.
 
     None: both for a scenario with ``[measurement]``, state feedback otherwise.
     """
     has_measurement = scenario.measurement is not None
     if spec is None:
-        return list(FEEDBACK_MODES) if has_measurement else ["state"]
-    raw = spec.split(",") if isinstance(spec, str) else list(spec)
-    modes = [str(m).strip() for m in raw]
-    if not modes or any(m not in FEEDBACK_MODES for m in modes) or len(set(modes)) != len(modes):
-        raise ValueError(f"feedback modes must be one or both of 'state', 'output' (each once), got {raw!r}")
-    if "output" in modes and not has_measurement:
+        return list(Feedback) if has_measurement else [Feedback.state]
+    names, text = _names(spec)
+    if not names or any(m not in Feedback.__members__ for m in names) or len(set(names)) != len(names):
+        raise ValueError(f"feedback modes must be one or both of 'state', 'output' (each once), got '{text}'")
+    if Feedback.output.name in names and not has_measurement:
         raise ValueError(f"output feedback needs a scenario with [measurement]; '{scenario.name}' has none")
-    return [m for m in FEEDBACK_MODES if m in modes]
+    return [mode for mode in Feedback if mode.name in names]
+
+
+def run_key(law: _core.Law, output_feedback: bool) -> str:
+    """The label of a run: the law's name, with ``/output-feedback`` for output feedback."""
+    return f"{law.name}/output-feedback" if output_feedback else law.name
 
 
 def wrap_angles(angle: np.ndarray | float) -> np.ndarray:
@@ -138,36 +150,19 @@ def heading_error(result: _core.RunResult) -> np.ndarray | None:
     """psi - psi_d on the output grid as a continuous function of time: it starts at the
     wrapped initial error (in (-pi, pi]) and follows the rotation from there (a full turn adds
     2 pi); None when the model has no heading."""
-    index = result.trajectory.model.heading_index()
+    index = result.trajectory.model().heading_index()
     if index < 0:
         return None
-    return np.unwrap(np.asarray(result.simulation.q_e)[:, index])
-
-
-def _last_half(t: np.ndarray) -> np.ndarray:
-    return t >= 0.5 * (t[0] + t[-1])
-
-
-def heading_metrics(result: _core.RunResult) -> dict[str, float]:
-    """``rms_heading_error_last_half`` and ``final_heading_error`` (rad; NaN without a heading)."""
-    e = heading_error(result)
-    if e is None or e.size == 0:
-        return {"rms_heading_error_last_half": math.nan, "final_heading_error": math.nan}
-    t = np.asarray(result.simulation.t)
-    wrapped = wrap_angles(e)
-    return {
-        "rms_heading_error_last_half": float(np.sqrt(np.mean(wrapped[_last_half(t)] ** 2))),
-        "final_heading_error": float(abs(wrapped[-1])),
-    }
+    return np.unwrap(result.simulation.q_e()[:, index])
 
 
 def _describe_signal(signal: _core.Signal) -> str | None:
     """``0.1 cos(1.25664 t)`` and the like; None for the zero signal."""
-    if signal.is_table:
-        t = signal.table_t
+    if signal.is_table():
+        t = signal.table_t()
         return f"a table of {len(t)} points on [{t[0]:g}, {t[-1]:g}] s"
-    terms = [f"{signal.offset:g}"] if signal.offset != 0.0 else []
-    for h in signal.harmonics:
+    terms = [f"{signal.offset():g}"] if signal.offset() != 0.0 else []
+    for h in signal.harmonics():
         if h.amplitude == 0.0:
             continue
         phase = "" if h.phase == 0.0 else f" {'+' if h.phase > 0 else '-'} {abs(h.phase):.6g}"
@@ -205,10 +200,10 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
     noise_channels = set(model.noise_channels()) if output_feedback else set()
     signals: dict[str, str] = {}
     disturbance = scenario.disturbance
-    if disturbance.dim and disturbance.is_function:
+    if disturbance.dim() and disturbance.is_function():
         signals["w"] = "a function of t (Python callable)"
-    elif disturbance.dim:
-        for i, channel in enumerate(disturbance.channels):
+    elif disturbance.dim():
+        for i, channel in enumerate(disturbance.channels()):
             text = _describe_signal(channel)
             if text is not None and i not in noise_channels:
                 signals[f"w{i + 1}"] = text
@@ -237,16 +232,19 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
     }
 
 
-def run_law(scenario: _core.Scenario, law: str, feedback: str = "state", *,
+def run_law(scenario: _core.Scenario, law: _core.Law | str, feedback: Feedback | str = Feedback.state, *,
             from_desired: bool = False) -> _core.RunResult:
     """One run of ``scenario`` with the law ``law`` and the feedback mode ``feedback``
-    (``"state"`` removes ``[measurement]``), optionally started on the desired trajectory."""
-    parse_controllers([law])
-    if feedback not in FEEDBACK_MODES:
-        raise ValueError(f"feedback must be 'state' or 'output', got '{feedback}'")
+    (state feedback removes ``[measurement]``), optionally started on the desired trajectory.
+    Laws and modes may be given by name."""
+    (law,) = parse_controllers([law])
+    if not isinstance(feedback, Feedback):
+        if feedback not in Feedback.__members__:
+            raise ValueError(f"feedback must be 'state' or 'output', got '{feedback}'")
+        feedback = Feedback[feedback]
     variant = scenario.copy()
     variant.law = law
-    if feedback == "state":
+    if feedback is Feedback.state:
         variant.measurement = None
     elif variant.measurement is None:
         raise ValueError(f"output feedback needs a scenario with [measurement]; '{scenario.name}' has none")
@@ -259,9 +257,9 @@ def run_law(scenario: _core.Scenario, law: str, feedback: str = "state", *,
 class ComparisonRun:
     """One law in one feedback mode."""
 
-    key: str                     # "hinf", "lqr", "cascade", "hinf/output-feedback", ...
-    law: str                     # "hinf" | "lqr" | "cascade"
-    feedback: str                # "state" | "output"
+    key: str                     # run_key(): "hinf", "lqr", "cascade", "hinf/output-feedback", ...
+    law: _core.Law
+    feedback: Feedback
     design_gamma: float          # gamma of the law's Riccati design (inf for lqr)
     disturbance: dict            # describe_disturbance() of this run
     metrics: dict[str, float]    # every key of METRICS (NaN where it does not apply)
@@ -275,8 +273,8 @@ class ComparisonRun:
     def to_dict(self) -> dict:
         """The run's entry of the comparison JSON: description and metrics (NaN as None)."""
         entry = {
-            "law": self.law,
-            "feedback": self.feedback,
+            "law": self.law.name,
+            "feedback": self.feedback.name,
             "design_gamma": None if math.isinf(self.design_gamma) else self.design_gamma,
             "disturbance": self.disturbance["description"],
         }
@@ -305,7 +303,7 @@ class Comparison:
     def keys(self) -> list[str]:
         return [run.key for run in self.runs]
 
-    def results(self, feedback: str | None = None) -> list[tuple[str, _core.RunResult]]:
+    def results(self, feedback: Feedback | None = None) -> list[tuple[str, _core.RunResult]]:
         """(key, RunResult) of the runs that succeeded, optionally of one feedback mode."""
         return [(r.key, r.result) for r in self.runs
                 if r.ok and (feedback is None or r.feedback == feedback)]
@@ -316,10 +314,10 @@ class Comparison:
         header = ["metric", "unit", *self.keys]
         rows = []
         for info in METRICS:
-            values = [run.metrics.get(info.key, math.nan) for run in self.runs]
+            values = [run.metrics.get(info.name, math.nan) for run in self.runs]
             if all(not math.isfinite(v) for v in values):
                 continue
-            rows.append([info.key if keys else info.label, info.unit, *values])
+            rows.append([info.name if keys else info.label, info.unit, *values])
         failed = [run for run in self.runs if not run.ok]
         if failed:
             rows.append(["failed", "", *["" if run.ok else "yes" for run in self.runs]])
@@ -333,7 +331,7 @@ class Comparison:
             "gamma": _json_number(self.gamma),
             "disturbance": self.disturbance,
             "controllers": {run.key: run.to_dict() for run in self.runs},
-            "metric_definitions": {m.key: f"{m.definition} [{m.unit}]" for m in METRICS},
+            "metric_definitions": {m.name: f"{m.definition} [{m.unit}]" for m in METRICS},
         }
 
     def to_json(self, indent: int = 2) -> str:
@@ -342,10 +340,6 @@ class Comparison:
 
 def _json_number(x: float | None) -> float | None:
     return float(x) if x is not None and math.isfinite(x) else None
-
-
-def _run_key(law: str, feedback: str) -> str:
-    return law if feedback == "state" else f"{law}/output-feedback"
 
 
 def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = None, *,
@@ -357,9 +351,9 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
     ----------
     scenario : Scenario
         The scenario (its own ``[controller] law`` is ignored).
-    controllers : str or sequence of str, optional
+    controllers : str or sequence of str or Law, optional
         Laws among ``"hinf"``, ``"lqr"``, ``"cascade"`` (``"hinf,lqr"`` or a list); default all.
-    feedback : str or sequence of str, optional
+    feedback : str or sequence of str or Feedback, optional
         ``"state"`` and/or ``"output"``; default both with ``[measurement]``, else state.
     worst_case : bool, optional
         Overrides ``[disturbance] worst_case`` (add w* of eq. 16 of the H-infinity design).
@@ -392,24 +386,23 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
     plan = [(law, mode) for mode in modes for law in laws]
     runs = []
     for index, (law, mode) in enumerate(plan, start=1):
-        key = _run_key(law, mode)
+        key = run_key(law, mode is Feedback.output)
         if progress is not None:
             progress(index, len(plan), f"running {key} on {base.name}")
-        disturbance = describe_disturbance(base, mode == "output")
-        design_gamma = math.inf if law == "lqr" else float(base.gamma)
+        disturbance = describe_disturbance(base, mode is Feedback.output)
+        design_gamma = math.inf if law == _core.Law.lqr else float(base.gamma)
         try:
             result = run_law(base, law, mode)
-            gain_alone = (result.metrics["l2_gain"] if starts_on_desired
-                          else run_law(base, law, mode, from_desired=True).metrics["l2_gain"])
+            gain_alone = (result.metrics.l2_gain if starts_on_desired
+                          else run_law(base, law, mode, from_desired=True).metrics.l2_gain)
         except _core.HinfError as error:
-            metrics = {m.key: math.nan for m in METRICS}
+            metrics = {m.name: math.nan for m in METRICS}
             runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics,
                                       error=" ".join(str(error).split())))
             continue
-        metrics = dict(result.metrics)
-        metrics.update(heading_metrics(result))
-        metrics["l2_gain_from_desired"] = gain_alone
-        metrics = {m.key: float(metrics.get(m.key, math.nan)) for m in METRICS}
+        metrics = {m.name: getattr(result.metrics, m.name) for m in _core.metric_table()}
+        metrics[_L2_GAIN_FROM_DESIRED.name] = gain_alone
+        metrics = {m.name: float(metrics[m.name]) for m in METRICS}
         runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics, result=result))
     return Comparison(scenario=base.name, gamma=float(base.gamma),
                       disturbance=describe_disturbance(base, False), runs=runs)

@@ -12,7 +12,7 @@ Time series of a run (:func:`time_series`), one row per output time, k rows:
 
 NPZ (:func:`save_npz`, compressed, readable with ``numpy.load(path, allow_pickle=False)``):
 those arrays under their names, ``Z`` (k, n, n) = Z(t) at the grid times, and ``meta``, a 0-d
-string array holding JSON: ``format``, ``results`` (the results file, ``RunResult.to_json()``:
+string array holding JSON: ``format``, ``results`` (the results file, ``results_json(result)``:
 scenario, gamma, Z0, metrics, timing), ``components`` (the column names of every 2-D series)
 and the model's ``state_names``, ``position_indices`` and ``heading_index``. The round trip
 through :func:`load_npz` is exact.
@@ -45,8 +45,6 @@ __all__ = ["FORMAT", "RunData", "component_names", "load_csv", "load_json", "loa
            "save_csv", "save_json", "save_npz", "time_series"]
 
 FORMAT = "hinf_cpp-run/1"
-
-_OUTPUT_FEEDBACK_SERIES = ("q_hat", "y", "sigma_min_eig", "sigma_max_eig", "rho_sigma_z")
 
 
 @dataclasses.dataclass
@@ -82,16 +80,16 @@ def _output_names(model: _core.Model, t0: float, p: int) -> list[str]:
 
 def component_names(result: _core.RunResult) -> dict[str, list[str]]:
     """Column names of the 2-D series of :func:`time_series` (state names, u1.., w1.., outputs)."""
-    model = result.trajectory.model
+    model = result.trajectory.model()
     sim = result.simulation
     states = list(model.state_names())
     names = {"q": states, "q_d": states, "q_e": states,
              "u": [f"u{i + 1}" for i in range(np.shape(sim.u)[1])],
              "u_d": [f"u{i + 1}" for i in range(np.shape(sim.u_d)[1])],
              "w": [f"w{i + 1}" for i in range(np.shape(sim.w)[1])]}
-    if np.size(sim.q_hat):
+    if sim.estimator is not None:
         names["q_hat"] = states
-        names["y"] = _output_names(model, float(sim.t[0]), np.shape(sim.y)[1])
+        names["y"] = _output_names(model, float(sim.t[0]), np.shape(sim.estimator.y)[1])
     return names
 
 
@@ -99,7 +97,7 @@ def time_series(result: _core.RunResult) -> dict[str, np.ndarray]:
     """Every time series of a run (module docstring), as NumPy arrays."""
     sim = result.simulation
     t = np.asarray(sim.t, dtype=float)
-    series = {"t": t, "q": np.asarray(sim.q), "q_d": np.asarray(sim.q_d), "q_e": np.asarray(sim.q_e),
+    series = {"t": t, "q": np.asarray(sim.q), "q_d": np.asarray(sim.q_d), "q_e": sim.q_e(),
               "u": np.asarray(sim.u), "u_d": np.asarray(sim.u_d), "w": np.asarray(sim.w)}
     if result.solution is not None:
         eig = np.linalg.eigvalsh(_symmetric(result.solution.Z(t)))
@@ -107,9 +105,11 @@ def time_series(result: _core.RunResult) -> dict[str, np.ndarray]:
         series["z_max_eig"] = eig[:, -1]
     else:  # the cascade law with state feedback at a gamma without design
         series["z_min_eig"] = series["z_max_eig"] = np.full_like(t, np.nan)
-    if np.size(sim.q_hat):
-        for name in _OUTPUT_FEEDBACK_SERIES:
-            series[name] = np.asarray(getattr(sim, name))
+    if sim.estimator is not None:  # the estimator's time series (its array fields)
+        for name in sim.estimator.__match_args__:
+            value = np.asarray(getattr(sim.estimator, name))
+            if value.ndim > 0:
+                series[name] = value
     return series
 
 
@@ -118,10 +118,10 @@ def _symmetric(Z: np.ndarray) -> np.ndarray:
 
 
 def _meta(result: _core.RunResult) -> dict[str, Any]:
-    model = result.trajectory.model
+    model = result.trajectory.model()
     return {
         "format": FORMAT,
-        "results": json.loads(result.to_json()),
+        "results": json.loads(_core.results_json(result)),
         "components": component_names(result),
         "state_names": list(model.state_names()),
         "position_indices": list(model.position_indices()),
@@ -242,8 +242,8 @@ def load_csv(path: str | pathlib.Path) -> RunData:
 
 
 def save_json(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
-    """Writes the results file (``RunResult.to_json()``, shared/scenarios.md)."""
-    return write_text(path, result.to_json() + "\n")
+    """Writes the results file (``results_json(result)``, docs/results.md)."""
+    return write_text(path, _core.results_json(result) + "\n")
 
 
 def load_json(path: str | pathlib.Path) -> dict:

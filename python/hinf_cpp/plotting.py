@@ -18,6 +18,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from . import _core
+from .compare import run_key
 from .outputs import atomic_output
 
 __all__ = [
@@ -34,14 +35,14 @@ __all__ = [
 
 Runs = Union[_core.RunResult, Sequence[tuple[str, _core.RunResult]]]
 
-_LAW_COLOURS = {"hinf": "tab:blue", "lqr": "tab:orange", "cascade": "tab:green"}
-_LAW_COLOURS_OUTPUT = {"hinf": "#0b2e73", "lqr": "#9c4200", "cascade": "#145214"}
+_LAW_COLOURS = {_core.Law.hinf: "tab:blue", _core.Law.lqr: "tab:orange", _core.Law.cascade: "tab:green"}
+_LAW_COLOURS_OUTPUT = {_core.Law.hinf: "#0b2e73", _core.Law.lqr: "#9c4200", _core.Law.cascade: "#145214"}
 _OTHER_COLOURS = ["tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
 
 
 def _runs(runs: Runs) -> list[tuple[str, _core.RunResult]]:
     if isinstance(runs, _core.RunResult):
-        return [(runs.controller, runs)]
+        return [(run_key(runs.law, runs.output_feedback), runs)]
     out = list(runs)
     if not out:
         raise ValueError("no run to plot")
@@ -56,11 +57,9 @@ def _styles(runs: list[tuple[str, _core.RunResult]]) -> list[dict]:
     feedback, dash-dotted for output feedback (time plots use solid lines)."""
     styles, spare = [], iter(_OTHER_COLOURS * 4)
     for _, result in runs:
-        law = result.controller.split("-")[0]
-        output_feedback = result.controller.endswith("output-feedback")
-        palette = _LAW_COLOURS_OUTPUT if output_feedback else _LAW_COLOURS
-        colour = palette.get(law) or next(spare)
-        styles.append({"color": colour, "ls": "-." if output_feedback else "--"})
+        palette = _LAW_COLOURS_OUTPUT if result.output_feedback else _LAW_COLOURS
+        colour = palette.get(result.law) or next(spare)
+        styles.append({"color": colour, "ls": "-." if result.output_feedback else "--"})
     # Two runs with the same law and mode (e.g. two scenarios) get distinct colours.
     seen = set()
     for style in styles:
@@ -78,9 +77,9 @@ def _series_style(style: dict) -> dict:
 
 
 def _position_indices(result: _core.RunResult) -> tuple[int, int]:
-    indices = result.trajectory.model.position_indices()
+    indices = result.trajectory.model().position_indices()
     if len(indices) != 2:
-        raise ValueError(f"the model '{result.trajectory.model.name()}' has no planar position "
+        raise ValueError(f"the model '{result.trajectory.model().name()}' has no planar position "
                          "(position_indices() must give two indices) to draw an x-y plot")
     return indices[0], indices[1]
 
@@ -88,7 +87,7 @@ def _position_indices(result: _core.RunResult) -> tuple[int, int]:
 def position_error(result: _core.RunResult) -> np.ndarray:
     """|p - p_d| on the output grid."""
     ix, iy = _position_indices(result)
-    q_e = result.simulation.q_e
+    q_e = result.simulation.q_e()
     return np.hypot(q_e[:, ix], q_e[:, iy])
 
 
@@ -143,14 +142,14 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
     ax.plot(sim.q[0, ix], sim.q[0, iy], "s", color="tab:blue", ms=5, label="actual start")
     if heading_arrows > 0:
         length = 0.05 * _span([sim.q[:, [ix, iy]], sim.q_d[:, [ix, iy]]])
-        _heading_arrows(ax, sim.q, result.trajectory.model, heading_arrows, length, "tab:blue")
+        _heading_arrows(ax, sim.q, result.trajectory.model(), heading_arrows, length, "tab:blue")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize="small")
     ax.set_title(title if title is not None else
-                 f"{result.scenario_name}: {result.controller}, gamma = {result.gamma:g}")
+                 f"{result.scenario_name}: {run_key(result.law, result.output_feedback)}, gamma = {result.gamma:g}")
     return fig
 
 
@@ -178,7 +177,7 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
     runs = _runs(runs)
     first = runs[0][1]
     ix, iy = _position_indices(first)
-    model = first.trajectory.model
+    model = first.trajectory.model()
     if heading_arrows is None:
         heading_arrows = max(2, min(5, 12 // len(runs)))
     if ax is None:
@@ -211,10 +210,6 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
     return fig
 
 
-def _wrap(angle: np.ndarray) -> np.ndarray:
-    return np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2.0 * np.pi)
-
-
 def errors_figure(runs: Runs, title: str | None = None) -> Figure:
     """Position error |p - p_d| (log scale) and wrapped heading error against time."""
     runs = _runs(runs)
@@ -228,9 +223,9 @@ def errors_figure(runs: Runs, title: str | None = None) -> Figure:
     for (label, result), error, style in zip(runs, errors, _styles(runs)):
         t = result.simulation.t
         ax_p.plot(t, np.maximum(error, floor), label=label, **_series_style(style))
-        heading = result.trajectory.model.heading_index()
+        heading = result.trajectory.model().heading_index()
         if heading >= 0:
-            e = np.degrees(_wrap(result.simulation.q_e[:, heading]))
+            e = np.degrees(result.simulation.q_e()[:, heading])
             largest = max(largest, float(np.max(np.abs(e))))
             ax_h.plot(t, e, label=label, **_series_style(style))
     ax_p.set_yscale("log")
@@ -254,7 +249,7 @@ def controls_figure(runs: Runs, title: str | None = None) -> Figure:
     runs = _runs(runs)
     first = runs[0][1]
     m = first.simulation.u.shape[1]
-    units = ["m/s^2", "rad/s^2"] if isinstance(first.trajectory.model, _core.ShipModel) else ["-"] * m
+    units = ["m/s^2", "rad/s^2"] if isinstance(first.trajectory.model(), _core.ShipModel) else ["-"] * m
     fig = Figure(figsize=(7.6, 2.6 + 2.2 * m), layout="constrained")
     axes = np.atleast_1d(fig.subplots(m, 1, sharex=True))
     for i, ax in enumerate(axes):
@@ -278,7 +273,7 @@ def _z_eigenvalues(result: _core.RunResult) -> tuple[np.ndarray, np.ndarray, np.
 
 
 def _has_output_feedback(result: _core.RunResult) -> bool:
-    return np.size(result.simulation.sigma_min_eig) > 0
+    return result.simulation.estimator is not None
 
 
 def eigenvalues_figure(runs: Runs, title: str | None = None) -> Figure:
@@ -308,9 +303,9 @@ def eigenvalues_figure(runs: Runs, title: str | None = None) -> Figure:
         ax_s = axes[1]
         for (label, result), style in zip(filtered, _styles(filtered)):
             sim = result.simulation
-            ax_s.plot(sim.t, sim.sigma_max_eig, "-", color=style["color"], lw=1.3,
+            ax_s.plot(sim.t, sim.estimator.sigma_max_eig, "-", color=style["color"], lw=1.3,
                       label=f"lambda_max(Sigma), {label}")
-            ax_s.plot(sim.t, sim.sigma_min_eig, ":", color=style["color"], lw=1.6,
+            ax_s.plot(sim.t, sim.estimator.sigma_min_eig, ":", color=style["color"], lw=1.6,
                       label=f"lambda_min(Sigma), {label}")
         ax_s.set_yscale("log")
         ax_s.set_ylabel("eigenvalue of Sigma(t) [-]")
@@ -338,7 +333,7 @@ def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
     ax = fig.subplots()
     gammas = set()
     for (label, result), style in zip(runs, _styles(runs)):
-        ax.plot(result.simulation.t, result.simulation.rho_sigma_z, "-", color=style["color"], lw=1.3,
+        ax.plot(result.simulation.t, result.simulation.estimator.rho_sigma_z, "-", color=style["color"], lw=1.3,
                 label=label)
         if math.isfinite(result.gamma):
             gammas.add(result.gamma)
@@ -379,7 +374,7 @@ def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figu
             settling = [v.settling_time for v in verdicts]
             if all(s is not None for s in settling):
                 window = max(settling) + 5.0 + float(verdicts[0].result.simulation.t[0])
-        paths_figure([(v.controller, v.result) for v in verdicts], heading_arrows=4, ax=ax,
+        paths_figure([(v.controller.name, v.result) for v in verdicts], heading_arrows=4, ax=ax,
                      t_max=window, legend=False,
                      title=name + ("" if window is None else f" (t <= {window:.0f} s)"))
         handles, labels = ax.get_legend_handles_labels()

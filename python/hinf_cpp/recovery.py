@@ -38,7 +38,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from . import _core
-from .compare import heading_error, parse_controllers, run_law, wrap_angles
+from .compare import Feedback, heading_error, parse_controllers, run_law, wrap_angles
 from .progress import ProgressCallback
 from .scenario import load_scenario
 
@@ -127,7 +127,7 @@ class RecoveryVerdict:
     """Recovery of one law on one scenario."""
 
     scenario: str
-    controller: str
+    controller: _core.Law
     recovers: bool
     turns_around: bool
     initial_position_error: float   # m
@@ -146,7 +146,7 @@ class RecoveryVerdict:
 
         return {
             "scenario": self.scenario,
-            "controller": self.controller,
+            "controller": self.controller.name,
             "recovers": self.recovers,
             "turns_around": self.turns_around,
             "turn_reason": self.turn.reason if self.turn else "",
@@ -161,15 +161,15 @@ class RecoveryVerdict:
 
 
 def _position_error(result: _core.RunResult) -> np.ndarray:
-    indices = result.trajectory.model.position_indices()
+    indices = result.trajectory.model().position_indices()
     if len(indices) != 2:
-        raise ValueError(f"recovery needs a planar position: the model '{result.trajectory.model.name()}' "
+        raise ValueError(f"recovery needs a planar position: the model '{result.trajectory.model().name()}' "
                          "has none")
-    q_e = np.asarray(result.simulation.q_e)
+    q_e = result.simulation.q_e()
     return np.hypot(q_e[:, indices[0]], q_e[:, indices[1]])
 
 
-def assess_recovery(result: _core.RunResult, controller: str | None = None, *,
+def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None = None, *,
                     position_tolerance: float = POSITION_TOLERANCE,
                     heading_tolerance: float = HEADING_TOLERANCE, margin: float = TURN_MARGIN,
                     backwards_fraction: float = BACKWARDS_FRACTION) -> RecoveryVerdict:
@@ -179,8 +179,8 @@ def assess_recovery(result: _core.RunResult, controller: str | None = None, *,
     ----------
     result : RunResult
         A closed-loop run of a model with a planar position and a heading (the ship).
-    controller : str, optional
-        Label of the law (default ``result.controller``).
+    controller : Law or str, optional
+        The law (default ``result.law``).
     position_tolerance, heading_tolerance : float
         Thresholds on the final position error (m) and final wrapped heading error (rad).
     margin, backwards_fraction : float
@@ -191,7 +191,7 @@ def assess_recovery(result: _core.RunResult, controller: str | None = None, *,
                          f"{heading_tolerance} rad")
     e = heading_error(result)
     if e is None:
-        raise ValueError(f"recovery needs a heading: the model '{result.trajectory.model.name()}' has none")
+        raise ValueError(f"recovery needs a heading: the model '{result.trajectory.model().name()}' has none")
     t = np.asarray(result.simulation.t)
     pe = _position_error(result)
     turn = turn_around(t, e, margin, backwards_fraction)
@@ -205,7 +205,7 @@ def assess_recovery(result: _core.RunResult, controller: str | None = None, *,
         settling = float(t[above[-1] + 1] - t[0])
     return RecoveryVerdict(
         scenario=result.scenario_name,
-        controller=controller or result.controller,
+        controller=result.law if controller is None else parse_controllers([controller])[0],
         recovers=bool(pe[-1] < position_tolerance and final_heading < heading_tolerance),
         turns_around=turn.turned,
         initial_position_error=float(pe[0]),
@@ -240,14 +240,16 @@ class RecoveryStudy:
         return list(dict.fromkeys(v.scenario for v in self.verdicts))
 
     @property
-    def controllers(self) -> list[str]:
+    def controllers(self) -> list[_core.Law]:
         return list(dict.fromkeys(v.controller for v in self.verdicts))
 
-    def verdict(self, scenario: str, controller: str) -> RecoveryVerdict:
+    def verdict(self, scenario: str, controller: _core.Law | str) -> RecoveryVerdict:
+        """The verdict of one law (or its name) on one scenario."""
+        law = parse_controllers([controller])[0]
         for v in self.verdicts:
-            if v.scenario == scenario and v.controller == controller:
+            if v.scenario == scenario and v.controller == law:
                 return v
-        raise KeyError(f"no verdict for controller '{controller}' on scenario '{scenario}'")
+        raise KeyError(f"no verdict for controller '{law.name}' on scenario '{scenario}'")
 
     def table(self) -> tuple[list[str], list[list[Any]]]:
         """Header and rows: one row per scenario and controller."""
@@ -256,9 +258,9 @@ class RecoveryStudy:
         rows = []
         for v in self.verdicts:
             if v.error is not None:
-                rows.append([v.scenario, v.controller, "failed", "-", None, None, None, None])
+                rows.append([v.scenario, v.controller.name, "failed", "-", None, None, None, None])
                 continue
-            rows.append([v.scenario, v.controller, v.recovers, v.turns_around, v.final_position_error,
+            rows.append([v.scenario, v.controller.name, v.recovers, v.turns_around, v.final_position_error,
                          math.degrees(v.final_heading_error), v.settling_time,
                          math.degrees(v.max_abs_heading_error)])
         return header, rows
@@ -318,10 +320,10 @@ def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | No
     total = len(loaded) * len(laws)
     verdicts = []
     for i, scenario in enumerate(loaded):
-        feedback = "output" if scenario.measurement is not None else "state"
+        feedback = Feedback.state if scenario.measurement is None else Feedback.output
         for j, law in enumerate(laws):
             if progress is not None:
-                progress(i * len(laws) + j + 1, total, f"running {law} on {scenario.name}")
+                progress(i * len(laws) + j + 1, total, f"running {law.name} on {scenario.name}")
             try:
                 result = run_law(scenario, law, feedback)
             except _core.HinfError as error:

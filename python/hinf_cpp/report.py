@@ -11,7 +11,7 @@
     controls.png         control inputs against time, desired and applied
     eigenvalues.png      eigenvalue bounds of Z(t) (and of Sigma(t) with [measurement])
     coupling.png         rho(Sigma Z)(t) against gamma^2 (only with [measurement])
-    <run>.json           the results file of each run (RunResult.to_json())
+    <run>.json           the results file of each run (results_json(result))
     <run>.npz, <run>.csv every time series of each run (hinf_cpp.export: NPZ, tidy CSV)
 
 ``<run>`` is the run's key with ``/`` replaced by ``-`` (``hinf``, ``lqr-output-feedback``).
@@ -25,7 +25,7 @@ import pathlib
 from typing import Callable, Sequence
 
 from . import _core
-from .compare import METRICS, Comparison, compare
+from .compare import METRICS, Comparison, Feedback, compare
 from .export import save_csv, save_json, save_npz
 from .outputs import check_output_folder, write_text
 from .plotting import (controls_figure, coupling_figure, eigenvalues_figure, errors_figure, paths_figure,
@@ -55,9 +55,9 @@ def _figures(comparison: Comparison) -> list[tuple[str, str, Callable]]:
     runs = comparison.results()
     if not runs:
         return []
-    model = runs[0][1].trajectory.model
+    model = runs[0][1].trajectory.model()
     planar = len(model.position_indices()) == 2
-    output = any(r.feedback == "output" and r.ok for r in comparison.runs)
+    output = any(r.feedback is Feedback.output and r.ok for r in comparison.runs)
     figures = []
     if planar:
         figures.append(("paths.png", "x-y paths: desired (solid), actual (dashed; dash-dotted for output "

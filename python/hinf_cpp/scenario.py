@@ -1,4 +1,4 @@
-"""Scenario files (TOML, ``shared/scenarios.md``), read by the one C++ reader.
+"""Scenario files (TOML, ``docs/scenarios.md``), read by the one C++ reader.
 
 ``hinf-sim`` and this package read scenarios with the same C++ code
 (``cpp/src/scenario_io.cpp``), so both accept and reject exactly the same files, with the same

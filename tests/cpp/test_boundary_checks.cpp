@@ -188,7 +188,7 @@ TEST(Controllers, NaNTimeIsNotLookedUpInTheCursorPiece) {
 TEST(PiecewisePolynomial, NaNWithACursorIsAnInputError) {
   hinf::PiecewisePolynomial p(1);
   const double c[] = {1.0, 2.0};  // y = 1 + 2 theta on [0, 1]
-  p.append(0.0, 1.0, 1, c);
+  p.append(hinf::DensePiece{0.0, 0.0 + 1.0, 1, p.dim(), c});
   p.finalize();
   std::size_t cursor = 0;
   double y = 0.0;

@@ -135,8 +135,8 @@ TEST(PiecewisePolynomial, HandMadePiecesEvalAndDerivative) {
   const double c0[] = {1.0, 0.0, 2.0, 1.0, 3.0, -1.0};
   // Piece 1 on [1, 3] (h = 2), degree 1: y = [6 - th, 4 th], th = (t - 1) / 2.
   const double c1[] = {6.0, 0.0, -1.0, 4.0};
-  pp.append(0.0, 1.0, 2, c0);
-  pp.append(1.0, 2.0, 1, c1);
+  pp.append(hinf::DensePiece{0.0, 0.0 + 1.0, 2, pp.dim(), c0});
+  pp.append(hinf::DensePiece{1.0, 1.0 + 2.0, 1, pp.dim(), c1});
   pp.finalize();
   EXPECT_EQ(pp.num_pieces(), 2u);
   EXPECT_EQ(pp.t_min(), 0.0);
@@ -170,8 +170,8 @@ TEST(PiecewisePolynomial, BackwardPiecesAreReorderedByFinalize) {
   const GlobalCubic p;
   PiecewisePolynomial pp(2);
   const std::vector<double> a = p.coeffs(3.0, -2.0), b = p.coeffs(1.0, -1.0);
-  pp.append(3.0, -2.0, 3, a.data());
-  pp.append(1.0, -1.0, 3, b.data());
+  pp.append(hinf::DensePiece{3.0, 3.0 + -2.0, 3, pp.dim(), a.data()});
+  pp.append(hinf::DensePiece{1.0, 1.0 + -1.0, 3, pp.dim(), b.data()});
   pp.finalize();
   EXPECT_EQ(pp.t_min(), 0.0);
   EXPECT_EQ(pp.t_max(), 3.0);
@@ -199,12 +199,12 @@ TEST(PiecewisePolynomial, CursorAndBinarySearchAgree) {
     if (!backward) {
       for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
         const double h = knots[k + 1] - knots[k];
-        pp.append(knots[k], h, 3, p.coeffs(knots[k], h).data());
+        pp.append(hinf::DensePiece{knots[k], knots[k] + h, 3, pp.dim(), p.coeffs(knots[k], h).data()});
       }
     } else {
       for (std::size_t k = knots.size() - 1; k > 0; --k) {
         const double h = knots[k - 1] - knots[k];
-        pp.append(knots[k], h, 3, p.coeffs(knots[k], h).data());
+        pp.append(hinf::DensePiece{knots[k], knots[k] + h, 3, pp.dim(), p.coeffs(knots[k], h).data()});
       }
     }
     pp.finalize();
@@ -249,8 +249,8 @@ TEST(PiecewisePolynomial, OutOfRangeThrows) {
   EXPECT_THROW(empty.t_min(), hinf::InputError);
   const GlobalCubic p;
   PiecewisePolynomial pp(2);
-  pp.append(1.0, 0.5, 3, p.coeffs(1.0, 0.5).data());
-  pp.append(1.5, 0.5, 3, p.coeffs(1.5, 0.5).data());
+  pp.append(hinf::DensePiece{1.0, 1.0 + 0.5, 3, pp.dim(), p.coeffs(1.0, 0.5).data()});
+  pp.append(hinf::DensePiece{1.5, 1.5 + 0.5, 3, pp.dim(), p.coeffs(1.5, 0.5).data()});
   pp.finalize();
   std::size_t cursor = 0;
   EXPECT_THROW(pp.eval(0.99, y), hinf::InputError);
@@ -281,7 +281,7 @@ DopriRun run_dopri(const LinearProblem& prob, double t0, double t1, double rtol,
   stepper.integrate(
       [&](double t, const double* yy, double* dy) { prob.rhs(t, yy, dy); }, t0, t1, y.data(),
       [&](const hinf::DensePiece& piece) {
-        const double t_start = piece.t_start, h = piece.h;
+        const double t_start = piece.t_start, h = piece.h();
         const double* c = piece.coeffs;
         const double* y_end = y.data();  // the stepper's state is at the end of the step
         EXPECT_EQ(piece.degree, 4);

@@ -616,7 +616,7 @@ TEST(GrdeShip, SmallGammaHitsAConjugatePoint) {
 }
 
 TEST(GrdeShip, ConjugatePointMatchesTheHamiltonianDeterminant) {
-  // Independent conjugate-point time (DESIGN.md): integrate the linear Hamiltonian system
+  // Independent conjugate-point time (docs/mathematics.md): integrate the linear Hamiltonian system
   // d[X; Y]/dt = [[A, -S], [-Q, -A']] [X; Y] backward from X(tf) = I, Y(tf) = Qf with a
   // classical RK4 (h = 1e-3) and find where det X first reaches 0; Z = Y X^-1 escapes there.
   const auto trajectory = paper_trajectory();

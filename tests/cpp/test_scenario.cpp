@@ -1,4 +1,4 @@
-// Scenario files (shared/scenarios.md is the contract): the shipped paper scenario parses to
+// Scenario files (docs/scenarios.md is the reference): the shipped paper scenario parses to
 // the documented values, defaults, errors that name the key, the reader's edges (byte-order
 // mark, integers beyond 64 bits, empty arrays, deep nesting, non-UTF-8 text, unreadable paths,
 // non-finite numbers, noise channels), Scenario::validate, the results files (JSON keys;
@@ -40,7 +40,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const std::string kSourceDir = HINF_SOURCE_DIR;
 const std::string kFig1 = kSourceDir + "/scenarios/paper_fig1.toml";
 
-// The paper's constants as shared/scenarios.md states them.
+// The paper's constants as docs/scenarios.md states them.
 const double kOmegaW = 2.0 * M_PI * 0.2;  // disturbance 0.1 cos(2 pi 0.2 t)
 
 void expect_paper_ship(const Scenario& s) {
@@ -163,7 +163,7 @@ TEST(ScenarioFile, DefaultsOfTheContract) {
   ASSERT_EQ(r.disturbance.dim(), 6);
   EXPECT_EQ(r.disturbance(2.0), Vec::Zero(6));
   EXPECT_FALSE(r.measurement.has_value());
-  EXPECT_EQ(r.solver.method, hinf::Method::BDF);
+  EXPECT_EQ(r.solver.method, hinf::Method::Auto);
   EXPECT_EQ(r.solver.rtol, 1e-8);
   EXPECT_EQ(r.solver.atol, 1e-10);
   EXPECT_EQ(r.output_dt, 0.01);

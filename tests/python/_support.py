@@ -53,10 +53,10 @@ def paper_disturbance(t: float) -> np.ndarray:
     return np.array([c, c, c, 0.0, 0.0, 0.0])
 
 
-# ---- the ship, DESIGN.md "The model (paper eqs. 1-6, clean)" ----
+# ---- the ship, docs/mathematics.md "The model (paper eqs. 1-6, clean)" ----
 
 def ship_drift(q, p=PAPER_PARAMETERS) -> np.ndarray:
-    """f(q) of DESIGN.md: dq/dt = f(q) + B u + D w."""
+    """f(q) of docs/mathematics.md: dq/dt = f(q) + B u + D w."""
     u, v, r, _, _, psi = q
     return np.array([
         p["m_u"] * v * r - p["d_u"] * u,
@@ -203,7 +203,7 @@ def max_rel(a, b) -> float:
 
 # ---- imperfect measurements (paper §4) ----
 
-# The ship measures x, y, psi (DESIGN.md "Imperfect measurements"): C = [0 I3].
+# The ship measures x, y, psi (docs/mathematics.md "Imperfect measurements"): C = [0 I3].
 SHIP_C = np.hstack([np.zeros((3, 3)), np.eye(3)])
 
 
@@ -222,7 +222,7 @@ def ship_jacobian(q, p=PAPER_PARAMETERS) -> np.ndarray:
 
 
 def ship_error_split(q_d, q_e, p=PAPER_PARAMETERS):
-    """(A(q_e), alpha(q_e)) of DESIGN.md (paper eqs. 26-31) with A12 = d alpha1/d q2 and
+    """(A(q_e), alpha(q_e)) of docs/mathematics.md (paper eqs. 26-31) with A12 = d alpha1/d q2 and
     A21 = d alpha2/d q1 at 0 differentiated by hand; state order [u, v, r, x, y, psi],
     q1 = [u, v, x, y] (indices 0, 1, 3, 4), q2 = [r, psi] (indices 2, 5)."""
     ud, vd, rd, psid = q_d[0], q_d[1], q_d[2], q_d[5]

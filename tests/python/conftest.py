@@ -1,6 +1,6 @@
 """Shared fixtures of the Python test suite.
 
-The paper's run (shared/scenarios.md): the ship of DESIGN.md with the paper's parameters,
+The paper's run (docs/scenarios.md): the ship of docs/mathematics.md with the paper's parameters,
 q_d0 = [1, 0, 0, 0, 0, 0], u_d(t) = [1, 0.3 sin(0.2 t)], t in [0, 40], gamma = 5,
 Q = Qf = I. Everything a test compares against is computed independently in the test
 (closed forms, SciPy, finite differences), never copied from the library's output.

@@ -107,7 +107,8 @@ def test_python_model_structure_is_read_once():
     model = Counting()
     tr = hc.Trajectory(model, [1.0, 0.0], [0.0], 0.0, 1.0)
     sol = hc.solve_grde(tr, np.eye(2), np.eye(2), 5.0)
-    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0], 0.1)
+    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0],
+                                     hc.SimulationOptions(output_dt=0.1))
     hc.compute_metrics(model, run, np.eye(2))
     assert model.calls == 2  # n() and position_indices(), once each
 
@@ -164,7 +165,7 @@ def test_python_model_whose_n_changes_raises_instead_of_corrupting_the_heap():
         model.a = -np.ones(2)
         grde = outcome(lambda: hc.solve_grde(tr, np.eye(2), np.eye(2), 5.0).Z(0.5))
         simulate = outcome(lambda: hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None,
-                                                              [1.0, 0.5, -0.5], 0.1))
+                                                              [1.0, 0.5, -0.5], hc.SimulationOptions(output_dt=0.1)))
         print(json.dumps({"grde": grde, "simulate": simulate}))
     """)
     assert result["grde"]["error"] == "ValueError", result
@@ -195,7 +196,8 @@ def test_python_model_with_position_indices_out_of_range_raises():
         good = hc.LinearModel(-np.eye(2), np.array([[0.0], [1.0]]), np.array([[0.0], [1.0]]))
         tr = hc.Trajectory(good, [1.0, 0.0], [0.0], 0.0, 1.0)
         sol = hc.solve_grde(tr, np.eye(2), np.eye(2), 5.0)
-        run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0], 0.1)
+        run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, [1.5, 0.0],
+                                         hc.SimulationOptions(output_dt=0.1))
         out = {}
         for name, call in [("metrics", lambda: hc.compute_metrics(OutOfRange(), run, np.eye(2))),
                            ("trajectory", lambda: hc.Trajectory(OutOfRange(), [1.0, 0.0], [0.0], 0.0, 1.0))]:
@@ -444,14 +446,14 @@ def python_controller(value, n=None, m=2):
 def test_python_controller_of_the_wrong_kind(ship_design, controller, message):
     tr, _ = ship_design
     with pytest.raises(ValueError, match=message):
-        hc.simulate_state_feedback(tr, controller, None, SHIP_Q_D0, 0.5)
+        hc.simulate_state_feedback(tr, controller, None, SHIP_Q_D0, hc.SimulationOptions(output_dt=0.5))
 
 
 def test_python_controller_without_n_keeps_working(ship_design):
     tr, _ = ship_design
     controller = python_controller([1.0, 0.0])
     assert controller.n() == 0
-    run = hc.simulate_state_feedback(tr, controller, None, SHIP_Q_D0, 0.5)
+    run = hc.simulate_state_feedback(tr, controller, None, SHIP_Q_D0, hc.SimulationOptions(output_dt=0.5))
     np.testing.assert_array_equal(run.u, np.tile([1.0, 0.0], (len(run.t), 1)))
 
 
@@ -463,20 +465,22 @@ def test_disturbance_checks_q(ship_design):
         import numpy as np
         import hinf_cpp as hc
         tr = hc.Trajectory(hc.ShipModel(), [1.0, 0, 0, 0, 0, 0], [1.0, 0.0], 0.0, 2.0)
-        d = hc.Disturbance(None, hc.solve_grde(tr, np.eye(6), np.eye(6), 5.0))
+        d = hc.Disturbance(hc.VectorSignal.zeros(6), hc.solve_grde(tr, np.eye(6), np.eye(6), 5.0))
         try:
-            print(json.dumps({"value": list(d(1.0, [5.0]))}))
+            print(json.dumps({"value": list(d.eval(1.0, [5.0]))}))
         except ValueError as e:
             print(json.dumps({"error": str(e)}))
     """)
     assert result.get("error") == "Incompatible length of q: expected 6 but found 1", result
-    with pytest.raises(ValueError, match=r"number of channels of signals must be in \[0, 10000\], got -1"):
-        hc.Disturbance(None, -1)
-    with pytest.raises(ValueError, match=r"signals\(t\) must return an array of 3 numbers, got None at t = 0"):
-        hc.Disturbance(lambda t: None, 3)(0.0, np.zeros(6))
+    with pytest.raises(ValueError, match=r"the dimension of a vector signal must be in \[0, 10000\], got -1"):
+        hc.Disturbance(hc.VectorSignal(-1, lambda t: None))
+    with pytest.raises(ValueError, match=r"function\(t\) must return an array of 3 numbers, got None at t = 0"):
+        hc.Disturbance(hc.VectorSignal(3, lambda t: None)).eval(0.0, np.zeros(6))
     _, sol = ship_design
     with pytest.raises(ValueError, match="t must be finite"):
-        hc.Disturbance(None, sol)(NAN, np.zeros(6))
+        hc.Disturbance(hc.VectorSignal.zeros(6), sol).eval(NAN, np.zeros(6))
+    with pytest.raises(ValueError, match="the disturbance has 2 channels, the model 'ship' has 6"):
+        hc.Disturbance(hc.VectorSignal.zeros(2), sol)
 
 
 # ---- simulation ----
@@ -485,32 +489,35 @@ def test_simulate_state_feedback_arguments(ship_design):
     tr, sol = ship_design
     law = hc.HinfStateFeedback(sol)
     with pytest.raises(ValueError, match="Incompatible length of the initial state q0: expected 6 but found 5"):
-        hc.simulate_state_feedback(tr, law, None, np.zeros(5), 0.5)
+        hc.simulate_state_feedback(tr, law, None, np.zeros(5), hc.SimulationOptions(output_dt=0.5))
     with pytest.raises(ValueError, match="disturbance has 2 channels, expected 6"):
-        hc.simulate_state_feedback(tr, law, [0.0, 0.0], SHIP_Q_D0, 0.5)
+        hc.simulate_state_feedback(tr, law, [0.0, 0.0], SHIP_Q_D0, hc.SimulationOptions(output_dt=0.5))
     with pytest.raises(ValueError, match=r"disturbance\(t\) must return an array of 6 numbers, got str 'w'"):
-        hc.simulate_state_feedback(tr, law, lambda t: "w", SHIP_Q_D0, 0.5)
+        hc.simulate_state_feedback(tr, law, lambda t: "w", SHIP_Q_D0, hc.SimulationOptions(output_dt=0.5))
 
 
 def test_output_feedback_arguments(lti_design):
     tr, sol = lti_design
-    options = hc.OutputFeedbackOptions(0.1, 0.5, np.eye(1), np.eye(2), np.eye(2))
     noise = np.zeros((2, 1))
-    with pytest.raises(ValueError, match=r"controller \(a Controller, or kappa\) must be a Signal or a finite "
-                                         r"number, got str 'x'"):
-        hc.simulate_output_feedback(sol, "x", None, [1.0, 0.0], noise, options)
+    problem = hc.OutputFeedbackProblem(sol, 0.1, 0.5, noise, np.eye(1), np.eye(2), np.eye(2))
+    law = hc.HinfStateFeedback(sol)
     with pytest.raises(ValueError, match=r"the noise must have 2 rows .* and 1 columns, got \(3, 1\)"):
-        hc.simulate_output_feedback(sol, 1.0, None, [1.0, 0.0], np.zeros((3, 1)), options)
+        hc.simulate_output_feedback(hc.OutputFeedbackProblem(sol, 0.1, 0.5, np.zeros((3, 1)), np.eye(1), np.eye(2),
+                                                             np.eye(2)), law, None, [1.0, 0.0])
     with pytest.raises(ValueError, match="takes q of 3 numbers, the model 'linear' has n = 2"):
-        hc.simulate_output_feedback(sol, python_controller([0.0], n=3, m=1), None, [1.0, 0.0], noise, options)
+        hc.simulate_output_feedback(problem, python_controller([0.0], n=3, m=1), None, [1.0, 0.0])
+    with pytest.raises(ValueError, match="needs a design"):
+        hc.simulate_output_feedback(hc.OutputFeedbackProblem(), law, None, [1.0, 0.0])
     with pytest.raises(ValueError, match="sigma must be >= 0, got -1"):
-        hc.OutputFeedbackOptions(-1.0, 0.5, np.eye(1), np.eye(2), np.eye(2))
+        hc.OutputFeedbackProblem(sol, -1.0, 0.5, noise, np.eye(1), np.eye(2), np.eye(2))
     with pytest.raises(ValueError, match="sample_period must be > 0, got nan"):
-        hc.OutputFeedbackOptions(0.1, NAN, np.eye(1), np.eye(2), np.eye(2))
+        hc.OutputFeedbackProblem(sol, 0.1, NAN, noise, np.eye(1), np.eye(2), np.eye(2))
     with pytest.raises(ValueError, match=r"Incompatible dimensions of N: expected \(2, 2\) but found \(2, 3\)"):
-        hc.OutputFeedbackOptions(0.1, 0.5, np.ones((2, 3)), np.eye(2), np.eye(2))
+        hc.OutputFeedbackProblem(sol, 0.1, 0.5, noise, np.ones((2, 3)), np.eye(2), np.eye(2))
     with pytest.raises(ValueError, match=r"Incompatible dimensions of Q \(the size of Sigma0\): expected \(2, 2\)"):
-        hc.OutputFeedbackOptions(0.1, 0.5, np.eye(1), np.eye(2), np.eye(3))
+        hc.OutputFeedbackProblem(sol, 0.1, 0.5, noise, np.eye(1), np.eye(2), np.eye(3))
+    with pytest.raises(ValueError, match="noise has a non-finite entry nan"):
+        hc.OutputFeedbackProblem(sol, 0.1, 0.5, np.full((2, 1), NAN), np.eye(1), np.eye(2), np.eye(2))
 
 
 def test_standard_normal_samples_refuses_absurd_counts():
@@ -527,7 +534,8 @@ def test_standard_normal_samples_refuses_absurd_counts():
 
 def test_compute_metrics_of_a_run_of_another_model(ship_design):
     tr, sol = ship_design
-    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, SHIP_Q_D0, 0.5)
+    run = hc.simulate_state_feedback(tr, hc.HinfStateFeedback(sol), None, SHIP_Q_D0,
+                                     hc.SimulationOptions(output_dt=0.5))
     lti = hc.LinearModel(-np.eye(2), np.ones((2, 1)), np.eye(2))
     with pytest.raises(ValueError, match=r"run.q has shape \(5, 6\), expected \(5, 2\) for the model 'linear'"):
         hc.compute_metrics(lti, run, np.eye(2))

@@ -4,7 +4,7 @@ checked against independent truth:
 * m, M (22) and p(t) = lambda_min(Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z) (23) from
   NumPy eigenvalues of matrices built here, on fine grids;
 * the ship's remainder bound |f(q_d + e) - f(q_d) - A_e e| <= L |e|^2 sampled with the NumPy
-  ship of DESIGN.md (_support.ship_drift, ship_jacobian);
+  ship of docs/mathematics.md (_support.ship_drift, ship_jacobian);
 * closed loops started on the certified ball: V = q_e' Z q_e must decay at the certified rate;
 * for LTI plants (where the linearization is exact), the completed square
       L_gamma = q_e(t0)' Z(t0) q_e(t0) - gamma^2 || w - gamma^-2 D' Z q_e ||^2
@@ -47,8 +47,8 @@ KAPPAS = [1.0, 0.5, 2.0, 0.25]
 
 def fine_times(sol, count=40001):
     """A uniform grid plus the solver's steps and their midpoints."""
-    steps = np.asarray(sol.step_times())
-    return np.unique(np.concatenate([np.linspace(sol.t0, sol.tf, count), steps, 0.5 * (steps[1:] + steps[:-1])]))
+    steps = np.asarray(sol.dense().breakpoints())
+    return np.unique(np.concatenate([np.linspace(sol.t0(), sol.tf(), count), steps, 0.5 * (steps[1:] + steps[:-1])]))
 
 
 def p_matrices(Z, B, D, Q, kappa, gamma):
@@ -107,7 +107,7 @@ def test_m_and_M_are_the_extreme_eigenvalues_of_Z(paper_solutions, method):
     are inner bounds of the true extremes; the certificates' m, M (refined between samples)
     are at most 1e-8 beyond them (measured: m 1.3e-10 below, M equal)."""
     sol = paper_solutions[method]
-    c = hc.certify(sol, EYE6)
+    c = hc.certify(sol, 1.0, EYE6)
     eig = np.linalg.eigvalsh(sol.Z(fine_times(sol)))
     lo, hi = eig[:, 0].min(), eig[:, -1].max()
     # The library's eigenvalues (tridiagonalization and Laguerre's method) and LAPACK's of the
@@ -117,7 +117,7 @@ def test_m_and_M_are_the_extreme_eigenvalues_of_Z(paper_solutions, method):
     assert lo - 1e-8 <= c.m <= lo + slack
     assert hi - slack <= c.M <= hi + 1e-8
     assert (c.m, c.M) == sol.eigenvalue_bounds()  # the same computation (certify calls it)
-    # shared/numerics-notes.md (an independent implementation), orientation only.
+    # an independent implementation, orientation only.
     assert c.m == pytest.approx(0.219, abs=1e-3) and c.M == pytest.approx(20.8, abs=0.05)
 
 
@@ -127,7 +127,7 @@ def test_p_min_is_the_smallest_eigenvalue_of_P(paper_design, paper_grid, kappa):
     <= 3 (D D' and B B' act on u, v, r only) in 6 dimensions, so p(t) = 1 = lambda_min(Q)
     exactly (Remark 1's bound, attained); kappa = 1/4 makes it negative (measured -7.15)."""
     times, Z = paper_grid
-    c = hc.certify(paper_design, EYE6, hc.Signal(kappa))
+    c = hc.certify(paper_design, hc.Signal(kappa), EYE6)
     p = p_of_t(Z, SHIP_B, SHIP_D, EYE6, kappa, 5.0)
     slack = p_roundoff(Z, SHIP_B, SHIP_D, EYE6, kappa, 5.0)  # two eigenvalue algorithms
     assert c.kappa_min == kappa
@@ -157,7 +157,7 @@ def test_linear_model_certificates_with_time_varying_kappa(lti_trajectory):
     Z = sol.Z(times)
     for kappa, kappa_t in ((hc.Signal(0.75, [hc.Harmonic(amplitude=0.5, omega=1.0)]), 0.75 + 0.5 * np.sin(times)),
                            (hc.Signal(1.0), 1.0)):
-        c = hc.certify(sol, Q, kappa)
+        c = hc.certify(sol, kappa, Q)
         p = p_of_t(Z, B, D, Q, kappa_t, 3.0)
         slack = p_roundoff(Z, B, D, Q, kappa_t, 3.0)  # two eigenvalue algorithms
         # min kappa(t) on [0, 6]: 0.75 - 0.5 = 0.25 at t = 3 pi / 2 (closed form; the library
@@ -171,7 +171,7 @@ def test_linear_model_certificates_with_time_varying_kappa(lti_trajectory):
         assert c.m == pytest.approx(eig[:, 0].min(), abs=1e-8) and c.M == pytest.approx(eig[:, -1].max(), abs=1e-8)
         # The formula p_min / (2 M) of (24) evaluated here and in the library: round-off apart.
         assert c.decay_rate == pytest.approx(c.p_min / (2.0 * c.M), rel=ROUNDOFF)
-    assert hc.certify(sol, Q, hc.Signal(1.0)).p_min > np.linalg.eigvalsh(Q)[0] + 0.1  # strictly above Q's
+    assert hc.certify(sol, hc.Signal(1.0), Q).p_min > np.linalg.eigvalsh(Q)[0] + 0.1  # strictly above Q's
 
 
 def test_ship_remainder_bound_is_a_bound(paper_design, paper_trajectory):
@@ -179,7 +179,7 @@ def test_ship_remainder_bound_is_a_bound(paper_design, paper_trajectory):
     random times, directions (dense and sparse) and radii 1e-4 .. 10 (the bound is global);
     L = remainder_L, the largest L(t) of the run. The bound is not vacuous: the worst sampled
     ratio is above half of it (measured 1.00 against L = 1.459)."""
-    c = hc.certify(paper_design, EYE6)
+    c = hc.certify(paper_design, 1.0, EYE6)
     assert c.remainder_is_bound and "analytic" in c.remainder_method
     L = c.remainder_L
     rng = np.random.default_rng(2024)
@@ -210,7 +210,7 @@ def test_epsilon_attraction_radius_and_decay_rate(paper_design, paper_grid, pape
     0.0082336, at t = 5.76), the attraction radius epsilon sqrt(m / M) and the decay rate
     p_min / (2 M)."""
     times, Z = paper_grid
-    c = hc.certify(paper_design, EYE6)
+    c = hc.certify(paper_design, 1.0, EYE6)
     p = p_of_t(Z, SHIP_B, SHIP_D, EYE6, 1.0, 5.0)
     ratio = p / (4.0 * c.M * ship_L(paper_trajectory.q_d(times)))
     assert c.epsilon > 0.0
@@ -236,7 +236,7 @@ def test_closed_loops_decay_at_the_certified_rate(paper_design, paper_trajectory
     Measured: the slowest average rate over the runs is 0.52 (kappa = 1), 0.16 (kappa = 1/2),
     0.63 (kappa = 2), from either start, against the certified 0.0240; |q_e| grows at most to
     1.45 |q_e(t0)| (the ball's radius is 9.8 attraction radii)."""
-    c = hc.certify(paper_design, EYE6, hc.Signal(kappa))
+    c = hc.certify(paper_design, hc.Signal(kappa), EYE6)
     radius = getattr(c, start)
     controller = hc.HinfStateFeedback(paper_design, hc.Signal(kappa))
     options = hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-14)
@@ -244,8 +244,9 @@ def test_closed_loops_decay_at_the_certified_rate(paper_design, paper_trajectory
     for _ in range(12):
         e = rng.standard_normal(6)
         e *= radius / np.linalg.norm(e)
-        run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0 + e, 0.01, options)
-        q_e = run.q_e
+        run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0 + e,
+                                         hc.SimulationOptions(output_dt=0.01, solver=options))
+        q_e = run.q_e()
         # q_e(t0) = (q_d0 + e) - q_d0: e was rounded once when added to q_d0 (|q_d0| = 1), an
         # absolute error of eps/2 per entry (2.6e-13 relative to the radius 8.4e-4).
         assert np.linalg.norm(q_e[0]) == pytest.approx(radius, abs=2.0 * EPS * np.max(np.abs(PAPER_Q_D0)))
@@ -292,7 +293,7 @@ def test_sampled_remainder_for_a_model_without_a_bound():
 
     tr = hc.Trajectory(Quadratic(), [0.3], [0.0], 0.0, 3.0)
     sol = hc.solve_grde(tr, np.eye(1), np.eye(1), 2.0)
-    c = hc.certify(sol, np.eye(1))
+    c = hc.certify(sol, 1.0, np.eye(1))
     assert not c.remainder_is_bound and "not a bound" in c.remainder_method
     # r = e^2 exactly; computed as a difference of values of f ~ 1 at radii >= 0.01 it carries
     # round-off of a few eps / 0.01^2 ~ 1e-11 relative.
@@ -436,7 +437,7 @@ def test_cost_L_gamma_against_numpy_and_the_completed_square(worst_case, q0):
     # The same NumPy expression on the same arrays (1e-12 allows for another order of sums).
     assert cost_L_gamma(run, LTI_Q, LTI_QF) == pytest.approx(cost, rel=1e-12, abs=1e-12)
     # The library's C++ trapezoid sums against NumPy's: summation round-off only.
-    assert run.metrics["l2_gain"] == pytest.approx(gain, rel=summation_rtol(run.simulation.t.size))
+    assert run.metrics.l2_gain == pytest.approx(gain, rel=summation_rtol(run.simulation.t.size))
     scale = 2.2**2 * np.trapezoid(np.sum(run.simulation.w**2, axis=1), run.simulation.t)
     assert abs(cost - completed_square(run, LTI_D, 2.2)) < 1e-5 * scale
     if q0 == (0.0, 0.0):
@@ -474,7 +475,7 @@ def test_cli_certify(tmp_path, paper_solutions):
     done = cli(HINF_CPP, "certify", hc.scenario_path("paper_fig1"), "--json", out)
     assert done.returncode == 0, done.stderr
     data = json.loads(out.read_text())
-    c = hc.certify(paper_solutions["bdf"], EYE6)  # the file's design: bdf, rtol 1e-8
+    c = hc.certify(paper_solutions["bdf"], 1.0, EYE6)  # the file's design: bdf, rtol 1e-8
     # The same computation on the same input (the file states the fixture's design), written
     # to JSON and read back: equal up to the printed digits.
     for key in ("m", "M", "kappa_min", "p_min", "remainder_L", "epsilon", "attraction_radius", "decay_rate"):

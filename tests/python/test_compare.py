@@ -3,7 +3,7 @@ H-infinity design, recovery from poor initial conditions and the turn-around det
 (hinf_cpp.recovery), and the command lines `compare` and `recovery`.
 
 Truth is computed here, independently of the library: the desired trajectory by SciPy from the
-equations of DESIGN.md, position and heading errors from the raw time series with math.atan2,
+equations of docs/mathematics.md, position and heading errors from the raw time series with math.atan2,
 the worst-case L2 gain of the linearized closed loop by bisection on the closed-loop Riccati
 equation integrated with SciPy, and the worst-case disturbance w* of eq. (16) from Z(t).
 """
@@ -24,10 +24,9 @@ from scipy.integrate import solve_ivp
 import hinf_cpp as hc
 from _support import PAPER_Q_D0, ROUNDOFF, SHIP_B, SHIP_D, paper_u_d, ship_drift
 from hinf_cpp.compare import (
-    CONTROLLERS,
     METRICS,
+    Feedback,
     compare,
-    heading_metrics,
     parse_controllers,
     parse_feedback,
     run_law,
@@ -42,6 +41,7 @@ from hinf_cpp.recovery import (
 )
 
 HINF_CPP = pathlib.Path(sys.executable).parent / "hinf-cpp"
+LAWS = list(hc.Law.__members__.values())
 needs_cli = pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
 
 
@@ -67,7 +67,7 @@ def wrapped(angle: float) -> float:
 
 def cross_track(result: hc.RunResult) -> np.ndarray:
     """Lateral (cross-track) error: the position error along the desired left normal."""
-    q_e, psi_d = result.simulation.q_e, result.simulation.q_d[:, 5]
+    q_e, psi_d = result.simulation.q_e(), result.simulation.q_d[:, 5]
     return -np.sin(psi_d) * q_e[:, 3] + np.cos(psi_d) * q_e[:, 4]
 
 
@@ -102,7 +102,7 @@ def undisturbed_pe(fig1) -> hc.Scenario:
 
 
 def test_the_desired_trajectory_is_the_papers(undisturbed_pe):
-    """q_d(t) of a run against SciPy on the equations of DESIGN.md (what "tracking" means)."""
+    """q_d(t) of a run against SciPy on the equations of docs/mathematics.md (what "tracking" means)."""
     result = run_law(undisturbed_pe, "hinf")
     ref = solve_ivp(lambda t, q: ship_drift(q) + SHIP_B @ paper_u_d(t), (0.0, PE_HORIZON), PAPER_Q_D0,
                     method="DOP853", rtol=1e-11, atol=1e-12, t_eval=[25.0, 75.0, 150.0])
@@ -113,7 +113,7 @@ def test_the_desired_trajectory_is_the_papers(undisturbed_pe):
         np.testing.assert_allclose(result.simulation.q_d[i], ref.y[:, k], atol=1e-6)
 
 
-@pytest.mark.parametrize("law", CONTROLLERS)
+@pytest.mark.parametrize("law", LAWS)
 def test_each_law_tracks_a_persistently_exciting_trajectory(undisturbed_pe, law):
     result = run_law(undisturbed_pe, law)
     sim = result.simulation
@@ -162,8 +162,8 @@ def test_compare_on_figure_1_runs_the_three_laws(comparison_fig1):
     c = comparison_fig1
     assert c.keys == ["hinf", "lqr", "cascade"]
     for run in c.runs:
-        assert run.ok and run.feedback == "state"
-        assert run.result.controller == run.law
+        assert run.ok and run.feedback == Feedback.state
+        assert run.result.law == run.law and not run.result.output_feedback
         for key in REQUIRED:
             assert math.isfinite(run.metrics[key]), (run.key, key)
         assert math.isnan(run.metrics["max_rho_sigma_z"])
@@ -171,7 +171,9 @@ def test_compare_on_figure_1_runs_the_three_laws(comparison_fig1):
     # The JSON: one metrics object per law, the disturbance named, no NaN.
     data = json.loads(json.dumps(c.to_dict(), allow_nan=False))
     assert set(data["controllers"]) == {"hinf", "lqr", "cascade"}
-    assert set(data["metric_definitions"]) == {m.key for m in METRICS}
+    assert set(data["metric_definitions"]) == {m.name for m in METRICS}
+    # The library's metrics and the comparison's own, each once.
+    assert [m.name for m in METRICS] == [*REQUIRED, "max_rho_sigma_z", "rms_estimation_error_last_half"]
     assert data["disturbance"]["signals"] == {f"w{i}": "0.1 cos(1.25664 t)" for i in (1, 2, 3)}
     assert data["disturbance"]["worst_case"] is False and data["disturbance"]["measurement_noise"] is None
     for entry in data["controllers"].values():
@@ -208,14 +210,14 @@ def test_compare_on_figure_2_runs_both_modes(comparison_fig2, comparison_fig1):
         assert run.ok, run.error
         for key in REQUIRED:
             assert math.isfinite(run.metrics[key]), (run.key, key)
-    for law in CONTROLLERS:
-        state, output = c[law], c[f"{law}/output-feedback"]
+    for law in LAWS:
+        state, output = c[law.name], c[f"{law.name}/output-feedback"]
         # State feedback = the scenario with [measurement] removed = Figure 1 exactly: the same
         # runs, equal.
-        assert state.result.controller == law
+        assert state.result.law == law and not state.result.output_feedback
         for key in REQUIRED:
-            assert state.metrics[key] == pytest.approx(comparison_fig1[law].metrics[key], rel=1e-12)
-        assert output.result.controller == f"{law}-output-feedback"
+            assert state.metrics[key] == pytest.approx(comparison_fig1[law.name].metrics[key], rel=1e-12)
+        assert output.result.law == law and output.result.output_feedback
         assert 0.0 < output.metrics["max_rho_sigma_z"] < 25.0          # rho(Sigma Z) < gamma^2
         assert math.isfinite(output.metrics["rms_estimation_error_last_half"])
         noise = output.disturbance["measurement_noise"]
@@ -229,9 +231,10 @@ def test_compare_on_figure_2_runs_both_modes(comparison_fig2, comparison_fig1):
 
 
 def test_feedback_modes(fig1, fig2):
-    assert parse_feedback(fig1, None) == ["state"]
-    assert parse_feedback(fig2, None) == ["state", "output"]
-    assert parse_feedback(fig2, "output") == ["output"]
+    assert parse_feedback(fig1, None) == [Feedback.state]
+    assert parse_feedback(fig2, None) == [Feedback.state, Feedback.output]
+    assert parse_feedback(fig2, "output") == [Feedback.output]
+    assert parse_feedback(fig2, [Feedback.output, "state"]) == [Feedback.state, Feedback.output]
     assert compare(fig2, "hinf", feedback="output").keys == ["hinf/output-feedback"]
     with pytest.raises(ValueError, match="needs a scenario with \\[measurement\\]"):
         compare(fig1, feedback="output")
@@ -263,7 +266,7 @@ def closed_loop_riccati_escapes(trajectory, design, beta, kappa=1.0, bound=1e6):
         return np.max(np.abs(p)) - bound
 
     blow_up.terminal = True
-    sol = solve_ivp(rhs, (trajectory.tf, trajectory.t0), np.eye(6).ravel(), method="RK45", rtol=1e-7,
+    sol = solve_ivp(rhs, (trajectory.tf(), trajectory.t0()), np.eye(6).ravel(), method="RK45", rtol=1e-7,
                     atol=1e-9, events=blow_up)
     assert sol.success, sol.message
     return sol.status == 1, sol.y[:, -1].reshape(6, 6)
@@ -357,7 +360,7 @@ def test_worst_case_option_raises_the_measured_gain(tmp_path, fig1, comparison_f
     sim = result.simulation
     k = np.arange(0, sim.t.size, 97)
     signals = 0.1 * np.cos(2 * math.pi * 0.2 * sim.t[k])
-    expected = np.einsum("ij,kjl,kl->ki", SHIP_D.T, result.solution.Z(sim.t[k]), sim.q_e[k]) / 25.0
+    expected = np.einsum("ij,kjl,kl->ki", SHIP_D.T, result.solution.Z(sim.t[k]), sim.q_e()[k]) / 25.0
     expected[:, :3] += signals[:, None]
     np.testing.assert_allclose(sim.w[k], expected, atol=1e-9)
 
@@ -462,7 +465,7 @@ def poor_study():
 
 def test_recovery_study_on_the_shipped_scenarios(poor_study):
     study = poor_study
-    assert study.controllers == ["hinf", "lqr", "cascade"]
+    assert study.controllers == LAWS
     assert len(study.scenarios) == len(POOR)
     for v in study.verdicts:
         sim = v.result.simulation
@@ -517,9 +520,10 @@ def test_bad_controller_names(fig1, spec, message):
 
 
 def test_parse_controllers_accepts_lists_and_spaces():
-    assert parse_controllers(None) == ["hinf", "lqr", "cascade"]
-    assert parse_controllers(" cascade , hinf ") == ["cascade", "hinf"]
-    assert parse_controllers(("lqr",)) == ["lqr"]
+    assert parse_controllers(None) == [hc.Law.hinf, hc.Law.lqr, hc.Law.cascade]
+    assert parse_controllers(" cascade , hinf ") == [hc.Law.cascade, hc.Law.hinf]
+    assert parse_controllers(("lqr",)) == [hc.Law.lqr]
+    assert parse_controllers([hc.Law.lqr, "hinf"]) == [hc.Law.lqr, hc.Law.hinf]
 
 
 def test_cascade_on_a_linear_model_is_a_clear_error():
@@ -545,7 +549,7 @@ def test_cli_compare(tmp_path):
             "--plot", plot)
     assert r.returncode == 0, r.stderr
     assert r.stderr == ""   # stderr is not a terminal: no progress line
-    assert "hinf/output-feedback" in r.stdout and "RMS heading error (wrapped), last half" in r.stdout
+    assert "hinf/output-feedback" in r.stdout and "RMS heading error, last half" in r.stdout
     assert "measurement noise sigma = 0.5" in r.stdout
     data = json.loads(out.read_text())
     assert list(data["controllers"]) == ["hinf", "cascade", "hinf/output-feedback", "cascade/output-feedback"]
@@ -590,6 +594,7 @@ def test_cli_recovery(tmp_path):
 
 
 def test_heading_metrics_without_a_heading():
+    """A model without a heading has NaN heading metrics (and no position: NaN position ones)."""
     s = hc.Scenario()
     s.model = hc.LinearModel(np.array([[-1.0]]), np.array([[1.0]]), np.array([[1.0]]))
     s.tf = 1.0
@@ -597,5 +602,6 @@ def test_heading_metrics_without_a_heading():
     s.desired_u = [0.0]
     s.gamma = 5.0
     s.initial_q0 = np.array([0.1])
-    result = hc.run_scenario(s)
-    assert all(math.isnan(v) for v in heading_metrics(result).values())
+    metrics = hc.run_scenario(s).metrics
+    assert math.isnan(metrics.rms_heading_error_last_half) and math.isnan(metrics.final_heading_error)
+    assert math.isnan(metrics.final_position_error) and math.isfinite(metrics.control_l2)

@@ -114,7 +114,7 @@ def filter_system(index: int) -> dict:
 
 def trajectory(system: dict) -> hc.Trajectory:
     """q_d = 0, u_d = 0 on [0, T]: A_e(t) = A."""
-    C = system.get("C")
+    C = system.get("C", np.zeros((0, 0)))  # LinearModel's default C: none
     model = hc.LinearModel(system["A"], system["B"], system["D"], C)
     return hc.Trajectory(model, np.zeros(system["n"]), [0.0] * system["B"].shape[1], 0.0, system["T"])
 

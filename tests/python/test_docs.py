@@ -29,6 +29,7 @@ def test_tutorial_code_blocks_run(monkeypatch):
     assert "conjugate point at t =" in printed
     assert namespace["cert"].p_min > 0
     assert "True\nTrue" in printed  # coupling held; the replay is identical
+    assert printed.endswith("True\nTrue\n")  # the pickled scenario and result are the same
     assert namespace["position_error"][-1] < 0.1 * namespace["position_error"][0]
     assert os.path.exists(ROOT / "docs" / "mathematics.md")
 

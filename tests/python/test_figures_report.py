@@ -157,7 +157,7 @@ def test_eigenvalue_figure_shows_z_and_sigma(comparison):
     sigma = {line.get_label(): line for line in ax_s.get_lines()}
     run = comparison["hinf/output-feedback"].result
     np.testing.assert_array_equal(sigma["lambda_max(Sigma), hinf/output-feedback"].get_ydata(),
-                                  run.simulation.sigma_max_eig)
+                                  run.simulation.estimator.sigma_max_eig)
     coupling = plotting.coupling_figure(comparison.results())
     levels = [line.get_ydata()[0] for line in coupling.axes[0].get_lines() if "gamma^2" in line.get_label()]
     assert levels == [25.0]
@@ -192,10 +192,10 @@ def test_npz_round_trip_is_exact(tmp_path, output_run):
         np.testing.assert_array_equal(data[name], values)
     sim = output_run.simulation
     np.testing.assert_array_equal(data["q"], sim.q)
-    np.testing.assert_array_equal(data["q_hat"], sim.q_hat)
-    np.testing.assert_array_equal(data["rho_sigma_z"], sim.rho_sigma_z)
+    np.testing.assert_array_equal(data["q_hat"], sim.estimator.q_hat)
+    np.testing.assert_array_equal(data["rho_sigma_z"], sim.estimator.rho_sigma_z)
     np.testing.assert_array_equal(data["Z"], output_run.solution.Z(sim.t))
-    assert data.meta["results"] == json.loads(output_run.to_json())
+    assert data.meta["results"] == json.loads(hc.results_json(output_run))
     assert data.meta["components"]["y"] == ["x", "y", "psi"]
     assert data.meta["state_names"] == ["u", "v", "r", "x", "y", "psi"]
     # Plain NumPy reads it without pickle.
@@ -235,8 +235,8 @@ def test_tidy_csv_round_trip(tmp_path, output_run, state_run):
 def test_json_results_file_round_trip(tmp_path, state_run):
     path = export.save_json(state_run, tmp_path / "run.json")
     data = export.load_json(path)
-    assert data == json.loads(state_run.to_json())
-    assert data["metrics"]["final_position_error"] == pytest.approx(state_run.metrics["final_position_error"],
+    assert data == json.loads(hc.results_json(state_run))
+    assert data["metrics"]["final_position_error"] == pytest.approx(state_run.metrics.final_position_error,
                                                                     rel=1e-15)
 
 

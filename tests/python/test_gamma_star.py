@@ -55,7 +55,7 @@ BIN = pathlib.Path(sys.executable).parent
 HINF_SIM, HINF_CPP = BIN / "hinf-sim", BIN / "hinf-cpp"
 HAVE_CLI = HINF_SIM.exists() and HINF_CPP.exists()
 
-# The paper run's gamma* from an independent implementation (shared/numerics-notes.md):
+# The paper run's gamma* from an independent implementation (measured with an independent implementation):
 # 1.33502, first conjugate time about 15.2 s. An EXTERNAL reference value, used only as
 # orientation with a loose tolerance; the bracket itself is checked against SciPy below.
 NOTES_PAPER_GAMMA_STAR = 1.33502
@@ -78,7 +78,7 @@ def run_isolated(*code: str, timeout: float = 8.0) -> dict:
 
 
 def scalar_trajectory(a, b, d, T, c=None, t0=0.0):
-    C = None if c is None else np.array([[c]])
+    C = np.zeros((0, 0)) if c is None else np.array([[c]])  # LinearModel's default C: none
     model = hc.LinearModel(np.array([[a]]), np.array([[b]]), np.array([[d]]), C)
     return hc.Trajectory(model, [0.0], [0.0], t0, t0 + T)
 
@@ -164,7 +164,7 @@ def test_scalar_gamma_star_matches_closed_form(case, method):
     tr = scalar_trajectory(a, b, d, T)
     result = hc.gamma_star(tr, m11(q), m11(qf),
                            hc.GammaStarOptions(rtol=1e-7, solver=hc.SolverOptions(method=method)))
-    assert result.converged and result.binding == "grde"
+    assert result.converged and result.binding == hc.GammaCondition.grde
     assert abs(result.gamma_star - exact) / exact < 1e-6, (result.gamma_star, exact)
     assert result.gamma_star == result.upper and result.lower < result.upper
     assert result.upper - result.lower <= 1e-7 * result.upper
@@ -179,9 +179,9 @@ def test_scalar_gamma_star_matches_closed_form(case, method):
         if abs(trial.gamma - exact) > 1e-5 * exact:
             assert trial.passed == (tau > T), trial
         if trial.passed:
-            assert math.isnan(trial.t_escape) and trial.condition == ""
+            assert math.isnan(trial.t_escape) and trial.condition == hc.GammaCondition.none
         else:
-            assert trial.condition == "grde"
+            assert trial.condition == hc.GammaCondition.grde
             if abs(trial.gamma - exact) > 1e-5 * exact:
                 assert abs(trial.t_escape - (T - tau)) < 1e-5 * T, trial
 
@@ -386,8 +386,9 @@ def test_design_at_the_returned_gamma_star_returns(case):
 
 @pytest.fixture(scope="module")
 def paper_star(paper_trajectory):
-    """gamma* of the paper run (Q = Qf = I) at the default options (bdf, rtol 1e-6)."""
-    return hc.gamma_star(paper_trajectory, EYE6, EYE6, hc.GammaStarOptions())
+    """gamma* of the paper run (Q = Qf = I) with the solver of paper_fig1.toml (bdf, rtol 1e-8)
+    and the default search options."""
+    return hc.gamma_star(paper_trajectory, EYE6, EYE6, hc.GammaStarOptions(solver=hc.SolverOptions("bdf")))
 
 
 def ship_inverse(paper_trajectory, gamma):
@@ -401,7 +402,7 @@ def test_paper_gamma_star_bracket_against_the_inverse_riccati(paper_star, paper_
     bracket (a conjugate point, measured min -1.2e-8 at t = 15.203, first zero 15.2124) and
     stays positive at the upper end (min +4.9e-8): the true gamma* lies in the bracket."""
     r = paper_star
-    assert r.converged and r.binding == "grde"
+    assert r.converged and r.binding == hc.GammaCondition.grde
     assert r.gamma_star == r.upper and r.upper - r.lower <= 1e-6 * r.upper
     low_min, _, low_cross = ship_inverse(paper_trajectory, r.lower)
     high_min, high_where, high_cross = ship_inverse(paper_trajectory, r.upper)
@@ -411,7 +412,7 @@ def test_paper_gamma_star_bracket_against_the_inverse_riccati(paper_star, paper_
     # (measured difference 2.5e-5 s; near gamma* the zero moves like sqrt(gamma* - gamma)).
     assert abs(r.t_escape_lower - low_cross) < 1e-3, (r.t_escape_lower, low_cross)
     assert abs(high_where - r.t_escape_lower) < 0.1  # the near-escape just above gamma*
-    # External orientation only (numerics-notes.md, an independent implementation).
+    # External orientation only (an independent implementation).
     assert abs(r.gamma_star - NOTES_PAPER_GAMMA_STAR) < 1e-3 * NOTES_PAPER_GAMMA_STAR
     assert abs(r.t_escape_lower - NOTES_PAPER_T_ESCAPE) < 0.1
 
@@ -420,21 +421,22 @@ def test_paper_design_just_above_and_just_below(paper_star, paper_trajectory):
     """At the upper end solve_grde succeeds (Z positive definite, finite, large near the
     near-escape); at the lower end it raises ConjugatePointError at t_escape_lower."""
     r = paper_star
-    sol = hc.solve_grde(paper_trajectory, EYE6, EYE6, r.upper)
-    times = np.unique(np.concatenate([np.linspace(0.0, 40.0, 4001), sol.step_times()]))
+    bdf = hc.SolverOptions("bdf")  # paper_star's solver
+    sol = hc.solve_grde(paper_trajectory, EYE6, EYE6, r.upper, bdf)
+    times = np.unique(np.concatenate([np.linspace(0.0, 40.0, 4001), sol.dense().breakpoints()]))
     eig = np.linalg.eigvalsh(sol.Z(times))
     assert np.all(np.isfinite(eig)) and eig.min() > 0.0
     assert eig.max() > 1e3  # gamma* is where Z stops being bounded
     with pytest.raises(hc.ConjugatePointError) as info:
-        hc.solve_grde(paper_trajectory, EYE6, EYE6, r.lower)
+        hc.solve_grde(paper_trajectory, EYE6, EYE6, r.lower, bdf)
     assert info.value.gamma == r.lower
     assert 0.0 <= info.value.t_escape <= 40.0
-    # The same integration as the search's trial at r.lower (same gamma, same default solver):
+    # The same integration as the search's trial at r.lower (same gamma, same solver):
     # equal (measured bit for bit); not a tolerance between different computations.
     assert info.value.t_escape == pytest.approx(r.t_escape_lower, abs=1e-9 * 40.0)
-    assert hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.lower) == pytest.approx(
+    assert hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.lower, bdf) == pytest.approx(
         r.t_escape_lower, abs=1e-9 * 40.0)
-    assert math.isnan(hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.upper))
+    assert math.isnan(hc.grde_escape_time(paper_trajectory, EYE6, EYE6, r.upper, bdf))
 
 
 def test_paper_trials_are_monotone_and_consistent(paper_star):
@@ -447,9 +449,9 @@ def test_paper_trials_are_monotone_and_consistent(paper_star):
     assert r.lower == max(t.gamma for t in failed)
     assert [t.t_escape for t in failed if t.gamma == r.lower] == [r.t_escape_lower]
     for t in passed:
-        assert math.isnan(t.t_escape) and t.condition == ""
+        assert math.isnan(t.t_escape) and t.condition == hc.GammaCondition.none
     for t in failed:
-        assert t.condition == "grde" and 0.0 <= t.t_escape <= 40.0
+        assert t.condition == hc.GammaCondition.grde and 0.0 <= t.t_escape <= 40.0
     # The automatic bracket starts at 1 and doubles: 1 fails, 2 passes.
     assert [(t.gamma, t.passed) for t in r.trials[:2]] == [(1.0, False), (2.0, True)]
 
@@ -492,10 +494,10 @@ def test_paper_gamma_star_at_a_tight_tolerance(method, paper_star, paper_traject
 # ==== 4. output feedback: GRDE, filter (36) and coupling ====
 
 def fine_times(*solutions, count=8001):
-    t0, tf = solutions[0].t0, solutions[0].tf
+    t0, tf = solutions[0].t0(), solutions[0].tf()
     parts = [np.linspace(t0, tf, count)]
     for sol in solutions:
-        steps = np.asarray(sol.step_times())
+        steps = np.asarray(sol.dense().breakpoints())
         parts += [steps, 0.5 * (steps[1:] + steps[:-1])]
     return np.unique(np.concatenate(parts))
 
@@ -508,7 +510,7 @@ def numpy_rho(Z, Sigma, times) -> np.ndarray:
 def design_checks(trajectory, gamma, N, Sigma0):
     """(Z, Sigma, NumPy max rho over a fine grid, where) from solve_grde and
     solve_filter_riccati; raises what they raise."""
-    n = trajectory.n
+    n = trajectory.n()
     Z = hc.solve_grde(trajectory, np.eye(n), np.eye(n), gamma)
     Sigma = hc.solve_filter_riccati(trajectory, N, np.eye(n), gamma, Sigma0)
     times = fine_times(Z, Sigma)
@@ -530,7 +532,7 @@ def test_paper_output_feedback_gamma_is_the_coupling_at_t0(paper_of_star, paper_
     solve (Sigma > 0), and NumPy's max rho on a fine grid is >= gamma^2 below, < gamma^2 above;
     the library's max_rho_sigma_z is that maximum (refined: >= the grid's, within 1e-9)."""
     r = paper_of_star
-    assert r.converged and r.binding == "coupling" and r.t_escape_lower == 0.0
+    assert r.converged and r.binding == hc.GammaCondition.coupling and r.t_escape_lower == 0.0
     state_feedback = hc.gamma_star(paper_trajectory, EYE6, EYE6).gamma_star
     assert r.gamma_star > 3.0 * state_feedback
     for factor, violated in ((1 - 1e-4, True), (1 + 1e-4, False)):
@@ -558,7 +560,7 @@ def test_ship_small_sigma0_still_binds_the_coupling(paper_trajectory, paper_of_s
     sigma0 = 1e-6 * EYE6
     r = hc.gamma_star_output_feedback(paper_trajectory, EYE6, EYE6, PAPER_N, sigma0, hc.GammaStarOptions())
     sf = hc.gamma_star(paper_trajectory, EYE6, EYE6)
-    assert r.converged and r.binding == "coupling"
+    assert r.converged and r.binding == hc.GammaCondition.coupling
     assert 1.5 * sf.gamma_star < r.gamma_star < paper_of_star.gamma_star
     gamma = math.sqrt(r.gamma_star * sf.gamma_star)
     _, _, rho, where = design_checks(paper_trajectory, gamma, PAPER_N, sigma0)
@@ -610,16 +612,17 @@ def scalar_output_feedback_gammas(a, b, d, c, q, qf, N, s0, T):
 # (a, b, d, c, q, qf, N, Sigma0, T), the bisection's rtol, the expected binding condition.
 SCALAR_OF_CASES = {
     # Sigma0 = 1: rho = sigma0 z(t0) at t0 exceeds gamma^2 up to 2.2975 (GRDE 1.8488).
-    "coupling at t0": ((0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 0.25, 1.0, 5.0), 1e-7, "coupling"),
+    "coupling at t0": ((0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 0.25, 1.0, 5.0), 1e-7, hc.GammaCondition.coupling),
     # q = 4 > gamma^2 c^2 / N makes s_f < 0: the filter escapes below 1.3904 (GRDE 0.8727).
     # Yet the filter never binds: as gamma decreases to its threshold Sigma -> inf, so
     # rho(Sigma Z) >= lambda_min(Z) lambda_max(Sigma) -> inf and the coupling fails first
     # (here from 1.3988). So "filter" cannot be constructed as the binding condition.
-    "filter threshold above the GRDE's": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0, 5.0), 1e-7, "coupling"),
-    "filter threshold, qf tiny": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1e-9, 1.0, 1e-3, 5.0), 1e-7, "coupling"),
+    "filter threshold above the GRDE's": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1.0, 1.0, 1.0, 5.0), 1e-7,
+                                          hc.GammaCondition.coupling),
+    "filter threshold, qf tiny": ((-1.0, 1.0, 1.0, 1.0, 4.0, 1e-9, 1.0, 1e-3, 5.0), 1e-7, hc.GammaCondition.coupling),
     # Tiny N and Sigma0: Sigma stays ~1e-6, and the coupling window above the GRDE's gamma*
     # is 2.1e-7 relative (closed form), below the bracket width 1e-5: the GRDE binds.
-    "tiny N and Sigma0": ((0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 2e-12, 2e-12, 5.0), 1e-5, "grde"),
+    "tiny N and Sigma0": ((0.1, 0.5, 1.0, 1.0, 1.0, 1.0, 2e-12, 2e-12, 5.0), 1e-5, hc.GammaCondition.grde),
 }
 
 
@@ -636,7 +639,7 @@ def test_scalar_output_feedback_gamma_matches_closed_forms(case):
     r = hc.gamma_star_output_feedback(tr, m11(q), m11(qf), m11(N), m11(s0), options)
     assert r.converged and r.binding == binding, r
     assert abs(r.gamma_star - expected) / expected < max(1e-6, 2 * rtol), (r.gamma_star, expected)
-    if binding == "grde":
+    if binding == hc.GammaCondition.grde:
         assert g_coupling - g_grde < 1e-6 * g_grde < rtol * g_grde
         state_feedback = hc.gamma_star(tr, m11(q), m11(qf), options)
         # The GRDE binds: the same bisection on the same GRDE verdicts, hence the same gamma.
@@ -687,7 +690,7 @@ def test_output_feedback_gamma_star_when_the_grde_binds_at_a_tight_tolerance():
         state = hc.gamma_star(tr, M(q), M(qf), options)
         try:
             r = hc.gamma_star_output_feedback(tr, M(q), M(qf), M(N), M(s0), options)
-            print(json.dumps({{"state": state.gamma_star, "gamma_star": r.gamma_star, "binding": r.binding,
+            print(json.dumps({{"state": state.gamma_star, "gamma_star": r.gamma_star, "binding": r.binding.name,
                               "converged": r.converged}}))
         except Exception as e:
             print(json.dumps({{"state": state.gamma_star, "error": type(e).__name__ + ": " + str(e)}}))
@@ -790,7 +793,7 @@ def test_cli_gamma_star(tmp_path, warm_cli, paper_star):
     done = cli(HINF_CPP, "gamma-star", hc.scenario_path("paper_fig1"), "--json", out)
     assert done.returncode == 0 and done.stderr == "", done.stderr
     data = json.loads(out.read_text())
-    # The file's solver section is bdf, rtol 1e-8 (the library defaults): the same search, so
+    # The file's solver section is bdf, rtol 1e-8 (as paper_star's): the same search, so
     # the same numbers (up to the JSON digits for t_escape_lower).
     assert data["gamma_star"] == paper_star.gamma_star and data["lower"] == paper_star.lower
     assert data["scenario"] == "paper-fig1" and data["binding"] == "grde" and data["converged"] is True
@@ -799,7 +802,7 @@ def test_cli_gamma_star(tmp_path, warm_cli, paper_star):
     passed = [t["gamma"] for t in data["trials"] if t["passed"]]
     failed = [t for t in data["trials"] if not t["passed"]]
     assert min(passed) > max(t["gamma"] for t in failed)
-    assert all(t["t_escape"] is None and t["condition"] == "" for t in data["trials"] if t["passed"])
+    assert all(t["t_escape"] is None and t["condition"] == "none" for t in data["trials"] if t["passed"])
     assert all(0.0 <= t["t_escape"] <= 40.0 and t["condition"] == "grde" for t in failed)
     text = done.stdout
     assert f"gamma* = {paper_star.gamma_star:.8g}" in text

@@ -83,10 +83,10 @@ def test_scalar_grde_matches_closed_form(case, method):
     s = scalar_s(b, d, gamma)
     tr = scalar_trajectory(a, b, d, t0, tf)
     sol = hc.solve_grde(tr, np.array([[q]]), np.array([[qf]]), gamma, hc.SolverOptions(method=method))
-    assert sol.gamma == gamma and sol.t0 == t0 and sol.tf == tf
+    assert sol.gamma() == gamma and sol.t0() == t0 and sol.tf() == tf
     times = np.linspace(t0, tf, 2001)
     # Most of these times fall strictly inside steps: the dense output is what is tested.
-    steps = np.asarray(sol.step_times())
+    steps = np.asarray(sol.dense().breakpoints())
     assert steps[0] == pytest.approx(t0) and steps[-1] == pytest.approx(tf)
     assert np.sum(~np.isin(times, steps)) > 1900
     exact = scalar_grde_closed_form(a, s, q, qf, tf - times)
@@ -188,7 +188,7 @@ def test_ship_conjugate_point(paper_trajectory, gamma, method):
 
 def test_ship_paper_gamma_has_no_conjugate_point(paper_solutions):
     for solution in paper_solutions.values():
-        assert solution.gamma == 5.0
+        assert solution.gamma() == 5.0
         assert np.all(np.isfinite(solution.Z(np.linspace(0.0, 40.0, 401))))
 
 
@@ -285,7 +285,7 @@ def test_lqr_large_solution_over_a_long_horizon(method):
     Z_ref = 1.0 / ref.sol(times)[0]
     assert Z_ref.min() > 1e11
     assert np.max(np.abs(sol.Z(times)[:, 0, 0] / Z_ref - 1.0)) < 1e-5  # measured: bdf 1.2e-7
-    assert sol.stats.steps > 3000
+    assert sol.stats().steps > 3000
 
 
 # ---- long horizons: the game algebraic Riccati equation ----
@@ -460,8 +460,8 @@ def test_paper_interpolation_between_steps(paper_solutions, paper_tight, method)
     tight re-solve. Measured: bdf 5.1e-8, adams 2.0e-8, erk 5.8e-10, each about the error at
     the step points themselves (the dense output has the integrator's order)."""
     sol = paper_solutions[method]
-    steps = np.asarray(sol.step_times())
-    assert np.all(np.diff(steps) > 0) and steps.size == sol.stats.steps + 1
+    steps = np.asarray(sol.dense().breakpoints())
+    assert np.all(np.diff(steps) > 0) and steps.size == sol.stats().steps + 1
     mid = 0.5 * (steps[1:] + steps[:-1])
     error_mid = max_rel(sol.Z(mid), paper_tight.Z(mid))
     error_steps = max_rel(sol.Z(steps), paper_tight.Z(steps))
@@ -474,7 +474,7 @@ def test_paper_grde_residual(paper_trajectory, paper_solutions, method):
     ship's B and D, at a grid and at the step midpoints, relative to the size of the terms."""
     sol = paper_solutions[method]
     S = SHIP_B @ SHIP_B.T - SHIP_D @ SHIP_D.T / 25.0
-    steps = np.asarray(sol.step_times())
+    steps = np.asarray(sol.dense().breakpoints())
     times = np.concatenate([PAPER_TIMES, 0.5 * (steps[1:] + steps[:-1])])
     Z, dZ, A = sol.Z(times), sol.dZdt(times), paper_trajectory.A_e(times)
     AtZ = np.transpose(A, (0, 2, 1)) @ Z

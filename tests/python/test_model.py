@@ -1,4 +1,4 @@
-"""Models: the ship against DESIGN.md and finite differences, the error split (26)-(31),
+"""Models: the ship against docs/mathematics.md and finite differences, the error split (26)-(31),
 Python-subclassed models, and the desired trajectory against independent integrations."""
 
 from __future__ import annotations
@@ -62,7 +62,7 @@ def test_ship_parameters_roundtrip():
     p = hc.ShipParameters(**OTHER_PARAMETERS)
     model = hc.ShipModel(p)
     for key, value in OTHER_PARAMETERS.items():
-        assert getattr(model.parameters, key) == value
+        assert getattr(model.parameters(), key) == value
     with pytest.raises(ValueError, match="m_v"):
         hc.ShipModel(hc.ShipParameters(m_v=float("nan")))
 
@@ -111,7 +111,7 @@ def test_ship_error_split_identities(ship_and_parameters):
 
 
 def design_split(q_d, q_e, p):
-    """The decomposition of DESIGN.md ("Imperfect measurements") written out in NumPy:
+    """The decomposition of docs/mathematics.md ("Imperfect measurements") written out in NumPy:
     q1 = [u, v, x, y], q2 = [r, psi]; A12 = d alpha1/d q2 and A21 = d alpha2/d q1 at 0 by
     finite differences; returns (A, alpha) in the state order [u, v, r, x, y, psi]."""
     ud, vd, rd, psid = q_d[0], q_d[1], q_d[2], q_d[5]
@@ -254,7 +254,7 @@ def test_python_linear_model_gives_the_same_grde_as_linear_model(n, method):
     rtol, atol = 1e-12, 1e-14  # of the desired trajectory's integration
     solutions = []
     for model in (hc.LinearModel(A, B, D), PyLinear(A, B, D)):
-        tr = hc.Trajectory(model, q_d0, u_d, 0.5, 4.0, rtol=rtol, atol=atol)
+        tr = hc.Trajectory(model, q_d0, u_d, 0.5, 4.0, hc.TrajectoryOptions(rtol=rtol, atol=atol))
         solutions.append((tr, hc.solve_grde(tr, Q, Qf, 10.0, options)))
     times = np.linspace(0.5, 4.0, 301)
     (tr1, s1), (tr2, s2) = solutions
@@ -272,7 +272,7 @@ def test_python_linear_model_gives_the_same_grde_as_linear_model(n, method):
 # ---- the desired trajectory (paper eq. 8) ----
 
 def test_paper_trajectory_matches_an_independent_integration(paper_trajectory):
-    """q_d(t) against SciPy's DOP853 on the DESIGN.md equations, and A_e(t) against finite
+    """q_d(t) against SciPy's DOP853 on the docs/mathematics.md equations, and A_e(t) against finite
     differences of the NumPy drift at that q_d(t)."""
 
     def rhs(t, q):
@@ -324,7 +324,7 @@ def test_trajectory_uses_absolute_time(ship):
                     method="DOP853", rtol=1e-13, atol=1e-13, dense_output=True)
     times = np.linspace(3.0, 10.0, 141)
     np.testing.assert_allclose(tr.q_d(times), ref.sol(times).T, rtol=0, atol=1e-9)
-    assert (tr.t0, tr.tf, tr.n, tr.m) == (3.0, 10.0, 6, 2)
+    assert (tr.t0(), tr.tf(), tr.n(), tr.m()) == (3.0, 10.0, 6, 2)
 
 
 class Failing(hc.Model):

@@ -62,12 +62,20 @@ def paper_disturbance_signals():
     return [w, w, w, 0.0, 0.0, 0.0]
 
 
-def paper_options(**changes) -> hc.OutputFeedbackOptions:
+def paper_problem(design, noise, **changes) -> hc.OutputFeedbackProblem:
     """The Figure 2 set-up: sigma = 0.5, T = 0.01, N = 0.25 I, Sigma0 = (2I - I)^-1 = I, Q = I."""
-    args = dict(sigma=0.5, sample_period=0.01, N=PAPER_N, Sigma0=EYE6, Q=EYE6, filter_A="estimate",
-                stop_on_coupling_violation=True)
+    args = dict(design=design, sigma=0.5, sample_period=0.01, noise=noise, N=PAPER_N, Sigma0=EYE6, Q=EYE6)
     args.update(changes)
-    return hc.OutputFeedbackOptions(**args)
+    return hc.OutputFeedbackProblem(**args)
+
+
+DESIRED_A = hc.OutputFeedbackOptions(filter_A=hc.FilterLinearization.desired)
+DESIRED_A_FLAG = hc.OutputFeedbackOptions(filter_A="desired", on_coupling_violation="flag")
+
+
+def series(run: hc.SimulationResult, name: str):
+    """A time series of a run: a field of the SimulationResult or of its estimator's."""
+    return getattr(run.estimator, name) if name in hc.EstimatorSeries.__match_args__ else getattr(run, name)
 
 
 def paper_noise(seed=PAPER_SEED, t0=0.0, tf=40.0, period=0.01):
@@ -75,7 +83,7 @@ def paper_noise(seed=PAPER_SEED, t0=0.0, tf=40.0, period=0.01):
 
 
 def position_error(run) -> np.ndarray:
-    return np.hypot(run.q_e[:, 3], run.q_e[:, 4])
+    return np.hypot(run.q_e()[:, 3], run.q_e()[:, 4])
 
 
 def mutate(text: str, old: str, new: str) -> str:
@@ -96,9 +104,9 @@ def cli(*args) -> subprocess.CompletedProcess:
 def test_error_split_along_the_paper_trajectory(paper_trajectory):
     """At 401 times along the paper's desired path (q_d(t) from the library's trajectory,
     A_e(t) its Jacobian there) and random errors: the identities to round-off, and (A, alpha)
-    equal to the DESIGN.md decomposition written out by hand (no finite differences). C++ and
+    equal to the docs/mathematics.md decomposition written out by hand (no finite differences). C++ and
     NumPy evaluate the same formulas: compared at ROUNDOFF times the size of the terms."""
-    ship = paper_trajectory.model
+    ship = paper_trajectory.model()
     rng = np.random.default_rng(26)
     times = np.linspace(0.0, 40.0, 401)
     q_ds, A_es = paper_trajectory.q_d(times), paper_trajectory.A_e(times)
@@ -126,7 +134,7 @@ def test_error_split_structure_and_order(paper_trajectory):
     """Paper §4: each subsystem is affine when the other's state is known. A(q) depends on
     q2 = (r, psi) only; alpha's q1-rows depend on q2 only, its q2-rows on q1 only. And the
     remainder alpha is second order: alpha(eps q)/eps^2 converges as eps -> 0."""
-    ship = paper_trajectory.model
+    ship = paper_trajectory.model()
     i1, i2 = [0, 1, 3, 4], [2, 5]
     rng = np.random.default_rng(31)
     for t in (0.0, 7.3, 21.9, 40.0):
@@ -233,7 +241,7 @@ def test_filter_long_horizon_converges_to_the_are(n, seed, unstable, finite_gamm
     tf = 25.0 / abs(alpha)
     tr = lti_measured(A, B, D, C, 0.0, tf)
     sol = hc.solve_filter_riccati(tr, N, Q, gamma, 0.5 * np.eye(n), hc.SolverOptions(method=method))
-    assert sol.gamma == gamma and sol.t0 == 0.0 and sol.tf == tf and sol.n == n
+    assert sol.gamma() == gamma and sol.t0() == 0.0 and sol.tf() == tf and sol.n() == n
     error = max_rel(sol.Sigma(tf), X)
     assert error < 1e-6, f"max relative error {error:.2e}"
     # Sigma(t0) = Sigma0 from the first step's polynomial: exact up to the round-off of its sum.
@@ -287,7 +295,7 @@ def test_filter_residual_along_the_paper_trajectory(paper_trajectory, method):
     Sigma + DD') = 0 at a grid and at the step midpoints, relative to the size of the terms.
     Measured: bdf 1.3e-6, adams 5.5e-7, erk 6.3e-8."""
     sol = hc.solve_filter_riccati(paper_trajectory, PAPER_N, EYE6, 5.0, EYE6, hc.SolverOptions(method=method))
-    steps = np.asarray(sol.step_times())
+    steps = np.asarray(sol.dense().breakpoints())
     assert steps[0] == pytest.approx(0.0) and steps[-1] == pytest.approx(40.0)
     times = np.concatenate([np.linspace(0.0, 40.0, 801), 0.5 * (steps[1:] + steps[:-1])])
     Sigma, dSigma, A = sol.Sigma(times), sol.dSigma_dt(times), paper_trajectory.A_e(times)
@@ -348,22 +356,23 @@ def test_closed_loop_sigma_with_desired_A_is_the_filter_solution(paper_trajector
     grde = paper_solutions[method]
     solver = hc.SolverOptions(method=method)
     filt = hc.solve_filter_riccati(paper_trajectory, PAPER_N, EYE6, 5.0, EYE6, solver)
-    run = hc.simulate_output_feedback(grde, hc.Signal(1.0), paper_disturbance_signals(), PAPER_Q0,
-                                      paper_noise(), paper_options(filter_A="desired"), 0.01, solver)
+    run = hc.simulate_output_feedback(paper_problem(grde, paper_noise()), hc.HinfStateFeedback(grde),
+                                      paper_disturbance_signals(), PAPER_Q0, DESIRED_A,
+                                      hc.SimulationOptions(solver=solver))
     Sigma, Z = filt.Sigma(run.t), grde.Z(run.t)
     eig = np.linalg.eigvalsh(Sigma)
-    assert max_rel(run.sigma_min_eig, eig[:, 0]) < 1e-6
-    assert max_rel(run.sigma_max_eig, eig[:, -1]) < 1e-6
-    assert np.max(np.abs(run.sigma_min_eig / eig[:, 0] - 1.0)) < 1e-6
+    assert max_rel(run.estimator.sigma_min_eig, eig[:, 0]) < 1e-6
+    assert max_rel(run.estimator.sigma_max_eig, eig[:, -1]) < 1e-6
+    assert np.max(np.abs(run.estimator.sigma_min_eig / eig[:, 0] - 1.0)) < 1e-6
     rho = spectral_radius(Sigma, Z)
-    assert np.max(np.abs(run.rho_sigma_z / rho - 1.0)) < 1e-6
-    assert math.isnan(run.coupling_violation_t)
-    assert np.all(run.rho_sigma_z < 25.0)
+    assert np.max(np.abs(run.estimator.rho_sigma_z / rho - 1.0)) < 1e-6
+    assert math.isnan(run.estimator.coupling_violation_t)
+    assert np.all(run.estimator.rho_sigma_z < 25.0)
     # Sigma(t0) = I: its eigenvalues are 1 and rho(Sigma Z) = lambda_max(Z(t0)) at t0 (the
     # library's eigenvalue algorithms against LAPACK's: round-off).
-    assert run.sigma_min_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
-    assert run.sigma_max_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
-    assert run.rho_sigma_z[0] == pytest.approx(np.linalg.eigvalsh(grde.Z(0.0))[-1], rel=ROUNDOFF)
+    assert run.estimator.sigma_min_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
+    assert run.estimator.sigma_max_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
+    assert run.estimator.rho_sigma_z[0] == pytest.approx(np.linalg.eigvalsh(grde.Z(0.0))[-1], rel=ROUNDOFF)
 
 
 def test_estimate_and_desired_filters_coincide_when_the_estimate_is_zero(paper_trajectory, paper_solutions):
@@ -375,15 +384,16 @@ def test_estimate_and_desired_filters_coincide_when_the_estimate_is_zero(paper_t
     grde = paper_solutions["erk"]
     rtol = 1e-11
     solver = hc.SolverOptions(method="erk", rtol=rtol, atol=rtol * 1e-2)
-    runs = [hc.simulate_output_feedback(grde, hc.Signal(1.0), None, PAPER_Q_D0, paper_noise(),
-                                        paper_options(sigma=0.0, filter_A=fa), 0.01, solver)
-            for fa in ("estimate", "desired")]
+    runs = [hc.simulate_output_feedback(paper_problem(grde, paper_noise(), sigma=0.0), hc.HinfStateFeedback(grde),
+                                        None, PAPER_Q_D0, hc.OutputFeedbackOptions(filter_A=fa),
+                                        hc.SimulationOptions(solver=solver))
+            for fa in hc.FilterLinearization.__members__.values()]
     for field in ("sigma_min_eig", "sigma_max_eig", "rho_sigma_z"):
         # Two runs, each within a few rtol of the exact Sigma (|Sigma| ~ 1): 10 rtol.
-        assert max_rel(getattr(runs[0], field), getattr(runs[1], field)) < 10.0 * rtol, field
+        assert max_rel(series(runs[0], field), series(runs[1], field)) < 10.0 * rtol, field
 
 
-@pytest.mark.parametrize("filter_A", ["estimate", "desired"])
+@pytest.mark.parametrize("filter_A", list(hc.FilterLinearization.__members__.values()))
 def test_ship_closed_loop_matches_an_independent_integration(filter_A):
     """Plant, estimator (35) and filter (36) integrated by SciPy from the paper's equations
     (NumPy ship, hand-written decomposition for A(q_hat), NumPy disturbance), one hold
@@ -397,10 +407,11 @@ def test_ship_closed_loop_matches_an_independent_integration(filter_A):
     N = np.array([[0.25, 0.02, 0.0], [0.02, 0.3, 0.0], [0.0, 0.0, 0.2]])
     Sigma0 = 0.8 * EYE6 + 0.1 * np.ones((6, 6))
     noise = hc.standard_normal_samples(3, hc.noise_sample_count(t0, tf, T), 3)
-    options = hc.OutputFeedbackOptions(sigma, T, N, Sigma0, EYE6, filter_A=filter_A)
-    run = hc.simulate_output_feedback(grde, hc.Signal(kappa), paper_disturbance_signals(), PAPER_Q0, noise,
-                                      options, 0.05, hc.SolverOptions(method="erk", rtol=1e-11, atol=1e-13))
-    if filter_A == "estimate":
+    problem = hc.OutputFeedbackProblem(grde, sigma, T, noise, N, Sigma0, EYE6)
+    run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde, kappa), paper_disturbance_signals(),
+                                      PAPER_Q0, hc.OutputFeedbackOptions(filter_A=filter_A),
+                                      hc.SimulationOptions(0.05, solver=hc.SolverOptions("erk", 1e-11, 1e-13)))
+    if filter_A == hc.FilterLinearization.estimate:
         def A_filter(t, q_d, q_hat):
             return ship_error_split(q_d, q_hat)[0]
     else:
@@ -414,20 +425,20 @@ def test_ship_closed_loop_matches_an_independent_integration(filter_A):
     # Library and SciPy, each at rtol 1e-11 (|q| up to 7): 10 x the sum of their tolerances.
     tolerance = 10.0 * (1e-11 + 1e-11) * max(1.0, np.max(np.abs(q)))
     np.testing.assert_allclose(run.q, q, rtol=0, atol=tolerance)
-    np.testing.assert_allclose(run.q_hat, q_hat, rtol=0, atol=tolerance)
+    np.testing.assert_allclose(run.estimator.q_hat, q_hat, rtol=0, atol=tolerance)
     eig = np.linalg.eigvalsh(Sigma)
-    np.testing.assert_allclose(run.sigma_min_eig, eig[:, 0], rtol=1e-8, atol=0)
-    np.testing.assert_allclose(run.sigma_max_eig, eig[:, -1], rtol=1e-8, atol=0)
-    np.testing.assert_allclose(run.rho_sigma_z, spectral_radius(Sigma, grde.Z(run.t)), rtol=1e-8, atol=0)
+    np.testing.assert_allclose(run.estimator.sigma_min_eig, eig[:, 0], rtol=1e-8, atol=0)
+    np.testing.assert_allclose(run.estimator.sigma_max_eig, eig[:, -1], rtol=1e-8, atol=0)
+    np.testing.assert_allclose(run.estimator.rho_sigma_z, spectral_radius(Sigma, grde.Z(run.t)), rtol=1e-8, atol=0)
     # The recorded control is the law (34) at the recorded estimate; y = C q + sigma v (C++
     # against NumPy: round-off of the size of the terms).
     K = grde.gain(run.t)
-    terms = np.max(np.abs(run.u_d)) + kappa * np.max(np.einsum("kij,kj->ki", np.abs(K), np.abs(run.q_hat)))
-    np.testing.assert_allclose(run.u, run.u_d - kappa * np.einsum("kij,kj->ki", K, run.q_hat), rtol=0,
+    terms = np.max(np.abs(run.u_d)) + kappa * np.max(np.einsum("kij,kj->ki", np.abs(K), np.abs(run.estimator.q_hat)))
+    np.testing.assert_allclose(run.u, run.u_d - kappa * np.einsum("kij,kj->ki", K, run.estimator.q_hat), rtol=0,
                                atol=ROUNDOFF * terms)
     held = noise[np.minimum(np.floor(run.t / T + 1e-9).astype(int), noise.shape[0] - 1)]
     terms = np.max(np.abs(run.q[:, 3:])) + sigma * np.max(np.abs(held))
-    np.testing.assert_allclose(run.y, run.q[:, 3:] + sigma * held, rtol=0, atol=ROUNDOFF * terms)
+    np.testing.assert_allclose(run.estimator.y, run.q[:, 3:] + sigma * held, rtol=0, atol=ROUNDOFF * terms)
 
 
 @pytest.mark.parametrize("gamma", [5.0, math.inf], ids=["hinf", "lqg"])
@@ -450,10 +461,11 @@ def test_linear_closed_loop_matches_an_independent_integration(gamma):
     grde = hc.solve_grde(tr, np.eye(n), np.eye(n), gamma, hc.SolverOptions(method="erk", **TIGHT))
     noise = hc.standard_normal_samples(17, hc.noise_sample_count(t0, tf, T), 2)
     w1 = hc.Signal(0.0, [hc.Harmonic(0.4, 2.0)])
-    options = hc.OutputFeedbackOptions(sigma, T, N, Sigma0, np.eye(n))
+    problem = hc.OutputFeedbackProblem(grde, sigma, T, noise, N, Sigma0, np.eye(n))
     q0 = np.array([1.0, -0.5, 0.3])
-    run = hc.simulate_output_feedback(grde, hc.Signal(kappa), [w1, 0.0, 0.0, 0.0], q0, noise, options, 0.1,
-                                      hc.SolverOptions(method="erk", rtol=1e-11, atol=1e-13))
+    solver = hc.SolverOptions("erk", 1e-11, 1e-13)
+    run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde, kappa), [w1, 0.0, 0.0, 0.0], q0,
+                                      simulation=hc.SimulationOptions(0.1, solver=solver))
     q, q_hat, Sigma = output_feedback_reference(
         t0, tf, q0, run.t, f=lambda t, x: A @ x, B=B, D=D, C=C, A_filter=lambda t, qd, qh: A,
         q_d=tr.q_d, u_d=tr.u_d, Z=grde.Z, w=lambda t: np.array([0.4 * math.sin(2.0 * t), 0.0]),
@@ -461,18 +473,18 @@ def test_linear_closed_loop_matches_an_independent_integration(gamma):
     # Library and SciPy, each at rtol 1e-11: 10 x the sum of their tolerances times |q|.
     tolerance = 10.0 * (1e-11 + 1e-11) * max(1.0, np.max(np.abs(q)), np.max(np.abs(q_hat)))
     np.testing.assert_allclose(run.q, q, rtol=0, atol=tolerance)
-    np.testing.assert_allclose(run.q_hat, q_hat, rtol=0, atol=tolerance)
-    np.testing.assert_allclose(run.sigma_max_eig, np.linalg.eigvalsh(Sigma)[:, -1], rtol=1e-8)
+    np.testing.assert_allclose(run.estimator.q_hat, q_hat, rtol=0, atol=tolerance)
+    np.testing.assert_allclose(run.estimator.sigma_max_eig, np.linalg.eigvalsh(Sigma)[:, -1], rtol=1e-8)
     # The noise channels of w (the last two of four) hold the samples; w1 is the disturbance.
     held = noise[np.minimum(np.floor((run.t - t0) / T + 1e-9).astype(int), noise.shape[0] - 1)]
     np.testing.assert_array_equal(run.w[:, 2:], held)  # copies of the samples
     np.testing.assert_array_equal(run.w[:, 1], 0.0)
     # C q + sigma v and 0.4 sin(2 t) in C++ and in NumPy: round-off of the size of the terms.
     terms = np.max(np.abs(run.q) @ np.abs(C).T) + sigma * np.max(np.abs(held))
-    np.testing.assert_allclose(run.y, run.q @ C.T + sigma * held, rtol=0, atol=ROUNDOFF * terms)
+    np.testing.assert_allclose(run.estimator.y, run.q @ C.T + sigma * held, rtol=0, atol=ROUNDOFF * terms)
     np.testing.assert_allclose(run.w[:, 0], 0.4 * np.sin(2.0 * run.t), rtol=0, atol=ROUNDOFF * 0.4)
     if math.isinf(gamma):
-        assert np.all(run.rho_sigma_z < math.inf) and math.isnan(run.coupling_violation_t)
+        assert np.all(run.estimator.rho_sigma_z < math.inf) and math.isnan(run.estimator.coupling_violation_t)
 
 
 # ======================================================================================
@@ -484,28 +496,31 @@ def test_no_noise_no_error_stays_on_the_trajectory(paper_trajectory, paper_solut
     """sigma = 0 (N given), no disturbance, q0 = q_d0: q_hat(t) = 0 and q(t) = q_d(t) exactly,
     so the run stays there to integration accuracy (measured 1.3e-12 for both), whatever the
     noise array holds (sigma multiplies it)."""
-    run = hc.simulate_output_feedback(paper_solutions[method], hc.Signal(1.0), None, PAPER_Q_D0,
-                                      paper_noise(seed=5), paper_options(sigma=0.0), 0.01,
-                                      hc.SolverOptions(method=method))
-    assert run.t.shape == (4001,) and run.q_hat.shape == (4001, 6) and run.y.shape == (4001, 3)
-    assert np.max(np.abs(run.q_hat)) < 1e-8
+    design = paper_solutions[method]
+    run = hc.simulate_output_feedback(paper_problem(design, paper_noise(seed=5), sigma=0.0),
+                                      hc.HinfStateFeedback(design), None, PAPER_Q_D0,
+                                      simulation=hc.SimulationOptions(solver=hc.SolverOptions(method)))
+    assert run.t.shape == (4001,) and run.estimator.q_hat.shape == (4001, 6) and run.estimator.y.shape == (4001, 3)
+    assert np.max(np.abs(run.estimator.q_hat)) < 1e-8
     assert np.max(np.abs(run.q - run.q_d)) < 1e-8
     assert np.max(np.abs(run.u - run.u_d)) < 1e-8
-    np.testing.assert_array_equal(run.q_hat[0], 0.0)
-    np.testing.assert_array_equal(run.y, run.q[:, 3:])  # sigma = 0 and C selects: y = C q exactly
+    np.testing.assert_array_equal(run.estimator.q_hat[0], 0.0)
+    np.testing.assert_array_equal(run.estimator.y, run.q[:, 3:])  # sigma = 0 and C selects: y = C q exactly
     np.testing.assert_array_equal(run.w[:, :3], 0.0)
 
 
 @pytest.mark.parametrize("method", ["erk", "bdf"])
-@pytest.mark.parametrize("filter_A", ["estimate", "desired"])
+@pytest.mark.parametrize("filter_A", list(hc.FilterLinearization.__members__.values()))
 def test_no_noise_estimation_error_vanishes(paper_trajectory, paper_solutions, method, filter_A):
     """sigma = 0, no disturbance, the paper's initial error (|q_e0| = 1.62, q_hat(t0) = 0): the
     estimation error |q_hat - q_e| decays to round-off (measured 1e-2 at 5 s, 3e-7 at 20 s,
     1.3e-12 at 40 s) and the ship tracks (position error 1.5e-11 at 40 s)."""
-    run = hc.simulate_output_feedback(paper_solutions[method], hc.Signal(1.0), None, PAPER_Q0,
-                                      paper_noise(seed=6), paper_options(sigma=0.0, filter_A=filter_A), 0.01,
-                                      hc.SolverOptions(method=method))
-    error = np.linalg.norm(run.q_hat - run.q_e, axis=1)
+    design = paper_solutions[method]
+    run = hc.simulate_output_feedback(paper_problem(design, paper_noise(seed=6), sigma=0.0),
+                                      hc.HinfStateFeedback(design), None, PAPER_Q0,
+                                      hc.OutputFeedbackOptions(filter_A=filter_A),
+                                      hc.SimulationOptions(solver=hc.SolverOptions(method)))
+    error = np.linalg.norm(run.estimator.q_hat - run.q_e(), axis=1)
     # q_hat(t0) = 0 and q_e(t0) = q0 - q_d0, the same subtraction: the norm of the same vector.
     assert error[0] == pytest.approx(np.linalg.norm(PAPER_Q0 - PAPER_Q_D0), rel=1e-15)
     assert error[-1] < 1e-3 * error[0]
@@ -568,18 +583,19 @@ def fig2_run(fig2_scenario):
 
 def test_same_seed_same_run_bit_for_bit(fig2_scenario, fig2_run):
     again = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig2")))
+    assert again.simulation == fig2_run.simulation  # every series and field, exactly
     for field in ("t", "q", "q_d", "u", "u_d", "w", "q_hat", "y", "sigma_min_eig", "sigma_max_eig",
                   "rho_sigma_z"):
-        np.testing.assert_array_equal(getattr(again.simulation, field), getattr(fig2_run.simulation, field),
+        np.testing.assert_array_equal(series(again.simulation, field), series(fig2_run.simulation, field),
                                       err_msg=field)
     assert again.metrics == fig2_run.metrics
     # scenario_noise is the seeded standard normal sequence, one row per 0.01 s.
     noise = hc.scenario_noise(fig2_scenario)
     np.testing.assert_array_equal(noise, hc.standard_normal_samples(PAPER_SEED, 4000, 3))
     # Passing it explicitly replays the run exactly.
-    replay = hc.run_scenario(fig2_scenario, noise)
+    replay = hc.run_scenario_with_noise(fig2_scenario, noise)
     for field in ("q", "q_hat", "y", "u", "w", "rho_sigma_z"):
-        np.testing.assert_array_equal(getattr(replay.simulation, field), getattr(fig2_run.simulation, field),
+        np.testing.assert_array_equal(series(replay.simulation, field), series(fig2_run.simulation, field),
                                       err_msg=field)
 
 
@@ -591,8 +607,8 @@ def test_another_seed_gives_another_run(fig2_run):
     a, b = other.simulation, fig2_run.simulation
     np.testing.assert_array_equal(a.q[0], b.q[0])
     assert np.max(np.abs(a.q - b.q)) > 1e-3
-    assert np.max(np.abs(a.y - b.y)) > 0.5
-    assert other.metrics["rms_estimation_error_last_half"] != fig2_run.metrics["rms_estimation_error_last_half"]
+    assert np.max(np.abs(a.estimator.y - b.estimator.y)) > 0.5
+    assert other.metrics.rms_estimation_error_last_half != fig2_run.metrics.rms_estimation_error_last_half
 
 
 def test_changing_one_noise_sample_changes_the_run_from_its_period_on(fig2_scenario, fig2_run):
@@ -600,23 +616,23 @@ def test_changing_one_noise_sample_changes_the_run_from_its_period_on(fig2_scena
     unchanged before 20 s (the state bit for bit up to 20 s) and changes it after."""
     noise = np.array(hc.scenario_noise(fig2_scenario))
     noise[2000] += np.array([3.0, -2.0, 1.0])
-    changed = hc.run_scenario(fig2_scenario, noise).simulation
+    changed = hc.run_scenario_with_noise(fig2_scenario, noise).simulation
     base = fig2_run.simulation
     t = base.t
     k20 = int(np.flatnonzero(np.isclose(t, 20.0))[0])
     for field in ("q", "q_hat", "u", "rho_sigma_z"):
-        np.testing.assert_array_equal(getattr(changed, field)[: k20 + 1], getattr(base, field)[: k20 + 1],
+        np.testing.assert_array_equal(series(changed, field)[: k20 + 1], series(base, field)[: k20 + 1],
                                       err_msg=field)
     for field in ("y", "w"):
-        np.testing.assert_array_equal(getattr(changed, field)[:k20], getattr(base, field)[:k20], err_msg=field)
+        np.testing.assert_array_equal(series(changed, field)[:k20], series(base, field)[:k20], err_msg=field)
     # y and w at 20 s already hold the new sample; the state moves after. (Differences of
     # numbers up to |y| ~ 20: round-off of that size.)
-    scale = np.max(np.abs(changed.y[k20])) + np.max(np.abs(base.y[k20]))
-    np.testing.assert_allclose(changed.y[k20] - base.y[k20], 0.5 * np.array([3.0, -2.0, 1.0]), rtol=0,
-                               atol=ROUNDOFF * scale)
+    scale = np.max(np.abs(changed.estimator.y[k20])) + np.max(np.abs(base.estimator.y[k20]))
+    np.testing.assert_allclose(changed.estimator.y[k20] - base.estimator.y[k20], 0.5 * np.array([3.0, -2.0, 1.0]),
+                               rtol=0, atol=ROUNDOFF * scale)
     np.testing.assert_allclose(changed.w[k20, 3:] - base.w[k20, 3:], [3.0, -2.0, 1.0], rtol=0,
                                atol=ROUNDOFF * np.max(np.abs(changed.w[k20, 3:])))
-    assert np.max(np.abs(changed.q_hat[k20 + 1] - base.q_hat[k20 + 1])) > 1e-4
+    assert np.max(np.abs(changed.estimator.q_hat[k20 + 1] - base.estimator.q_hat[k20 + 1])) > 1e-4
     assert np.max(np.abs(changed.q[k20 + 5:] - base.q[k20 + 5:])) > 1e-5
 
 
@@ -628,8 +644,10 @@ def test_noise_is_held_over_each_period(paper_trajectory, paper_solutions):
     count = hc.noise_sample_count(0.0, 40.0, T)
     assert count == 1334  # 1333 whole periods and a partial one
     noise = hc.standard_normal_samples(99, count, 3)
-    run = hc.simulate_output_feedback(paper_solutions["erk"], hc.Signal(1.0), paper_disturbance_signals(), PAPER_Q0,
-                                      noise, paper_options(sample_period=T), 0.01, hc.SolverOptions(method="erk"))
+    design = paper_solutions["erk"]
+    run = hc.simulate_output_feedback(paper_problem(design, noise, sample_period=T), hc.HinfStateFeedback(design),
+                                      paper_disturbance_signals(), PAPER_Q0,
+                                      simulation=hc.SimulationOptions(solver=hc.SolverOptions("erk")))
     k = np.arange(run.t.size)
     held = noise[np.minimum(k // 3, count - 1)]
     np.testing.assert_array_equal(run.w[:, 3:], held)  # copies of the samples
@@ -637,14 +655,14 @@ def test_noise_is_held_over_each_period(paper_trajectory, paper_solutions):
     np.testing.assert_allclose(run.w[:, :3], np.array([paper_disturbance(t)[:3] for t in run.t]), rtol=0,
                                atol=ROUNDOFF * 0.1)
     terms = np.max(np.abs(run.q[:, 3:])) + sigma * np.max(np.abs(held))
-    np.testing.assert_allclose(run.y, run.q[:, 3:] + sigma * held, rtol=0, atol=ROUNDOFF * terms)
+    np.testing.assert_allclose(run.estimator.y, run.q[:, 3:] + sigma * held, rtol=0, atol=ROUNDOFF * terms)
 
 
 def test_scenario_noise_needs_a_measurement_section():
     with pytest.raises(ValueError, match="measurement"):
         hc.scenario_noise(hc.load_scenario(hc.scenario_path("paper_fig1")))
     with pytest.raises(ValueError, match="measurement"):
-        hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")), paper_noise())
+        hc.run_scenario_with_noise(hc.load_scenario(hc.scenario_path("paper_fig1")), paper_noise())
 
 
 def json_close(a, b, path="$"):
@@ -678,8 +696,9 @@ def test_both_programs_agree_on_figure2(tmp_path, fig2_run):
     json_close(a, b)
     assert a["scenario"] == "paper-fig2" and a["coupling_violation_t"] is None
     # ... and the numbers are those of the Python API's run of the same file (the same code).
-    for key, value in fig2_run.metrics.items():
-        assert a["metrics"][key] == pytest.approx(value, rel=1e-12), key
+    assert set(a["metrics"]) == {d.name for d in hc.metric_table()}
+    for key in a["metrics"]:
+        assert a["metrics"][key] == pytest.approx(getattr(fig2_run.metrics, key), rel=1e-12), key
 
 
 # ======================================================================================
@@ -713,8 +732,9 @@ def scalar_coupling_case():
     tr = hc.Trajectory(model, [0.0], [0.0], t0, tf)
     grde = hc.solve_grde(tr, np.array([[q]]), np.array([[qf]]), gamma)
     noise = np.zeros((hc.noise_sample_count(t0, tf, dt), 1))
-    options = dict(sigma=0.0, sample_period=dt, N=np.array([[nn]]), Sigma0=np.array([[s0]]), Q=np.array([[q]]))
-    return grde, noise, options, rho, grid, grid[first], t_cross, gamma
+    problem = hc.OutputFeedbackProblem(design=grde, sigma=0.0, sample_period=dt, noise=noise, N=np.array([[nn]]),
+                                       Sigma0=np.array([[s0]]), Q=np.array([[q]]))
+    return grde, problem, rho, grid, grid[first], t_cross, gamma
 
 
 def test_coupling_violation_raises_at_the_first_output_time(method):
@@ -722,10 +742,10 @@ def test_coupling_violation_raises_at_the_first_output_time(method):
     the run raises CouplingConditionError at the first output time after it (1.28, where
     rho = 4.00800), with that rho (measured agreement 1e-8 relative),
     and a message saying what to change."""
-    grde, noise, options, rho, grid, t_first, t_cross, gamma = scalar_coupling_case()
+    grde, problem, rho, grid, t_first, t_cross, gamma = scalar_coupling_case()
     with pytest.raises(hc.CouplingConditionError) as info:
-        hc.simulate_output_feedback(grde, hc.Signal(1.0), None, [0.0], noise,
-                                    hc.OutputFeedbackOptions(**options), 0.01, hc.SolverOptions(method=method))
+        hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde), None, [0.0],
+                                    simulation=hc.SimulationOptions(solver=hc.SolverOptions(method)))
     error = info.value
     assert isinstance(error, hc.HinfError) and isinstance(error, RuntimeError)
     assert error.t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
@@ -739,20 +759,20 @@ def test_coupling_violation_raises_at_the_first_output_time(method):
 
 
 def test_coupling_violation_flagged_run_completes(method):
-    """stop_on_coupling_violation=False: the run (zero state, so the singular gain multiplies
+    """on_coupling_violation = flag: the run (zero state, so the singular gain multiplies
     a zero innovation) completes, reports the first violation time, and rho_sigma_z is the
     closed form along the whole run (it rises above gamma^2 and falls below it again)."""
-    grde, noise, options, rho, grid, t_first, t_cross, gamma = scalar_coupling_case()
-    run = hc.simulate_output_feedback(grde, hc.Signal(1.0), None, [0.0], noise,
-                                      hc.OutputFeedbackOptions(**options, stop_on_coupling_violation=False),
-                                      0.01, hc.SolverOptions(method=method))
-    assert run.coupling_violation_t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
+    grde, problem, rho, grid, t_first, t_cross, gamma = scalar_coupling_case()
+    run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde), None, [0.0],
+                                      hc.OutputFeedbackOptions(on_coupling_violation=hc.CouplingPolicy.flag),
+                                      hc.SimulationOptions(solver=hc.SolverOptions(method)))
+    assert run.estimator.coupling_violation_t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
     np.testing.assert_allclose(run.t, grid, rtol=0, atol=TIME_ROUNDOFF)
-    np.testing.assert_allclose(run.rho_sigma_z, rho(grid), rtol=1e-6)
-    above = np.flatnonzero(run.rho_sigma_z >= gamma**2)
-    assert run.t[above[0]] == run.coupling_violation_t
-    assert run.rho_sigma_z[-1] < gamma**2  # back below: the first time is reported, not the last
-    np.testing.assert_array_equal(run.q_hat, 0.0)
+    np.testing.assert_allclose(run.estimator.rho_sigma_z, rho(grid), rtol=1e-6)
+    above = np.flatnonzero(run.estimator.rho_sigma_z >= gamma**2)
+    assert run.t[above[0]] == run.estimator.coupling_violation_t
+    assert run.estimator.rho_sigma_z[-1] < gamma**2  # back below: the first time is reported, not the last
+    np.testing.assert_array_equal(run.estimator.q_hat, 0.0)
 
 
 # The ship at gamma = 2.5 with a small Sigma(t0) = 0.01 I (Q0 = 101, eta = 1), filter_A =
@@ -783,14 +803,25 @@ def ship_coupling_reference(paper_trajectory):
 
 
 def test_ship_coupling_violation_time_and_rho(ship_coupling_reference):
-    grde, t_first, rho_first, _ = ship_coupling_reference(SHIP_COUPLING_GAMMA)
-    assert t_first == pytest.approx(1.38)
-    with pytest.raises(hc.CouplingConditionError) as info:
-        hc.simulate_output_feedback(grde, hc.Signal(1.0), paper_disturbance_signals(), PAPER_Q0, paper_noise(),
-                                    paper_options(Sigma0=0.01 * EYE6, filter_A="desired"), 0.01)
-    assert info.value.t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
-    assert info.value.rho == pytest.approx(rho_first, rel=1e-6)
-    assert info.value.gamma == SHIP_COUPLING_GAMMA
+    """gamma = 2.5: rho(Sigma Z) crosses gamma^2 between the output times 1.37 and 1.38. Each
+    integrator reports the violation either at the first output time past the crossing (with rho
+    there) or where its integration stops at the crossing (the estimator gain is singular there),
+    with rho at least gamma^2 up to the 1e-3 the check allows."""
+    grde, t_first, rho_first, t_cross = ship_coupling_reference(SHIP_COUPLING_GAMMA)
+    assert t_first == pytest.approx(1.38) and 1.37 < t_cross < 1.38
+    for method in ("auto", "bdf", "erk"):
+        with pytest.raises(hc.CouplingConditionError) as info:
+            hc.simulate_output_feedback(paper_problem(grde, paper_noise(), Sigma0=0.01 * EYE6),
+                                        hc.HinfStateFeedback(grde), paper_disturbance_signals(), PAPER_Q0, DESIRED_A,
+                                        hc.SimulationOptions(solver=hc.SolverOptions(method)))
+        assert info.value.gamma == SHIP_COUPLING_GAMMA
+        if info.value.t == pytest.approx(t_first, abs=TIME_ROUNDOFF):
+            assert info.value.rho == pytest.approx(rho_first, rel=1e-6), method
+        else:
+            # t_cross is the reference's crossing to its integration accuracy (rtol 1e-10 on a
+            # rho that changes by O(1) per second): 1e-6 s of margin.
+            assert t_cross - 1e-6 <= info.value.t < t_first, (method, info.value.t)
+            assert info.value.rho >= (1 - 1e-3) * SHIP_COUPLING_GAMMA**2, method
 
 
 def test_ship_coupling_violation_between_output_times_is_reported_as_such(ship_coupling_reference):
@@ -804,13 +835,13 @@ def test_ship_coupling_violation_between_output_times_is_reported_as_such(ship_c
     grde, t_first, _, t_cross = ship_coupling_reference(2.0)
     assert t_first == pytest.approx(0.73) and 0.72 < t_cross < 0.73
     with pytest.raises(hc.CouplingConditionError) as info:
-        hc.simulate_output_feedback(grde, hc.Signal(1.0), paper_disturbance_signals(), PAPER_Q0, paper_noise(),
-                                    paper_options(Sigma0=0.01 * EYE6, filter_A="desired"), 0.01)
+        hc.simulate_output_feedback(paper_problem(grde, paper_noise(), Sigma0=0.01 * EYE6), hc.HinfStateFeedback(grde),
+                                    paper_disturbance_signals(), PAPER_Q0, DESIRED_A)
     assert t_cross - 0.01 <= info.value.t <= t_first + 1e-12
 
 
 def test_ship_flagged_coupling_violation_is_not_lost(ship_coupling_reference):
-    """stop_on_coupling_violation=False on the ship (gamma = 2.5, violation first at 1.38 s):
+    """on_coupling_violation = flag on the ship (gamma = 2.5, violation first at 1.38 s):
     the run either completes and reports coupling_violation_t = 1.38, or, if the singular
     estimator makes the integration fail afterwards, the error says that the coupling
     condition was violated (and when).
@@ -818,17 +849,20 @@ def test_ship_flagged_coupling_violation_is_not_lost(ship_coupling_reference):
     steps before reaching t = 2.64 ...; raise max_steps or loosen rtol" (with the default
     500000 steps it ground for about a minute, then failed the same way at t = 3.37), without
     mentioning the flagged violation."""
-    grde, t_first, _, _ = ship_coupling_reference(SHIP_COUPLING_GAMMA)
-    options = paper_options(Sigma0=0.01 * EYE6, filter_A="desired", stop_on_coupling_violation=False)
+    grde, t_first, _, t_cross = ship_coupling_reference(SHIP_COUPLING_GAMMA)
     try:
-        run = hc.simulate_output_feedback(grde, hc.Signal(1.0), paper_disturbance_signals(), PAPER_Q0,
-                                          paper_noise(), options, 0.01, hc.SolverOptions(max_steps=2000))
+        run = hc.simulate_output_feedback(paper_problem(grde, paper_noise(), Sigma0=0.01 * EYE6),
+                                          hc.HinfStateFeedback(grde), paper_disturbance_signals(), PAPER_Q0,
+                                          DESIRED_A_FLAG, hc.SimulationOptions(solver=hc.SolverOptions(max_steps=2000)))
     except hc.CouplingConditionError:
         pytest.fail("flag mode raised CouplingConditionError")
     except hc.HinfError as error:
-        assert "coupling" in str(error) and "1.38" in str(error), str(error)
+        # The violation is named, at the first output time past it (1.38) or where the
+        # integration stopped at the crossing.
+        assert "coupling condition" in str(error) and "violated" in str(error), str(error)
+        assert error.t >= t_cross - 1e-6
     else:
-        assert run.coupling_violation_t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
+        assert run.estimator.coupling_violation_t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
 
 
 COUPLING_TEXT = mutate(mutate(mutate(FIG2_TEXT, "gamma = 5.0", f"gamma = {SHIP_COUPLING_GAMMA}"),
@@ -838,30 +872,31 @@ COUPLING_TEXT = mutate(mutate(mutate(FIG2_TEXT, "gamma = 5.0", f"gamma = {SHIP_C
 
 @pytest.mark.parametrize("reader", ["python", "c++"])
 def test_coupling_violation_from_a_scenario_file(tmp_path, reader, ship_coupling_reference):
-    _, t_first, _, _ = ship_coupling_reference(SHIP_COUPLING_GAMMA)
+    _, t_first, _, t_cross = ship_coupling_reference(SHIP_COUPLING_GAMMA)
     path = tmp_path / "coupling.toml"
     path.write_text(COUPLING_TEXT)
     load = hc.load_scenario if reader == "python" else (lambda p: hc.parse_scenario_toml(p.read_text(), str(p)))
     scenario = load(path)
-    assert scenario.measurement.on_coupling_violation == "error"
+    assert scenario.measurement.on_coupling_violation == hc.CouplingPolicy.error
     with pytest.raises(hc.CouplingConditionError) as info:
         hc.run_scenario(scenario)
+    # The file's solver is bdf: its integration reaches the output time 1.38 past the crossing.
     assert info.value.t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
     # "flag": the run goes on past the violation (on the ship the singular estimator may then
     # end it; the error names the violation: see test_ship_flagged_coupling_violation_is_not_lost).
     flagged = 'filter_A = "desired"\non_coupling_violation = "flag"'
     path.write_text(mutate(COUPLING_TEXT, 'filter_A = "desired"', flagged))
     scenario = load(path)
-    assert scenario.measurement.on_coupling_violation == "flag"
+    assert scenario.measurement.on_coupling_violation == hc.CouplingPolicy.flag
     scenario.solver = hc.SolverOptions(max_steps=2000)
     try:
         result = hc.run_scenario(scenario)
     except hc.CouplingConditionError:
         pytest.fail("on_coupling_violation = \"flag\" raised CouplingConditionError")
     except hc.SolverError as error:
-        assert error.t > t_first
+        assert error.t >= t_cross - 1e-6  # at or past the crossing (see the test above)
     else:
-        assert result.simulation.coupling_violation_t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
+        assert result.simulation.estimator.coupling_violation_t == pytest.approx(t_first, abs=TIME_ROUNDOFF)
 
 
 @pytest.mark.skipif(not HAVE_CLI, reason="hinf-sim / hinf-cpp are not installed next to this Python")
@@ -893,20 +928,21 @@ def stiff_problem(tf=2.0):
     tr = hc.Trajectory(model, np.zeros(3), [hc.Signal(0.0, [hc.Harmonic(1.0, 2.0)])], 0.0, tf)
     grde = hc.solve_grde(tr, np.eye(3), np.eye(3), 5.0, hc.SolverOptions(method="bdf", **TIGHT))
     noise = hc.standard_normal_samples(7, hc.noise_sample_count(0.0, tf, 0.01), 2)
-    options = hc.OutputFeedbackOptions(0.1, 0.01, 0.01 * np.eye(2), np.eye(3), np.eye(3))
+    problem = hc.OutputFeedbackProblem(grde, 0.1, 0.01, noise, 0.01 * np.eye(2), np.eye(3), np.eye(3))
     w = [hc.Signal(0.0, [hc.Harmonic(0.5, 3.0)]), 0.0, 0.0, 0.0]
-    return grde, noise, options, w, np.array([0.3, -0.5, 0.2])
+    return grde, problem, w, np.array([0.3, -0.5, 0.2])
 
 
 def test_stiff_plant_bdf_switches_to_sdirk4_and_agrees_with_erk():
     """Stiffness is detected at t = 0.21. Measured max differences bdf (rtol 1e-8) vs erk
     (rtol 1e-10): q 5.1e-9, q_hat 8.7e-9, u 7.7e-9, Sigma eigenvalues 1.3e-10 relative,
     rho 3.4e-11 (erk takes 2.7 times the steps)."""
-    grde, noise, options, w, q0 = stiff_problem()
+    grde, problem, w, q0 = stiff_problem()
     runs = {}
     for name, solver in [("bdf", hc.SolverOptions(method="bdf")),
                          ("erk", hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-12))]:
-        runs[name] = hc.simulate_output_feedback(grde, hc.Signal(1.0), w, q0, noise, options, 0.01, solver)
+        runs[name] = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde), w, q0,
+                                                 simulation=hc.SimulationOptions(solver=solver))
     bdf, erk = runs["bdf"], runs["erk"]
     assert "SDIRK4" in bdf.integrator and "stiff" in bdf.integrator
     assert "SDIRK4" not in erk.integrator
@@ -914,29 +950,30 @@ def test_stiff_plant_bdf_switches_to_sdirk4_and_agrees_with_erk():
     assert bdf.stats.steps < erk.stats.steps
     assert np.max(np.abs(erk.q)) > 0.5
     for field in ("q", "q_hat", "u"):
-        np.testing.assert_allclose(getattr(bdf, field), getattr(erk, field), rtol=0, atol=1e-6, err_msg=field)
+        np.testing.assert_allclose(series(bdf, field), series(erk, field), rtol=0, atol=1e-6, err_msg=field)
     for field in ("sigma_min_eig", "sigma_max_eig", "rho_sigma_z"):
-        assert max_rel(getattr(bdf, field), getattr(erk, field)) < 1e-6, field
+        assert max_rel(series(bdf, field), series(erk, field)) < 1e-6, field
 
 
 def test_stiff_plant_against_an_independent_integration():
     """The stiff loop against SciPy (DOP853 at rtol 1e-10 copes over a short horizon) up to
     0.6 s, past the switch to SDIRK4 at 0.21 s. Measured max differences: bdf q 6e-11,
     q_hat 3.5e-10."""
-    grde, noise, options, w, q0 = stiff_problem(tf=2.0)
-    run = hc.simulate_output_feedback(grde, hc.Signal(1.0), w, q0, noise, options, 0.01, hc.SolverOptions(method="bdf"))
+    grde, problem, w, q0 = stiff_problem(tf=2.0)
+    run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde), w, q0,
+                                      simulation=hc.SimulationOptions(solver=hc.SolverOptions("bdf")))
     assert "SDIRK4 from t = 0.21" in run.integrator
-    model = grde.trajectory.model
-    A, B, C = model.A, model.B(0.0), model.C(0.0)
+    model = grde.trajectory().model()
+    A, B, C = model.A(), model.B(0.0), model.C(0.0)
     D = model.D(0.0)[:, :2]
     keep = run.t <= 0.6 + 1e-12
     q, q_hat, _ = output_feedback_reference(
         0.0, 0.6, q0, run.t[keep], f=lambda t, x: A @ x, B=B, D=D, C=C, A_filter=lambda t, qd, qh: A,
-        q_d=grde.trajectory.q_d, u_d=grde.trajectory.u_d, Z=grde.Z,
+        q_d=grde.trajectory().q_d, u_d=grde.trajectory().u_d, Z=grde.Z,
         w=lambda t: np.array([0.5 * math.sin(3.0 * t), 0.0]), kappa=1.0, gamma=5.0, N=0.01 * np.eye(2),
-        Q=np.eye(3), Sigma0=np.eye(3), sigma=0.1, noise=noise, period=0.01, rtol=1e-10, atol=1e-12)
+        Q=np.eye(3), Sigma0=np.eye(3), sigma=0.1, noise=problem.noise, period=0.01, rtol=1e-10, atol=1e-12)
     np.testing.assert_allclose(run.q[keep], q, rtol=0, atol=1e-7)
-    np.testing.assert_allclose(run.q_hat[keep], q_hat, rtol=0, atol=1e-7)
+    np.testing.assert_allclose(run.estimator.q_hat[keep], q_hat, rtol=0, atol=1e-7)
 
 
 # ======================================================================================
@@ -1065,7 +1102,7 @@ def test_paper_fig2_file_is_fig1_with_a_measurement_section(fig2_scenario):
     np.testing.assert_array_equal(s.disturbance(times), fig1.disturbance(times))
     m = s.resolved().measurement
     assert (m.sigma, m.sample_period, m.seed, m.eta, m.filter_A, m.on_coupling_violation) == \
-           (0.5, 0.01, PAPER_SEED, 1.0, "estimate", "error")
+           (0.5, 0.01, PAPER_SEED, 1.0, hc.FilterLinearization.estimate, hc.CouplingPolicy.error)
     np.testing.assert_array_equal(m.N, PAPER_N)
     np.testing.assert_array_equal(m.Q0, 2.0 * EYE6)
     # The default N is sigma^2 I: dropping N from the file gives the same run.
@@ -1076,12 +1113,12 @@ def test_paper_fig2_file_is_fig1_with_a_measurement_section(fig2_scenario):
 def test_run_scenario_is_the_api_run(fig2_run):
     """run_scenario on paper_fig2.toml is simulate_output_feedback with Sigma0 = (Q0 - eta I)^-1
     = I, N = 0.25 I, Q = I, the seeded noise and the file's disturbances."""
-    sim = hc.simulate_output_feedback(fig2_run.solution, hc.Signal(1.0), paper_disturbance_signals(), PAPER_Q0,
-                                      paper_noise(), paper_options(), 0.01, hc.SolverOptions())
+    sim = hc.simulate_output_feedback(paper_problem(fig2_run.solution, paper_noise()),
+                                      hc.HinfStateFeedback(fig2_run.solution), paper_disturbance_signals(), PAPER_Q0)
     # The same code on the same inputs (the file's numbers are these doubles): equal (measured
     # bit for bit); 1e-12 is no round-off allowance between different computations.
     for field in ("q", "q_hat", "u", "y", "w", "sigma_min_eig", "sigma_max_eig", "rho_sigma_z"):
-        np.testing.assert_allclose(getattr(fig2_run.simulation, field), getattr(sim, field), rtol=1e-12,
+        np.testing.assert_allclose(series(fig2_run.simulation, field), series(sim, field), rtol=1e-12,
                                    atol=1e-13, err_msg=field)
 
 
@@ -1095,8 +1132,8 @@ def test_scenario_filter_initialization(tmp_path, reader):
     load = hc.load_scenario if reader == "python" else (lambda p: hc.parse_scenario_toml(p.read_text(), str(p)))
     run = hc.run_scenario(load(path)).simulation
     # (2.5 I)^-1 and its eigenvalues, in the library: round-off.
-    assert run.sigma_min_eig[0] == pytest.approx(0.4, rel=ROUNDOFF)
-    assert run.sigma_max_eig[0] == pytest.approx(0.4, rel=ROUNDOFF)
+    assert run.estimator.sigma_min_eig[0] == pytest.approx(0.4, rel=ROUNDOFF)
+    assert run.estimator.sigma_max_eig[0] == pytest.approx(0.4, rel=ROUNDOFF)
     Q0 = np.diag([3.0, 4.0, 5.0, 3.0, 4.0, 6.0])
     Q0[0, 3] = Q0[3, 0] = 0.5
     text2 = mutate(text, "Q0 = 3.0", "Q0 = " + json.dumps(Q0.tolist()))
@@ -1107,8 +1144,8 @@ def test_scenario_filter_initialization(tmp_path, reader):
     # Inverse and eigenvalues in the library and in NumPy: round-off amplified by the
     # condition number of Q0 - eta I (2.6), relative to the largest eigenvalue.
     slack = ROUNDOFF * np.linalg.cond(Q0 - 0.5 * EYE6) * eig[-1]
-    assert run.sigma_min_eig[0] == pytest.approx(eig[0], abs=slack)
-    assert run.sigma_max_eig[0] == pytest.approx(eig[-1], abs=slack)
+    assert run.estimator.sigma_min_eig[0] == pytest.approx(eig[0], abs=slack)
+    assert run.estimator.sigma_max_eig[0] == pytest.approx(eig[-1], abs=slack)
 
 
 @pytest.fixture(scope="module")
@@ -1129,42 +1166,57 @@ def short_noise(rows=200, cols=3):
     (dict(q0=PAPER_Q0[:5]), ["q0", "6", "5"]),
     (dict(q0=np.append(PAPER_Q0, 0.0)), ["q0", "6", "7"]),
     (dict(q0=np.array([1.0, 0, 0, np.nan, 0, 0])), ["q0", "non-finite"]),
-    (dict(options=dict(sigma=-0.1)), ["sigma"]),
-    (dict(options=dict(sigma=math.nan)), ["sigma"]),
-    (dict(options=dict(sample_period=0.0)), ["period"]),
-    (dict(options=dict(N=np.eye(2))), ["N", "(3, 3)"]),
-    (dict(options=dict(N=np.diag([0.25, 0.0, 0.25]))), ["N", "positive definite"]),
-    (dict(options=dict(Sigma0=-EYE6)), ["Sigma0", "positive definite"]),
-    (dict(options=dict(Sigma0=np.eye(5))), ["Sigma0", "(6, 6)"]),
-    (dict(options=dict(Q=-EYE6)), ["Q", "semidefinite"]),
+    (dict(problem=dict(sigma=-0.1)), ["sigma"]),
+    (dict(problem=dict(sigma=math.nan)), ["sigma"]),
+    (dict(problem=dict(sample_period=0.0)), ["period"]),
+    (dict(problem=dict(N=np.eye(2))), ["N", "(3, 3)"]),
+    (dict(problem=dict(N=np.diag([0.25, 0.0, 0.25]))), ["N", "positive definite"]),
+    (dict(problem=dict(Sigma0=-EYE6)), ["Sigma0", "positive definite"]),
+    (dict(problem=dict(Sigma0=np.eye(5))), ["Sigma0", "(6, 6)"]),
+    (dict(problem=dict(Q=-EYE6)), ["Q", "semidefinite"]),
     (dict(disturbance=[0.0] * 3), ["disturbance"]),
 ], ids=["noise 199 rows", "noise 201 rows", "noise 2 columns", "NaN in noise", "q0 5 states",
         "q0 7 states", "q0 NaN", "sigma < 0", "sigma NaN", "period 0", "N 2x2", "N singular",
         "Sigma0 negative", "Sigma0 5x5", "Q negative", "disturbance 3 channels"])
 def test_simulate_output_feedback_bad_inputs(short_design, change, words):
-    args = dict(noise=short_noise(), q0=PAPER_Q0, disturbance=None, options={})
+    """Each bad input is a ValueError naming it: from the OutputFeedbackProblem constructor
+    where it can tell without the model, else from simulate_output_feedback; set after
+    construction, the same input is refused by simulate_output_feedback."""
+    args = dict(noise=short_noise(), q0=PAPER_Q0, disturbance=None, problem={})
     args.update(change)
+    controller = hc.HinfStateFeedback(short_design)
     with pytest.raises(ValueError) as info:
-        hc.simulate_output_feedback(short_design, hc.Signal(1.0), args["disturbance"], args["q0"], args["noise"],
-                                    paper_options(**args["options"]), 0.01)
+        hc.simulate_output_feedback(paper_problem(short_design, args["noise"], **args["problem"]), controller,
+                                    args["disturbance"], args["q0"])
+    for word in words:
+        assert word in str(info.value), (word, str(info.value))
+    problem = paper_problem(short_design, short_noise())
+    for key, value in dict(noise=args["noise"], **args["problem"]).items():
+        setattr(problem, key, value)
+    with pytest.raises(ValueError) as info:
+        hc.simulate_output_feedback(problem, controller, args["disturbance"], args["q0"])
     for word in words:
         assert word in str(info.value), (word, str(info.value))
 
 
 def test_output_feedback_options_and_models_without_measurements(lti_trajectory):
     with pytest.raises(ValueError, match="filter_A"):
-        paper_options(filter_A="actual")
-    options = paper_options()
+        hc.OutputFeedbackOptions(filter_A="actual")
+    with pytest.raises(ValueError, match="on_coupling_violation"):
+        hc.OutputFeedbackOptions(on_coupling_violation="ignore")
+    options = hc.OutputFeedbackOptions()
+    assert (options.filter_A, options.on_coupling_violation) == (hc.FilterLinearization.estimate,
+                                                                 hc.CouplingPolicy.error)
     with pytest.raises(ValueError, match="filter_A"):
         options.filter_A = "truth"
     options.filter_A = "desired"
-    assert options.filter_A == "desired"
+    assert options.filter_A == hc.FilterLinearization.desired
     # A model without C cannot be simulated (or filtered) with measurements.
     tr = lti_trajectory(-np.eye(2), np.ones((2, 1)), np.eye(2), 0.0, 1.0)
     grde = hc.solve_grde(tr, np.eye(2), np.eye(2), 5.0)
-    opts = hc.OutputFeedbackOptions(0.1, 0.01, np.eye(1), np.eye(2), np.eye(2))
+    problem = hc.OutputFeedbackProblem(grde, 0.1, 0.01, np.zeros((100, 1)), np.eye(1), np.eye(2), np.eye(2))
     with pytest.raises(ValueError, match="C"):
-        hc.simulate_output_feedback(grde, hc.Signal(1.0), None, np.zeros(2), np.zeros((100, 1)), opts)
+        hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde), None, np.zeros(2))
     with pytest.raises(ValueError, match="C"):
         hc.solve_filter_riccati(tr, np.eye(1), np.eye(2), 5.0, np.eye(2))
 
@@ -1175,34 +1227,34 @@ def test_output_feedback_options_and_models_without_measurements(lti_trajectory)
 
 def test_paper_figure2_tracks_and_estimates(fig2_run):
     run = fig2_run.simulation
-    assert fig2_run.scenario_name == "paper-fig2" and fig2_run.controller == "hinf-output-feedback"
+    assert fig2_run.scenario_name == "paper-fig2" and fig2_run.law == hc.Law.hinf and fig2_run.output_feedback
     error = position_error(run)
     assert error[0] == pytest.approx(math.sqrt(2.0), rel=ROUNDOFF)  # hypot(-1, -1) vs sqrt(2)
     assert error[-1] < 0.2 * math.sqrt(2.0)
     assert np.max(error[run.t >= 20.0]) < 0.3 * math.sqrt(2.0)
     metrics = fig2_run.metrics
     for key in ("rms_estimation_error_last_half", "max_rho_sigma_z"):
-        assert math.isfinite(metrics[key]), key
-    assert metrics["max_rho_sigma_z"] < 25.0
-    assert math.isnan(run.coupling_violation_t)
+        assert math.isfinite(getattr(metrics, key)), key
+    assert metrics.max_rho_sigma_z < 25.0
+    assert math.isnan(run.estimator.coupling_violation_t)
     # The estimate beats the raw measurement on position: sigma = 0.5 noise vs the filter.
     half = run.t >= 20.0
-    estimate_error = np.sqrt(np.mean(np.sum((run.q_hat[half][:, 3:5] - run.q_e[half][:, 3:5]) ** 2, axis=1)))
-    measurement_error = np.sqrt(np.mean(np.sum((run.y[half][:, :2] - run.q[half][:, 3:5]) ** 2, axis=1)))
+    estimate_error = np.sqrt(np.mean(np.sum((run.estimator.q_hat[half][:, 3:5] - run.q_e()[half][:, 3:5]) ** 2, axis=1)))
+    measurement_error = np.sqrt(np.mean(np.sum((run.estimator.y[half][:, :2] - run.q[half][:, 3:5]) ** 2, axis=1)))
     assert measurement_error == pytest.approx(0.5 * math.sqrt(2.0), rel=0.05)
     assert estimate_error < 0.5 * measurement_error
     # The metrics recomputed from the time series (scenarios.md definitions).
-    rms = math.sqrt(np.mean(np.sum((run.q_hat - run.q_e)[half] ** 2, axis=1)))
+    rms = math.sqrt(np.mean(np.sum((run.estimator.q_hat - run.q_e())[half] ** 2, axis=1)))
     # The library's C++ mean against NumPy's: summation round-off.
-    assert metrics["rms_estimation_error_last_half"] == pytest.approx(rms, rel=summation_rtol(run.t.size))
+    assert metrics.rms_estimation_error_last_half == pytest.approx(rms, rel=summation_rtol(run.t.size))
     # The largest of the same recorded values.
-    assert metrics["max_rho_sigma_z"] == pytest.approx(np.max(run.rho_sigma_z), rel=1e-12)
+    assert metrics.max_rho_sigma_z == pytest.approx(np.max(run.estimator.rho_sigma_z), rel=1e-12)
     # Sigma(t0) = (Q0 - eta I)^-1 = I (its eigenvalues computed by the library: round-off) and
     # q_hat(t0) = 0.
-    assert run.sigma_min_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
-    assert run.sigma_max_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
-    np.testing.assert_array_equal(run.q_hat[0], 0.0)
-    assert np.all(run.sigma_min_eig > 0)
+    assert run.estimator.sigma_min_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
+    assert run.estimator.sigma_max_eig[0] == pytest.approx(1.0, rel=ROUNDOFF)
+    np.testing.assert_array_equal(run.estimator.q_hat[0], 0.0)
+    assert np.all(run.estimator.sigma_min_eig > 0)
 
 
 def test_paper_figure2_methods_agree(fig2_run):
@@ -1217,6 +1269,6 @@ def test_paper_figure2_methods_agree(fig2_run):
     assert "adams" in runs["adams"].integrator.lower()
     for method in ("bdf", "adams"):
         for field, tol in (("q", 1e-6), ("q_hat", 1e-6), ("u", 1e-5)):
-            difference = np.max(np.abs(getattr(runs[method], field) - getattr(runs["erk"], field)))
+            difference = np.max(np.abs(series(runs[method], field) - series(runs["erk"], field)))
             assert difference < tol, f"{method} {field}: {difference:.2e}"
-        assert max_rel(runs[method].rho_sigma_z, runs["erk"].rho_sigma_z) < 1e-6
+        assert max_rel(runs[method].estimator.rho_sigma_z, runs["erk"].estimator.rho_sigma_z) < 1e-6

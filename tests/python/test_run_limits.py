@@ -21,6 +21,7 @@ import hinf_cpp as hc
 from _support import PAPER_Q0, PAPER_Q_D0
 
 BIN = pathlib.Path(sys.executable).parent
+METRIC_NAMES = [definition.name for definition in hc.metric_table()]
 HINF_SIM, HINF_CPP = BIN / "hinf-sim", BIN / "hinf-cpp"
 PAPER_FIG1 = hc.scenario_path("paper_fig1").read_text()
 
@@ -48,23 +49,24 @@ def replace(text: str, old: str, new: str) -> str:
 # Solver tolerances that cannot give an answer are refused
 # ======================================================================================
 
-@pytest.mark.parametrize("kwargs, words", [
-    (dict(rtol=1.0), r"rtol must be in \[1e-14, 1e-3\]"),
-    (dict(rtol=1e-2), r"rtol must be in \[1e-14, 1e-3\]"),
-    (dict(rtol=1e-16), r"rtol must be in \[1e-14, 1e-3\]"),
-    (dict(atol=1e10), r"atol must be in \(0, 1e-3\]"),
-    (dict(atol=1.0), r"atol must be in \(0, 1e-3\]"),
-    (dict(atol=0.0), r"atol must be in \(0, 1e-3\]"),
-    (dict(method="erk", rtol=1.0, atol=1.0), r"rtol must be in"),
-    (dict(max_steps=0), r"max_steps must be in \[1, 1e9\]"),
-    (dict(divergence_factor=1.0), r"divergence_factor must be a finite number > 1"),
-    (dict(divergence_factor=math.nan), r"divergence_factor"),
+@pytest.mark.parametrize("options, kwargs, words", [
+    ("SolverOptions", dict(rtol=1.0), r"rtol must be in \[1e-14, 1e-3\]"),
+    ("SolverOptions", dict(rtol=1e-2), r"rtol must be in \[1e-14, 1e-3\]"),
+    ("SolverOptions", dict(rtol=1e-16), r"rtol must be in \[1e-14, 1e-3\]"),
+    ("SolverOptions", dict(atol=1e10), r"atol must be in \(0, 1e-3\]"),
+    ("SolverOptions", dict(atol=1.0), r"atol must be in \(0, 1e-3\]"),
+    ("SolverOptions", dict(atol=0.0), r"atol must be in \(0, 1e-3\]"),
+    ("SolverOptions", dict(method="erk", rtol=1.0, atol=1.0), r"rtol must be in"),
+    ("SolverOptions", dict(max_steps=0), r"max_steps must be in \[1, 1e9\]"),
+    ("SimulationOptions", dict(divergence_factor=1.0), r"divergence_factor must be a finite number > 1"),
+    ("SimulationOptions", dict(divergence_factor=math.nan), r"divergence_factor"),
+    ("SimulationOptions", dict(output_dt=0.0), r"dt must be > 0"),
 ])
-def test_meaningless_solver_options_are_refused(kwargs, words):
+def test_meaningless_solver_options_are_refused(options, kwargs, words):
     # Before: rtol = 1 "succeeded" with an RMS error of 0.499 instead of 0.048, atol = 1e10 gave
     # a final position error of 1.6e10, and (erk, 1, 1) reported a conjugate point at gamma = 5.
     with pytest.raises(ValueError, match=words):
-        hc.SolverOptions(**kwargs)
+        getattr(hc, options)(**kwargs)
 
 
 @pytest.mark.parametrize("program", ["hinf-sim", "hinf-cpp"])
@@ -87,12 +89,13 @@ def test_max_steps_bounds_the_whole_cvode_closed_loop(paper_trajectory, paper_so
     """CVODE's own limit counts per call, and the loop called it once per output time (4000
     calls), so a budget far below the loop's total number of steps never stopped it."""
     law = hc.HinfStateFeedback(paper_solutions["erk"])
-    full = hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0, 0.01, hc.SolverOptions(method))
+    full = hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0,
+                                      hc.SimulationOptions(output_dt=0.01, solver=hc.SolverOptions(method)))
     budget = full.stats.steps // 3
     assert budget > 100  # far more than the steps between two output times
     with pytest.raises(hc.SolverError, match=f"max_steps = {budget}") as error:
-        hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0, 0.01,
-                                   hc.SolverOptions(method, max_steps=budget))
+        solver = hc.SolverOptions(method, max_steps=budget)
+        hc.simulate_state_feedback(paper_trajectory, law, None, PAPER_Q0, hc.SimulationOptions(0.01, solver=solver))
     assert 0.0 < error.value.t < 40.0
 
 
@@ -125,19 +128,19 @@ def test_a_diverging_state_feedback_run_stops_and_says_so(tmp_path, method):
     scenario.solver = hc.SolverOptions(method)
     result = hc.run_scenario(scenario)
     sim = result.simulation
-    assert sim.status == "diverged"
+    assert sim.status == hc.RunStatus.diverged
     assert "divergence bound" in sim.status_message and "divergence_factor" in sim.status_message
     # The bound: 1e3 times the largest of 1, |q_e(t0)|_inf = 1 and max |q_d|_inf (x_d reaches ~30 m).
     q_d = result.trajectory.q_d(np.linspace(0.0, 40.0, 4001))
     bound = 1e3 * max(1.0, np.abs(q_d).max())
     # The series stop at the last output time before the bound was crossed, well before tf.
     assert sim.t[-1] < 0.5 * scenario.tf and sim.t.size == sim.q.shape[0] == sim.u.shape[0]
-    assert np.abs(sim.q_e).max() <= bound
+    assert np.abs(sim.q_e()).max() <= bound
     assert sim.stats.steps < 5000
     metrics = result.metrics
-    assert math.isfinite(metrics["max_position_error"])
+    assert math.isfinite(metrics.max_position_error)
     for name in ("rms_position_error_last_half", "final_position_error", "l2_gain", "control_l2"):
-        assert math.isnan(metrics[name]), name
+        assert math.isnan(getattr(metrics, name)), name
 
 
 @pytest.mark.parametrize("program", ["hinf-sim", "hinf-cpp"])
@@ -155,8 +158,8 @@ def test_a_diverging_run_is_a_status_in_the_results_file(tmp_path, program):
 
 
 def test_a_completed_run_has_status_completed(paper_run):
-    assert paper_run.simulation.status == "completed" and paper_run.simulation.status_message == ""
-    assert json.loads(paper_run.to_json())["status"] == "completed"
+    assert paper_run.simulation.status == hc.RunStatus.completed and paper_run.simulation.status_message == ""
+    assert json.loads(hc.results_json(paper_run))["status"] == "completed"
 
 
 def test_an_unstable_uncontrolled_plant_diverges_in_output_feedback():
@@ -169,13 +172,15 @@ def test_an_unstable_uncontrolled_plant_diverges_in_output_feedback():
     # coupling condition rho(Sigma Z) < gamma^2 = 2500 holds and the run is stopped by divergence.
     design = hc.solve_grde(trajectory, np.diag([0.0, 1.0]), np.diag([1e-6, 1.0]), 50.0)
     noise = hc.standard_normal_samples(1, hc.noise_sample_count(0.0, 10.0, 0.1), 2)
-    options = hc.OutputFeedbackOptions(sigma=0.1, sample_period=0.1, N=0.01 * np.eye(2), Sigma0=np.eye(2),
-                                       Q=np.eye(2))
-    sim = hc.simulate_output_feedback(design, 1.0, None, np.array([1.0, 0.0]), noise, options, 0.05)
+    problem = hc.OutputFeedbackProblem(design=design, sigma=0.1, sample_period=0.1, noise=noise,
+                                       N=0.01 * np.eye(2), Sigma0=np.eye(2), Q=np.eye(2))
+    sim = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(design), None, np.array([1.0, 0.0]),
+                                      simulation=hc.SimulationOptions(output_dt=0.05))
     # |q_e| = e^t reaches the bound 1e3 x max(1, |q_e(t0)| = 1, q_d = 0) at t = log(1e3) ~ 6.9.
-    assert sim.status == "diverged"
+    assert sim.status == hc.RunStatus.diverged
     assert 6.0 < sim.t[-1] < 7.0
-    assert np.all(np.isfinite(sim.q_hat)) and sim.q_hat.shape == sim.q.shape
+    q_hat = sim.estimator.q_hat
+    assert np.all(np.isfinite(q_hat)) and q_hat.shape == sim.q.shape
 
 
 # ======================================================================================
@@ -249,7 +254,7 @@ def test_gamma_star_threads_leave_enough_evaluations_to_converge(lti_trajectory)
 # The heading error is an angle
 # ======================================================================================
 
-def heading_start(psi0: float, law: str = "hinf", fig: str = "paper_fig1") -> hc.RunResult:
+def heading_start(psi0: float, law: hc.Law = hc.Law.hinf, fig: str = "paper_fig1") -> hc.RunResult:
     scenario = hc.load_scenario(hc.scenario_path(fig))
     q0 = np.array(PAPER_Q0)
     q0[5] = psi0
@@ -258,13 +263,13 @@ def heading_start(psi0: float, law: str = "hinf", fig: str = "paper_fig1") -> hc
     return hc.run_scenario(scenario)
 
 
-@pytest.mark.parametrize("law", ["hinf", "lqr"])
+@pytest.mark.parametrize("law", [hc.Law.hinf, hc.Law.lqr])
 def test_a_start_350_degrees_off_is_a_10_degree_error(law):
     """psi(t0) = psi_d + 350 deg is physically 10 deg off. Before, both laws regulated the
     unwrapped 350 deg to zero and spun the ship a full turn."""
     off_350 = heading_start(math.radians(350.0), law)
     off_minus_10 = heading_start(math.radians(-10.0), law)
-    q_e_350, q_e_10 = off_350.simulation.q_e, off_minus_10.simulation.q_e
+    q_e_350, q_e_10 = off_350.simulation.q_e(), off_minus_10.simulation.q_e()
     # The same physical start: the runs agree up to the integration error of the closed loop
     # (rtol 1e-8 on states of order 1-30, accumulated over 4000 output times: 1e-5 with margin).
     np.testing.assert_allclose(q_e_350, q_e_10, atol=1e-5)
@@ -274,8 +279,9 @@ def test_a_start_350_degrees_off_is_a_10_degree_error(law):
     e = heading_error(off_350)
     assert abs(e[0] - math.radians(-10.0)) < 1e-12
     assert np.max(np.abs(e)) < math.radians(45.0)
-    for name, value in off_350.metrics.items():
-        assert value == pytest.approx(off_minus_10.metrics[name], rel=1e-5, abs=1e-9, nan_ok=True), name
+    for name in METRIC_NAMES:
+        assert getattr(off_350.metrics, name) == pytest.approx(getattr(off_minus_10.metrics, name), rel=1e-5,
+                                                               abs=1e-9, nan_ok=True), name
 
 
 @pytest.mark.parametrize("fig", ["paper_fig1", "paper_fig2"])
@@ -287,8 +293,9 @@ def test_a_start_two_pi_further_round_gives_the_same_run(fig):
     # Integration error only (see above); output feedback: the same noise, the same estimator.
     np.testing.assert_allclose(turned.simulation.q - shift, base.simulation.q, atol=1e-5)
     np.testing.assert_allclose(turned.simulation.u, base.simulation.u, atol=1e-5)
-    for name, value in base.metrics.items():
-        assert turned.metrics[name] == pytest.approx(value, rel=1e-5, abs=1e-9, nan_ok=True), name
+    for name in METRIC_NAMES:
+        assert getattr(turned.metrics, name) == pytest.approx(getattr(base.metrics, name), rel=1e-5, abs=1e-9,
+                                                              nan_ok=True), name
 
 
 def test_recovery_from_350_degrees_does_not_turn_around():
@@ -317,8 +324,8 @@ def test_noise_free_measurements_do_not_count_as_disturbance():
     assert np.all(w[:, 3:] == 0.0)
     t = result.simulation.t
     applied = np.sqrt(np.trapezoid(np.sum(w[:, :3] ** 2, axis=1), t))
-    assert result.metrics["disturbance_l2"] == pytest.approx(applied, rel=1e-12)
-    assert result.metrics["l2_gain"] > 1.0
+    assert result.metrics.disturbance_l2 == pytest.approx(applied, rel=1e-12)
+    assert result.metrics.l2_gain > 1.0
 
 
 def test_a_noise_channel_set_from_python_is_refused_like_in_a_file():
@@ -333,7 +340,7 @@ def test_a_noise_channel_set_from_python_is_refused_like_in_a_file():
     with pytest.raises(ValueError, match=r"w5 is a measurement-noise channel"):
         hc.run_scenario(scenario)
     scenario.disturbance = lambda t: np.array([0.1, 0, 0, 0, 0, 0])
-    assert hc.run_scenario(scenario).simulation.status == "completed"
+    assert hc.run_scenario(scenario).simulation.status == hc.RunStatus.completed
 
 
 def test_divergence_factor_is_a_solver_key(tmp_path):
@@ -341,8 +348,10 @@ def test_divergence_factor_is_a_solver_key(tmp_path):
     whose disturbance (amplitude 30 on the surge force; errors up to ~200) the default bound of
     1e3 x 22 m lets finish."""
     text = huge_disturbance_text(30.0)
-    assert hc.run_scenario(hc.load_scenario(write(tmp_path, "a.toml", text))).simulation.status == "completed"
+    status = hc.run_scenario(hc.load_scenario(write(tmp_path, "a.toml", text))).simulation.status
+    assert status == hc.RunStatus.completed
     tight = replace(text, "atol = 1e-10", "atol = 1e-10\ndivergence_factor = 1.5")
-    assert hc.run_scenario(hc.load_scenario(write(tmp_path, "b.toml", tight))).simulation.status == "diverged"
-    with pytest.raises(ValueError, match=r"b\.toml: \[solver\] solver divergence_factor must be a finite number > 1"):
+    status = hc.run_scenario(hc.load_scenario(write(tmp_path, "b.toml", tight))).simulation.status
+    assert status == hc.RunStatus.diverged
+    with pytest.raises(ValueError, match=r"b\.toml: \[solver\] divergence_factor must be a finite number > 1"):
         hc.load_scenario(write(tmp_path, "b.toml", replace(tight, "= 1.5", "= 1.0")))

@@ -1,4 +1,4 @@
-"""Scenario files (shared/scenarios.md), read by the one C++ reader: a file (hc.load_scenario,
+"""Scenario files (docs/scenarios.md), read by the one C++ reader: a file (hc.load_scenario,
 the reader of hinf-sim) and its dictionary form (hc.scenario_from_dict of what tomllib reads,
 written back to TOML) build identical scenarios and reject the same bad files with a
 ValueError naming the key; both command lines print that same message. Also bad inputs to the
@@ -48,15 +48,15 @@ READERS = {"file": file_reader, "dict": dict_reader}
 # ---- comparing scenarios ----
 
 def assert_same_signal(a: hc.Signal, b: hc.Signal, where: str):
-    assert a.is_table == b.is_table, where
-    if a.is_table:
-        np.testing.assert_array_equal(a.table_t, b.table_t, err_msg=where)
-        np.testing.assert_array_equal(a.table_values, b.table_values, err_msg=where)
-        times = np.linspace(a.table_t[0], a.table_t[-1], 97)
+    assert a.is_table() == b.is_table(), where
+    if a.is_table():
+        np.testing.assert_array_equal(a.table_t(), b.table_t(), err_msg=where)
+        np.testing.assert_array_equal(a.table_values(), b.table_values(), err_msg=where)
+        times = np.linspace(a.table_t()[0], a.table_t()[-1], 97)
     else:
-        assert a.offset == b.offset, where
-        assert len(a.harmonics) == len(b.harmonics), where
-        for ha, hb in zip(a.harmonics, b.harmonics):
+        assert a.offset() == b.offset(), where
+        assert len(a.harmonics()) == len(b.harmonics()), where
+        for ha, hb in zip(a.harmonics(), b.harmonics()):
             assert (ha.amplitude, ha.omega, ha.phase, ha.cosine) == \
                    (hb.amplitude, hb.omega, hb.phase, hb.cosine), where
         times = np.linspace(-3.0, 50.0, 97)
@@ -64,8 +64,8 @@ def assert_same_signal(a: hc.Signal, b: hc.Signal, where: str):
 
 
 def assert_same_vector_signal(a: hc.VectorSignal, b: hc.VectorSignal, where: str):
-    assert a.dim == b.dim and not a.is_function and not b.is_function, where
-    for i, (sa, sb) in enumerate(zip(a.channels, b.channels)):
+    assert a.dim() == b.dim() and not a.is_function() and not b.is_function(), where
+    for i, (sa, sb) in enumerate(zip(a.channels(), b.channels())):
         assert_same_signal(sa, sb, f"{where}[{i}]")
 
 
@@ -81,12 +81,13 @@ def assert_same_scenario(a: hc.Scenario, b: hc.Scenario):
     assert (a.model.n(), a.model.m(), a.model.nw()) == (b.model.n(), b.model.m(), b.model.nw())
     if isinstance(a.model, hc.ShipModel):
         for key in ("m_u", "m_v", "m_r", "d_u", "d_v", "d_r"):
-            assert getattr(a.model.parameters, key) == getattr(b.model.parameters, key), key
+            assert getattr(a.model.parameters(), key) == getattr(b.model.parameters(), key), key
     else:
-        assert_same_matrix(a.model.A, b.model.A, "A")
+        assert_same_matrix(a.model.A(), b.model.A(), "A")
     assert_same_matrix(a.model.B(a.t0), b.model.B(b.t0), "B")
     assert_same_matrix(a.model.D(a.t0), b.model.D(b.t0), "D")
-    assert (a.t0, a.tf, a.gamma, a.output_dt) == (b.t0, b.tf, b.gamma, b.output_dt)
+    assert (a.t0, a.tf, a.gamma, a.output_dt, a.divergence_factor, a.law, a.worst_case) == \
+           (b.t0, b.tf, b.gamma, b.output_dt, b.divergence_factor, b.law, b.worst_case)
     assert_same_matrix(a.desired_q0, b.desired_q0, "desired q0")
     assert_same_matrix(a.initial_q0, b.initial_q0, "initial q0")
     assert_same_vector_signal(a.desired_u, b.desired_u, "desired_u")
@@ -100,19 +101,18 @@ def assert_same_scenario(a: hc.Scenario, b: hc.Scenario):
     assert (a.measurement is None) == (b.measurement is None)
     if a.measurement is not None:
         ma, mb = a.measurement, b.measurement
-        assert (ma.sigma, ma.sample_period, ma.seed, ma.eta, ma.filter_A) == \
-               (mb.sigma, mb.sample_period, mb.seed, mb.eta, mb.filter_A)
+        assert (ma.sigma, ma.sample_period, ma.seed, ma.eta, ma.filter_A, ma.on_coupling_violation) == \
+               (mb.sigma, mb.sample_period, mb.seed, mb.eta, mb.filter_A, mb.on_coupling_violation)
         assert_same_matrix(ma.N, mb.N, "N")
         assert_same_matrix(ma.Q0, mb.Q0, "Q0")
 
 
-def assert_same_metrics(a: dict, b: dict):
-    assert set(a) == set(b)
-    for key in a:
-        if math.isnan(a[key]):
-            assert math.isnan(b[key]), key
+def assert_same_metrics(a: hc.Metrics, b: hc.Metrics):
+    for key in (definition.name for definition in hc.metric_table()):
+        if math.isnan(getattr(a, key)):
+            assert math.isnan(getattr(b, key)), key
         else:
-            assert a[key] == pytest.approx(b[key], rel=1e-12, abs=1e-300), key
+            assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-12, abs=1e-300), key
 
 
 def assert_same_run(a: hc.RunResult, b: hc.RunResult):
@@ -240,7 +240,7 @@ def test_file_and_dict_agree_on_measurement_section(tmp_path):
     a, b = file_reader(path), dict_reader(path)
     assert_same_scenario(a, b)
     assert a.measurement.sigma == 0.5 and a.measurement.seed == 20000601
-    assert a.measurement.filter_A == "desired"
+    assert a.measurement.filter_A == hc.FilterLinearization.desired
 
 
 def test_paper_scenario_values(paper_scenario_path):
@@ -249,7 +249,7 @@ def test_paper_scenario_values(paper_scenario_path):
         s = reader(pathlib.Path(paper_scenario_path))
         assert s.name == "paper-fig1"
         assert isinstance(s.model, hc.ShipModel)
-        p = s.model.parameters
+        p = s.model.parameters()
         assert (p.m_u, p.m_v, p.m_r, p.d_u, p.d_v, p.d_r) == (0.5, -2.0, 0.5, 1.0, 2.0, 1.0)
         assert (s.t0, s.tf, s.gamma) == (0.0, 40.0, 5.0)
         np.testing.assert_array_equal(s.desired_q0, PAPER_Q_D0)
@@ -265,7 +265,7 @@ def test_paper_scenario_values(paper_scenario_path):
         np.testing.assert_allclose(s.disturbance(times), np.column_stack([w, w, w] + [0 * w] * 3), rtol=0,
                                    atol=ROUNDOFF * 0.1)
         assert s.kappa(7.0) == 1.0
-        assert s.measurement is None and s.solver.method == "bdf" and s.output_dt == 0.01
+        assert s.measurement is None and s.solver.method == hc.Method.bdf and s.output_dt == 0.01
 
 
 def test_frequency_hz_equals_omega(tmp_path):
@@ -274,7 +274,7 @@ def test_frequency_hz_equals_omega(tmp_path):
     omega = write(tmp_path, "omega.toml", OMEGA_TEXT)
     for reader in READERS.values():
         a, b = reader(hz), reader(omega)
-        h = a.disturbance.channels[0].harmonics[0]
+        h = a.disturbance.channels()[0].harmonics()[0]
         assert h.omega == pytest.approx(2 * math.pi * 0.2, rel=1e-15) and h.cosine
         assert_same_scenario(a, b)
     assert_same_run(hc.run_scenario(file_reader(hz)), hc.run_scenario(dict_reader(omega)))
@@ -522,7 +522,7 @@ def test_simulate_other_bad_inputs(short_trajectory, short_solution):
     with pytest.raises(ValueError, match="length 3"):
         hc.simulate_state_feedback(short_trajectory, controller, lambda t: np.zeros(3), PAPER_Q_D0)
     with pytest.raises(ValueError, match="dt"):
-        hc.simulate_state_feedback(short_trajectory, controller, None, PAPER_Q_D0, 0.0)
+        hc.simulate_state_feedback(short_trajectory, controller, None, PAPER_Q_D0, hc.SimulationOptions(output_dt=0.0))
 
     class ThreeInputs(hc.Controller):
         def __init__(self):

@@ -35,7 +35,8 @@ def test_zero_error_stays_on_the_desired_trajectory(paper_trajectory, paper_solu
     Measured max |q - q_d|: bdf 3.9e-7, adams 2.3e-7, erk 1.9e-9."""
     options = hc.SolverOptions(method=method)
     controller = hc.HinfStateFeedback(paper_solutions[method])
-    run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0, 0.01, options)
+    run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0,
+                                     hc.SimulationOptions(output_dt=0.01, solver=options))
     assert run.t.shape == (4001,) and run.q.shape == (4001, 6) and run.u.shape == (4001, 2)
     # t0 + k dt (library) against NumPy's linspace: round-off of times up to 40.
     np.testing.assert_allclose(run.t, np.linspace(0.0, 40.0, 4001), rtol=0, atol=ROUNDOFF * 40.0)
@@ -44,12 +45,12 @@ def test_zero_error_stays_on_the_desired_trajectory(paper_trajectory, paper_solu
     assert np.max(np.abs(run.q - run.q_d)) < 1e-6
     assert np.max(np.abs(run.u - run.u_d)) < 1e-5
     np.testing.assert_array_equal(run.w, 0.0)
-    np.testing.assert_array_equal(run.q_e, run.q - run.q_d)  # the same subtraction
+    np.testing.assert_array_equal(run.q_e(), run.q - run.q_d)  # the same subtraction
 
 
 def test_closed_loop_matches_an_independent_integration(paper_trajectory, paper_solutions):
     """The simulator integrates f + B u + D w with the law (17): compare with SciPy on the
-    DESIGN.md equations, the law written in NumPy from the solution's gain and the
+    docs/mathematics.md equations, the law written in NumPy from the solution's gain and the
     trajectory, and the paper's disturbance written in NumPy."""
     sol = paper_solutions["erk"]
     kappa = 0.75
@@ -65,8 +66,9 @@ def test_closed_loop_matches_an_independent_integration(paper_trajectory, paper_
                     dense_output=True)
     assert ref.success
     controller = hc.HinfStateFeedback(sol, kappa=hc.Signal(kappa))
-    run = hc.simulate_state_feedback(paper_trajectory, controller, paper_disturbance_signals(),
-                                     PAPER_Q0, 0.05, hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-12))
+    solver = hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-12)
+    run = hc.simulate_state_feedback(paper_trajectory, controller, paper_disturbance_signals(), PAPER_Q0,
+                                     hc.SimulationOptions(output_dt=0.05, solver=solver))
     keep = run.t <= t_end
     np.testing.assert_allclose(run.q[keep], ref.sol(run.t[keep]).T, rtol=0, atol=1e-7)
     # The recorded u and w are the law and the disturbance at the recorded states (the law in
@@ -82,7 +84,7 @@ def test_kappa_scales_the_feedback(paper_trajectory, paper_solutions):
     sol = paper_solutions["bdf"]
     for kappa in (0.5, 1.0, 2.0):
         run = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol, hc.Signal(kappa)),
-                                         None, PAPER_Q0, 0.5)
+                                         None, PAPER_Q0, hc.SimulationOptions(output_dt=0.5))
         K = sol.gain(run.t)
         expected = run.u_d - kappa * np.einsum("kij,kj->ki", K, run.q - run.q_d)
         # The law in C++ and in NumPy: round-off of the size of its terms.
@@ -93,7 +95,7 @@ def test_kappa_scales_the_feedback(paper_trajectory, paper_solutions):
 # ---- the paper's Figure 1 ----
 
 def position_error(run) -> np.ndarray:
-    return np.hypot(run.q_e[:, 3], run.q_e[:, 4])
+    return np.hypot(run.q_e()[:, 3], run.q_e()[:, 4])
 
 
 def test_paper_figure1_position_error_decays(paper_run):
@@ -105,7 +107,7 @@ def test_paper_figure1_position_error_decays(paper_run):
     # scenarios.md: a few centimetres after about 10 s; stays small over the last half.
     assert np.max(error[run.t >= 20.0]) < 0.2 * INITIAL_POSITION_ERROR
     assert np.max(error) == pytest.approx(INITIAL_POSITION_ERROR, rel=1e-12)
-    assert paper_run.controller == "hinf" and paper_run.gamma == 5.0
+    assert paper_run.law == hc.Law.hinf and not paper_run.output_feedback and paper_run.gamma == 5.0
     assert paper_run.scenario_name == "paper-fig1"
 
 
@@ -135,10 +137,13 @@ def test_paper_figure1_metrics_recomputed(paper_run):
         return math.sqrt(np.trapezoid(values, t))
 
     disturbance_l2 = l2(np.sum(run.w**2, axis=1))
+    heading = np.pi - np.mod(np.pi - q_e[:, 5], 2.0 * np.pi)  # wrapped to (-pi, pi]
     expected = {
         "rms_position_error_last_half": math.sqrt(np.mean(pos2[half])),
         "max_position_error": math.sqrt(np.max(pos2)),
         "final_position_error": math.sqrt(pos2[-1]),
+        "rms_heading_error_last_half": math.sqrt(np.mean(heading[half] ** 2)),
+        "final_heading_error": abs(heading[-1]),
         "control_l2": l2(np.sum(run.u**2, axis=1)),
         "control_error_l2": l2(np.sum(u_e**2, axis=1)),
         "disturbance_l2": disturbance_l2,
@@ -149,16 +154,16 @@ def test_paper_figure1_metrics_recomputed(paper_run):
     # summation round-off only.
     rtol = summation_rtol(t.size)
     for name, value in expected.items():
-        assert metrics[name] == pytest.approx(value, rel=rtol), name
+        assert getattr(metrics, name) == pytest.approx(value, rel=rtol), name
     # Output feedback metrics are absent (NaN) for state feedback.
-    assert math.isnan(metrics["max_rho_sigma_z"])
-    assert math.isnan(metrics["rms_estimation_error_last_half"])
+    assert math.isnan(metrics.max_rho_sigma_z)
+    assert math.isnan(metrics.rms_estimation_error_last_half)
+    # Every metric of the table is checked here.
+    assert {d.name for d in hc.metric_table()} == set(expected) | {"max_rho_sigma_z", "rms_estimation_error_last_half"}
     # Closed form: 3 channels of 0.1 cos(2 pi 0.2 t) over 8 whole periods: integral 3 * 0.01 * 20.
-    assert metrics["disturbance_l2"] == pytest.approx(math.sqrt(0.6), rel=1e-10)
-    # The same numbers from compute_metrics on the same run.
-    again = hc.compute_metrics(paper_run.trajectory.model, run, Q)
-    for name, value in expected.items():
-        assert again[name] == pytest.approx(value, rel=rtol), name
+    assert metrics.disturbance_l2 == pytest.approx(math.sqrt(0.6), rel=1e-10)
+    # The same numbers from compute_metrics on the same run: the same code, exactly.
+    assert hc.compute_metrics(paper_run.trajectory.model(), run, Q) == metrics
     # Z(t) bounds over [t0, tf] (paper eq. 22): they enclose the extremes on the output grid
     # (up to the round-off of two eigenvalue algorithms, relative to |Z| ~ 21) and agree with
     # those on a ten times finer grid.
@@ -196,9 +201,10 @@ def test_python_controller_matches_hinf_state_feedback(paper_trajectory, paper_s
     options = hc.SolverOptions(method=method, rtol=rtol, atol=atol)
     sol = paper_solutions[method]
     w = paper_disturbance_signals()
-    builtin = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), w, PAPER_Q0, 0.01, options)
+    builtin = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), w, PAPER_Q0,
+                                         hc.SimulationOptions(output_dt=0.01, solver=options))
     python = hc.simulate_state_feedback(paper_trajectory, PythonHinfLaw(sol, paper_trajectory), w,
-                                        PAPER_Q0, 0.01, options)
+                                        PAPER_Q0, hc.SimulationOptions(output_dt=0.01, solver=options))
     # Each run is within a few (rtol |q| + atol) of the exact closed loop (a contracting one):
     # 10 x that for the difference of two runs, |q| up to 22 m. u = u_d - K q_e moves by at most
     # the row sums of |K| times the difference of q.
@@ -218,9 +224,9 @@ def test_disturbance_as_a_callable(paper_trajectory, paper_solutions):
     rtol, atol = 1e-11, 1e-13
     options = hc.SolverOptions(method="erk", rtol=rtol, atol=atol)
     a = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), paper_disturbance_signals(),
-                                   PAPER_Q0, 0.1, options)
+                                   PAPER_Q0, hc.SimulationOptions(output_dt=0.1, solver=options))
     b = hc.simulate_state_feedback(paper_trajectory, hc.HinfStateFeedback(sol), paper_disturbance,
-                                   PAPER_Q0, 0.1, options)
+                                   PAPER_Q0, hc.SimulationOptions(output_dt=0.1, solver=options))
     # Two runs, each within a few (rtol |q| + atol) of the exact closed loop: 10 x that.
     np.testing.assert_allclose(b.q, a.q, rtol=0, atol=10.0 * (rtol * np.max(np.abs(a.q)) + atol))
 
@@ -239,5 +245,5 @@ def test_python_controller_exception_propagates(paper_trajectory, method):
             return np.array([1.0, 0.0])
 
     with pytest.raises(LookupError, match="controller failed"):
-        hc.simulate_state_feedback(paper_trajectory, Failing(), None, PAPER_Q_D0, 0.1,
-                                   hc.SolverOptions(method=method))
+        hc.simulate_state_feedback(paper_trajectory, Failing(), None, PAPER_Q_D0,
+                                   hc.SimulationOptions(output_dt=0.1, solver=hc.SolverOptions(method=method)))

@@ -18,14 +18,30 @@
 
 namespace hinf {
 
+// A structured solver of BDF's Newton systems (I - gamma J) x = b, used instead of a dense
+// Jacobian and LU factorization (the Riccati equations: Lyapunov equations in O(n^3)).
+class NewtonSystem {
+ public:
+  virtual ~NewtonSystem() = default;
+  // Makes the Jacobian at (t, y) the current one.
+  virtual void refresh(double t, const double* y) = 0;
+  // x = (I - gamma J)^-1 b with the current Jacobian (x and b may alias); false when the
+  // system is singular (the step is then retried with another step size).
+  virtual bool solve(double gamma, const double* b, double* x) = 0;
+};
+
 class Cvode {
  public:
   using Rhs = std::function<void(double t, const double* y, double* ydot)>;
   // J = d rhs / d y, dim x dim, column-major; f = rhs(t, y) is given for free.
   using Jacobian = std::function<void(double t, const double* y, const double* f, double* J)>;
 
+  // BDF solves its Newton systems with `newton` when given (it must outlive the solver; its
+  // Jacobian is refreshed at the predicted state every kNewtonRefreshSteps steps and after a
+  // Newton convergence failure, CVODE's own rules for dense Jacobians), else with the dense
+  // `jacobian` (or difference quotients when that is empty) and LU.
   Cvode(int dim, Method method, double rtol, double atol, long max_steps, Rhs rhs,
-        Jacobian jacobian = nullptr);
+        Jacobian jacobian = nullptr, NewtonSystem* newton = nullptr);
   ~Cvode();
   Cvode(const Cvode&) = delete;
   Cvode& operator=(const Cvode&) = delete;
@@ -43,8 +59,10 @@ class Cvode {
   // Counts over the solver's life (all resets).
   long num_steps() const;
   long num_rhs_evals() const;
-  long num_jac_evals() const;
+  long num_jac_evals() const;  // dense Jacobians, or refreshes of the Newton system
   long num_error_test_failures() const;
+
+  static constexpr long kNewtonRefreshSteps = 20;
 
  private:
   void release();
@@ -60,6 +78,9 @@ class Cvode {
   std::string method_name_;
   Rhs rhs_;
   Jacobian jacobian_;
+  NewtonSystem* newton_ = nullptr;
+  bool newton_current_ = false;  // a Jacobian has been set up since the last reset
+  long newton_step_ = 0, newton_convfails_ = 0, newton_refreshes_ = 0;
   void* context_ = nullptr;  // SUNContext
   void* mem_ = nullptr;      // CVODE memory
   void* y_ = nullptr;        // N_Vector
@@ -69,6 +90,7 @@ class Cvode {
   void* nonlin_ = nullptr;   // SUNNonlinearSolver (Adams)
   bool initialized_ = false;
   double t_stop_ = 0.0;
+  double t_step_start_ = 0.0, t_current_ = 0.0;  // the last step, for last_step_piece()
   std::exception_ptr pending_;
   std::string last_message_;
   // Counters of the integrations before the last re-initialization (CVODE restarts its own).

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -30,6 +31,15 @@ struct StepStats {
   long rejected = 0;   // rejected step attempts
   long rhs_evals = 0;  // right-hand-side evaluations
   long jac_evals = 0;  // Jacobian evaluations (implicit methods)
+  std::string method;  // what integrated: "erk", "bdf", "adams", "erk, then bdf from t = ..."
+
+  StepStats& operator+=(const StepStats& more) {
+    steps += more.steps;
+    rejected += more.rejected;
+    rhs_evals += more.rhs_evals;
+    jac_evals += more.jac_evals;
+    return *this;
+  }
 };
 
 class Dopri5 {
@@ -83,7 +93,7 @@ class Dopri5 {
         k1 = k1_.data();
         ++stats_.steps;
         update_stiffness(hs);
-        const DensePiece piece{t_start, hs, 4, dim_, dense_.data()};
+        const DensePiece piece{t_start, t, 4, dim_, dense_.data()};
         bool stop = false;
         if constexpr (std::is_void_v<decltype(on_step(piece))>) on_step(piece);
         else stop = on_step(piece) == StepAction::Stop;

@@ -19,8 +19,9 @@
 // time, and every interval is a restart. One-step methods restart at no cost, multistep
 // methods restart at first order. Per SolverOptions::method:
 //   erk    Dormand-Prince 5(4), its step size carried from interval to interval;
-//   bdf    the same while the problem is not stiff; once Dormand-Prince's stiffness test fires,
-//          the L-stable SDIRK4 (sdirk4.hpp) takes over, keeping its Jacobian across intervals;
+//   auto, bdf  the same while the problem is not stiff; once Dormand-Prince's stiffness test
+//          fires, the L-stable SDIRK4 (sdirk4.hpp) takes over, keeping its Jacobian across
+//          intervals (a multistep BDF would restart at first order at every sample);
 //   adams  CVODE Adams restarted at every sample (correct but slow).
 // SimulationResult::integrator says what was used. The measured heading (and the heading
 // innovation) is an angle, wrapped to (-pi, pi] (angles.hpp).

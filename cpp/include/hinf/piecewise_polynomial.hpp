@@ -1,9 +1,13 @@
 // Dense output of an ODE solve: one polynomial piece per integrator step.
 //
-// Piece k covers the step from t_k to t_k + h_k (h_k < 0 for backward integration) and is
-//     y(t) = sum_{j=0..d_k} c_kj theta^j,   theta = (t - t_k) / h_k in [0, 1],
+// Piece k covers the step from t_k to e_k (e_k < t_k for backward integration) and is
+//     y(t) = sum_{j=0..d_k} c_kj theta^j,   theta = (t - t_k) / (e_k - t_k) in [0, 1],
 // with c_kj in R^p. The pieces come from the integrator's own interpolant (Dormand-Prince
-// dense output, CVODE's Nordsieck history), so y(t) has the integrator's accuracy at every t.
+// dense output, CVODE's Nordsieck history), so y(t) has the integrator's accuracy at every t,
+// and their ends are the integrator's own step ends, so the first and last pieces reach the
+// ends of the integration exactly. At a time shared by several pieces (a step end, or steps
+// shorter than the spacing of doubles) the piece first in integration order is used: y at the
+// start of the integration is the initial value exactly.
 // Lookups take an optional cursor (index of the last piece used) so that a sweep over sorted
 // times costs O(1) per lookup; without it a binary search is used. Const lookups without a
 // cursor are thread-safe.
@@ -26,12 +30,14 @@ class PiecewisePolynomial {
   double t_min() const;
   double t_max() const;
 
-  // Adds the piece for the step [t_start, t_start + h]; coeffs holds (degree + 1) * dim numbers,
-  // coefficient j of all components contiguous. Pieces must be appended in integration order.
-  void append(double t_start, double h, int degree, const double* coeffs);
-  void append(const DensePiece& piece) { append(piece.t_start, piece.h, piece.degree, piece.coeffs); }
+  // Adds a step's piece (of this dimension); pieces must be appended in integration order.
+  void append(const DensePiece& piece);
   // Orders the pieces by increasing time (needed after a backward integration).
   void finalize();
+
+  // Piece k (0 <= k < num_pieces(), in increasing time once finalized), valid while this object
+  // lives unchanged: appending the pieces in that order rebuilds an identical dense output.
+  DensePiece piece(std::size_t k) const { return {t_start_[k], t_end_[k], degree_[k], dim_, coefficients(k)}; }
 
   void eval(double t, double* out, std::size_t* cursor = nullptr) const;
   void eval_derivative(double t, double* out, std::size_t* cursor = nullptr) const;
@@ -49,7 +55,7 @@ class PiecewisePolynomial {
   }
 
   int dim_;
-  std::vector<double> t_start_, h_;
+  std::vector<double> t_start_, t_end_;
   std::vector<int> degree_;
   // Coefficients live in fixed-size blocks that never move once allocated, so appending never
   // copies what is stored (a solve of unknown length grows without reallocation); offset_ is
@@ -58,8 +64,9 @@ class PiecewisePolynomial {
   std::vector<std::vector<double>> blocks_;
   std::size_t used_ = 0;  // numbers stored
   std::vector<std::size_t> offset_;
-  // lower_[k] = min(t_k, t_k + h_k), increasing once finalized.
-  std::vector<double> lower_;
+  // lower_[k] = min(t_k, e_k), upper_[k] = max(t_k, e_k), both increasing once finalized.
+  std::vector<double> lower_, upper_;
+  bool backward_ = false;  // integrated toward decreasing t (the pieces were reversed)
 };
 
 }  // namespace hinf

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "hinf/piecewise_polynomial.hpp"
@@ -30,9 +31,17 @@ struct SolveStats {
   long steps = 0;
   long rejected = 0;  // rejected steps (error test failures)
   long rhs_evals = 0;
-  long jac_evals = 0;
+  long jac_evals = 0;  // Jacobians (dense) or Schur factorizations (Lyapunov Newton systems)
   std::size_t memory_bytes = 0;  // stored dense output
+  // The integrator that solved it: "erk", "adams", "bdf (dense Newton)", "bdf (Lyapunov
+  // Newton)", or "erk, then bdf (...) from t = ..." for Method::Auto.
+  std::string method;
 };
+
+// A Riccati solution that should be positive semidefinite counts as such while its smallest
+// eigenvalue is above -kSemidefiniteTolerance times its largest: a solution that decays to about
+// zero (no process noise, no weight) crosses zero by round-off and integration error only.
+constexpr double kSemidefiniteTolerance = 1e-6;
 
 // A symmetric-matrix-valued solution X(t) on [t0, tf] kept as dense output.
 class SymmetricSolution {
@@ -67,6 +76,9 @@ class SymmetricSolution {
   double gamma_;
   PiecewisePolynomial X_;
   SolveStats stats_;
+
+ private:
+  Mat unpacked(double t, bool derivative) const;
 };
 
 // Z(t) of the GRDE (13).

@@ -1,4 +1,4 @@
-// A scenario: everything one run needs (shared/scenarios.md is the contract of its TOML form).
+// A scenario: everything one run needs (docs/scenarios.md is the reference of its TOML form).
 // Both front ends (the Python package and the hinf-sim executable) build a Scenario and call
 // run_scenario(), so they give the same numbers.
 #pragma once

@@ -1,4 +1,4 @@
-// Scenario files (TOML, shared/scenarios.md) and the results files (JSON, CSV).
+// Scenario files (TOML, docs/scenarios.md) and the results files (JSON, CSV; docs/results.md).
 #pragma once
 
 #include <string>

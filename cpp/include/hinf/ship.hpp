@@ -13,7 +13,7 @@
 
 namespace hinf {
 
-// The underactuated surface ship of paper eqs. (1)-(6) (DESIGN.md):
+// The underactuated surface ship of paper eqs. (1)-(6) (docs/mathematics.md):
 //   state q = [u, v, r, x, y, psi]: surge, sway (m/s), yaw rate (rad/s) in the body frame;
 //             inertial position x, y (m) and heading psi (rad);
 //   control [u1, u2]: surge force and yaw torque (per unit mass / inertia);

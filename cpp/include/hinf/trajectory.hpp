@@ -24,6 +24,11 @@ class Trajectory {
  public:
   Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf,
              const TrajectoryOptions& options = {});
+  // A trajectory from a dense output integrated before (by the constructor above; e.g. read
+  // back from a pickle): the same input checks, and `dense` must have n components and cover
+  // [t0, tf].
+  Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf, PiecewisePolynomial dense,
+             StepStats stats);
 
   const Model& model() const { return *model_; }
   const ModelPtr& model_ptr() const { return model_; }
@@ -32,6 +37,7 @@ class Trajectory {
   double t0() const { return t0_; }
   double tf() const { return tf_; }
   const Vec& q_d0() const { return q_d0_; }
+  const VectorSignal& u_d_signal() const { return u_d_; }
 
   void q_d(double t, double* out, std::size_t* cursor = nullptr) const;
   Vec q_d(double t) const;
@@ -44,6 +50,9 @@ class Trajectory {
   const StepStats& stats() const { return stats_; }
 
  private:
+  // The checks of the constructors' arguments (not of the dense output).
+  void check_arguments() const;
+
   ModelPtr model_;
   Vec q_d0_;
   VectorSignal u_d_;
