@@ -2,7 +2,7 @@
 // tests/python/_support.py). Nothing here calls the code under test: closed forms, a fixed-step
 // RK4, the algebraic Riccati equations from the Hamiltonian's stable invariant subspace
 // (Eigen's eigen-solvers), the infinite-horizon H-infinity level by bisection, and the ship of
-// DESIGN.md written out by hand.
+// docs/mathematics.md written out by hand.
 #pragma once
 
 #include <Eigen/Dense>
@@ -219,7 +219,7 @@ inline Lti random_lti(std::uint64_t seed, int n, int m, int nw, double abscissa)
   return s;
 }
 
-// ======================================================================= the ship (DESIGN.md)
+// ======================================================================= the ship (docs/mathematics.md)
 
 struct ShipParams {
   double m_u = 0.5, m_v = -2.0, m_r = 0.5, d_u = 1.0, d_v = 2.0, d_r = 1.0;
@@ -248,7 +248,7 @@ inline Mat ship_jacobian(const Vec& q, const ShipParams& p = {}) {
   return J;
 }
 
-// A(q_e) of the decomposition (26)-(31) of DESIGN.md: q1 = [u, v, x, y] (indices 0, 1, 3, 4),
+// A(q_e) of the decomposition (26)-(31) of docs/mathematics.md: q1 = [u, v, x, y] (indices 0, 1, 3, 4),
 // q2 = [r, psi] (indices 2, 5); A11(q2), A12 = d alpha1/d q2 at 0, A21 = d alpha2/d q1 at 0,
 // A22 = [[-d_r, 0], [1, 0]].
 inline Mat ship_split_A(const Vec& q_d, const Vec& q_e, const ShipParams& p = {}) {

@@ -19,7 +19,6 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -171,7 +170,8 @@ TEST_F(PaperCertificates, MAndMAreTheExtremeEigenvaluesOfZ) {
   design_->eigenvalue_bounds(m, M);
   EXPECT_EQ(c.m, m);  // the same computation (certify calls it)
   EXPECT_EQ(c.M, M);
-  // shared/numerics-notes.md (an independent implementation), orientation only.
+  // The values tests/python/test_certificates.py pins for the paper's design, to 3 digits:
+  // orientation only (the grid above is the check).
   EXPECT_NEAR(c.m, 0.219, 1e-3);
   EXPECT_NEAR(c.M, 20.8, 0.05);
 }
@@ -311,11 +311,13 @@ TEST_F(PaperCertificates, ClosedLoopsFromTheCertifiedBallDecayAtTheCertifiedRate
 }
 
 TEST(ScenarioCertificates, PaperFig1IsTheDesignOfItsFile) {
-  // scenario_certificates solves the file's design (bdf, rtol 1e-8: the default solver options)
-  // and certifies it: the same computation as here, the same numbers.
+  // scenario_certificates solves the file's design with the file's [solver] (bdf, rtol 1e-8)
+  // and certifies it: the same computation as here with those options, the same numbers.
   const hinf::Scenario scenario = hinf::load_scenario_toml(std::string(HINF_SOURCE_DIR) + "/scenarios/paper_fig1.toml");
+  ASSERT_EQ(scenario.solver.method, Method::BDF);
   const Certificates from_file = hinf::scenario_certificates(scenario);
-  const auto design = hinf::solve_grde(paper_trajectory(), Mat::Identity(6, 6), Mat::Identity(6, 6), 5.0);
+  const auto design =
+      hinf::solve_grde(paper_trajectory(), Mat::Identity(6, 6), Mat::Identity(6, 6), 5.0, scenario.solver);
   const Certificates here = hinf::certify(*design, hinf::Signal(1.0), Mat::Identity(6, 6));
   EXPECT_EQ(from_file.m, here.m);
   EXPECT_EQ(from_file.M, here.M);
