@@ -176,7 +176,9 @@ TEST(CascadeLaw, YawLoopIsAnExactLinearization) {
 TEST(CascadeLaw, TracksThePapersPersistentlyExcitingPath) {
   // On the paper's S path (r_d oscillates: persistently exciting) the cascade law converges, if
   // slowly: from 0.28 m and 5.7 degrees off, 150 s without disturbance bring the position error
-  // below 1% of the start (measured in Python: 4.5e-4 of it) and the heading error with it.
+  // below 1% of the start (measured: 4.5e-4 of it, a factor of 20) and the heading error below
+  // 1% of its start (the yaw loop alone, roots -1 and -2: measured 3e-10 rad). The default
+  // solver (rtol 1e-8): the integration error is far below both bounds, whatever the method.
   Vec q_d0 = Vec::Zero(6);
   q_d0[0] = 1.0;
   const auto tr = ship_trajectory(ShipParameters{}, q_d0, paper_u_d(), 150.0);
@@ -188,9 +190,12 @@ TEST(CascadeLaw, TracksThePapersPersistentlyExcitingPath) {
   const Eigen::Index last = run.t.size() - 1;
   const double start = std::hypot(0.2, 0.2);
   const double end = std::hypot(run.q(last, 3) - run.q_d(last, 3), run.q(last, 4) - run.q_d(last, 4));
-  std::printf("[cascade] paper path: position error %.3f m at t0, %.2e m at 150 s\n", start, end);
+  const double heading = std::abs(hinf_ref::wrapped(run.q(last, 5) - run.q_d(last, 5)));
+  std::printf("[cascade] paper path: position error %.3f m at t0, %.2e m at 150 s; heading error 0.1 rad at t0, "
+              "%.2e rad at 150 s\n",
+              start, end, heading);
   EXPECT_LT(end, 0.01 * start);
-  EXPECT_LT(std::abs(hinf_ref::wrapped(run.q(last, 5) - run.q_d(last, 5))), 0.01 * 0.1);
+  EXPECT_LT(heading, 0.01 * 0.1);
 }
 
 TEST(CascadeLaw, StraightLineLeavesALateralOffsetUncorrected) {
