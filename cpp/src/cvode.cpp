@@ -214,6 +214,8 @@ double Cvode::step(double* y_out) {
   if (!initialized_) throw InputError("Cvode::step before reset");
   remaining_steps();
   double t = 0.0;
+  const double* y_before = N_VGetArrayPointer(static_cast<N_Vector>(y_));
+  y_step_start_.assign(y_before, y_before + dim_);
   const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
   check(flag, "CVode", t);
   t_step_start_ = t_current_;
@@ -262,6 +264,15 @@ const DensePiece& Cvode::last_step_piece() {
         piece_coeffs_[static_cast<std::size_t>(j * dim_ + i)] += factor * taylor_[static_cast<std::size_t>(k * dim_ + i)];
       binomial = binomial * (k - j) / (j + 1);
     }
+  }
+  // CVODE's interpolant is the current step's polynomial: it ends at y(t_n) but passes the
+  // step's start only to within the local error. Moving the difference into the linear term
+  // makes it start at the accepted y exactly (continuous pieces; the initial value at t0, e.g.
+  // Z(tf) = Qf, exactly) and changes the interpolant by no more than that local error.
+  for (int i = 0; i < dim_; ++i) {
+    const double start_error = y_step_start_[static_cast<std::size_t>(i)] - piece_coeffs_[static_cast<std::size_t>(i)];
+    piece_coeffs_[static_cast<std::size_t>(i)] = y_step_start_[static_cast<std::size_t>(i)];
+    if (order >= 1) piece_coeffs_[static_cast<std::size_t>(dim_ + i)] -= start_error;
   }
   piece_ = DensePiece{t_step_start_, t_now, order, dim_, piece_coeffs_.data()};
   return piece_;
