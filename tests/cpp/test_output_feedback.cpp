@@ -774,12 +774,10 @@ TEST(OutputFeedbackLoop, NoiseIsHeldOverEachPeriodAndOneSampleActsFromItsPeriodO
   EXPECT_GT((other.q.row(k150 + 5) - base.q.row(k150 + 5)).cwiseAbs().maxCoeff(), 1e-6);
 }
 
-// Disabled: the library does not do this yet. simulate_output_feedback wraps the heading of
-// C (q - q_d - q_hat) and adds sigma v after it, so the innovation's heading leaves (-pi, pi]
-// (here pi + 0.25) and the estimator turns its heading the long way round (+0.137 after 0.01 s
-// against -0.117). Enable it once the innovation is wrapped with its noise, as
-// output_feedback.hpp and docs/mathematics.md say.
-TEST(OutputFeedbackLoop, DISABLED_HeadingInnovationIsWrappedWithItsNoise) {
+// Regression: the heading of C (q - q_d - q_hat) was wrapped before sigma v was added, so the
+// innovation's heading left (-pi, pi] (here pi + 0.25) and the estimator turned its heading the
+// long way round (+0.137 after 0.01 s against -0.117).
+TEST(OutputFeedbackLoop, HeadingInnovationIsWrappedWithItsNoise) {
   // output_feedback.hpp and docs/mathematics.md: the heading innovation y_e - C q_hat is an
   // angle, wrapped to (-pi, pi]. Start with a heading error of pi - 0.05 and a first noise
   // sample of +0.6 on the heading (sigma = 0.5): the innovation's heading is pi + 0.25, i.e.
@@ -821,10 +819,9 @@ TEST(OutputFeedbackLoop, DISABLED_HeadingInnovationIsWrappedWithItsNoise) {
   EXPECT_NEAR(run.estimator->q_hat(run.t.size() - 1, 5), ref.q_hat.back()[5], 1e-6);
 }
 
-// Disabled: the library does not do this yet. The recorded measurement is y = C q + sigma v
-// with the heading unwrapped (y_psi reaches 8.2 rad here). Enable it once the measured heading
-// is wrapped, as output_feedback.hpp says.
-TEST(OutputFeedbackLoop, DISABLED_MeasuredHeadingIsWrapped) {
+// Regression: the recorded measurement y = C q + sigma v kept the heading unwrapped (y_psi
+// reached 8.2 rad here).
+TEST(OutputFeedbackLoop, MeasuredHeadingIsWrapped) {
   // output_feedback.hpp: "The measured heading ... is an angle, wrapped to (-pi, pi]". A ship
   // turning at u2_d = 1 (r_d -> 2/3 rad/s) passes psi = pi within 6 s; its recorded measurement of the
   // heading must stay in (-pi, pi] and equal psi + sigma v as an angle.
