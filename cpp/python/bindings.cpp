@@ -30,6 +30,7 @@
 #include "hinf/controller.hpp"
 #include "hinf/enum_names.hpp"
 #include "hinf/errors.hpp"
+#include "hinf/fleet.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/model.hpp"
 #include "hinf/output_feedback.hpp"
@@ -1124,6 +1125,18 @@ A model implemented in Python does not pickle.)doc")
             check_state(state, 4, "LinearModel");
             return std::make_shared<LinearModel>(state[0].cast<Mat>(), state[1].cast<Mat>(), state[2].cast<Mat>(),
                                                  state[3].cast<Mat>());
+          }));
+
+  py::class_<FleetModel, Model, py::smart_holder>(
+      m, "FleetModel", "count independent copies of a model stacked block-diagonally (fleet.hpp)")
+      .def(py::init<ModelPtr, int>(), py::arg("member"), py::arg("count"))
+      .def("member", &FleetModel::member)
+      .def("count", &FleetModel::count)
+      .def(py::pickle(
+          [](const FleetModel& model) { return py::make_tuple(model.member(), model.count()); },
+          [](const py::tuple& state) {
+            check_state(state, 2, "FleetModel");
+            return std::make_shared<FleetModel>(state[0].cast<ModelPtr>(), state[1].cast<int>());
           }));
 
   // ---- options ----

@@ -80,6 +80,14 @@ class OutputFeedbackSystem {
     p_ = static_cast<int>(C_.rows());
     N_inv_ = problem.N.inverse();
     CtNinv_ = C_.transpose() * N_inv_;
+    // The measurement of the heading: the row of C that is the heading's unit row, if any (the
+    // ship's C = [0 I3] measures psi in row 2). Its innovation is an angle.
+    for (int row = 0; heading_ >= 0 && row < p_; ++row) {
+      Vec unit = Vec::Zero(n_);
+      unit[heading_] = 1.0;
+      if (C_.row(row).transpose() == unit) heading_row_ = row;
+    }
+    innovation_.resize(p_);
     u_d_.resize(m_);
     u_.resize(m_);
     u_e_.resize(m_);
@@ -106,13 +114,22 @@ class OutputFeedbackSystem {
     // Plant, with the control (34) u = u_d - kappa B' Z q_hat.
     model_.f(t, q, dq);
     add_inputs(dx);
-    // Estimator (35); the innovation enters as C' N^-1 (y_e - C q_hat)
-    //   = C' N^-1 C (q - q_d - q_hat) + sigma C' N^-1 v.
+    // Estimator (35); the innovation enters as C' N^-1 (y_e - C q_hat) with
+    // y_e - C q_hat = C (q - q_d - q_hat) + sigma v, whose heading component is an angle: it is
+    // wrapped after the noise is added (the measured heading is psi + noise, compared with
+    // psi_d + psi_hat), so that the estimator never turns the long way round.
     model_.error_split(t, q_d_, q_hat_, A_, alpha_);
-    error_ = q - q_d_ - q_hat_;
-    if (heading_ >= 0) error_[heading_] = wrap_angle(error_[heading_]);  // the heading innovation is an angle
-    dq_hat_.noalias() = CtNinvC_ * error_;
-    dq_hat_ += noise_term_;
+    if (heading_row_ >= 0) {
+      error_ = q - q_d_ - q_hat_;
+      innovation_.noalias() = C_ * error_;
+      innovation_ += problem_.sigma * noise_;
+      innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+      dq_hat_.noalias() = CtNinv_ * innovation_;
+    } else {
+      error_ = q - q_d_ - q_hat_;
+      dq_hat_.noalias() = CtNinvC_ * error_;
+      dq_hat_ += noise_term_;
+    }
     error_.noalias() = Sigma_ * dq_hat_;
     gain_lhs_.setIdentity();
     gain_lhs_.noalias() -= inv_gamma2_ * (Sigma_ * Z_);
@@ -151,6 +168,7 @@ class OutputFeedbackSystem {
     for (int i = 0; i < nw_; ++i) w[i] = w_[i];
     Eigen::Map<const Vec> q(x, n_);
     Eigen::Map<Vec>(y, p_) = C_ * q + problem_.sigma * noise_;
+    if (heading_row_ >= 0) y[heading_row_] = wrap_angle(y[heading_row_]);  // a measured angle
     detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
     rho = rho_of_current();
   }
@@ -231,6 +249,8 @@ class OutputFeedbackSystem {
   SparseMatrix B_sparse_, D_sparse_;
   MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_, CtNinvC_;
   VecN q_d_, q_hat_, Zq_, alpha_, dq_hat_, error_, noise_term_;
+  Vec innovation_;        // y_e - C q_hat (p), heading wrapped
+  int heading_row_ = -1;  // the row of C that measures the heading, or -1
   Vec q_estimate_;
   Vec u_d_, u_, u_e_ = Vec(0), w_, noise_;
   std::vector<double> z_packed_;
@@ -276,16 +296,21 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
   SimulationResult r;
   r.heading_index = heading;
   EstimatorSeries& est = r.estimator.emplace();
-  r.q.resize(count, n);
-  est.q_hat.resize(count, n);
-  r.q_d.resize(count, n);
-  r.u.resize(count, m);
-  r.u_d.resize(count, m);
-  r.w.resize(count, nw);
-  est.y.resize(count, p);
-  est.sigma_min_eig.resize(count);
-  est.sigma_max_eig.resize(count);
-  est.rho_sigma_z.resize(count);
+  // Sizes every per-output-time series to `rows` (keeping the first rows when `keep`).
+  const auto size_series = [&](Eigen::Index rows, bool keep) {
+    const auto matrix = [&](RowMat& series, Eigen::Index cols) {
+      if (keep) series.conservativeResize(rows, cols);
+      else series.resize(rows, cols);
+    };
+    const auto vector = [&](Vec& series) {
+      if (keep) series.conservativeResize(rows);
+      else series.resize(rows);
+    };
+    matrix(r.q, n), matrix(est.q_hat, n), matrix(r.q_d, n), matrix(r.u, m), matrix(r.u_d, m), matrix(r.w, nw);
+    matrix(est.y, p);
+    vector(est.sigma_min_eig), vector(est.sigma_max_eig), vector(est.rho_sigma_z);
+  };
+  size_series(count, false);
 
   auto coupling_error = [&](double t, double rho, const std::string& detail) {
     return CouplingConditionError(
@@ -445,16 +470,7 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
                       tf, "INTERNAL");
   if (r.status != RunStatus::Completed) {
     // Keep the output times recorded before the run stopped.
-    r.q.conservativeResize(next, n);
-    est.q_hat.conservativeResize(next, n);
-    r.q_d.conservativeResize(next, n);
-    r.u.conservativeResize(next, m);
-    r.u_d.conservativeResize(next, m);
-    r.w.conservativeResize(next, nw);
-    est.y.conservativeResize(next, p);
-    est.sigma_min_eig.conservativeResize(next);
-    est.sigma_max_eig.conservativeResize(next);
-    est.rho_sigma_z.conservativeResize(next);
+    size_series(next, true);
   }
   r.t = Eigen::Map<const Vec>(grid.data(), next);
   return r;

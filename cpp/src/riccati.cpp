@@ -481,17 +481,14 @@ SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, Pie
     : trajectory_(std::move(trajectory)), n_(trajectory_->n()), gamma_(gamma), X_(std::move(X)),
       stats_(stats) {}
 
-Mat SymmetricSolution::value(double t) const {
-  std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
-  X_.eval(t, p.data());
-  Mat out(n_, n_);
-  unpack_symmetric(p.data(), out);
-  return out;
-}
+Mat SymmetricSolution::value(double t) const { return unpacked(t, false); }
 
-Mat SymmetricSolution::derivative(double t) const {
+Mat SymmetricSolution::derivative(double t) const { return unpacked(t, true); }
+
+Mat SymmetricSolution::unpacked(double t, bool derivative) const {
   std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
-  X_.eval_derivative(t, p.data());
+  if (derivative) X_.eval_derivative(t, p.data());
+  else X_.eval(t, p.data());
   Mat out(n_, n_);
   unpack_symmetric(p.data(), out);
   return out;

@@ -749,7 +749,8 @@ std::string results_json(const RunResult& r, int indent) {
                    {"analysis", r.timing.analysis},
                    {"total", r.timing.total}};
   const SolveStats grde = r.solution ? r.solution->stats() : SolveStats{};
-  j["solver"] = {{"grde_steps", grde.steps},
+  j["solver"] = {{"grde_method", grde.method},
+                 {"grde_steps", grde.steps},
                  {"grde_rhs_evals", grde.rhs_evals},
                  {"grde_memory_bytes", grde.memory_bytes},
                  {"simulation_steps", r.simulation.stats.steps},

@@ -242,7 +242,7 @@ def load_csv(path: str | pathlib.Path) -> RunData:
 
 
 def save_json(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
-    """Writes the results file (``results_json(result)``, docs/scenarios.md)."""
+    """Writes the results file (``results_json(result)``, docs/results.md)."""
     return write_text(path, _core.results_json(result) + "\n")
 
 

@@ -10,7 +10,7 @@ import math
 import numpy as np
 from scipy import linalg
 
-METHODS = ("bdf", "adams", "erk")
+METHODS = ("auto", "bdf", "adams", "erk")
 
 # ---- tolerances for comparisons that involve no integrator ----
 #

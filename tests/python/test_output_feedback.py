@@ -438,7 +438,13 @@ def test_ship_closed_loop_matches_an_independent_integration(filter_A):
                                atol=ROUNDOFF * terms)
     held = noise[np.minimum(np.floor(run.t / T + 1e-9).astype(int), noise.shape[0] - 1)]
     terms = np.max(np.abs(run.q[:, 3:])) + sigma * np.max(np.abs(held))
-    np.testing.assert_allclose(run.estimator.y, run.q[:, 3:] + sigma * held, rtol=0, atol=ROUNDOFF * terms)
+    expected = run.q[:, 3:] + sigma * held
+    # The heading as an angle: the nearest value of expected + 2 pi k to the recorded one
+    # (wrapping moves it by a multiple of 2 pi: a round-off of 2 pi more).
+    turns = np.round((expected[:, 2] - run.estimator.y[:, 2]) / (2 * np.pi))
+    assert np.all(np.abs(run.estimator.y[:, 2]) <= np.pi)
+    expected[:, 2] -= 2 * np.pi * turns
+    np.testing.assert_allclose(run.estimator.y, expected, rtol=0, atol=ROUNDOFF * (terms + 2 * np.pi))
 
 
 @pytest.mark.parametrize("gamma", [5.0, math.inf], ids=["hinf", "lqg"])
@@ -639,7 +645,7 @@ def test_changing_one_noise_sample_changes_the_run_from_its_period_on(fig2_scena
 def test_noise_is_held_over_each_period(paper_trajectory, paper_solutions):
     """T = 0.03 s with output every 0.01 s: the noise channels w4..w6 at t_k = k dt hold
     sample floor(k / 3), the disturbance channels hold the paper's w, and
-    y = [x, y, psi] + sigma * sample."""
+    y = [x, y, psi] + sigma * sample, the measured heading wrapped to (-pi, pi]."""
     T, sigma = 0.03, 0.5
     count = hc.noise_sample_count(0.0, 40.0, T)
     assert count == 1334  # 1333 whole periods and a partial one
@@ -655,7 +661,13 @@ def test_noise_is_held_over_each_period(paper_trajectory, paper_solutions):
     np.testing.assert_allclose(run.w[:, :3], np.array([paper_disturbance(t)[:3] for t in run.t]), rtol=0,
                                atol=ROUNDOFF * 0.1)
     terms = np.max(np.abs(run.q[:, 3:])) + sigma * np.max(np.abs(held))
-    np.testing.assert_allclose(run.estimator.y, run.q[:, 3:] + sigma * held, rtol=0, atol=ROUNDOFF * terms)
+    expected = run.q[:, 3:] + sigma * held
+    # The heading as an angle: the nearest value of expected + 2 pi k to the recorded one
+    # (wrapping moves it by a multiple of 2 pi: a round-off of 2 pi more).
+    turns = np.round((expected[:, 2] - run.estimator.y[:, 2]) / (2 * np.pi))
+    assert np.all(np.abs(run.estimator.y[:, 2]) <= np.pi) and np.any(turns != 0)
+    expected[:, 2] -= 2 * np.pi * turns
+    np.testing.assert_allclose(run.estimator.y, expected, rtol=0, atol=ROUNDOFF * (terms + 2 * np.pi))
 
 
 def test_scenario_noise_needs_a_measurement_section():

@@ -21,9 +21,11 @@ struct DensePiece {
   double h() const { return t_end - t_start; }
   double time(double theta) const { return theta >= 1.0 ? t_end : t_start + theta * h(); }
   // theta of time t (clamped to [0, 1]).
+  // At t == t_start the start (theta = 0) even for a step shorter than the spacing of doubles
+  // (t_end == t_start): the value at the start of an integration is its initial value.
   double theta(double t) const {
+    if (t == t_start) return 0.0;
     if (t == t_end) return 1.0;
-    if (t == t_start || t_end == t_start) return 0.0;
     const double value = (t - t_start) / h();
     return value < 0.0 ? 0.0 : (value > 1.0 ? 1.0 : value);
   }

@@ -72,7 +72,7 @@ class Dopri5 {
                                   " steps (stopped at t = ", t, " on the way to t = ", t1,
                                   "); raise max_steps or loosen rtol"),
                           t, "TOO_MUCH_WORK");
-      if (h < 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t)))
+      if (h < kMinStepFactor * std::max(1.0, std::abs(t)))
         throw SolverError(str_cat("Dormand-Prince: step size underflow at t = ", t,
                                   " (the solution may be escaping to infinity)"),
                           t, "STEP_TOO_SMALL");
@@ -123,6 +123,8 @@ class Dopri5 {
   static constexpr double kSafe = 0.9;
   static constexpr double kFacMin = 0.2;   // smallest step ratio
   static constexpr double kFacMax = 10.0;  // largest step ratio
+  // Smallest step: kMinStepFactor * max(1, |t|) (a few units in the last place of t).
+  static constexpr double kMinStepFactor = 16.0 * std::numeric_limits<double>::epsilon();
 
   double weight(double a, double b) const { return atol_ + rtol_ * std::max(std::abs(a), std::abs(b)); }
 
@@ -150,7 +152,11 @@ class Dopri5 {
     der2 = std::sqrt(der2 / dim_) / h;
     const double der12 = std::max(std::abs(der2), dnf);
     const double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3) : std::pow(0.01 / der12, 0.2);
-    return std::min({100.0 * h, h1, h_cap});
+    // Not below 1000 times the smallest step the loop accepts: a solution tiny against its
+    // derivative (X = 1e-15 + (1 - t)) gives a guess below it, which would be refused as an
+    // underflow though the problem is benign; a step too large is rejected and shrunk.
+    const double h_floor = 1e3 * kMinStepFactor * std::max(1.0, std::abs(t0));
+    return std::min(std::max(std::min(100.0 * h, h1), h_floor), h_cap);
   }
 
   // One Dormand-Prince step of size hs from (t, y); ynew_ and k7_ hold the result.

@@ -89,7 +89,11 @@ struct OutputFeedbackOptions {
 // Simulates the output-feedback closed loop: filter and estimator of the problem's design
 // (Z, gamma; its trajectory), control by `controller` at the estimated state q_d + q_hat.
 // The result carries the estimator series. Throws CouplingConditionError when
-// rho(Sigma Z) >= gamma^2 at an output time (unless options.on_coupling_violation is Flag).
+// rho(Sigma Z) >= gamma^2 at an output time (unless options.on_coupling_violation is Flag), or
+// when the integration stops between output times at the estimator gain's pole, where
+// rho(Sigma Z) reaches gamma^2 (to 1e-3; with Flag this is a SolverError naming the violation).
+// The measured heading (the row of C that picks the model's heading) and its innovation are
+// angles, wrapped to (-pi, pi].
 SimulationResult simulate_output_feedback(const OutputFeedbackProblem& problem, Controller& controller,
                                           const Disturbance& disturbance, const Vec& q0,
                                           const OutputFeedbackOptions& options = {},

@@ -76,6 +76,9 @@ class SymmetricSolution {
   double gamma_;
   PiecewisePolynomial X_;
   SolveStats stats_;
+
+ private:
+  Mat unpacked(double t, bool derivative) const;
 };
 
 // Z(t) of the GRDE (13).
