@@ -4,6 +4,8 @@
 # Eigen's and libstdc++'s assertions on (Debug: no NDEBUG), in build/sanitize/cmake
 # (incremental). Then ctest, then pytest on the sanitized extension. Any sanitizer report, also
 # from a subprocess whose failure a test expects, fails the step. Extra arguments go to pytest.
+# Both suites whole, no subset: from scratch on 2 cores the step took 12 minutes (build 5.5,
+# ctest 0.5, pytest 6; pytest about 3 times its time on the plain build), 21 on a busy machine.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
