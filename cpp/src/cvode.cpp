@@ -219,7 +219,7 @@ double Cvode::step(double* y_out) {
   y_step_start_.assign(y_before, y_before + dim_);
   const int flag = CVode(mem_, t_stop_, static_cast<N_Vector>(y_), &t, CV_ONE_STEP);
   check(flag, "CVode", t);
-  first_step_ = steps_since_restart_++ == 0;
+  ++steps_since_restart_;
   t_step_start_ = t_current_;
   t_current_ = t;
   const double* y = N_VGetArrayPointer(static_cast<N_Vector>(y_));
@@ -273,7 +273,7 @@ const DensePiece& Cvode::last_step_piece() {
   // solution at t0 is the initial value exactly (Z(tf) = Qf, Sigma(t0) = Sigma0); the piece
   // moves by that local error and its slope is kept (the first step can be 1e-11 long: a
   // correction of the slope would divide round-off by it).
-  if (first_step_)
+  if (steps_since_restart_ == 1)
     for (int i = 0; i < dim_; ++i) piece_coeffs_[static_cast<std::size_t>(i)] = y_step_start_[static_cast<std::size_t>(i)];
   piece_ = DensePiece{t_step_start_, t_now, order, dim_, piece_coeffs_.data()};
   return piece_;

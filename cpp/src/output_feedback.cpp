@@ -82,11 +82,8 @@ class OutputFeedbackSystem {
     CtNinv_ = C_.transpose() * N_inv_;
     // The measurement of the heading: the row of C that is the heading's unit row, if any (the
     // ship's C = [0 I3] measures psi in row 2). Its innovation is an angle.
-    for (int row = 0; heading_ >= 0 && row < p_; ++row) {
-      Vec unit = Vec::Zero(n_);
-      unit[heading_] = 1.0;
-      if (C_.row(row).transpose() == unit) heading_row_ = row;
-    }
+    for (int row = 0; heading_ >= 0 && row < p_; ++row)
+      if (C_(row, heading_) == 1.0 && C_.row(row).squaredNorm() == 1.0) heading_row_ = row;
     innovation_.resize(p_);
     u_d_.resize(m_);
     u_.resize(m_);
@@ -119,14 +116,13 @@ class OutputFeedbackSystem {
     // wrapped after the noise is added (the measured heading is psi + noise, compared with
     // psi_d + psi_hat), so that the estimator never turns the long way round.
     model_.error_split(t, q_d_, q_hat_, A_, alpha_);
+    error_ = q - q_d_ - q_hat_;
     if (heading_row_ >= 0) {
-      error_ = q - q_d_ - q_hat_;
       innovation_.noalias() = C_ * error_;
       innovation_ += problem_.sigma * noise_;
       innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
       dq_hat_.noalias() = CtNinv_ * innovation_;
     } else {
-      error_ = q - q_d_ - q_hat_;
       dq_hat_.noalias() = CtNinvC_ * error_;
       dq_hat_ += noise_term_;
     }

@@ -97,8 +97,7 @@ class Cvode {
   long steps_before_ = 0, rhs_evals_before_ = 0, jac_evals_before_ = 0, error_test_failures_before_ = 0;
   std::vector<double> taylor_, piece_coeffs_;
   std::vector<double> y_step_start_;  // y at t_step_start_, exactly as the step began
-  long steps_since_restart_ = 0;
-  bool first_step_ = false;  // the last step was the first after reset()
+  long steps_since_restart_ = 0;  // steps since reset(): 1 while the last step is the first
   DensePiece piece_;
 
   friend struct CvodeCallbacks;
