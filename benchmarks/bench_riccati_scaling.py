@@ -83,7 +83,9 @@ def ship_fleet(count: int):
     q_d0 = np.tile([1.0, 0.0, 0.0, 0.0, 0.0, 0.0], count)
     trajectory = hc.Trajectory(hc.FleetModel(ship, count), q_d0, u_d * count, 0.0, 40.0)
     gamma = 5.0
-    B, D = trajectory.model().B(0.0), trajectory.model().D(0.0)
+    model = trajectory.model()
+    q = np.zeros(model.n())
+    B, D = model.G(0.0, q), model.D(0.0, q)
     return {"trajectory": trajectory, "A": trajectory.A_e, "S": B @ B.T - D @ D.T / gamma**2,
             "gamma": gamma, "n": 6 * count}
 

@@ -295,7 +295,7 @@ def _self_check() -> int:
     for _ in range(20):
         qd, qe = rng.standard_normal(6), rng.standard_normal(6)
         A, alpha = ship_error_split(qd, qe, p)
-        A_lib, alpha_lib = sc.model.error_split(1.0, qd, qe)
+        A_lib, alpha_lib = sc.model.error_split(1.0, qd, np.zeros(sc.model.m()), qe)
         split_error = max(split_error, np.max(np.abs(A - A_lib)), np.max(np.abs(alpha - alpha_lib)))
         fe = ref.ship_f(qd + qe, p) - ref.ship_f(qd, p)
         A0 = ship_error_split(qd, np.zeros(6), p)[0]

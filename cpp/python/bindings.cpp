@@ -11,6 +11,7 @@
 // (SolverError, ConjugatePointError, CouplingConditionError) with their data as attributes.
 // Long calls release the GIL; Python callables and Python subclasses re-acquire it.
 // Scenarios, models, options and results pickle (see the pickling section).
+#include <pybind11/complex.h>
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -18,6 +19,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <complex>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <tuple>
@@ -189,13 +192,18 @@ std::optional<T> read_override(const Base* self, const char* method, const char*
   return result;
 }
 
-// A Model implemented in Python: override n, m, nw, f(t, q), dfdq(t, q), B(t), D(t) (and
-// optionally name, error_split, C, noise_channels, state_names, position_indices,
-// heading_index, constant_input_matrices).
+// A Model implemented in Python: override n, m, nw, f(t, q), G(t, q), D(t, q) (and optionally
+// dfdq(t, q), dGudq(t, q, u), name, error_split, C, noise_channels, state_names,
+// position_indices, heading_index, constant_input_matrices, state_dependent_inputs).
 // Its structure (name, n, m, nw, state names, position and heading indices, noise channels,
-// constant_input_matrices) is read once, on first use, validated (check_structure) and never
-// asked again: everything downstream sizes its arrays by it. What f, dfdq, B, D, C and
-// error_split return is checked against it at every call.
+// constant_input_matrices, state_dependent_inputs) is read once, on first use, validated
+// (check_structure) and never asked again: everything downstream sizes its arrays by it. What
+// f, dfdq, G, D, C and error_split return is checked against it at every call.
+//
+// Without dfdq the Jacobian is numerical: the complex step Im f(q + i h e_j) / h (exact to
+// round-off, h = 1e-20) when f computes with complex q and agrees, at the first call, with
+// central differences; central differences otherwise (numerical_jacobian). Without dGudq a
+// state-dependent G is differentiated by central differences.
 class PyModel : public Model, public py::trampoline_self_life_support {
  public:
   std::string name() const override { return structure().name; }
@@ -208,15 +216,19 @@ class PyModel : public Model, public py::trampoline_self_life_support {
   int heading_index() const override { return structure().heading_index; }
   std::vector<int> noise_channels() const override { return structure().noise_channels; }
 
-  Mat B(double t) const override {
+  bool state_dependent_inputs() const override { return structure().state_dependent_inputs; }
+
+  Mat G(double t, const ConstVecRef& q) const override {
     const ModelStructure& s = structure();
+    require_sized(q.size() == s.n, "G(t, q)");
     py::gil_scoped_acquire gil;
-    return finite_matrix(call("B", t), s.n, s.m, "the Python model's B(t)", t);
+    return finite_matrix(call("G", t, Vec(q)), s.n, s.m, "the Python model's G(t, q)", t);
   }
-  Mat D(double t) const override {
+  Mat D(double t, const ConstVecRef& q) const override {
     const ModelStructure& s = structure();
+    require_sized(q.size() == s.n, "D(t, q)");
     py::gil_scoped_acquire gil;
-    return finite_matrix(call("D", t), s.n, s.nw, "the Python model's D(t)", t);
+    return finite_matrix(call("D", t, Vec(q)), s.n, s.nw, "the Python model's D(t, q)", t);
   }
   Mat C(double t) const override {
     const ModelStructure& s = structure();
@@ -241,22 +253,53 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     const int n = structure().n;
     require_sized(q.size() == n && out.rows() == n && out.cols() == n, "dfdq(t, q)");
     py::gil_scoped_acquire gil;
-    out = matrix_result(call("dfdq", t, Vec(q)), n, n, "the Python model's dfdq(t, q)", t);
+    if (py::get_override(static_cast<const Model*>(this), "dfdq")) {
+      out = matrix_result(call("dfdq", t, Vec(q)), n, n, "the Python model's dfdq(t, q)", t);
+      return;
+    }
+    out = numerical_dfdq(t, q);
   }
-  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+  void dGudq(double t, const ConstVecRef& q, const ConstVecRef& u, MatRef out) const override {
+    const ModelStructure& s = structure();
+    require_sized(q.size() == s.n && u.size() == s.m && out.rows() == s.n && out.cols() == s.n, "dGudq(t, q, u)");
+    if (!s.state_dependent_inputs) {
+      out.setZero();
+      return;
+    }
+    py::gil_scoped_acquire gil;
+    if (py::get_override(static_cast<const Model*>(this), "dGudq")) {
+      out = matrix_result(call("dGudq", t, Vec(q), Vec(u)), s.n, s.n, "the Python model's dGudq(t, q, u)", t);
+      return;
+    }
+    const Vec u_held = u;
+    out = central_differences(Vec(q), s.n, [&](const Vec& x) -> Vec {
+      return finite_matrix(call("G", t, x), s.n, s.m, "the Python model's G(t, q)", t) * u_held;
+    });
+  }
+  std::string jacobian_method() const override {
+    py::gil_scoped_acquire gil;
+    if (py::get_override(static_cast<const Model*>(this), "dfdq")) return "analytic";
+    switch (jacobian_choice_.load()) {
+      case JacobianChoice::ComplexStep: return "complex step";
+      case JacobianChoice::CentralDifferences: return "central differences";
+      default: return "numerical (complex step or central differences, chosen at the first Jacobian)";
+    }
+  }
+  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e, MatRef A,
                    VecRef alpha) const override {
     const int n = structure().n;
-    require_sized(q_d.size() == n && q_e.size() == n && A.rows() == n && A.cols() == n && alpha.size() == n,
-                  "error_split(t, q_d, q_e)");
+    require_sized(q_d.size() == n && u_d.size() == structure().m && q_e.size() == n && A.rows() == n &&
+                      A.cols() == n && alpha.size() == n,
+                  "error_split(t, q_d, u_d, q_e)");
     py::gil_scoped_acquire gil;
     py::function override = py::get_override(static_cast<const Model*>(this), "error_split");
     if (!override) {
       py::gil_scoped_release release;
-      Model::error_split(t, q_d, q_e, A, alpha);
+      Model::error_split(t, q_d, u_d, q_e, A, alpha);
       return;
     }
-    const char* subject = "the Python model's error_split(t, q_d, q_e)";
-    const py::object value = override(t, Vec(q_d), Vec(q_e));
+    const char* subject = "the Python model's error_split(t, q_d, u_d, q_e)";
+    const py::object value = override(t, Vec(q_d), Vec(u_d), Vec(q_e));
     if (!py::isinstance<py::tuple>(value) || py::len(value) != 2)
       wrong_value(value, subject, str_cat("return a pair (A, alpha) of shapes (", n, ", ", n, ") and (", n, ",)"), t);
     const py::tuple pair = py::reinterpret_borrow<py::tuple>(value);
@@ -294,6 +337,8 @@ class PyModel : public Model, public py::trampoline_self_life_support {
                            .value_or(Model::noise_channels());
     s.constant_input_matrices = read<bool>("constant_input_matrices", "return a bool")
                                     .value_or(Model::constant_input_matrices());
+    s.state_dependent_inputs = read<bool>("state_dependent_inputs", "return a bool")
+                                   .value_or(Model::state_dependent_inputs());
     check_structure(s);
     return s;
   }
@@ -327,6 +372,73 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     return M;
   }
 
+  // The numerical df/dq at (t, q), with the GIL held: the complex step if the model allows it
+  // (decided at the first call, see the class comment), else central differences.
+  Mat numerical_dfdq(double t, const ConstVecRef& q) const {
+    const int n = structure().n;
+    const Vec x = q;
+    const auto real_f = [&](const Vec& point) -> Vec {
+      return vector_result(call("f", t, point), n, "the Python model's f(t, q)", t);
+    };
+    JacobianChoice choice = jacobian_choice_.load();
+    if (choice == JacobianChoice::CentralDifferences) return central_differences(x, n, real_f);
+    std::optional<Mat> complex_step;
+    try {
+      complex_step = complex_step_jacobian(t, x);
+    } catch (const py::error_already_set&) {  // f does not take complex numbers
+    } catch (const InputError&) {
+    }
+    if (choice == JacobianChoice::ComplexStep && complex_step) return *complex_step;
+    // The first call: central differences are accurate to about eps^(2/3) of the scale; a
+    // complex step within 1e-6 of the scale of them is taken to be right (a model whose f drops
+    // the imaginary part, e.g. through abs() or a real array, fails this and gets central
+    // differences).
+    const Mat central = central_differences(x, n, real_f);
+    const double scale = 1.0 + central.cwiseAbs().maxCoeff() + real_f(x).cwiseAbs().maxCoeff();
+    const bool agrees = complex_step && complex_step->allFinite() &&
+                        (*complex_step - central).cwiseAbs().maxCoeff() <= 1e-6 * scale;
+    jacobian_choice_.store(agrees ? JacobianChoice::ComplexStep : JacobianChoice::CentralDifferences);
+    return agrees ? *complex_step : central;
+  }
+
+  // Im f(q + i h e_j) / h column by column (h = 1e-20: no subtraction, so no cancellation).
+  Mat complex_step_jacobian(double t, const Vec& q) const {
+    const int n = structure().n;
+    constexpr double h = 1e-20;
+    Mat J(n, n);
+    Eigen::VectorXcd point = q.cast<std::complex<double>>();
+    for (int j = 0; j < n; ++j) {
+      point[j] = std::complex<double>(q[j], h);
+      const py::object value = call("f", t, point);
+      point[j] = q[j];
+      const std::optional<Eigen::VectorXcd> out = try_cast<Eigen::VectorXcd>(value);
+      if (!out || out->size() != n) throw InputError("f(t, q) did not return n complex numbers for a complex q");
+      J.col(j) = out->imag() / h;
+    }
+    return J;
+  }
+
+  // Central differences of F: R^n -> R^rows at q, steps h_j = eps^(1/3) max(1, |q_j|) (the
+  // truncation error, O(h^2), and the round-off, O(eps / h), balance there).
+  template <class F>
+  static Mat central_differences(const Vec& q, Eigen::Index rows, const F& fn) {
+    const double base_step = std::cbrt(std::numeric_limits<double>::epsilon());
+    Mat J(rows, q.size());
+    Vec point = q;
+    for (Eigen::Index j = 0; j < q.size(); ++j) {
+      const double h = base_step * std::max(1.0, std::abs(q[j]));
+      point[j] = q[j] + h;
+      const Vec ahead = fn(point);
+      point[j] = q[j] - h;
+      const Vec behind = fn(point);
+      point[j] = q[j];
+      J.col(j) = (ahead - behind) / (2.0 * h);
+    }
+    return J;
+  }
+
+  enum class JacobianChoice { Undecided, ComplexStep, CentralDifferences };
+  mutable std::atomic<JacobianChoice> jacobian_choice_{JacobianChoice::Undecided};
   mutable std::atomic<const ModelStructure*> structure_{nullptr};
   mutable std::unique_ptr<const ModelStructure> owned_;
 };
@@ -1049,11 +1161,15 @@ PYBIND11_MODULE(_core, m) {
 
   // ---- models ----
   py::class_<Model, PyModel, py::smart_holder>(m, "Model", R"doc(
-Control-affine model dq/dt = f(t, q) + B(t) u + D(t) w (paper eq. 7).
-Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t). Its structure
-(n, m, nw, name, state_names, position_indices, heading_index, noise_channels,
-constant_input_matrices) is read once, when the library first needs it, and validated; it must not
-change afterwards. What f, dfdq, B, D, C and error_split return is checked at every call.
+Control-affine model dq/dt = f(t, q) + G(t, q) u + D(t, q) w (paper eq. 7; model.hpp).
+Subclass it in Python and implement n(), m(), nw(), f(t, q), G(t, q), D(t, q), and if you can
+dfdq(t, q) (else a numerical Jacobian is used: the complex step when f accepts complex q, else
+central differences; jacobian_method() says which). A G or D that depends on q needs
+state_dependent_inputs() -> True and constant_input_matrices() -> False (dGudq(t, q, u) =
+d/dq [G(t, q) u] is optional: central differences otherwise). Its structure (n, m, nw, name,
+state_names, position_indices, heading_index, noise_channels, constant_input_matrices,
+state_dependent_inputs) is read once, when the library first needs it, and validated; it must not
+change afterwards. What f, dfdq, G, D, C and error_split return is checked at every call.
 A model implemented in Python does not pickle.)doc")
       .def(py::init<>())
       .def("name", &Model::name)
@@ -1072,17 +1188,42 @@ A model implemented in Python does not pickle.)doc")
         model.dfdq(t, q, out);
         return out;
       }, py::arg("t"), py::arg("q"))
-      .def("B", &Model::B, py::arg("t"))
-      .def("D", &Model::D, py::arg("t"))
+      .def("G", [](const Model& model, double t, const Vec& q) {
+        check_size(q, model.n(), "q");
+        return model.G(t, q);
+      }, py::arg("t"), py::arg("q"), "input matrix G(t, q) (n x m)")
+      .def("D", [](const Model& model, double t, const Vec& q) {
+        check_size(q, model.n(), "q");
+        return model.D(t, q);
+      }, py::arg("t"), py::arg("q"), "disturbance matrix D(t, q) (n x nw)")
+      .def("dGudq", [](const Model& model, double t, const Vec& q, const Vec& u) {
+        check_size(q, model.n(), "q");
+        check_size(u, model.m(), "u");
+        Mat out(model.n(), model.n());
+        model.dGudq(t, q, u, out);
+        return out;
+      }, py::arg("t"), py::arg("q"), py::arg("u"), "d/dq [G(t, q) u] (n x n; zero when G does not depend on q)")
+      .def("linearize", [](const Model& model, double t, const Vec& q, const Vec& u) {
+        check_size(q, model.n(), "q");
+        check_size(u, model.m(), "u");
+        Mat out(model.n(), model.n());
+        linearize(model, t, q, u, out);
+        return out;
+      }, py::arg("t"), py::arg("q"), py::arg("u"), "d/dq [f(t, q) + G(t, q) u] (A_e(t) at q_d(t), u_d(t))")
       .def("constant_input_matrices", &Model::constant_input_matrices)
-      .def("error_split", [](const Model& model, double t, const Vec& q_d, const Vec& q_e) {
+      .def("state_dependent_inputs", &Model::state_dependent_inputs)
+      .def("jacobian_method", &Model::jacobian_method,
+           "how dfdq is obtained: analytic, automatic differentiation, complex step or central differences")
+      .def("error_split", [](const Model& model, double t, const Vec& q_d, const Vec& u_d, const Vec& q_e) {
         check_size(q_d, model.n(), "q_d");
+        check_size(u_d, model.m(), "u_d");
         check_size(q_e, model.n(), "q_e");
         Mat A(model.n(), model.n());
         Vec alpha(model.n());
-        model.error_split(t, q_d, q_e, A, alpha);
+        model.error_split(t, q_d, u_d, q_e, A, alpha);
         return py::make_tuple(A, alpha);
-      }, py::arg("t"), py::arg("q_d"), py::arg("q_e"), "(A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31)")
+      }, py::arg("t"), py::arg("q_d"), py::arg("u_d"), py::arg("q_e"),
+         "(A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31; f_e includes G(q) u_d - G(q_d) u_d)")
       .def("C", &Model::C, py::arg("t"), "measurement matrix of y = C q + E w (paper eq. 25)")
       .def("noise_channels", &Model::noise_channels, "the w channels that carry measurement noise")
       .def("remainder_bound", [](const Model& model, double t, const Vec& q_d, double radius) {
@@ -1115,11 +1256,12 @@ A model implemented in Python does not pickle.)doc")
       "dq/dt = A q + B u + D w; with C (p x n), y = C q + noise on p extra w channels")
       .def(py::init<Mat, Mat, Mat, Mat>(), py::arg("A"), py::arg("B"), py::arg("D"), py::arg("C") = Mat())
       .def("A", &LinearModel::A)
+      .def("B", &LinearModel::B)
       .def("process_D", &LinearModel::process_D, "D as given to the constructor (without the noise channels)")
       .def("measurement_C", &LinearModel::measurement_C, "C as given to the constructor (empty if none)")
       .def(py::pickle(
           [](const LinearModel& model) {
-            return py::make_tuple(model.A(), model.B(0.0), model.process_D(), model.measurement_C());
+            return py::make_tuple(model.A(), model.B(), model.process_D(), model.measurement_C());
           },
           [](const py::tuple& state) {
             check_state(state, 4, "LinearModel");
@@ -1193,7 +1335,17 @@ A model implemented in Python does not pickle.)doc")
         return vectorize(t, tr.n(), tr.n(), [&tr](double tt, double* out) {
           Eigen::Map<Mat>(out, tr.n(), tr.n()) = tr.A_e(tt);
         });
-      }, py::arg("t"))
+      }, py::arg("t"), "d/dq [f + G u_d] at q_d(t)")
+      .def("B_e", [](const Trajectory& tr, const py::object& t) {
+        return vectorize(t, tr.n(), tr.m(), [&tr](double tt, double* out) {
+          Eigen::Map<Mat>(out, tr.n(), tr.m()) = tr.B_e(tt);
+        });
+      }, py::arg("t"), "G(t, q_d(t))")
+      .def("D_e", [](const Trajectory& tr, const py::object& t) {
+        return vectorize(t, tr.n(), tr.model().nw(), [&tr](double tt, double* out) {
+          Eigen::Map<Mat>(out, tr.n(), tr.model().nw()) = tr.D_e(tt);
+        });
+      }, py::arg("t"), "D(t, q_d(t))")
       .def("dense", &Trajectory::dense, py::return_value_policy::reference_internal)
       .def("stats", &Trajectory::stats)
       .def(py::pickle(

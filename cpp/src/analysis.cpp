@@ -248,21 +248,34 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
 namespace {
 
 // L(t) for the certificate: the model's bound, or a sampled estimate of
-// max |r(e)| / |e|^2 over random directions at a few radii (not a bound).
-double remainder_estimate(const Model& model, double t, const Vec& q_d, std::mt19937_64& rng) {
+// max |r(e)| / |e|^2 over random directions at a few radii (not a bound). r is the remainder of
+// the closed loop's error dynamics: with F(q) = f(t, q) + G(t, q) u_d,
+//     r(e) = F(q_d + e) - F(q_d) - A_e e + (G(t, q_d + e) - B_e) u_e(e),  u_e = -K e,
+// whose last term (the input acting through a state-dependent G) is zero for constant G.
+double remainder_estimate(const Model& model, double t, const Vec& q_d, const Vec& u_d, const Mat& K,
+                          std::mt19937_64& rng) {
   const int n = model.n();
+  const bool state_dependent = model.state_dependent_inputs();
   Mat A(n, n);
-  model.dfdq(t, q_d, A);
-  Vec f0(n), f1(n), e(n);
-  model.f(t, q_d, f0);
+  linearize(model, t, q_d, u_d, A);
+  const Mat B_e = state_dependent ? model.G(t, q_d) : Mat();
+  auto drift = [&](const Vec& q, Vec& out) {
+    model.f(t, q, out);
+    if (state_dependent) out.noalias() += model.G(t, q) * u_d;
+  };
+  Vec f0(n), f1(n), e(n), q(n);
+  drift(q_d, f0);
   std::normal_distribution<double> normal;
   double worst = 0.0;
   for (double radius : {1e-2, 1e-1, 0.5}) {
     for (int k = 0; k < 32; ++k) {
       for (int i = 0; i < n; ++i) e[i] = normal(rng);
       e *= radius / e.norm();
-      model.f(t, q_d + e, f1);
-      worst = std::max(worst, (f1 - f0 - A * e).norm() / (radius * radius));
+      q = q_d + e;
+      drift(q, f1);
+      Vec r = f1 - f0 - A * e;
+      if (state_dependent) r.noalias() -= (model.G(t, q) - B_e) * (K * e);
+      worst = std::max(worst, r.norm() / (radius * radius));
     }
   }
   return worst;
@@ -283,7 +296,7 @@ Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q
 
   // p(t) = lambda_min(Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z), eq. (23).
   auto p_at = [&](double t) {
-    const Mat Zt = Z.Z(t), B = model.B(t), D = model.D(t);
+    const Mat Zt = Z.Z(t), B = trajectory.B_e(t), D = trajectory.D_e(t);
     const Mat ZB = Zt * B, ZD = Zt * D;
     Mat P = Q + (2.0 * kappa(t) - 1.0) * ZB * ZB.transpose() + inv_gamma2 * ZD * ZD.transpose();
     P = 0.5 * (P + P.transpose());
@@ -303,8 +316,9 @@ Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q
   std::mt19937_64 rng(12345);
   auto L_at = [&](double t) {
     const Vec q_d = trajectory.q_d(t);
-    return bounded ? model.remainder_bound(t, q_d, std::numeric_limits<double>::infinity())
-                   : remainder_estimate(model, t, q_d, rng);
+    if (bounded) return model.remainder_bound(t, q_d, std::numeric_limits<double>::infinity());
+    const Mat K = kappa(t) * Z.gain(t);  // u_e = -kappa B_e' Z q_e
+    return remainder_estimate(model, t, q_d, trajectory.u_d(t), K, rng);
   };
   c.remainder_L = detail::extremum_over(times, L_at, -1.0).first;
   if (c.p_min > 0.0) {

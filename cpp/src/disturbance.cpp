@@ -17,7 +17,7 @@ Disturbance::Disturbance(VectorSignal signals, RiccatiSolutionPtr design)
   const Model& model = design_->trajectory().model();
   require(signals_.dim() == model.nw(), "the disturbance has ", signals_.dim(), " channels, the model '",
           model.name(), "' has ", model.nw());
-  if (model.constant_input_matrices()) D_ = model.D(design_->t0());
+  if (model.constant_input_matrices()) D_ = model.D(design_->t0(), design_->trajectory().q_d0());
 }
 
 void Disturbance::eval(double t, const double* q, double* w) const {
@@ -26,9 +26,9 @@ void Disturbance::eval(double t, const double* q, double* w) const {
   const Trajectory& trajectory = design_->trajectory();
   const Model& model = trajectory.model();
   const int n = model.n();
-  Vec q_e(n), Zq(n);
-  trajectory.q_d(t, q_e.data());
-  tracking_error(n, model.heading_index(), q, q_e.data(), q_e.data());  // q - q_d, in place
+  Vec q_d(n), q_e(n), Zq(n);
+  trajectory.q_d(t, q_d.data());
+  tracking_error(n, model.heading_index(), q, q_d.data(), q_e.data());
   PackedScratch z(n);
   design_->packed(t, z.data());
   // Z q_e from the packed Z.
@@ -37,7 +37,7 @@ void Disturbance::eval(double t, const double* q, double* w) const {
     for (int j = 0; j < n; ++j) s += z.data()[packed_index(i, j)] * q_e[j];
     Zq[i] = s;
   }
-  const Mat D = D_.size() > 0 ? D_ : model.D(t);
+  const Mat D = D_.size() > 0 ? D_ : model.D(t, q_d);  // D_e(t), the design's
   const double g2 = 1.0 / (design_->gamma() * design_->gamma());
   for (Eigen::Index c = 0; c < D.cols(); ++c) {
     double s = 0.0;

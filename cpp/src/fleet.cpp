@@ -16,6 +16,14 @@ Mat block_diagonal(const Mat& block, int count) {
   return out;
 }
 
+// Block-diagonal matrix of the blocks matrix(i) (rows x cols each), i = 0 .. count - 1.
+template <class Block>
+Mat block_diagonal(int count, int rows, int cols, const Block& matrix) {
+  Mat out = Mat::Zero(count * rows, count * cols);
+  for (int i = 0; i < count; ++i) out.block(i * rows, i * cols, rows, cols) = matrix(i);
+  return out;
+}
+
 }  // namespace
 
 FleetModel::FleetModel(ModelPtr member, int count) : member_(std::move(member)), count_(count) {
@@ -39,16 +47,26 @@ void FleetModel::dfdq(double t, const ConstVecRef& q, MatRef out) const {
     member_->dfdq(t, q.segment(i * n1_, n1_), out.block(i * n1_, i * n1_, n1_, n1_));
 }
 
-Mat FleetModel::B(double t) const { return block_diagonal(member_->B(t), count_); }
-Mat FleetModel::D(double t) const { return block_diagonal(member_->D(t), count_); }
+Mat FleetModel::G(double t, const ConstVecRef& q) const {
+  return block_diagonal(count_, n1_, m1_, [&](int i) { return member_->G(t, q.segment(i * n1_, n1_)); });
+}
+Mat FleetModel::D(double t, const ConstVecRef& q) const {
+  return block_diagonal(count_, n1_, nw1_, [&](int i) { return member_->D(t, q.segment(i * n1_, n1_)); });
+}
 Mat FleetModel::C(double t) const { return block_diagonal(member_->C(t), count_); }
 
-void FleetModel::error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
-                             VecRef alpha) const {
+void FleetModel::dGudq(double t, const ConstVecRef& q, const ConstVecRef& u, MatRef out) const {
+  out.setZero();
+  for (int i = 0; i < count_; ++i)
+    member_->dGudq(t, q.segment(i * n1_, n1_), u.segment(i * m1_, m1_), out.block(i * n1_, i * n1_, n1_, n1_));
+}
+
+void FleetModel::error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e,
+                             MatRef A, VecRef alpha) const {
   A.setZero();
   for (int i = 0; i < count_; ++i)
-    member_->error_split(t, q_d.segment(i * n1_, n1_), q_e.segment(i * n1_, n1_), A.block(i * n1_, i * n1_, n1_, n1_),
-                         alpha.segment(i * n1_, n1_));
+    member_->error_split(t, q_d.segment(i * n1_, n1_), u_d.segment(i * m1_, m1_), q_e.segment(i * n1_, n1_),
+                         A.block(i * n1_, i * n1_, n1_, n1_), alpha.segment(i * n1_, n1_));
 }
 
 std::vector<int> FleetModel::noise_channels() const {

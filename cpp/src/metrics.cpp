@@ -90,7 +90,10 @@ double l2_norm(const Vec& t, const RowMat& series) { return root_integral_of_squ
 
 Metrics compute_metrics(const Model& model, const SimulationResult& run, const Mat& Q) {
   // The run must be one of this model: its columns are indexed by the model's states.
-  validate_model(model, run.t.size() > 0 ? run.t[0] : 0.0);
+  if (run.t.size() > 0 && run.q.rows() > 0 && run.q.cols() == model.n())
+    validate_model(model, run.t[0], run.q.row(0).transpose());
+  else
+    check_structure(structure_of(model));
   const auto check_series = [&](const RowMat& series, int columns, const char* name) {
     require(series.rows() == run.t.size() && series.cols() == columns, "compute_metrics: run.", name, " has shape (",
             series.rows(), ", ", series.cols(), "), expected (", run.t.size(), ", ", columns,

@@ -7,13 +7,29 @@
 
 namespace hinf {
 
-void Model::error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+void Model::dGudq(double, const ConstVecRef&, const ConstVecRef&, MatRef out) const {
+  require(!state_dependent_inputs(), "the model '", name(), "' declares input matrices that depend on the state",
+          " but does not implement dGudq(t, q, u) = d/dq [G(t, q) u]: implement it");
+  out.setZero();
+}
+
+void Model::error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e, MatRef A,
                         VecRef alpha) const {
-  dfdq(t, q_d, A);
+  linearize(*this, t, q_d, u_d, A);
+  const Vec q = q_d + q_e;
   Vec f_actual(n()), f_desired(n());
-  f(t, q_d + q_e, f_actual);
+  f(t, q, f_actual);
   f(t, q_d, f_desired);
   alpha = f_actual - f_desired - A * q_e;
+  if (state_dependent_inputs()) alpha.noalias() += (G(t, q) - G(t, q_d)) * u_d;
+}
+
+void linearize(const Model& model, double t, const ConstVecRef& q, const ConstVecRef& u, MatRef A) {
+  model.dfdq(t, q, A);
+  if (!model.state_dependent_inputs()) return;
+  Mat input_part(model.n(), model.n());
+  model.dGudq(t, q, u, input_part);
+  A += input_part;
 }
 
 double Model::remainder_bound(double, const ConstVecRef&, double) const { return NAN; }
@@ -69,9 +85,12 @@ void check_structure(const ModelStructure& s) {
           "': heading_index() must be -1 (no heading) or a state index (0 to ", s.n - 1, "), got ",
           s.heading_index);
   check_indices(s, s.noise_channels, s.nw, "noise_channels()", "a disturbance channel");
+  require(!(s.constant_input_matrices && s.state_dependent_inputs), "the model '", s.name,
+          "' says its input matrices are constant and also that they depend on the state: a model with",
+          " state_dependent_inputs() must return false from constant_input_matrices()");
 }
 
-void validate_model(const Model& model, double t) {
+ModelStructure structure_of(const Model& model) {
   ModelStructure s;
   s.name = model.name();
   s.n = model.n();
@@ -82,12 +101,20 @@ void validate_model(const Model& model, double t) {
   s.position_indices = model.position_indices();
   s.heading_index = model.heading_index();
   s.noise_channels = model.noise_channels();
+  s.constant_input_matrices = model.constant_input_matrices();
+  s.state_dependent_inputs = model.state_dependent_inputs();
+  return s;
+}
+
+void validate_model(const Model& model, double t, const ConstVecRef& q) {
+  const ModelStructure s = structure_of(model);
   check_structure(s);
-  const Mat B = model.B(t), D = model.D(t);
-  check_shape(B, s.n, s.m, str_cat("B(t) of the model '", s.name, "'"));
-  check_finite(B, str_cat("B(t) of the model '", s.name, "'"));
-  check_shape(D, s.n, s.nw, str_cat("D(t) of the model '", s.name, "'"));
-  check_finite(D, str_cat("D(t) of the model '", s.name, "'"));
+  check_size(q, s.n, str_cat("the state at which the model '", s.name, "' is checked"));
+  const Mat G = model.G(t, q), D = model.D(t, q);
+  check_shape(G, s.n, s.m, str_cat("G(t, q) of the model '", s.name, "'"));
+  check_finite(G, str_cat("G(t, q) of the model '", s.name, "'"));
+  check_shape(D, s.n, s.nw, str_cat("D(t, q) of the model '", s.name, "'"));
+  check_finite(D, str_cat("D(t, q) of the model '", s.name, "'"));
 }
 
 LinearModel::LinearModel(Mat A, Mat B, Mat D, Mat C)

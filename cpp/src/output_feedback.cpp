@@ -67,7 +67,7 @@ class OutputFeedbackSystem {
         disturbance_(disturbance), problem_(problem), options_(options), n_(grde_.n()), m_(model_.m()),
         nw_(model_.nw()),
         noise_channels_(model_.noise_channels()), heading_(model_.heading_index()),
-        constant_(model_.constant_input_matrices()),
+        constant_(model_.constant_input_matrices()), state_dependent_(model_.state_dependent_inputs()),
         inv_gamma2_(std::isinf(grde_.gamma()) ? 0.0 : 1.0 / (grde_.gamma() * grde_.gamma())) {
     // The law of this very design (the usual case): u = u_d - kappa B' Z q_hat from the q_d,
     // u_d and Z q_hat already evaluated here, instead of a second lookup of each.
@@ -92,7 +92,7 @@ class OutputFeedbackSystem {
     noise_.setZero(p_);
     noise_term_.setZero();
     z_packed_.resize(static_cast<std::size_t>(packed_size(n_)));
-    set_matrices(trajectory_.t0());
+    set_matrices(trajectory_.t0(), trajectory_.q_d0());
   }
 
   int n() const { return n_; }
@@ -108,14 +108,14 @@ class OutputFeedbackSystem {
     evaluate_signals(t, x);
     Eigen::Map<const VecN> q(x, n_);
     Eigen::Map<VecN> dq(dx, n_), dq_hat(dx + n_, n_);
-    // Plant, with the control (34) u = u_d - kappa B' Z q_hat.
+    // Plant, with the control (34) u = u_d - kappa B_e' Z q_hat.
     model_.f(t, q, dq);
-    add_inputs(dx);
+    add_inputs(t, q, dx);
     // Estimator (35); the innovation enters as C' N^-1 (y_e - C q_hat) with
     // y_e - C q_hat = C (q - q_d - q_hat) + sigma v, whose heading component is an angle: it is
     // wrapped after the noise is added (the measured heading is psi + noise, compared with
     // psi_d + psi_hat), so that the estimator never turns the long way round.
-    model_.error_split(t, q_d_, q_hat_, A_, alpha_);
+    model_.error_split(t, q_d_, u_d_, q_hat_, A_, alpha_);
     error_ = q - q_d_ - q_hat_;
     if (heading_row_ >= 0) {
       innovation_.noalias() = C_ * error_;
@@ -132,16 +132,24 @@ class OutputFeedbackSystem {
     dq_hat = gain_lhs_.partialPivLu().solve(error_);
     dq_hat.noalias() += A_ * q_hat_;
     dq_hat += alpha_;
-    // + B (u - u_d) + gamma^-2 D D' Z q_hat: the control applied and the worst-case disturbance.
+    // + G (u - u_d) + gamma^-2 D_e D_e' Z q_hat: the control applied and the worst-case
+    // disturbance. With state-dependent inputs the control acts through G at the estimated
+    // state q_d + q_hat (the error dynamics carry G(t, q) u_e).
     for (int i = 0; i < m_; ++i) u_e_[i] = u_[i] - u_d_[i];
-    if (constant_) B_sparse_.add_product(u_e_.data(), dx + n_);
-    else dq_hat.noalias() += B_ * (u_ - u_d_);
+    if (constant_) {
+      B_sparse_.add_product(u_e_.data(), dx + n_);
+    } else if (state_dependent_) {
+      q_estimate_ = q_d_ + q_hat_;
+      dq_hat.noalias() += checked_G(t, q_estimate_) * u_e_;
+    } else {
+      dq_hat.noalias() += B_ * u_e_;
+    }
     if (inv_gamma2_ > 0.0) dq_hat.noalias() += inv_gamma2_ * (DDt_ * Zq_);
     // Filter Riccati (36): sign +1, M = A_f', R = D D', S = C' N^-1 C - gamma^-2 Q.
     if (options_.filter_A == FilterLinearization::Estimate) {
       A_f_ = A_.transpose();
     } else {
-      model_.dfdq(t, q_d_, T_);
+      trajectory_.A_e(t, q_d_, T_);
       A_f_ = T_.transpose();
     }
     detail::riccati_rhs(1.0, A_f_, DDt_, S_f_, Sigma_, T_, G_, dx + 2 * n_, diagonal_S_f_);
@@ -173,11 +181,12 @@ class OutputFeedbackSystem {
   // rho(Sigma Z) for the Sigma_ and Z_ of the last evaluate_signals.
   double rho_of_current() { return detail::spectral_radius_of_product(Sigma_, Z_, T_, G_); }
 
-  void set_matrices(double t) {
-    B_ = model_.B(t);
-    D_ = model_.D(t);
-    check_shape(B_, n_, m_, str_cat("B(", t, ") of the model '", model_.name(), "'"));
-    check_shape(D_, n_, nw_, str_cat("D(", t, ") of the model '", model_.name(), "'"));
+  // The design's matrices at t: B_e = G(t, q_d), D_e = D(t, q_d) and what is made of them.
+  void set_matrices(double t, const ConstVecRef& q_d) {
+    B_ = model_.G(t, q_d);
+    D_ = model_.D(t, q_d);
+    check_shape(B_, n_, m_, str_cat("G(t, q) at t = ", t, " of the model '", model_.name(), "'"));
+    check_shape(D_, n_, nw_, str_cat("D(t, q) at t = ", t, " of the model '", model_.name(), "'"));
     B_sparse_ = SparseMatrix(B_);
     D_sparse_ = SparseMatrix(D_);
     DDt_ = D_ * D_.transpose();
@@ -187,11 +196,21 @@ class OutputFeedbackSystem {
     diagonal_S_f_ = detail::is_diagonal(S_f_);
   }
 
-  // dx[0:n] += B u + D w.
-  void add_inputs(double* dx) {
+  Mat checked_G(double t, const ConstVecRef& q) const {
+    Mat G = model_.G(t, q);
+    check_shape(G, n_, m_, str_cat("G(t, q) at t = ", t, " of the model '", model_.name(), "'"));
+    return G;
+  }
+
+  // dx[0:n] += G(t, q) u + D(t, q) w, the plant's inputs.
+  void add_inputs(double t, const ConstVecRef& q, double* dx) {
     if (constant_) {
       B_sparse_.add_product(u_.data(), dx);
       D_sparse_.add_product(w_.data(), dx);
+    } else if (state_dependent_) {
+      Mat D = model_.D(t, q);
+      check_shape(D, n_, nw_, str_cat("D(t, q) at t = ", t, " of the model '", model_.name(), "'"));
+      Eigen::Map<Vec>(dx, n_) += checked_G(t, q) * u_ + D * w_;
     } else {
       Eigen::Map<Vec>(dx, n_) += B_ * u_ + D_ * w_;
     }
@@ -202,8 +221,8 @@ class OutputFeedbackSystem {
     // What depends on t alone is kept: Runge-Kutta stages and output times repeat t.
     if (t != signals_at_) {
       signals_at_ = t;
-      if (!constant_) set_matrices(t);
       trajectory_.q_d(t, q_d_.data(), &q_cursor_);
+      if (!constant_) set_matrices(t, q_d_);
       trajectory_.u_d(t, u_d_.data());
       grde_.packed(t, z_packed_.data(), &z_cursor_);
       unpack_symmetric(z_packed_.data(), Z_);
@@ -211,7 +230,7 @@ class OutputFeedbackSystem {
     unpack_symmetric(x + 2 * n_, Sigma_);
     for (int i = 0; i < n_; ++i) q_hat_[i] = x[n_ + i];
     Zq_.noalias() = Z_ * q_hat_;
-    // The control at the estimated state (for the H-infinity law: u_d - kappa B' Z q_hat).
+    // The control at the estimated state (for the H-infinity law: u_d - kappa B_e' Z q_hat).
     if (own_law_ != nullptr) {
       const double kappa = own_law_->checked_kappa(t);
       u_.noalias() = u_d_ - kappa * (B_.transpose() * Zq_);
@@ -236,12 +255,12 @@ class OutputFeedbackSystem {
   int n_, m_, nw_, p_ = 0;
   std::vector<int> noise_channels_;
   int heading_;
-  bool constant_;
+  bool constant_, state_dependent_;
   double inv_gamma2_;
   bool diagonal_S_f_ = false;
   std::size_t q_cursor_ = 0, z_cursor_ = 0;
   double signals_at_ = NAN;  // the t of q_d_, u_d_ and Z_
-  Mat B_, D_, C_, N_inv_, CtNinv_;
+  Mat B_, D_, C_, N_inv_, CtNinv_;  // B_e(t), D_e(t) (model.hpp), C, N^-1, C' N^-1
   SparseMatrix B_sparse_, D_sparse_;
   MatN Z_, Sigma_, A_, A_f_, T_, G_, DDt_, S_f_, gain_lhs_, CtNinvC_;
   VecN q_d_, q_hat_, Zq_, alpha_, dq_hat_, error_, noise_term_;

@@ -44,7 +44,7 @@ class RiccatiProblem {
         constant_(model_.constant_input_matrices()), Q_(Q), N_inv_(N_inv) {
     for (auto* M : {&M_, &R_, &S_, &R0_, &S0_, &shifted_, &X_, &A_, &T_, &G_}) M->resize(n_, n_);
     q_d_.resize(n_);
-    if (constant_) set_input_terms(trajectory.t0());
+    if (constant_) set_input_terms(trajectory.t0(), trajectory.q_d0());
   }
 
   int n() const { return n_; }
@@ -70,12 +70,12 @@ class RiccatiProblem {
   }
 
  private:
-  // R and S of the equation for X (they depend on t only through B, C, D), and the parts of
-  // the shifted problem that do not depend on A_e.
-  void set_input_terms(double t) {
-    const Mat D = model_.D(t);
+  // R and S of the equation for X (they depend on t only through B_e, C, D_e), and the parts
+  // of the shifted problem that do not depend on A_e. q_d is the desired state at t.
+  void set_input_terms(double t, const Vec& q_d) {
+    const Mat D = model_.D(t, q_d);
     if (kind_ == RiccatiKind::Control) {
-      const Mat B = model_.B(t);
+      const Mat B = model_.G(t, q_d);
       R0_ = Q_;
       S0_ = B * B.transpose();
       if (inv_gamma2_ > 0.0) S0_ -= inv_gamma2_ * (D * D.transpose());
@@ -101,8 +101,8 @@ class RiccatiProblem {
     if (t == coefficients_at_) return;
     coefficients_at_ = t;
     trajectory_.q_d(t, q_d_.data(), &cursor_);
-    model_.dfdq(t, q_d_, A_);
-    if (!constant_) set_input_terms(t);
+    trajectory_.A_e(t, q_d_, A_);
+    if (!constant_) set_input_terms(t, q_d_);
     const bool transpose = kind_ == RiccatiKind::Filter;  // M = A_e (control) or A_e' (filter)
     if (shift_ > 0.0) {
       if (transpose) T_ = A_.transpose();
@@ -205,7 +205,7 @@ double solution_scale(const Trajectory& trajectory, RiccatiKind kind, const Mat&
   if (kind == RiccatiKind::Control) {
     R_scale = largest_eigenvalue(Q);
   } else {
-    const Mat D = trajectory.model().D(t_start);
+    const Mat D = trajectory.D_e(t_start);
     R_scale = largest_eigenvalue(D * D.transpose());
   }
   return std::max({largest_eigenvalue(X_start), R_scale * time_scale, std::numeric_limits<double>::min()});
@@ -511,7 +511,7 @@ RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, Piecewi
     : SymmetricSolution(std::move(trajectory), gamma, std::move(Z), stats), m_(trajectory_->m()) {
   const Model& model = trajectory_->model();
   constant_B_ = model.constant_input_matrices();
-  if (constant_B_) B_ = SparseMatrix(model.B(trajectory_->t0()));
+  if (constant_B_) B_ = SparseMatrix(model.G(trajectory_->t0(), trajectory_->q_d0()));
 }
 
 Mat RiccatiSolution::gain(double t) const {
@@ -533,7 +533,7 @@ void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
     });
     return;
   }
-  Eigen::Map<Mat>(out, m_, n_) = trajectory_->model().B(t).transpose() * Z(t);
+  Eigen::Map<Mat>(out, m_, n_) = trajectory_->B_e(t).transpose() * Z(t);
 }
 
 namespace {

@@ -24,9 +24,11 @@ SimulationOptions Scenario::simulation_options() const {
 Scenario Scenario::resolved() const {
   require(model != nullptr, "the scenario has no model");
   check_horizon(t0, tf);
-  validate_model(*model, t0);  // before its sizes are used
+  check_structure(structure_of(*model));  // before its sizes are used
   Scenario s = *this;
   const int n = model->n();
+  check_size(desired_q0, n, "[desired] q0");
+  validate_model(*model, t0, desired_q0);
   if (s.Q.size() == 0) s.Q = Mat::Identity(n, n);
   if (s.Qf.size() == 0) s.Qf = Mat::Identity(n, n);
   if (s.disturbance.dim() == 0 && model->nw() > 0) s.disturbance = VectorSignal::zeros(model->nw());
@@ -46,9 +48,10 @@ Scenario Scenario::resolved() const {
 void Scenario::validate() const {
   require(model != nullptr, "the scenario has no model");
   check_horizon(t0, tf);
-  validate_model(*model, t0);
+  check_structure(structure_of(*model));
   const int n = model->n(), m = model->m(), nw = model->nw();
   check_size(desired_q0, n, "[desired] q0");
+  validate_model(*model, t0, desired_q0);
   require(desired_u.dim() == m, "[desired] needs ", m, " input signals (u1..u", m, "), got ",
           desired_u.dim());
   require(!std::isnan(gamma) && gamma > 0.0, "[controller] gamma must be > 0 (or inf), got ", gamma);

@@ -668,7 +668,7 @@ toml::table model_toml(const Model& model) {
                        {"d_u", p.d_u}, {"d_v", p.d_v}, {"d_r", p.d_r}};
   }
   if (const auto* linear = dynamic_cast<const LinearModel*>(&model)) {
-    toml::table table{{"kind", "linear"}, {"A", matrix_toml(linear->A())}, {"B", matrix_toml(linear->B(0.0))},
+    toml::table table{{"kind", "linear"}, {"A", matrix_toml(linear->A())}, {"B", matrix_toml(linear->B())},
                       {"D", matrix_toml(linear->process_D())}};
     if (linear->measurement_C().size() > 0) table.insert("C", matrix_toml(linear->measurement_C()));
     return table;
@@ -731,6 +731,8 @@ std::string results_json(const RunResult& r, int indent) {
   const Metrics& mt = r.metrics;
   nlohmann::json j;
   j["scenario"] = r.scenario_name;
+  j["model"] = {{"name", r.trajectory ? r.trajectory->model().name() : std::string()},
+                {"jacobian", r.trajectory ? r.trajectory->model().jacobian_method() : std::string()}};
   j["controller"] = to_string(r.law) + (r.output_feedback ? "-output-feedback" : "");
   j["gamma"] = number(r.gamma);
   j["Z0"] = r.solution ? matrix_json(r.Z0) : nlohmann::json(nullptr);

@@ -50,14 +50,14 @@ void ShipModel::dfdq(double, const ConstVecRef& q, MatRef J) const {
   J(5, 2) = 1.0;
 }
 
-Mat ShipModel::B(double) const {
+Mat ShipModel::G(double, const ConstVecRef&) const {
   Mat B = Mat::Zero(6, 2);
   B(0, 0) = 1.0;
   B(2, 1) = 1.0;
   return B;
 }
 
-Mat ShipModel::D(double) const {
+Mat ShipModel::D(double, const ConstVecRef&) const {
   Mat D = Mat::Zero(6, 6);
   D(0, 0) = D(1, 1) = D(2, 2) = 1.0;
   return D;
@@ -65,7 +65,7 @@ Mat ShipModel::D(double) const {
 
 // docs/mathematics.md, "Imperfect measurements": q1 = [u, v, x, y] (indices 0, 1, 3, 4) and
 // q2 = [r, psi] (indices 2, 5), all errors; psi = psi_d + psi_e, r = r_d + r_e.
-void ShipModel::error_split(double, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+void ShipModel::error_split(double, const ConstVecRef& q_d, const ConstVecRef&, const ConstVecRef& q_e, MatRef A,
                             VecRef alpha) const {
   const double ud = q_d[0], vd = q_d[1], rd = q_d[2], psid = q_d[5];
   const double ue = q_e[0], ve = q_e[1], re = q_e[2], psie = q_e[5];

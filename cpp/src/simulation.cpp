@@ -84,9 +84,9 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
-  const bool constant_BD = model.constant_input_matrices();
-  Mat B = model.B(t0), D = model.D(t0);
-  const SparseMatrix B_sparse(B), D_sparse(D);
+  const bool constant_GD = model.constant_input_matrices();
+  Mat G = model.G(t0, q0), D = model.D(t0, q0);
+  const SparseMatrix G_sparse(G), D_sparse(D);
   Vec u(m), w(nw), q_d(n), q_e(n);
   Mat J(n, n), dudq(m, n);
   auto rhs = [&](double t, const double* y, double* dydt) {
@@ -95,25 +95,32 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
     model.f(t, q, out);
     controller.control(t, q, u);
     disturbance.eval(t, y, w.data());
-    if (constant_BD) {
-      B_sparse.add_product(u.data(), dydt);
+    if (constant_GD) {
+      G_sparse.add_product(u.data(), dydt);
       D_sparse.add_product(w.data(), dydt);
     } else {
-      const Mat Bt = model.B(t), Dt = model.D(t);
-      check_shape(Bt, n, m, str_cat("B(", t, ") of the model '", model.name(), "'"));
-      check_shape(Dt, n, nw, str_cat("D(", t, ") of the model '", model.name(), "'"));
-      out.noalias() += Bt * u + Dt * w;
+      const Mat Gt = model.G(t, q), Dt = model.D(t, q);
+      check_shape(Gt, n, m, str_cat("G(t, q) at t = ", t, " of the model '", model.name(), "'"));
+      check_shape(Dt, n, nw, str_cat("D(t, q) at t = ", t, " of the model '", model.name(), "'"));
+      out.noalias() += Gt * u + Dt * w;
     }
   };
+  // d/dq [f + G(q) u(q) + D(q) w] ~ df/dq + d(G u)/dq + G du/dq: the change of D(q) w with q is
+  // left out (the Jacobian only steers the implicit methods' Newton iterations).
   auto jacobian = [&](double t, const double* yy, const double*, double* Jout) {
     Eigen::Map<const Vec> q(yy, n);
-    if (!constant_BD) {
-      B = model.B(t);
-      check_shape(B, n, m, str_cat("B(", t, ") of the model '", model.name(), "'"));
+    if (!constant_GD) {
+      G = model.G(t, q);
+      check_shape(G, n, m, str_cat("G(t, q) at t = ", t, " of the model '", model.name(), "'"));
     }
-    model.dfdq(t, q, J);
     controller.control_jacobian(t, q, dudq);
-    Eigen::Map<Mat>(Jout, n, n) = J + B * dudq;
+    if (model.state_dependent_inputs()) {
+      controller.control(t, q, u);
+      linearize(model, t, q, u, J);
+    } else {
+      model.dfdq(t, q, J);
+    }
+    Eigen::Map<Mat>(Jout, n, n) = J + G * dudq;
   };
 
   SimulationResult result;

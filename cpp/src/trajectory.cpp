@@ -14,21 +14,21 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
   require(options.rtol > 0 && options.atol > 0 && options.max_steps > 0,
           "trajectory tolerances and max_steps must be > 0");
 
-  const bool constant_B = model_->constant_input_matrices();
-  Mat B = model_->B(t0);
+  const bool constant_G = model_->constant_input_matrices();
+  Mat G = model_->G(t0, q_d0_);
   Vec u(m), f(n);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
     Eigen::Map<Vec> out(dydt, n);
     model_->f(t, q, f);
     u_d_.eval(t, u.data());
-    if (!constant_B) {
-      B = model_->B(t);
-      if (B.rows() != n || B.cols() != m)
-        throw InputError(str_cat("B(t) of the model '", model_->name(), "' at t = ", t, " has shape (",
-                                 B.rows(), ", ", B.cols(), "), expected (", n, ", ", m, ")"));
+    if (!constant_G) {
+      G = model_->G(t, q);
+      if (G.rows() != n || G.cols() != m)
+        throw InputError(str_cat("G(t, q) of the model '", model_->name(), "' at t = ", t, " has shape (",
+                                 G.rows(), ", ", G.cols(), "), expected (", n, ", ", m, ")"));
     }
-    out.noalias() = f + B * u;
+    out.noalias() = f + G * u;
   };
   dense_ = PiecewisePolynomial(n);
   Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
@@ -58,8 +58,9 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
 void Trajectory::check_arguments() const {
   require(model_ != nullptr, "Trajectory needs a model");
   check_horizon(t0_, tf_);
-  validate_model(*model_, t0_);
+  check_structure(structure_of(*model_));  // before its sizes are used
   check_size(q_d0_, model_->n(), "the desired initial state q_d0");
+  validate_model(*model_, t0_, q_d0_);
   require(u_d_.dim() == model_->m(), "the desired input u_d has ", u_d_.dim(), " channels, the model '",
           model_->name(), "' has ", model_->m(), " inputs");
 }
@@ -76,8 +77,20 @@ Vec Trajectory::q_d(double t) const {
 
 Mat Trajectory::A_e(double t) const {
   Mat A(n(), n());
-  model_->dfdq(t, q_d(t), A);
+  A_e(t, q_d(t), A);
   return A;
 }
+
+void Trajectory::A_e(double t, const ConstVecRef& q_d, MatRef A) const {
+  if (!model_->state_dependent_inputs()) {
+    model_->dfdq(t, q_d, A);
+    return;
+  }
+  linearize(*model_, t, q_d, u_d(t), A);
+}
+
+Mat Trajectory::B_e(double t) const { return model_->G(t, q_d(t)); }
+
+Mat Trajectory::D_e(double t) const { return model_->D(t, q_d(t)); }
 
 }  // namespace hinf

@@ -446,37 +446,57 @@ class VectorSignal:
         ...
 class Model:
     """
-    Control-affine model dq/dt = f(t, q) + B(t) u + D(t) w (paper eq. 7).
-    Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t). Its structure
-    (n, m, nw, name, state_names, position_indices, heading_index, noise_channels,
-    constant_input_matrices) is read once, when the library first needs it, and validated; it must not
-    change afterwards. What f, dfdq, B, D, C and error_split return is checked at every call.
+    Control-affine model dq/dt = f(t, q) + G(t, q) u + D(t, q) w (paper eq. 7; model.hpp).
+    Subclass it in Python and implement n(), m(), nw(), f(t, q), G(t, q), D(t, q), and if you can
+    dfdq(t, q) (else a numerical Jacobian is used: the complex step when f accepts complex q, else
+    central differences; jacobian_method() says which). A G or D that depends on q needs
+    state_dependent_inputs() -> True and constant_input_matrices() -> False (dGudq(t, q, u) =
+    d/dq [G(t, q) u] is optional: central differences otherwise). Its structure (n, m, nw, name,
+    state_names, position_indices, heading_index, noise_channels, constant_input_matrices,
+    state_dependent_inputs) is read once, when the library first needs it, and validated; it must not
+    change afterwards. What f, dfdq, G, D, C and error_split return is checked at every call.
     A model implemented in Python does not pickle.
     """
-    def B(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
-        ...
     def C(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         """
         measurement matrix of y = C q + E w (paper eq. 25)
         """
-    def D(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
-        ...
+    def D(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        disturbance matrix D(t, q) (n x nw)
+        """
+    def G(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        input matrix G(t, q) (n x m)
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self) -> None:
         ...
     def constant_input_matrices(self) -> bool:
         ...
+    def dGudq(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        d/dq [G(t, q) u] (n x n; zero when G does not depend on q)
+        """
     def dfdq(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         ...
-    def error_split(self, t: typing.SupportsFloat | typing.SupportsIndex, q_d: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], q_e: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
+    def error_split(self, t: typing.SupportsFloat | typing.SupportsIndex, q_d: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], q_e: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
         """
-        (A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31)
+        (A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31; f_e includes G(q) u_d - G(q_d) u_d)
         """
     def f(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         ...
     def heading_index(self) -> int:
         ...
+    def jacobian_method(self) -> str:
+        """
+        how dfdq is obtained: analytic, automatic differentiation, complex step or central differences
+        """
+    def linearize(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        d/dq [f(t, q) + G(t, q) u] (A_e(t) at q_d(t), u_d(t))
+        """
     def m(self) -> int:
         ...
     def n(self) -> int:
@@ -495,6 +515,8 @@ class Model:
         """
         L with |f_e - A_e q_e| <= L |q_e|^2 for |q_e| <= radius, or NaN if the model has none
         """
+    def state_dependent_inputs(self) -> bool:
+        ...
     def state_names(self) -> list[str]:
         ...
 class ShipParameters:
@@ -566,6 +588,8 @@ class LinearModel(Model):
     dq/dt = A q + B u + D w; with C (p x n), y = C q + noise on p extra w channels
     """
     def A(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        ...
+    def B(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         ...
     def __getstate__(self) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]]:
         ...
@@ -769,7 +793,17 @@ class Trajectory:
     Desired trajectory of paper eq. (8) with dense output
     """
     def A_e(self, t: typing.Any) -> typing.Any:
-        ...
+        """
+        d/dq [f + G u_d] at q_d(t)
+        """
+    def B_e(self, t: typing.Any) -> typing.Any:
+        """
+        G(t, q_d(t))
+        """
+    def D_e(self, t: typing.Any) -> typing.Any:
+        """
+        D(t, q_d(t))
+        """
     def __getstate__(self) -> tuple[Model, typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], VectorSignal, float, float, PiecewisePolynomial, StepStats]:
         ...
     def __init__(self, model: Model, q_d0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Any, t0: typing.SupportsFloat | typing.SupportsIndex, tf: typing.SupportsFloat | typing.SupportsIndex, options: TrajectoryOptions = ...) -> None:

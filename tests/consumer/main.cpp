@@ -30,8 +30,8 @@ class DoubleIntegrator final : public hinf::Model {
   int nw() const override { return 1; }
   void f(double, const hinf::ConstVecRef& q, hinf::VecRef out) const override { out << q(1), 0.0; }
   void dfdq(double, const hinf::ConstVecRef&, hinf::MatRef out) const override { out << 0.0, 1.0, 0.0, 0.0; }
-  hinf::Mat B(double) const override { return input(); }
-  hinf::Mat D(double) const override { return input(); }
+  hinf::Mat G(double, const hinf::ConstVecRef&) const override { return input(); }
+  hinf::Mat D(double, const hinf::ConstVecRef&) const override { return input(); }
   double remainder_bound(double, const hinf::ConstVecRef&, double) const override { return 0.0; }
   std::vector<std::string> state_names() const override { return {"p", "v"}; }
   std::vector<int> position_indices() const override { return {0}; }

@@ -59,8 +59,8 @@ class FaultyModel : public hinf::Model {
   int nw() const override { return 1; }
   void f(double, const hinf::ConstVecRef& q, hinf::VecRef out) const override { out = -q; }
   void dfdq(double, const hinf::ConstVecRef&, hinf::MatRef out) const override { out = -Mat::Identity(2, 2); }
-  Mat B(double t) const override { return Mat::Ones(t > b_wrong_after ? 3 : 2, 1); }
-  Mat D(double) const override { return Mat::Ones(2, d_columns); }
+  Mat G(double t, const hinf::ConstVecRef&) const override { return Mat::Ones(t > b_wrong_after ? 3 : 2, 1); }
+  Mat D(double, const hinf::ConstVecRef&) const override { return Mat::Ones(2, d_columns); }
   bool constant_input_matrices() const override { return std::isinf(b_wrong_after); }
   std::vector<int> position_indices() const override { return positions; }
   int heading_index() const override { return heading; }
@@ -86,13 +86,13 @@ TEST(ValidateModel, FaultyStructureIsAnInputErrorWhereTheModelEnters) {
       {"noise_channels() = [0, 1] holds 1, which is not a disturbance channel (0 to 0)",
        [](FaultyModel& m) { m.noise = {0, 1}; }},
       {"the number of states n() must be in [1, 10000], got 0", [](FaultyModel& m) { m.states = 0; }},
-      {"Incompatible dimensions of D(t) of the model 'faulty': expected (2, 1) but found (2, 3)",
+      {"Incompatible dimensions of D(t, q) of the model 'faulty': expected (2, 1) but found (2, 3)",
        [](FaultyModel& m) { m.d_columns = 3; }},
   };
   for (const Case& c : cases) {
     auto model = std::make_shared<FaultyModel>();
     c.spoil(*model);
-    EXPECT_NE(input_error([&] { hinf::validate_model(*model, 0.0); }).find(c.expected), std::string::npos)
+    EXPECT_NE(input_error([&] { hinf::validate_model(*model, 0.0, Vec::Ones(2)); }).find(c.expected), std::string::npos)
         << c.expected;
     EXPECT_NE(input_error([&] { trajectory_of(model); }).find(c.expected), std::string::npos) << c.expected;
   }

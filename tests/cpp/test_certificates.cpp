@@ -384,8 +384,8 @@ class Quadratic final : public hinf::Model {
   int nw() const override { return 1; }
   void f(double, const hinf::ConstVecRef& q, hinf::VecRef out) const override { out[0] = -q[0] + q[0] * q[0]; }
   void dfdq(double, const hinf::ConstVecRef& q, hinf::MatRef out) const override { out(0, 0) = -1.0 + 2.0 * q[0]; }
-  Mat B(double) const override { return Mat::Ones(1, 1); }
-  Mat D(double) const override { return Mat::Ones(1, 1); }
+  Mat G(double, const hinf::ConstVecRef&) const override { return Mat::Ones(1, 1); }
+  Mat D(double, const hinf::ConstVecRef&) const override { return Mat::Ones(1, 1); }
 };
 
 TEST(Certificates, SampledRemainderForAModelWithoutABound) {

@@ -57,7 +57,7 @@ TEST(ShipModel, DriftIsThePaperEquations) {
   // |q| <= 6, and a parameter <= 2.5).
   const double terms = 2.5 * (1.0 + q.cwiseAbs().maxCoeff()) * (1.0 + q.cwiseAbs().maxCoeff());
   EXPECT_LT((f - expected).cwiseAbs().maxCoeff(), hinf_test::kRoundoff * terms);
-  const Mat B = ship.B(0.0), D = ship.D(0.0);
+  const Mat B = ship.G(0.0, Vec::Zero(6)), D = ship.D(0.0, Vec::Zero(6));
   EXPECT_EQ(B.rows(), 6);
   EXPECT_EQ(B.cols(), 2);
   EXPECT_EQ(B(0, 0), 1.0);
@@ -76,7 +76,7 @@ void check_split(const M& model, const hinf::Model& as_base) {
     const Vec q_d = random_state(rng), q_e = random_state(rng);
     Mat A(6, 6), A0(6, 6), A_e(6, 6);
     Vec alpha(6), alpha0(6), f_act(6), f_des(6);
-    as_base.error_split(0.3, q_d, q_e, A, alpha);
+    as_base.error_split(0.3, q_d, Vec::Zero(2), q_e, A, alpha);
     model.f(0.3, q_d + q_e, f_act);
     model.f(0.3, q_d, f_des);
     const Vec f_e = f_act - f_des;
@@ -84,7 +84,7 @@ void check_split(const M& model, const hinf::Model& as_base) {
     const double terms = 1.0 + 6.0 * A.cwiseAbs().maxCoeff() * q_e.cwiseAbs().maxCoeff() +
                          alpha.cwiseAbs().maxCoeff() + f_act.cwiseAbs().maxCoeff() + f_des.cwiseAbs().maxCoeff();
     EXPECT_LT((A * q_e + alpha - f_e).cwiseAbs().maxCoeff(), hinf_test::kRoundoff * terms);
-    as_base.error_split(0.3, q_d, Vec::Zero(6), A0, alpha0);
+    as_base.error_split(0.3, q_d, Vec::Zero(2), Vec::Zero(6), A0, alpha0);
     model.dfdq(0.3, q_d, A_e);
     // The split at 0 and the Jacobian are different code for the same matrix: round-off.
     EXPECT_LT((A0 - A_e).cwiseAbs().maxCoeff(), hinf_test::kRoundoff * (1.0 + A_e.cwiseAbs().maxCoeff()));

@@ -473,14 +473,14 @@ class ShipPlusIdleState final : public hinf::Model {
     J.setZero();
     J.topLeftCorner(6, 6) = J6;
   }
-  Mat B(double t) const override {
+  Mat G(double t, const hinf::ConstVecRef&) const override {
     Mat B7 = Mat::Zero(7, 2);
-    B7.topRows(6) = ship_.B(t);
+    B7.topRows(6) = ship_.G(t, Vec::Zero(6));
     return B7;
   }
-  Mat D(double t) const override {
+  Mat D(double t, const hinf::ConstVecRef&) const override {
     Mat D7 = Mat::Zero(7, 6);
-    D7.topRows(6) = ship_.D(t);
+    D7.topRows(6) = ship_.D(t, Vec::Zero(6));
     return D7;
   }
 
@@ -530,7 +530,7 @@ TEST_F(ShipGrde, ThreeMethodsAgree) {
 
 TEST_F(ShipGrde, SymmetricPositiveDefiniteAndSatisfiesTheGrde) {
   const hinf::ShipModel ship;
-  const Mat B = ship.B(0.0), D = ship.D(0.0);
+  const Mat B = ship.G(0.0, Vec::Zero(6)), D = ship.D(0.0, Vec::Zero(6));
   const Mat S = B * B.transpose() - D * D.transpose() / 25.0;
   const Mat Q = Mat::Identity(6, 6);
   for (const auto& sol : solutions_) {
@@ -552,7 +552,7 @@ TEST_F(ShipGrde, SymmetricPositiveDefiniteAndSatisfiesTheGrde) {
 }
 
 TEST_F(ShipGrde, GainIsBTransposeZ) {
-  const Mat B = hinf::ShipModel().B(0.0);
+  const Mat B = hinf::ShipModel().G(0.0, Vec::Zero(6));
   for (const auto& sol : solutions_) {
     std::size_t cursor = 0;
     Mat K_cursor(2, 6);
@@ -626,7 +626,7 @@ TEST(GrdeShip, ConjugatePointMatchesTheHamiltonianDeterminant) {
   const auto trajectory = paper_trajectory();
   const hinf::ShipModel ship;
   const double gamma = 1.0, tf = 40.0, h = 1e-3;
-  const Mat B = ship.B(0.0), D = ship.D(0.0);
+  const Mat B = ship.G(0.0, Vec::Zero(6)), D = ship.D(0.0, Vec::Zero(6));
   const Mat S = B * B.transpose() - D * D.transpose() / (gamma * gamma);
   const Mat Q = Mat::Identity(6, 6);
   auto rhs = [&](double t, const Mat& XY) {
@@ -681,8 +681,8 @@ class TimeVaryingScalar final : public hinf::Model {
   int nw() const override { return 1; }
   void f(double, const hinf::ConstVecRef&, hinf::VecRef out) const override { out[0] = 0.0; }
   void dfdq(double, const hinf::ConstVecRef&, hinf::MatRef J) const override { J(0, 0) = 0.0; }
-  Mat B(double t) const override { return Mat::Constant(1, 1, 1.0 + 0.5 * std::sin(t)); }
-  Mat D(double) const override { return Mat::Constant(1, 1, d_); }
+  Mat G(double t, const hinf::ConstVecRef&) const override { return Mat::Constant(1, 1, 1.0 + 0.5 * std::sin(t)); }
+  Mat D(double, const hinf::ConstVecRef&) const override { return Mat::Constant(1, 1, d_); }
   bool constant_input_matrices() const override { return false; }
 
  private:

@@ -292,7 +292,7 @@ q0 = [0.0, 0.0]
   EXPECT_EQ(lin->A(), A);
   Mat B(2, 1);
   B << 0.0, 1.0;
-  EXPECT_EQ(lin->B(0.0), B);
+  EXPECT_EQ(lin->B(), B);
   EXPECT_EQ(s.t0, 1.0);
   Mat Q(2, 2);
   Q << 2.0, 0.5, 0.5, 1.0;
@@ -865,8 +865,8 @@ void expect_same_scenario(const hinf::Scenario& a, const hinf::Scenario& b) {
     a.model->f(t, a.initial_q0, fa);
     b.model->f(t, b.initial_q0, fb);
     EXPECT_EQ(fa, fb) << t;
-    EXPECT_EQ(a.model->B(t), b.model->B(t));
-    EXPECT_EQ(a.model->D(t), b.model->D(t));
+    EXPECT_EQ(a.model->G(t, a.initial_q0), b.model->G(t, b.initial_q0));
+    EXPECT_EQ(a.model->D(t, a.initial_q0), b.model->D(t, b.initial_q0));
   }
   ASSERT_EQ(a.measurement.has_value(), b.measurement.has_value());
   if (a.measurement) {

@@ -275,8 +275,8 @@ class TimeVaryingScalar final : public hinf::Model {
   int nw() const override { return 1; }
   void f(double, const hinf::ConstVecRef&, hinf::VecRef out) const override { out[0] = 0.0; }
   void dfdq(double, const hinf::ConstVecRef&, hinf::MatRef J) const override { J(0, 0) = 0.0; }
-  Mat B(double t) const override { return Mat::Constant(1, 1, 1.0 + 0.5 * std::sin(t)); }
-  Mat D(double) const override { return Mat::Constant(1, 1, 0.6); }
+  Mat G(double t, const hinf::ConstVecRef&) const override { return Mat::Constant(1, 1, 1.0 + 0.5 * std::sin(t)); }
+  Mat D(double, const hinf::ConstVecRef&) const override { return Mat::Constant(1, 1, 0.6); }
   bool constant_input_matrices() const override { return false; }
 };
 

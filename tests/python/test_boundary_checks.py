@@ -57,10 +57,10 @@ class TwoStates(hc.Model):
     def dfdq(self, t, q):
         return -np.eye(2)
 
-    def B(self, t):
+    def G(self, t, q):
         return np.array([[0.0], [1.0]])
 
-    def D(self, t):
+    def D(self, t, q):
         return np.array([[0.0], [1.0]])
 
 
@@ -140,10 +140,10 @@ SHRINKING_MODEL = """
         def dfdq(self, t, q):
             return np.diag(self.a)
 
-        def B(self, t):
+        def G(self, t, q):
             return np.ones((len(self.a), 1))
 
-        def D(self, t):
+        def D(self, t, q):
             return np.ones((len(self.a), 1))
 
     def outcome(call):
@@ -171,7 +171,7 @@ def test_python_model_whose_n_changes_raises_instead_of_corrupting_the_heap():
     assert result["grde"]["error"] == "ValueError", result
     assert "Incompatible dimensions of Q: expected (3, 3) but found (2, 2)" in result["grde"]["message"]
     assert result["simulate"]["error"] == "ValueError", result
-    assert "the Python model's B(t) returned an array of shape (2, 1) at t = 0, expected (3, 1)" \
+    assert "the Python model's G(t, q) returned an array of shape (2, 1) at t = 0, expected (3, 1)" \
         in result["simulate"]["message"]
 
 
@@ -189,8 +189,8 @@ def test_python_model_with_position_indices_out_of_range_raises():
             def nw(self): return 1
             def f(self, t, q): return -np.asarray(q)
             def dfdq(self, t, q): return -np.eye(2)
-            def B(self, t): return np.array([[0.0], [1.0]])
-            def D(self, t): return np.array([[0.0], [1.0]])
+            def G(self, t, q): return np.array([[0.0], [1.0]])
+            def D(self, t, q): return np.array([[0.0], [1.0]])
             def position_indices(self): return [50, -7]
 
         good = hc.LinearModel(-np.eye(2), np.array([[0.0], [1.0]]), np.array([[0.0], [1.0]]))
@@ -213,8 +213,8 @@ def test_python_model_with_position_indices_out_of_range_raises():
 
 
 @pytest.mark.parametrize("method, value, message", [
-    ("B", np.ones((2, 2)), r"B\(t\) returned an array of shape \(2, 2\) at t = 0, expected \(2, 1\)"),
-    ("D", np.array([[0.0], [NAN]]), r"D\(t\) at t = 0 has a non-finite entry nan at \(1, 0\)"),
+    ("G", np.ones((2, 2)), r"G\(t, q\) returned an array of shape \(2, 2\) at t = 0, expected \(2, 1\)"),
+    ("D", np.array([[0.0], [NAN]]), r"D\(t, q\) at t = 0 has a non-finite entry nan at \(1, 0\)"),
     ("f", None, r"f\(t, q\) must return an array of 2 numbers, got None at t = 0"),
     ("f", [1.0, "x"], r"f\(t, q\) must return an array of 2 numbers, got list \[1.0, 'x'\]"),
     ("dfdq", np.eye(3), r"dfdq\(t, q\) returned an array of shape \(3, 3\) at t = [0-9.]+, expected \(2, 2\)"),
@@ -227,16 +227,16 @@ def test_python_model_results_are_checked(method, value, message):
 
 
 @pytest.mark.parametrize("value, message", [
-    (np.eye(2), r"error_split\(t, q_d, q_e\) must return a pair \(A, alpha\) of shapes \(2, 2\) and \(2,\)"),
-    ((np.eye(2), np.zeros(3)), r"error_split\(t, q_d, q_e\)\[1\] \(alpha\) returned an array of length 3 at t = 0, "
+    (np.eye(2), r"error_split\(t, q_d, u_d, q_e\) must return a pair \(A, alpha\) of shapes \(2, 2\) and \(2,\)"),
+    ((np.eye(2), np.zeros(3)), r"error_split\(t, q_d, u_d, q_e\)\[1\] \(alpha\) returned an array of length 3 at t = 0, "
                                r"expected 2 numbers"),
-    ((None, np.zeros(2)), r"error_split\(t, q_d, q_e\)\[0\] \(A\) must return an array of shape \(2, 2\), got None"),
+    ((None, np.zeros(2)), r"error_split\(t, q_d, u_d, q_e\)\[0\] \(A\) must return an array of shape \(2, 2\), got None"),
 ])
 def test_python_model_error_split_is_checked(value, message):
     model = returning("error_split", value)
     with pytest.raises(ValueError, match=message):
         # Through C++ (the Python method itself returns anything).
-        hc.Model.error_split(model, 0.0, [0.0, 0.0], [0.1, 0.0])
+        hc.Model.error_split(model, 0.0, [0.0, 0.0], [0.0], [0.1, 0.0])
 
 
 def test_python_model_measurement_matrix_is_checked():
@@ -248,7 +248,7 @@ def test_python_model_measurement_matrix_is_checked():
 
 def test_exception_inside_a_python_model_reaches_the_caller():
     class Raising(TwoStates):
-        def B(self, t):
+        def G(self, t, q):
             raise KeyError("no B here")
 
     with pytest.raises(KeyError, match="no B here"):
@@ -264,7 +264,7 @@ def test_model_functions_check_their_arguments():
     with pytest.raises(ValueError, match="Incompatible length of q: expected 6 but found 7"):
         ship.dfdq(0.0, np.zeros(7))
     with pytest.raises(ValueError, match="Incompatible length of q_e: expected 6 but found 1"):
-        ship.error_split(0.0, np.zeros(6), [0.0])
+        ship.error_split(0.0, np.zeros(6), np.zeros(2), [0.0])
     with pytest.raises(ValueError, match="q has a non-finite entry nan"):
         ship.f(0.0, [NAN, 0, 0, 0, 0, 0])
     with pytest.raises(ValueError, match="Incompatible dimensions of C: expected 2 columns but found 3"):

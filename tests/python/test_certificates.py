@@ -285,10 +285,10 @@ def test_sampled_remainder_for_a_model_without_a_bound():
         def dfdq(self, t, q):
             return np.array([[-1.0 + 2.0 * q[0]]])
 
-        def B(self, t):
+        def G(self, t, q):
             return np.array([[1.0]])
 
-        def D(self, t):
+        def D(self, t, q):
             return np.array([[1.0]])
 
     tr = hc.Trajectory(Quadratic(), [0.3], [0.0], 0.0, 3.0)

@@ -32,8 +32,8 @@ def test_fleet_is_the_member_vehicle_by_vehicle(ship):
         off = np.ones(18, dtype=bool)
         off[block] = False
         assert not np.any(J[block][:, off])
-    assert np.array_equal(fleet.B(0.0), np.kron(np.eye(3), ship.B(0.0)))
-    assert np.array_equal(fleet.D(0.0), np.kron(np.eye(3), ship.D(0.0)))
+    assert np.array_equal(fleet.G(0.0, np.zeros(fleet.n())), np.kron(np.eye(3), ship.G(0.0, np.zeros(ship.n()))))
+    assert np.array_equal(fleet.D(0.0, np.zeros(fleet.n())), np.kron(np.eye(3), ship.D(0.0, np.zeros(ship.n()))))
     assert np.array_equal(fleet.C(0.0), np.kron(np.eye(3), ship.C(0.0)))
     assert fleet.noise_channels() == [3, 4, 5, 9, 10, 11, 15, 16, 17]
     assert fleet.position_indices() == [3, 4, 9, 10, 15, 16]

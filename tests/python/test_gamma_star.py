@@ -880,10 +880,10 @@ class PythonScalarModel(hc.Model):
     def dfdq(self, t, q):
         return np.array([[0.5]])
 
-    def B(self, t):
+    def G(self, t, q):
         return np.array([[1.0]])
 
-    def D(self, t):
+    def D(self, t, q):
         return np.array([[1.0]])
 
 

@@ -263,10 +263,10 @@ class PeriodicScalar(hc.Model):
     def dfdq(self, t, q):
         return np.array([[self.a(t)]])
 
-    def B(self, t):
+    def G(self, t, q):
         return np.array([[self.B_GAIN]])
 
-    def D(self, t):
+    def D(self, t, q):
         return np.array([[1.0]])
 
 
@@ -379,10 +379,10 @@ class TimeVaryingInputs(hc.Model):
     def dfdq(self, t, q):
         return self.A.copy()
 
-    def B(self, t):
+    def G(self, t, q):
         return np.array([[0.0], [1.0 + 0.5 * math.sin(t)]])
 
-    def D(self, t):
+    def D(self, t, q):
         return np.array([[0.3 * math.cos(2 * t)], [1.0]])
 
     def constant_input_matrices(self):
@@ -398,7 +398,7 @@ def test_time_varying_input_matrices_against_scipy(method):
 
     def rhs(t, z):
         Z = z.reshape(2, 2)
-        B, D = model.B(t), model.D(t)
+        B, D = model.G(t, np.zeros(model.n())), model.D(t, np.zeros(model.n()))
         S = B @ B.T - D @ D.T / gamma**2
         return (-(A.T @ Z + Z @ A + Q - Z @ S @ Z)).ravel()
 
@@ -409,7 +409,7 @@ def test_time_varying_input_matrices_against_scipy(method):
     # gain(t) = B(t)' Z(t) with the time-varying B.
     gains = sol.gain(times)
     for k in range(0, times.size, 30):
-        np.testing.assert_allclose(gains[k], model.B(times[k]).T @ expected[k], rtol=1e-6, atol=1e-9)
+        np.testing.assert_allclose(gains[k], model.G(times[k], np.zeros(model.n())).T @ expected[k], rtol=1e-6, atol=1e-9)
 
 
 # ---- along the paper's trajectory ----

@@ -51,8 +51,8 @@ def test_ship_drift_is_the_design_equations(ship_and_parameters):
         np.testing.assert_allclose(model.f(t, q), expected, rtol=0, atol=ROUNDOFF * terms)
     assert (model.n(), model.m(), model.nw()) == (6, 2, 6)
     # B = [e1, e3]; D = diag(1, 1, 1, 0, 0, 0) (w4..w6 are measurement-noise channels).
-    np.testing.assert_array_equal(model.B(0.0), SHIP_B)  # constant 0/1 matrices: exact
-    np.testing.assert_array_equal(model.D(3.0), SHIP_D)
+    np.testing.assert_array_equal(model.G(0.0, np.zeros(model.n())), SHIP_B)  # constant 0/1 matrices: exact
+    np.testing.assert_array_equal(model.D(3.0, np.zeros(model.n())), SHIP_D)
     assert model.state_names() == ["u", "v", "r", "x", "y", "psi"]
     assert list(model.position_indices()) == [3, 4]
     assert model.heading_index() == 5
@@ -93,13 +93,13 @@ def check_error_split(model: hc.Model, rng: np.random.Generator, trials: int = 4
         if n == 6:
             q_d[5] *= 4.0
             q_e[5] *= 4.0
-        A, alpha = model.error_split(t, q_d, q_e)
+        A, alpha = model.error_split(t, q_d, np.zeros(model.m()), q_e)
         f_actual, f_desired = model.f(t, q_d + q_e), model.f(t, q_d)
         f_e = f_actual - f_desired
         scale = (1.0 + np.max(np.abs(A)) * np.max(np.abs(q_e)) * n + np.max(np.abs(alpha))
                  + np.max(np.abs(f_actual)) + np.max(np.abs(f_desired)))
         np.testing.assert_allclose(A @ q_e + alpha, f_e, rtol=0, atol=ROUNDOFF * scale)
-        A0, alpha0 = model.error_split(t, q_d, np.zeros(n))
+        A0, alpha0 = model.error_split(t, q_d, np.zeros(model.m()), np.zeros(n))
         J = model.dfdq(t, q_d)
         np.testing.assert_allclose(A0, J, rtol=0, atol=ROUNDOFF * (1.0 + np.max(np.abs(J))))
         np.testing.assert_allclose(alpha0, 0.0, rtol=0, atol=ROUNDOFF * (1.0 + np.max(np.abs(f_desired))))
@@ -158,7 +158,7 @@ def test_ship_error_split_is_the_design_decomposition(ship_and_parameters):
     rng = np.random.default_rng(5)
     for _ in range(20):
         q_d, q_e = random_ship_state(rng), random_ship_state(rng)
-        A, alpha = model.error_split(1.0, q_d, q_e)
+        A, alpha = model.error_split(1.0, q_d, np.zeros(model.m()), q_e)
         A_ref, alpha_ref = design_split(q_d, q_e, p)
         # A12, A21 by finite differences (alpha1 is trigonometric in psi_e): ~1e-10.
         np.testing.assert_allclose(A, A_ref, rtol=0, atol=1e-8)
@@ -192,10 +192,10 @@ class PyPendulumCart(hc.Model):
                          [-math.cos(x), -0.1, 0.2 * math.cos(t)],
                          [y, x, -1.0]])
 
-    def B(self, t):
+    def G(self, t, q):
         return np.array([[0.0], [1.0], [0.0]])
 
-    def D(self, t):
+    def D(self, t, q):
         return np.array([[1.0, 0.0], [0.0, 0.0], [0.0, 1.0]])
 
 
@@ -221,10 +221,10 @@ class PyLinear(hc.Model):
     def dfdq(self, t, q):
         return self.A.copy()
 
-    def B(self, t):
+    def G(self, t, q):
         return self.Bm
 
-    def D(self, t):
+    def D(self, t, q):
         return self.Dm
 
 
@@ -353,10 +353,10 @@ class Failing(hc.Model):
             raise KeyError("dfdq failed")
         return np.array([[0.0, 1.0], [-1.0, 0.0]])
 
-    def B(self, t):
+    def G(self, t, q):
         return np.array([[0.0], [1.0]])
 
-    def D(self, t):
+    def D(self, t, q):
         return np.array([[1.0], [0.0]])
 
 

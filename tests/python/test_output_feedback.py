@@ -113,7 +113,7 @@ def test_error_split_along_the_paper_trajectory(paper_trajectory):
     for t, q_d, A_e in zip(times, q_ds, A_es):
         q_e = rng.uniform(-1.5, 1.5, size=6)
         q_e[5] = rng.uniform(-2 * math.pi, 2 * math.pi)
-        A, alpha = ship.error_split(t, q_d, q_e)
+        A, alpha = ship.error_split(t, q_d, np.zeros(ship.m()), q_e)
         f_actual, f_desired = ship_drift(q_d + q_e), ship_drift(q_d)
         f_e = f_actual - f_desired
         scale = (1.0 + 6 * np.max(np.abs(A)) * np.max(np.abs(q_e)) + np.max(np.abs(alpha))
@@ -123,7 +123,7 @@ def test_error_split_along_the_paper_trajectory(paper_trajectory):
         A_scale = 1.0 + np.max(np.abs(A_ref))
         np.testing.assert_allclose(A, A_ref, rtol=0, atol=ROUNDOFF * A_scale)
         np.testing.assert_allclose(alpha, alpha_ref, rtol=0, atol=ROUNDOFF * scale)
-        A0, alpha0 = ship.error_split(t, q_d, np.zeros(6))
+        A0, alpha0 = ship.error_split(t, q_d, np.zeros(ship.m()), np.zeros(6))
         np.testing.assert_allclose(A0, A_e, rtol=0, atol=ROUNDOFF * A_scale)
         np.testing.assert_allclose(A0, ship_jacobian(q_d), rtol=0, atol=ROUNDOFF * A_scale)
         # alpha(0) is built of products with 0 and differences x - x: exactly zero.
@@ -140,18 +140,18 @@ def test_error_split_structure_and_order(paper_trajectory):
     for t in (0.0, 7.3, 21.9, 40.0):
         q_d = paper_trajectory.q_d(t)
         q_e = rng.uniform(-1.0, 1.0, size=6)
-        A, alpha = ship.error_split(t, q_d, q_e)
+        A, alpha = ship.error_split(t, q_d, np.zeros(ship.m()), q_e)
         # The same code on the inputs it depends on: exactly equal.
         other = q_e.copy()
         other[i1] = rng.uniform(-1.0, 1.0, size=4)
-        A1, alpha1 = ship.error_split(t, q_d, other)
+        A1, alpha1 = ship.error_split(t, q_d, np.zeros(ship.m()), other)
         np.testing.assert_array_equal(A1, A)
         np.testing.assert_array_equal(alpha1[i1], alpha[i1])
         other = q_e.copy()
         other[i2] = rng.uniform(-1.0, 1.0, size=2)
-        _, alpha2 = ship.error_split(t, q_d, other)
+        _, alpha2 = ship.error_split(t, q_d, np.zeros(ship.m()), other)
         np.testing.assert_array_equal(alpha2[i2], alpha[i2])
-        ratios = [ship.error_split(t, q_d, eps * q_e)[1] / eps**2 for eps in (1e-2, 1e-3, 1e-4)]
+        ratios = [ship.error_split(t, q_d, np.zeros(ship.m()), eps * q_e)[1] / eps**2 for eps in (1e-2, 1e-3, 1e-4)]
         assert np.max(np.abs(ratios[0])) > 1e-3  # nonzero second-order term
         np.testing.assert_allclose(ratios[2], ratios[1], rtol=0, atol=2e-3 * np.max(np.abs(ratios[0])))
 
@@ -160,19 +160,19 @@ def test_measurement_model_of_the_ship_and_of_linear_models():
     ship = hc.ShipModel()
     np.testing.assert_array_equal(ship.C(3.0), SHIP_C)
     assert list(ship.noise_channels()) == [3, 4, 5]
-    np.testing.assert_array_equal(ship.D(0.0)[:, 3:], 0.0)  # noise enters through E, not D
+    np.testing.assert_array_equal(ship.D(0.0, np.zeros(ship.n()))[:, 3:], 0.0)  # noise enters through E, not D
 
     rng = np.random.default_rng(4)
     A, B, D = rng.standard_normal((4, 4)), rng.standard_normal((4, 2)), rng.standard_normal((4, 3))
     C = rng.standard_normal((2, 4))
     model = hc.LinearModel(A, B, D, C)
     assert (model.n(), model.m(), model.nw()) == (4, 2, 5)
-    np.testing.assert_array_equal(model.D(1.0), np.hstack([D, np.zeros((4, 2))]))
+    np.testing.assert_array_equal(model.D(1.0, np.zeros(model.n())), np.hstack([D, np.zeros((4, 2))]))
     np.testing.assert_array_equal(model.C(1.0), C)
     assert list(model.noise_channels()) == [3, 4]
     for _ in range(5):
         q_d, q_e = rng.standard_normal(4), rng.standard_normal(4)
-        A_split, alpha = model.error_split(0.5, q_d, q_e)
+        A_split, alpha = model.error_split(0.5, q_d, np.zeros(model.m()), q_e)
         np.testing.assert_array_equal(A_split, A)  # the model's own matrix
         # alpha = A (q_d + q_e) - A q_d - A q_e: zero up to the round-off of these products.
         terms = np.max(np.abs(A) @ (np.abs(q_d) + np.abs(q_e)))
@@ -976,8 +976,8 @@ def test_stiff_plant_against_an_independent_integration():
                                       simulation=hc.SimulationOptions(solver=hc.SolverOptions("bdf")))
     assert "SDIRK4 from t = 0.21" in run.integrator
     model = grde.trajectory().model()
-    A, B, C = model.A(), model.B(0.0), model.C(0.0)
-    D = model.D(0.0)[:, :2]
+    A, B, C = model.A(), model.G(0.0, np.zeros(model.n())), model.C(0.0)
+    D = model.D(0.0, np.zeros(model.n()))[:, :2]
     keep = run.t <= 0.6 + 1e-12
     q, q_hat, _ = output_feedback_reference(
         0.0, 0.6, q0, run.t[keep], f=lambda t, x: A @ x, B=B, D=D, C=C, A_filter=lambda t, qd, qh: A,

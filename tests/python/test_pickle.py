@@ -120,8 +120,8 @@ def test_models_pickle_by_value():
             t, q = float(rng.uniform(0.0, 10.0)), rng.standard_normal(model.n())
             np.testing.assert_array_equal(copy.f(t, q), model.f(t, q))
             np.testing.assert_array_equal(copy.dfdq(t, q), model.dfdq(t, q))
-            np.testing.assert_array_equal(copy.D(t), model.D(t))
-            np.testing.assert_array_equal(copy.B(t), model.B(t))
+            np.testing.assert_array_equal(copy.D(t, np.zeros(copy.n())), model.D(t, np.zeros(model.n())))
+            np.testing.assert_array_equal(copy.G(t, np.zeros(copy.n())), model.G(t, np.zeros(model.n())))
     assert round_trip(ship).parameters() == ship.parameters()
     linear = hc.LinearModel(A, B, D, C)
     np.testing.assert_array_equal(round_trip(linear).measurement_C(), C)
@@ -150,10 +150,10 @@ class PythonScalar(hc.Model):
     def dfdq(self, t, q):
         return -np.eye(1)
 
-    def B(self, t):
+    def G(self, t, q):
         return np.eye(1)
 
-    def D(self, t):
+    def D(self, t, q):
         return np.eye(1)
 
 

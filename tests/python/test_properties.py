@@ -1443,7 +1443,7 @@ def lti_output_feedback_body(case: dict) -> None:
     trajectory, error = attempt("Trajectory", hc.Trajectory, model, case["q_d0"], case["u_d"], x["t0"], x["tf"])
     if error is not None:
         return
-    x["D"] = np.asarray(model.D(x["t0"]))  # with the zero columns of the noise channels
+    x["D"] = np.asarray(model.D(x["t0"], np.zeros(model.n())))  # with the zero columns of the noise channels
     N, Sigma0 = np.array(case["N"]), np.array(case["Sigma0"])
     filter_args = (trajectory, N, x["Q"], x["gamma"], Sigma0, x["options"])
     escape, escape_error = attempt("filter_escape_time", hc.filter_escape_time, *filter_args)

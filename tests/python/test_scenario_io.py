@@ -84,8 +84,8 @@ def assert_same_scenario(a: hc.Scenario, b: hc.Scenario):
             assert getattr(a.model.parameters(), key) == getattr(b.model.parameters(), key), key
     else:
         assert_same_matrix(a.model.A(), b.model.A(), "A")
-    assert_same_matrix(a.model.B(a.t0), b.model.B(b.t0), "B")
-    assert_same_matrix(a.model.D(a.t0), b.model.D(b.t0), "D")
+    assert_same_matrix(a.model.G(a.t0, np.zeros(a.model.n())), b.model.G(b.t0, np.zeros(b.model.n())), "B")
+    assert_same_matrix(a.model.D(a.t0, np.zeros(a.model.n())), b.model.D(b.t0, np.zeros(b.model.n())), "D")
     assert (a.t0, a.tf, a.gamma, a.output_dt, a.divergence_factor, a.law, a.worst_case) == \
            (b.t0, b.tf, b.gamma, b.output_dt, b.divergence_factor, b.law, b.worst_case)
     assert_same_matrix(a.desired_q0, b.desired_q0, "desired q0")

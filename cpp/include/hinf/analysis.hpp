@@ -89,7 +89,8 @@ struct Certificates {
   // Smallest eigenvalue over [t0, tf] of P(t) = Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z:
   // V = q_e' Z q_e has dV/dt = -q_e' P q_e + 2 q_e' Z r(q_e) (eq. 23).
   double p_min = NAN, p_min_t = NAN;
-  // L with |r(q_e)| = |f_e(q_e) - A_e q_e| <= L |q_e|^2 (the largest over [t0, tf]).
+  // L with |r(q_e)| <= L |q_e|^2, r the remainder of the error dynamics beyond A_e q_e (with
+  // state-dependent inputs it includes (G(q) - B_e) u_e; analysis.cpp) (the largest over [t0, tf]).
   double remainder_L = NAN;
   std::string remainder_method;  // how L was obtained (see Model::remainder_bound)
   bool remainder_is_bound = false;  // false: a sampled estimate, not a proof

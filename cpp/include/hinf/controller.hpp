@@ -42,7 +42,7 @@ class Controller {
 using ControllerPtr = std::shared_ptr<Controller>;
 
 // The H-infinity state-feedback tracking law, paper eqs. (17)/(18):
-//     u = u_d(t) - kappa(t) B(t)' Z(t) (q - q_d(t)),
+//     u = u_d(t) - kappa(t) B_e(t)' Z(t) (q - q_d(t)),  B_e(t) = G(t, q_d(t)),
 // with the heading component of q - q_d wrapped to (-pi, pi] (angles.hpp).
 // kappa = 1 is the saddle-point (optimal) law (15); kappa >= 1/2 keeps the Lyapunov proof
 // of local exponential stability (eq. 23). kappa must stay > 0.

@@ -1,6 +1,6 @@
 // The disturbance w applied to the plant (all nw channels of the model):
 //     w(t, q) = signals(t) [+ w*(t, q)],
-// where w* = gamma^-2 D(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
+// where w* = gamma^-2 D_e(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
 // for a design Z at gamma (scenario key [disturbance] worst_case = true): the adversary of the
 // game, feeding back the true error.
 #pragma once

@@ -1,7 +1,7 @@
 // A fleet: k independent copies of one model stacked into a block-diagonal model.
 //
 // The state is q = [q_1; ...; q_k] (vehicle i's states at rows i n_1 .. (i+1) n_1 - 1), likewise
-// u and w; f, df/dq, B, D, C and the error split are block-diagonal in the member's. The
+// u and w; f, df/dq, G, D, C and the error split are block-diagonal in the member's. The
 // vehicles are not coupled, so a fleet's design is k single designs; it exists as a test bed for
 // the cost of the Riccati solves in the state size (n = k n_1) on a time-varying system, and
 // for controllers designed on the joint state. The fleet's position components are those of
@@ -31,10 +31,13 @@ class FleetModel final : public Model {
   int nw() const override { return count_ * nw1_; }
   void f(double t, const ConstVecRef& q, VecRef out) const override;
   void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat B(double t) const override;
-  Mat D(double t) const override;
+  Mat G(double t, const ConstVecRef& q) const override;
+  Mat D(double t, const ConstVecRef& q) const override;
   bool constant_input_matrices() const override { return member_->constant_input_matrices(); }
-  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+  bool state_dependent_inputs() const override { return member_->state_dependent_inputs(); }
+  void dGudq(double t, const ConstVecRef& q, const ConstVecRef& u, MatRef out) const override;
+  std::string jacobian_method() const override { return member_->jacobian_method(); }
+  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e, MatRef A,
                    VecRef alpha) const override;
   Mat C(double t) const override;
   std::vector<int> noise_channels() const override;

@@ -1,15 +1,19 @@
 // The model interface and the built-in models.
 //
-// A model is the control-affine system of paper eq. (7):
-//     dq/dt = f(t, q) + B(t) u + D(t) w,
-// with state q (n), control u (m) and disturbance w (nw). Everything downstream
-// (trajectory, linearization A_e(t) = df/dq along q_d(t), the GRDE, the closed loop)
-// uses only this interface: the ship is one model among others.
+// A model is a control-affine system (paper eq. 7 with state-dependent input matrices):
+//     dq/dt = f(t, q) + G(t, q) u + D(t, q) w,
+// with state q (n), control u (m) and disturbance w (nw). Everything downstream uses only this
+// interface: the desired trajectory, the linearization along it (docs/mathematics.md,
+// "State-dependent input matrices")
+//     A_e(t) = d/dq [f(t, q) + G(t, q) u_d(t)] at q_d(t),  B_e(t) = G(t, q_d(t)),
+//     D_e(t) = D(t, q_d(t)),
+// the GRDE and filter designed on (A_e, B_e, D_e), and the closed loops, which apply the full
+// nonlinear f, G and D. The paper's ship is the special case with constant G = B and D.
 //
 // Conventions, fixed once for the project:
 //   * time t is absolute, in seconds;
 //   * the error is q_e = q - q_d (actual minus desired), likewise u_e = u - u_d;
-//   * matrices are column-major Eigen objects; B is n x m, D is n x nw.
+//   * matrices are column-major Eigen objects; G is n x m, D is n x nw.
 #pragma once
 
 #include <memory>
@@ -33,18 +37,30 @@ class Model {
   // Drift f(t, q) (n) and its Jacobian df/dq (n x n).
   virtual void f(double t, const ConstVecRef& q, VecRef out) const = 0;
   virtual void dfdq(double t, const ConstVecRef& q, MatRef out) const = 0;
-  // Input and disturbance matrices.
-  virtual Mat B(double t) const = 0;
-  virtual Mat D(double t) const = 0;
-  // True when B and D do not depend on t (lets solvers precompute B B' and D D').
+  // How dfdq and dGudq are obtained, for the results file: "analytic" (written out), or what
+  // the model does instead ("automatic differentiation", "complex step", "central differences").
+  virtual std::string jacobian_method() const { return "analytic"; }
+  // Input matrix G(t, q) (n x m) and disturbance matrix D(t, q) (n x nw).
+  virtual Mat G(double t, const ConstVecRef& q) const = 0;
+  virtual Mat D(double t, const ConstVecRef& q) const = 0;
+  // True when G and D depend on neither t nor q (lets solvers precompute B B' and D D').
   virtual bool constant_input_matrices() const { return true; }
+  // True when G or D depend on q (then constant_input_matrices() must be false, and dGudq
+  // must be implemented).
+  virtual bool state_dependent_inputs() const { return false; }
+  // d/dq [G(t, q) u] for a fixed u (n x n): the input's part of the linearization. Zero for
+  // models whose G does not depend on q; a model with state_dependent_inputs() overrides it
+  // (the default then throws InputError).
+  virtual void dGudq(double t, const ConstVecRef& q, const ConstVecRef& u, MatRef out) const;
 
-  // Decomposition of the error dynamics (paper eqs. 26-31):
-  //     f_e(t, q_e) := f(t, q_d + q_e) - f(t, q_d) = A(t, q_e) q_e + alpha(t, q_e),
-  // with A(t, 0) = A_e(t). q_d is the desired state at t. The default is the always-valid
-  // split A = A_e(t), alpha = f_e - A_e q_e; models with structure (the ship) override it.
-  virtual void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
-                           VecRef alpha) const;
+  // Decomposition of the error dynamics (paper eqs. 26-31, with the input's drift):
+  //     f_e(t, q_e) := f(t, q_d + q_e) + G(t, q_d + q_e) u_d - f(t, q_d) - G(t, q_d) u_d
+  //                  = A(t, q_e) q_e + alpha(t, q_e),
+  // with A(t, 0) = A_e(t). q_d and u_d are the desired state and input at t (u_d matters only
+  // when G depends on q). The default is the always-valid split A = A_e(t),
+  // alpha = f_e - A_e q_e; models with structure (the ship) override it.
+  virtual void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e,
+                           MatRef A, VecRef alpha) const;
 
   // Measurement y = C(t) q + E w (paper eq. 25), C is p x n. The measurement noise is carried
   // by the w channels noise_channels() (p of them): E = sigma [those unit columns], so
@@ -83,21 +99,32 @@ struct ModelStructure {
   int heading_index = -1;
   std::vector<int> noise_channels;
   bool constant_input_matrices = true;
+  bool state_dependent_inputs = false;
 };
 
 // InputError unless n >= 1, m >= 1 and nw >= 0 (all at most kMaxDimension): checked before
 // anything sized by them is read.
 void check_dimensions(const ModelStructure& structure);
 // check_dimensions, and: n state names, position indices distinct and in [0, n), heading
-// index -1 or in [0, n), noise channels distinct and in [0, nw). InputError naming the
-// first fault.
+// index -1 or in [0, n), noise channels distinct and in [0, nw), and not both constant and
+// state-dependent input matrices. InputError naming the first fault.
 void check_structure(const ModelStructure& structure);
 
+// What the model says about itself (n, m, nw checked first by check_dimensions, since the
+// rest is sized by them); check_structure checks the rest.
+ModelStructure structure_of(const Model& model);
+
 // The check of a model where it enters the library (the Trajectory constructor,
-// compute_metrics, Scenario): its structure (check_structure), and B(t) (n x m) and D(t)
-// (n x nw) with finite entries. A C++ model is trusted to keep its structure afterwards; a
-// model implemented in Python is read once and validated (the Python bindings).
-void validate_model(const Model& model, double t);
+// compute_metrics, Scenario): its structure (check_structure), and G(t, q) (n x m) and
+// D(t, q) (n x nw) with finite entries at the state q (n). A C++ model is trusted to keep its
+// structure afterwards; a model implemented in Python is read once and validated (the Python
+// bindings).
+void validate_model(const Model& model, double t, const ConstVecRef& q);
+
+// The linearization of the drift with the input held at u: A = d/dq [f(t, q) + G(t, q) u]
+// (n x n) = df/dq, plus dGudq when the inputs depend on the state. At (q_d(t), u_d(t)) this is
+// A_e(t).
+void linearize(const Model& model, double t, const ConstVecRef& q, const ConstVecRef& u, MatRef A);
 
 // A linear time-invariant model dq/dt = A q + B u + D w (for LTI studies and tests).
 // With a measurement matrix C (p x n), w gets p more channels for the measurement noise:
@@ -111,12 +138,13 @@ class LinearModel final : public Model {
   int nw() const override { return static_cast<int>(D_.cols()); }
   void f(double t, const ConstVecRef& q, VecRef out) const override;
   void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat B(double) const override { return B_; }
-  Mat D(double) const override { return D_; }
+  Mat G(double, const ConstVecRef&) const override { return B_; }
+  Mat D(double, const ConstVecRef&) const override { return D_; }
   Mat C(double t) const override;
   std::vector<int> noise_channels() const override;
   double remainder_bound(double, const ConstVecRef&, double) const override { return 0.0; }
   const Mat& A() const { return A_; }
+  const Mat& B() const { return B_; }
   // The matrices as given to the constructor: D without the noise channels, C empty if none.
   Mat process_D() const { return D_.leftCols(D_.cols() - C_.rows()); }
   const Mat& measurement_C() const { return C_; }

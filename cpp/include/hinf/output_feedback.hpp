@@ -4,9 +4,12 @@
 //   measurement (25):  y = C q + E w,  E w = sigma v_k on the model's noise channels, v_k a
 //                      standard normal sample held on [t0 + k T, t0 + (k+1) T);
 //   estimator (35):    dq_hat/dt = A(q_hat) q_hat + alpha(q_hat)
-//                                  - (kappa B B' - gamma^-2 D D') Z q_hat
+//                                  + G(t, q_d + q_hat) (u - u_d) + gamma^-2 D D' Z q_hat
 //                                  + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat),
 //                      q_hat(t0) = 0, y_e = y - C q_d(t); q_hat estimates the error q_e;
+//                      A, alpha: the model's error_split; B = B_e(t), D = D_e(t) (model.hpp);
+//                      with the paper's law and constant G = B the input terms are
+//                      -(kappa B B' - gamma^-2 D D') Z q_hat, as in the paper;
 //   filter (36):       dSigma/dt = A Sigma + Sigma A' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D D',
 //                      Sigma(t0) = (Q0 - eta I)^-1, A = A(q_hat(t)) or A_e(t) (filter_A);
 //   control (34):      u = u_d(t) - kappa B' Z(t) q_hat (the paper's law, kappa = 1), or any

@@ -3,7 +3,9 @@
 // GRDE, paper eq. (13), solved BACKWARD from Z(tf) = Qf:
 //     -dZ/dt = A_e' Z + Z A_e + Q - Z (B B' - gamma^-2 D D') Z.
 // Sign convention: Z > 0 is the cost-to-go matrix, V(t, q_e) = q_e' Z(t) q_e; the
-// state-feedback law (17)/(18) is u = u_d - kappa B' Z q_e. gamma = +inf gives LQR.
+// state-feedback law (17)/(18) is u = u_d - kappa B' Z q_e. gamma = +inf gives LQR. Here
+// A = A_e(t), B = B_e(t) and D = D_e(t), the linearization along the desired trajectory
+// (model.hpp, trajectory.hpp).
 //
 // Filter Riccati equation, paper eq. (36), solved FORWARD from Sigma(t0) = (Q0 - eta I)^-1:
 //     dSigma/dt = A Sigma + Sigma A' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D D',
@@ -90,7 +92,7 @@ class RiccatiSolution final : public SymmetricSolution {
   Mat Z(double t) const { return value(t); }
   Mat dZdt(double t) const { return derivative(t); }
   void Z_packed(double t, double* out, std::size_t* cursor = nullptr) const { packed(t, out, cursor); }
-  // K(t) = B(t)' Z(t) (m x n), the gain of the state-feedback law (17).
+  // K(t) = B_e(t)' Z(t) (m x n), the gain of the state-feedback law (17), B_e(t) = G(t, q_d(t)).
   Mat gain(double t) const;
   // K(t) column-major into out (m * n numbers).
   void gain(double t, double* out, std::size_t* cursor = nullptr) const;

@@ -45,9 +45,10 @@ class ShipModel final : public Model {
   int nw() const override { return 6; }
   void f(double t, const ConstVecRef& q, VecRef out) const override;
   void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat B(double t) const override;
-  Mat D(double t) const override;
-  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& q_e, MatRef A,
+  Mat G(double t, const ConstVecRef& q) const override;
+  Mat D(double t, const ConstVecRef& q) const override;
+  // u_d does not enter: G is constant.
+  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e, MatRef A,
                    VecRef alpha) const override;
   // Position and heading are measured: C = [0 I3], noise on w4..w6.
   Mat C(double t) const override;

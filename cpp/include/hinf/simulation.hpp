@@ -1,5 +1,5 @@
 // Closed-loop simulation of the nonlinear model under a tracking controller (paper eq. 7):
-//     dq/dt = f(t, q) + B(t) u + D(t) w(t),   u = controller(t, q),   q(t0) = q0,
+//     dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),   u = controller(t, q),   q(t0) = q0,
 // integrated with the chosen method; the time series are sampled on the output grid.
 //
 // A closed loop that leaves the neighbourhood of the desired trajectory where the linearized

@@ -1,7 +1,8 @@
 // The desired (feasible) trajectory of paper eq. (8):
-//     dq_d/dt = f(t, q_d) + B(t) u_d(t),   q_d(t0) = q_d0,
+//     dq_d/dt = f(t, q_d) + G(t, q_d) u_d(t),   q_d(t0) = q_d0,
 // integrated forward once with Dormand-Prince 5(4) at tight tolerances and kept as its dense
-// output, so q_d(t), u_d(t) and the linearization A_e(t) = df/dq(t, q_d(t)) (paper eq. 10)
+// output, so q_d(t), u_d(t) and the linearization along it (paper eq. 10, model.hpp)
+//     A_e(t) = d/dq [f + G u_d](t, q_d(t)),  B_e(t) = G(t, q_d(t)),  D_e(t) = D(t, q_d(t))
 // are available at any t in [t0, tf].
 #pragma once
 
@@ -43,8 +44,12 @@ class Trajectory {
   Vec q_d(double t) const;
   void u_d(double t, double* out) const { u_d_.eval(t, out); }
   Vec u_d(double t) const { return u_d_(t); }
-  // A_e(t) = df/dq at q_d(t).
+  // A_e(t) = d/dq [f + G u_d] at q_d(t), B_e(t) = G(t, q_d(t)), D_e(t) = D(t, q_d(t)).
   Mat A_e(double t) const;
+  Mat B_e(double t) const;
+  Mat D_e(double t) const;
+  // A_e(t) into A for the q_d = q_d(t) the caller already has.
+  void A_e(double t, const ConstVecRef& q_d, MatRef A) const;
 
   const PiecewisePolynomial& dense() const { return dense_; }
   const StepStats& stats() const { return stats_; }
