@@ -277,13 +277,17 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     });
   }
   std::string jacobian_method() const override {
-    py::gil_scoped_acquire gil;
-    if (py::get_override(static_cast<const Model*>(this), "dfdq")) return "analytic";
-    switch (jacobian_choice_.load()) {
-      case JacobianChoice::ComplexStep: return "complex step";
-      case JacobianChoice::CentralDifferences: return "central differences";
-      default: return "numerical (complex step or central differences, chosen at the first Jacobian)";
+    const bool numerical_input_part = structure().state_dependent_inputs && !overrides("dGudq");
+    std::string method = "analytic";
+    if (!overrides("dfdq")) {
+      switch (jacobian_choice_.load()) {
+        case JacobianChoice::ComplexStep: method = "complex step"; break;
+        case JacobianChoice::CentralDifferences: method = "central differences"; break;
+        default: method = "numerical (complex step or central differences, chosen at the first Jacobian)";
+      }
     }
+    if (numerical_input_part && method != "central differences") method += "; d(G u)/dq by central differences";
+    return method;
   }
   void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e, MatRef A,
                    VecRef alpha) const override {
@@ -350,6 +354,11 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     const std::optional<int> value = read<int>(method, "return an int");
     if (!value) throw InputError(str_cat("the Python model does not implement ", method, "()"));
     return *value;
+  }
+
+  bool overrides(const char* method) const {
+    py::gil_scoped_acquire gil;
+    return static_cast<bool>(py::get_override(static_cast<const Model*>(this), method));
   }
 
   // A C++ caller sizes its arrays by n: anything else is its error, reported before Python runs.
