@@ -260,6 +260,23 @@ def test_both_programs_write_the_same_results(name, tmp_path, warm_python_cli):
     np.testing.assert_array_equal(sim_csv, cpp_csv)  # the same run printed with 17 digits
 
 
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+def test_vehicles_command_writes_the_gallery(tmp_path, warm_python_cli):
+    out = tmp_path / "gallery"
+    done = subprocess.run([str(HINF_CPP), "vehicles", "--out", str(out)], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+    for name in SCENARIOS:
+        assert (out / f"{name}_xy.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        results = json.loads((out / f"{name}.json").read_text())
+        assert results["gamma_star"] is not None and results["gamma"] > results["gamma_star"]
+        assert (out / f"{name}.csv").stat().st_size > 0
+    assert (out / "vehicles_xy.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    table = (out / "metrics.md").read_text()
+    assert all(hc.load_scenario(hc.scenario_path(name)).name in table for name in SCENARIOS)
+    assert all(hc.load_scenario(hc.scenario_path(name)).name in done.stdout for name in SCENARIOS)
+
+
 @pytest.mark.parametrize("label", MODELS)
 def test_models_pickle_by_value(label):
     model = MODELS[label]
