@@ -44,6 +44,7 @@
 #include "hinf/ship.hpp"
 #include "hinf/simulation.hpp"
 #include "hinf/trajectory.hpp"
+#include "hinf/vehicles.hpp"
 
 namespace py = pybind11;
 
@@ -671,6 +672,29 @@ struct Fields<ShipParameters> {
       field("m_u", &ShipParameters::m_u), field("m_v", &ShipParameters::m_v), field("m_r", &ShipParameters::m_r),
       field("d_u", &ShipParameters::d_u), field("d_v", &ShipParameters::d_v), field("d_r", &ShipParameters::d_r));
 };
+// The built-in vehicles' parameters (vehicles.hpp).
+template <>
+struct Fields<FossenVesselParameters> {
+  static constexpr auto list =
+      std::make_tuple(field("M", &FossenVesselParameters::M), field("D", &FossenVesselParameters::D));
+};
+template <>
+struct Fields<HovercraftParameters> {
+  static constexpr auto list =
+      std::make_tuple(field("d", &HovercraftParameters::d), field("d_r", &HovercraftParameters::d_r));
+};
+template <>
+struct Fields<PlanarVtolParameters> {
+  static constexpr auto list =
+      std::make_tuple(field("g", &PlanarVtolParameters::g), field("epsilon", &PlanarVtolParameters::epsilon));
+};
+template <>
+struct Fields<AuvParameters> {
+  static constexpr auto list = std::make_tuple(
+      field("m11", &AuvParameters::m11), field("m22", &AuvParameters::m22), field("m33", &AuvParameters::m33),
+      field("X_u", &AuvParameters::X_u), field("X_uu", &AuvParameters::X_uu), field("Y_v", &AuvParameters::Y_v),
+      field("Y_vv", &AuvParameters::Y_vv), field("N_r", &AuvParameters::N_r), field("N_rr", &AuvParameters::N_rr));
+};
 template <>
 struct Fields<CascadeGains> {
   static constexpr auto list =
@@ -1099,6 +1123,22 @@ py::object matrix_of_t(const Solution& s, const py::object& t, Member member) {
   return vectorize(t, n, n, [&s, n, member](double tt, double* out) { Eigen::Map<Mat>(out, n, n) = (s.*member)(tt); });
 }
 
+// A built-in vehicle (vehicles.hpp): Vehicle(parameters), parameters(), pickled by value as
+// its parameters (as ShipModel).
+template <class Vehicle, class Parameters>
+void bind_vehicle(py::module_& m, const char* name, const char* doc) {
+  const std::string type = name;
+  py::class_<Vehicle, Model, py::smart_holder>(m, name, doc)
+      .def(py::init<const Parameters&>(), py::arg("parameters") = Parameters{})
+      .def("parameters", &Vehicle::parameters)
+      .def(py::pickle(
+          [](const Vehicle& model) { return py::make_tuple<py::return_value_policy::copy>(model.parameters()); },
+          [type](const py::tuple& state) {
+            check_state(state, 1, type.c_str());
+            return std::make_shared<Vehicle>(state[0].cast<Parameters>());
+          }));
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -1289,6 +1329,27 @@ A model implemented in Python does not pickle.)doc")
             check_state(state, 2, "FleetModel");
             return std::make_shared<FleetModel>(state[0].cast<ModelPtr>(), state[1].cast<int>());
           }));
+
+  // ---- the built-in vehicles (vehicles.hpp): parameters and models, pickled by value ----
+  bind_options<FossenVesselParameters>(
+      m, "FossenVesselParameters",
+      "M (mass) and D (damping) of the 3-DOF vessel in Fossen's form; defaults: the supply vessel (bis units)")
+      .def_static("supply_vessel", &FossenVesselParameters::supply_vessel,
+                  "Fossen, Sagatun and Sorensen (1996), in bis units (the defaults)");
+  bind_options<HovercraftParameters>(m, "HovercraftParameters",
+                                     "Damping per unit mass (d) and inertia (d_r) of the planar hovercraft (1/s)");
+  bind_options<PlanarVtolParameters>(m, "PlanarVtolParameters",
+                                     "Gravity g and coupling epsilon of the planar VTOL (normalized units)");
+  bind_options<AuvParameters>(m, "AuvParameters",
+                              "Masses (kg, kg m^2) and drag coefficients of the AUV; defaults: the Sirene AUV")
+      .def_static("sirene", &AuvParameters::sirene, "Aguiar and Pascoal (2007) (the defaults)");
+  bind_vehicle<FossenVessel, FossenVesselParameters>(
+      m, "FossenVessel", "3-DOF underactuated surface vessel M nu' + C(nu) nu + D nu = tau (vehicles.hpp)");
+  bind_vehicle<Hovercraft, HovercraftParameters>(m, "Hovercraft",
+                                                 "Planar hovercraft in inertial coordinates (vehicles.hpp)");
+  bind_vehicle<PlanarVtol, PlanarVtolParameters>(
+      m, "PlanarVtol", "Planar VTOL aircraft of Hauser, Sastry and Meyer (1992) (vehicles.hpp)");
+  bind_vehicle<Auv, AuvParameters>(m, "Auv", "Underactuated AUV in the horizontal plane (vehicles.hpp)");
 
   // ---- options ----
   bind_options<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)");

@@ -12,12 +12,14 @@
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <toml++/toml.h>
 
 #include "hinf/errors.hpp"
 #include "hinf/ship.hpp"
+#include "hinf/vehicles.hpp"
 
 namespace hinf {
 
@@ -243,10 +245,113 @@ const toml::table* section(const toml::table& root, const std::string& name, con
   return table;
 }
 
+// The keys of [model] besides "kind", for each kind. A key of another kind is refused naming
+// the kinds it belongs to; any other unknown key with the list of the kind's keys.
+const std::vector<std::pair<std::string, std::vector<std::string>>>& model_kind_keys() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> kinds = {
+      {"ship", {"m_u", "m_v", "m_r", "d_u", "d_v", "d_r"}},
+      {"linear", {"A", "B", "D", "C"}},
+      {"fossen_vessel", {"preset", "M", "D"}},
+      {"hovercraft", {"d", "d_r"}},
+      {"pvtol", {"g", "epsilon"}},
+      {"auv", {"preset", "m11", "m22", "m33", "X_u", "X_uu", "Y_v", "Y_vv", "N_r", "N_rr"}},
+  };
+  return kinds;
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// A TableReader of [model] for its kind (read first: it decides which keys are known).
+TableReader model_reader(const toml::table& table, const std::string& source, std::string& kind) {
+  const auto fail = [&source](const std::string& key, const std::string& problem) {
+    return InputError(str_cat(source, ": [model] ", key, ": ", problem));
+  };
+  const toml::node* node = table.get("kind");
+  if (node == nullptr) throw fail("kind", "is required");
+  if (node->as_string() == nullptr) throw fail("kind", "expected a string, got " + type_name(*node));
+  kind = node->as_string()->get();
+  const std::vector<std::string>* keys = nullptr;
+  std::string kinds;
+  for (const auto& [name, names] : model_kind_keys()) {
+    if (name == kind) keys = &names;
+    kinds += str_cat(kinds.empty() ? "" : ", ", "\"", name, "\"");
+  }
+  if (keys == nullptr) throw fail("kind", str_cat("unknown model kind \"", kind, "\": use one of ", kinds));
+  for (auto&& [k, v] : table) {
+    const std::string key(k.str());
+    if (key == "kind" || contains(*keys, key)) continue;
+    std::string owners;
+    for (const auto& [name, names] : model_kind_keys())
+      if (contains(names, key)) owners += str_cat(owners.empty() ? "" : " or ", "kind = \"", name, "\"");
+    if (!owners.empty()) throw fail(key, str_cat("is a key of ", owners, ", not of kind = \"", kind, "\""));
+  }
+  std::vector<std::string> known{"kind"};
+  known.insert(known.end(), keys->begin(), keys->end());
+  return TableReader(table, "[model]", source, known);
+}
+
+// ---- the built-in vehicles (vehicles.hpp) in [model] ----
+
+// A vehicle from its parameters; a parameter the constructor refuses is reported as [model]'s.
+template <class Vehicle, class Parameters>
+ModelPtr make_vehicle(const Parameters& parameters, const std::string& source) {
+  try {
+    return std::make_shared<Vehicle>(parameters);
+  } catch (const InputError& e) {
+    throw InputError(str_cat(source, ": [model] ", e.what()));
+  }
+}
+
+// The preset named by the key "preset" (the default preset when absent); the only preset of a
+// kind is its parameters' defaults.
+void check_preset(TableReader& r, const std::string& kind, const std::string& preset) {
+  const std::string name = r.string_or("preset", preset);
+  if (name != preset)
+    r.fail("preset", str_cat("unknown preset \"", name, "\" of kind = \"", kind, "\": the preset is \"", preset,
+                             "\"; change single parameters by their keys"));
+}
+
+// kind = "fossen_vessel", "hovercraft", "pvtol" or "auv" (docs/scenarios.md); nullptr for
+// another kind.
+ModelPtr parse_vehicle_model(TableReader& r, const std::string& kind, const std::string& source) {
+  if (kind == "fossen_vessel") {
+    check_preset(r, kind, "supply_vessel");
+    FossenVesselParameters p = FossenVesselParameters::supply_vessel();
+    if (r.has("M")) p.M = r.matrix("M", 3, 3, false);
+    if (r.has("D")) p.D = r.matrix("D", 3, 3, false);
+    return make_vehicle<FossenVessel>(p, source);
+  }
+  if (kind == "hovercraft") {
+    HovercraftParameters p;
+    p.d = r.number_or("d", p.d);
+    p.d_r = r.number_or("d_r", p.d_r);
+    return make_vehicle<Hovercraft>(p, source);
+  }
+  if (kind == "pvtol") {
+    PlanarVtolParameters p;
+    p.g = r.number_or("g", p.g);
+    p.epsilon = r.number_or("epsilon", p.epsilon);
+    return make_vehicle<PlanarVtol>(p, source);
+  }
+  if (kind == "auv") {
+    check_preset(r, kind, "sirene");
+    AuvParameters p = AuvParameters::sirene();
+    const std::pair<const char*, double*> keys[] = {{"m11", &p.m11}, {"m22", &p.m22}, {"m33", &p.m33},
+                                                    {"X_u", &p.X_u},  {"X_uu", &p.X_uu}, {"Y_v", &p.Y_v},
+                                                    {"Y_vv", &p.Y_vv}, {"N_r", &p.N_r},  {"N_rr", &p.N_rr}};
+    for (const auto& [key, value] : keys) *value = r.number_or(key, *value);
+    return make_vehicle<Auv>(p, source);
+  }
+  return nullptr;
+}
+
+// ---- end of the built-in vehicles ----
+
 ModelPtr parse_model(const toml::table& table, const std::string& source) {
-  TableReader r(table, "[model]", source, {"kind", "m_u", "m_v", "m_r", "d_u", "d_v", "d_r", "A", "B", "D", "C"});
-  const std::string kind = r.string("kind");
-  ModelPtr model;
+  std::string kind;
+  TableReader r = model_reader(table, source, kind);
   if (kind == "ship") {
     ShipParameters p;
     p.m_u = r.number_or("m_u", p.m_u);
@@ -255,12 +360,9 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
     p.d_u = r.number_or("d_u", p.d_u);
     p.d_v = r.number_or("d_v", p.d_v);
     p.d_r = r.number_or("d_r", p.d_r);
-    for (const char* key : {"A", "B", "D", "C"})
-      if (r.has(key)) r.fail(key, "is a key of kind = \"linear\", not of kind = \"ship\"");
-    model = std::make_shared<ShipModel>(p);
-  } else if (kind == "linear") {
-    for (const char* key : {"m_u", "m_v", "m_r", "d_u", "d_v", "d_r"})
-      if (r.has(key)) r.fail(key, "is a key of kind = \"ship\", not of kind = \"linear\"");
+    return std::make_shared<ShipModel>(p);
+  }
+  if (kind == "linear") {
     // A, B and D set the model's dimensions: n = rows of A, m = columns of B, nw = columns of D.
     auto dimensions = [&r](const char* key, const char* shape) {
       const toml::node* node = r.get(key);
@@ -282,11 +384,9 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
     if (r.has("D")) D = r.matrix("D", n, dimensions("D", "n x nw").second, false);
     Mat C;  // a measurement y = C q adds one noise channel per output (model.hpp)
     if (r.has("C")) C = r.matrix("C", dimensions("C", "p x n").first, n, false);
-    model = std::make_shared<LinearModel>(A, B, D, C);
-  } else {
-    r.fail("kind", "unknown model kind \"" + kind + "\": use \"ship\" or \"linear\"");
+    return std::make_shared<LinearModel>(A, B, D, C);
   }
-  return model;
+  return parse_vehicle_model(r, kind, source);  // model_kind_keys() has no other kind
 }
 
 std::string file_stem(const std::string& path) {
@@ -661,6 +761,33 @@ toml::array matrix_toml(const Mat& M) {
   return rows;
 }
 
+// ---- the built-in vehicles (vehicles.hpp) in [model] ----
+
+// The [model] table of a built-in vehicle, every parameter written out; nullopt for another model.
+std::optional<toml::table> vehicle_model_toml(const Model& model) {
+  if (const auto* vessel = dynamic_cast<const FossenVessel*>(&model)) {
+    const FossenVesselParameters& p = vessel->parameters();
+    return toml::table{{"kind", "fossen_vessel"}, {"M", matrix_toml(p.M)}, {"D", matrix_toml(p.D)}};
+  }
+  if (const auto* hovercraft = dynamic_cast<const Hovercraft*>(&model)) {
+    const HovercraftParameters& p = hovercraft->parameters();
+    return toml::table{{"kind", "hovercraft"}, {"d", p.d}, {"d_r", p.d_r}};
+  }
+  if (const auto* vtol = dynamic_cast<const PlanarVtol*>(&model)) {
+    const PlanarVtolParameters& p = vtol->parameters();
+    return toml::table{{"kind", "pvtol"}, {"g", p.g}, {"epsilon", p.epsilon}};
+  }
+  if (const auto* auv = dynamic_cast<const Auv*>(&model)) {
+    const AuvParameters& p = auv->parameters();
+    return toml::table{{"kind", "auv"}, {"m11", p.m11}, {"m22", p.m22}, {"m33", p.m33},
+                       {"X_u", p.X_u},   {"X_uu", p.X_uu}, {"Y_v", p.Y_v}, {"Y_vv", p.Y_vv},
+                       {"N_r", p.N_r},   {"N_rr", p.N_rr}};
+  }
+  return std::nullopt;
+}
+
+// ---- end of the built-in vehicles ----
+
 toml::table model_toml(const Model& model) {
   if (const auto* ship = dynamic_cast<const ShipModel*>(&model)) {
     const ShipParameters& p = ship->parameters();
@@ -673,8 +800,9 @@ toml::table model_toml(const Model& model) {
     if (linear->measurement_C().size() > 0) table.insert("C", matrix_toml(linear->measurement_C()));
     return table;
   }
-  throw InputError(str_cat("the model '", model.name(), "' has no scenario-file form (only kind = \"ship\" and",
-                           " kind = \"linear\" have one)"));
+  if (std::optional<toml::table> vehicle = vehicle_model_toml(model)) return *vehicle;
+  throw InputError(str_cat("the model '", model.name(), "' has no scenario-file form (only the built-in models",
+                           " have one: the ship, linear models and the vehicles of vehicles.hpp)"));
 }
 
 }  // namespace

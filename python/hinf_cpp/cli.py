@@ -9,6 +9,7 @@
     hinf-cpp certify SCENARIO.toml [--json OUT.json]
     hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N] [--quiet]
     hinf-cpp paper [--out DIR] [--quiet]
+    hinf-cpp vehicles [--out DIR] [--quiet]
 
 Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
 too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
@@ -374,6 +375,22 @@ def cmd_paper(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_vehicles(args: argparse.Namespace) -> int:
+    from .gallery import VEHICLES, gallery_table, run_vehicle, write_gallery
+
+    _check_outputs(folders=[args.out])
+    runs = []
+    with Progress(quiet=args.quiet) as progress:
+        for index, vehicle in enumerate(VEHICLES, start=1):
+            progress(index, len(VEHICLES), f"running {vehicle.scenario}")
+            runs.append(run_vehicle(vehicle))
+    print("the built-in vehicles: state-feedback tracking of their shipped scenarios (docs/vehicles.md)")
+    print(text_table(*gallery_table(runs)), end="")
+    written = write_gallery(args.out, runs)
+    print(f"\nwrote {args.out}/: " + ", ".join(sorted(p.name for p in written)))
+    return 0
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with errors on one line of stderr (exit status 2), like every other error."""
 
@@ -480,6 +497,12 @@ def build_parser() -> argparse.ArgumentParser:
     paper.add_argument("--out", default="out/paper", help="output folder (default: out/paper)")
     _add_quiet(paper)
     paper.set_defaults(handler=cmd_paper)
+
+    vehicles = sub.add_parser("vehicles", help="the built-in vehicles' shipped scenarios: results files, "
+                                               "x-y figures and a table of the tracking")
+    vehicles.add_argument("--out", default="out/vehicles", help="output folder (default: out/vehicles)")
+    _add_quiet(vehicles)
+    vehicles.set_defaults(handler=cmd_vehicles)
     return parser
 
 

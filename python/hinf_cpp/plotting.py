@@ -129,9 +129,11 @@ def _span(paths: list[np.ndarray]) -> float:
     return float(max(np.ptp(points[:, 0]), np.ptp(points[:, 1]), 1e-9))
 
 
-def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows: int = 0) -> Figure:
+def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows: int = 0,
+              length_unit: str = "m") -> Figure:
     """The paper's x-y plot: desired path solid, actual path dashed, start points marked;
-    optionally ``heading_arrows`` arrows of the heading along the actual path."""
+    optionally ``heading_arrows`` arrows of the heading along the actual path. ``length_unit``
+    labels the axes (the model's unit of length)."""
     ix, iy = _position_indices(result)
     sim = result.simulation
     fig = Figure(figsize=(6.4, 5.2), layout="constrained")
@@ -143,8 +145,8 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
     if heading_arrows > 0:
         length = 0.05 * _span([sim.q[:, [ix, iy]], sim.q_d[:, [ix, iy]]])
         _heading_arrows(ax, sim.q, result.trajectory.model(), heading_arrows, length, "tab:blue")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
+    ax.set_xlabel(f"x [{length_unit}]")
+    ax.set_ylabel(f"y [{length_unit}]")
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize="small")
@@ -154,7 +156,7 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
 
 
 def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | None = None, ax=None,
-                 t_max: float | None = None, legend: bool = True) -> Figure:
+                 t_max: float | None = None, legend: bool = True, length_unit: str = "m") -> Figure:
     """Overlaid x-y paths: the desired path (solid black, its start heading arrowed) and each
     run's actual path (dashed; dash-dotted for output feedback) with its start marked (square)
     and ``heading_arrows`` arrows of the heading along it (the first at the start).
@@ -173,6 +175,8 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
         Draw only t <= t_max (default: the whole horizon).
     legend : bool
         Draw the legend in the axes.
+    length_unit : str
+        The unit of x and y in the axis labels (the model's unit of length).
     """
     runs = _runs(runs)
     first = runs[0][1]
@@ -198,8 +202,8 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
         _heading_arrows(ax, q, model, heading_arrows, length, style["color"], offset=i / len(runs))
     ax.plot([], [], "o", color="black", ms=6, label="desired start")
     ax.plot([], [], "s", color="gray", ms=6, label="actual start")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
+    ax.set_xlabel(f"x [{length_unit}]")
+    ax.set_ylabel(f"y [{length_unit}]")
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
     if legend:

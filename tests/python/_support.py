@@ -1,4 +1,5 @@
-"""Independent reference implementations used by the tests (NumPy/SciPy only).
+"""Independent reference implementations used by the tests (NumPy/SciPy only), and shared
+comparison helpers.
 
 Nothing here calls hinf_cpp: these are the "truth" the library is checked against.
 """
@@ -8,6 +9,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from scipy import linalg
 
 METHODS = ("auto", "bdf", "adams", "erk")
@@ -70,6 +72,26 @@ def ship_drift(q, p=PAPER_PARAMETERS) -> np.ndarray:
 
 SHIP_B = np.array([[1.0, 0.0], [0.0, 0.0], [0.0, 1.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0]])
 SHIP_D = np.diag([1.0, 1.0, 1.0, 0.0, 0.0, 0.0])
+
+
+def numbers_close(a, b, path="$"):
+    """Same structure, same strings, numbers within 1e-9 relative (timing_s excluded). For the
+    two programs, which run the same library code on the same file: equal up to the printed
+    digits, not a round-off allowance between different computations."""
+    if isinstance(a, dict):
+        assert isinstance(b, dict) and set(a) == set(b), path
+        for key in a:
+            if key != "timing_s":
+                numbers_close(a[key], b[key], f"{path}.{key}")
+    elif isinstance(a, list):
+        assert isinstance(b, list) and len(a) == len(b), path
+        for i, (x, y) in enumerate(zip(a, b)):
+            numbers_close(x, y, f"{path}[{i}]")
+    elif isinstance(a, (int, float)) and not isinstance(a, bool):
+        assert isinstance(b, (int, float)) and not isinstance(b, bool), path
+        assert b == pytest.approx(a, rel=1e-9, abs=1e-300), path
+    else:
+        assert a == b, path
 
 
 def central_jacobian(fun, x, h=1e-6) -> np.ndarray:

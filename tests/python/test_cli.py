@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import hinf_cpp as hc
-from _support import ROUNDOFF
+from _support import ROUNDOFF, numbers_close
 
 BIN = pathlib.Path(sys.executable).parent
 HINF_SIM = BIN / "hinf-sim"
@@ -45,26 +45,6 @@ def paper_outputs(tmp_path_factory, warm_python_cli):
     cpp = run(HINF_CPP, "run", scenario, "--json", out / "cpp.json", "--csv", out / "cpp.csv",
               "--plot", out / "xy.png")
     return out, sim, cpp
-
-
-def numbers_close(a, b, path="$"):
-    """Same structure, same strings, numbers within 1e-9 relative (timing_s excluded). For the
-    two programs, which run the same library code on the same file: equal up to the printed
-    digits, not a round-off allowance between different computations."""
-    if isinstance(a, dict):
-        assert isinstance(b, dict) and set(a) == set(b), path
-        for key in a:
-            if key != "timing_s":
-                numbers_close(a[key], b[key], f"{path}.{key}")
-    elif isinstance(a, list):
-        assert isinstance(b, list) and len(a) == len(b), path
-        for i, (x, y) in enumerate(zip(a, b)):
-            numbers_close(x, y, f"{path}[{i}]")
-    elif isinstance(a, (int, float)) and not isinstance(a, bool):
-        assert isinstance(b, (int, float)) and not isinstance(b, bool), path
-        assert b == pytest.approx(a, rel=1e-9, abs=1e-300), path
-    else:
-        assert a == b, path
 
 
 def test_both_programs_succeed(paper_outputs):

@@ -1,0 +1,117 @@
+"""The gallery of the built-in vehicles (docs/vehicles.md): the shipped scenario of each vehicle
+run with state feedback, its gamma*, its x-y figure and a table of the tracking results
+(``hinf-cpp vehicles --out DIR``)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import pathlib
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from . import _core
+from .outputs import write_text
+from .tables import markdown_table
+
+__all__ = ["VEHICLES", "VehicleRun", "gallery_figure", "gallery_table", "run_vehicle", "write_gallery"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Vehicle:
+    label: str  # for tables and titles
+    scenario: str  # the shipped scenario (scenarios/<scenario>.toml)
+    length_unit: str  # the model's unit of x and y
+
+
+# One shipped scenario per built-in vehicle, in the order of docs/vehicles.md.
+VEHICLES = [
+    Vehicle("Fossen vessel (supply vessel)", "fossen_vessel_turn", "ship lengths L = 76.2 m"),
+    Vehicle("hovercraft", "hovercraft_s_curve", "m"),
+    Vehicle("planar VTOL", "pvtol_climb", "normalized"),
+    Vehicle("AUV (Sirene)", "auv_s_curve", "m"),
+]
+
+
+@dataclasses.dataclass
+class VehicleRun:
+    vehicle: Vehicle
+    result: _core.RunResult
+    gamma_star: float
+    initial_position_error: float  # |p(t0) - p_d(t0)|
+    final_position_error: float  # |p(tf) - p_d(tf)|
+
+    @property
+    def ratio(self) -> float:
+        """Final over initial position error."""
+        return self.final_position_error / self.initial_position_error
+
+
+def run_vehicle(vehicle: Vehicle) -> VehicleRun:
+    """Runs the vehicle's shipped scenario and computes gamma* of its design (eq. 14)."""
+    from . import scenario_path
+    from .scenario import load_scenario
+
+    scenario = load_scenario(scenario_path(vehicle.scenario))
+    result = _core.run_scenario(scenario)
+    gamma_star = _core.scenario_gamma_star(scenario).gamma_star
+    result.gamma_star = gamma_star  # written to the results file
+    position = list(result.trajectory.model().position_indices())
+    q_e = np.asarray(result.simulation.q_e())[:, position]
+    return VehicleRun(vehicle, result, gamma_star, float(np.linalg.norm(q_e[0])),
+                      float(result.metrics.final_position_error))
+
+
+def gallery_table(runs: list[VehicleRun]) -> tuple[list[str], list[list[str]]]:
+    """(header, rows): one row per vehicle."""
+    header = ["vehicle", "scenario", "gamma*", "gamma", "initial position error", "final position error",
+              "final / initial", "RMS position error, last half", "unit of length"]
+    rows = [[run.vehicle.label, run.result.scenario_name, f"{run.gamma_star:.4g}", f"{run.result.gamma:g}",
+             f"{run.initial_position_error:.3g}", f"{run.final_position_error:.3g}", f"{run.ratio:.2%}",
+             f"{run.result.metrics.rms_position_error_last_half:.3g}", run.vehicle.length_unit]
+            for run in runs]
+    return header, rows
+
+
+def gallery_figure(runs: list[VehicleRun]) -> Figure:
+    """The x-y paths of every vehicle, one panel each (desired solid, actual dashed)."""
+    from .plotting import paths_figure
+
+    columns = 2
+    rows = math.ceil(len(runs) / columns)
+    fig = Figure(figsize=(5.6 * columns, 4.8 * rows), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(rows, columns)).ravel()
+    for ax, run in zip(axes, runs):
+        paths_figure(run.result, ax=ax, heading_arrows=4, length_unit=run.vehicle.length_unit,
+                     title=f"{run.vehicle.label}: {run.result.scenario_name}")
+    for ax in axes[len(runs):]:
+        ax.set_visible(False)
+    return fig
+
+
+def write_gallery(out: str | pathlib.Path, runs: list[VehicleRun]) -> list[pathlib.Path]:
+    """Writes <scenario>.json (results file, gamma* included), <scenario>.csv (time series) and
+    <scenario>_xy.png per vehicle, vehicles_xy.png (all paths) and metrics.md (the table) into
+    `out`; returns the paths written."""
+    from .plotting import save_figure, xy_figure
+
+    out = pathlib.Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for run in runs:
+        stem = run.vehicle.scenario
+        written.append(write_text(out / f"{stem}.json", _core.results_json(run.result) + "\n"))
+        written.append(write_text(out / f"{stem}.csv", _core.results_csv(run.result)))
+        figure = xy_figure(run.result, title=f"{run.vehicle.label}: {run.result.scenario_name}, "
+                                             f"gamma = {run.result.gamma:g}",
+                           heading_arrows=6, length_unit=run.vehicle.length_unit)
+        written.append(save_figure(figure, out / f"{stem}_xy.png"))
+    written.append(save_figure(gallery_figure(runs), out / "vehicles_xy.png"))
+    header, rows = gallery_table(runs)
+    text = ("# The built-in vehicles: state-feedback tracking of their shipped scenarios\n\n"
+            "Position errors over the model's position components (docs/vehicles.md), in its unit "
+            "of length; gamma* of eq. (14) for the scenario's design.\n\n"
+            + markdown_table(header, rows) + "\n![x-y paths of the vehicles](vehicles_xy.png)\n")
+    written.append(write_text(out / "metrics.md", text))
+    return [pathlib.Path(p) for p in written]
