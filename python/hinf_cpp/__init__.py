@@ -4,8 +4,9 @@ The numerics (models, desired trajectories, the GRDE, the closed loop) live in t
 core ``hinf_cpp._core``; this package adds scenario files, plots and the command line:
 ``hinf_cpp.compare`` (the H-infinity law against the lqr and cascade baselines),
 ``hinf_cpp.recovery`` (poor initial conditions, turning around), ``hinf_cpp.plotting``
-(figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON)
-and ``hinf_cpp.analysis`` (attenuation against gamma).
+(figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON),
+``hinf_cpp.analysis`` (attenuation against gamma) and ``hinf_cpp.codegen`` (CasADi functions
+compiled for the C++ core, evaluated by ``GeneratedFunction``; needs casadi).
 
 Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
 errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     Base class of the numerical failures of hinf_cpp.
@@ -1652,6 +1652,34 @@ class RunResult:
         ...
     @property
     def trajectory(self) -> Trajectory:
+        ...
+class GeneratedFunction:
+    """
+    A function of a shared library compiled from CasADi generated C code (hinf_cpp.codegen.compile_casadi_functions), evaluated in C++
+    """
+    def __call__(self, *args) -> list[numpy.typing.NDArray[numpy.float64]]:
+        """
+        Evaluates in C++ (the GIL released): one input per argument (a number, a 1-D array for a vector, or an array of the input's shape); one 2-D array per output
+        """
+    def __init__(self, path: str, name: str) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def input_name(self, i: typing.SupportsInt | typing.SupportsIndex) -> str:
+        ...
+    def input_shape(self, i: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int]:
+        ...
+    def n_in(self) -> int:
+        ...
+    def n_out(self) -> int:
+        ...
+    def name(self) -> str:
+        ...
+    def output_name(self, i: typing.SupportsInt | typing.SupportsIndex) -> str:
+        ...
+    def output_shape(self, i: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int]:
+        ...
+    def path(self) -> str:
         ...
 def certify(Z: RiccatiSolution, kappa: typing.Any, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> Certificates:
     """
