@@ -34,6 +34,7 @@ import hashlib
 import os
 import pathlib
 import re
+import secrets
 import shlex
 import shutil
 import subprocess
@@ -179,15 +180,15 @@ def _prepare_cache_dir(cache_dir: pathlib.Path) -> None:
 
 def _write_atomically(path: pathlib.Path, write) -> None:
     """Writes through write(temporary path) and renames the result into place: readers see the
-    old file or the new one, never a part."""
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(fd)
+    old file or the new one, never a part. The temporary name is unique to this call (process
+    id and random digits) and write() creates the file, so its permissions follow the umask
+    like any new file's (mkstemp would make it private to the user)."""
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(8)}.tmp")
     try:
-        write(pathlib.Path(temporary))
+        write(temporary)
         os.replace(temporary, path)
     finally:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
+        temporary.unlink(missing_ok=True)
 
 
 def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,

@@ -4,7 +4,9 @@ Every library is compiled into a temporary cache folder, never the user's."""
 
 from __future__ import annotations
 
+import os
 import pathlib
+import stat
 import subprocess
 import sys
 import textwrap
@@ -181,6 +183,18 @@ def test_second_compile_is_a_cache_hit(compiled, cache):
     # Only finished files in the cache: libraries and their sources, no temporary files.
     assert again.path.with_suffix(".c").exists()
     assert all(p.suffix in (".so", ".c") and not p.name.startswith(".") for p in cache.iterdir())
+
+
+def test_cached_files_have_the_permissions_of_new_files(tmp_path):
+    """A cache folder may be shared: the library and its source are readable by whoever the
+    umask lets read new files (not private to the user, as temporary files would be)."""
+    previous = os.umask(0o022)
+    try:
+        library = codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "shared", cache_dir=tmp_path)
+    finally:
+        os.umask(previous)
+    assert stat.S_IMODE(library.path.with_suffix(".c").stat().st_mode) == 0o644
+    assert stat.S_IMODE(library.path.stat().st_mode) & 0o755 == 0o755  # readable and executable by all
 
 
 def test_another_expression_is_another_library(compiled, cache):
