@@ -34,6 +34,7 @@
 #include "hinf/enum_names.hpp"
 #include "hinf/errors.hpp"
 #include "hinf/fleet.hpp"
+#include "hinf/generated_function.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/model.hpp"
 #include "hinf/output_feedback.hpp"
@@ -1141,6 +1142,75 @@ void bind_vehicle(py::module_& m, const char* name, const char* doc) {
 
 }  // namespace
 
+// ---- CasADi generated code (generated_function.hpp) ----
+// GeneratedFunction(path, name)(*inputs) -> list of arrays. An input is a number (a 1 x 1
+// input), a 1-D array (a vector input) or a 2-D array of the input's shape; each output is a
+// 2-D array of the output's shape (zeros where it is structurally zero). The evaluation
+// releases the GIL (calls from several threads run at once).
+static void bind_generated_function(py::module_& m) {
+  using ColumnMajor = py::array_t<double, py::array::f_style | py::array::forcecast>;
+  // Input i as a column-major float64 array (a copy unless it is one already), shape-checked.
+  const auto input_array = [](const GeneratedFunction& f, int i, const py::handle& value) {
+    const int rows = f.input_rows(i), cols = f.input_cols(i);
+    const std::string subject = str_cat("input ", i, " (", f.input_name(i), ") of '", f.name(), "'");
+    const std::string expected =
+        str_cat("be an array of shape (", rows, ", ", cols, ")",
+                rows * cols == 1 ? " or a number" : (rows == 1 || cols == 1) ? str_cat(" or of length ", rows * cols) : "");
+    ColumnMajor array = ColumnMajor::ensure(value);
+    if (!array) wrong_value(value, subject, expected);
+    const bool fits = array.ndim() == 2 ? array.shape(0) == rows && array.shape(1) == cols
+                      : array.ndim() == 1 ? (rows == 1 || cols == 1) && array.shape(0) == rows * cols
+                                          : array.ndim() == 0 && rows * cols == 1;
+    if (!fits) wrong_value(value, subject, expected);
+    return array;
+  };
+  py::class_<GeneratedFunction, std::shared_ptr<GeneratedFunction>>(
+      m, "GeneratedFunction",
+      "A function of a shared library compiled from CasADi generated C code "
+      "(hinf_cpp.codegen.compile_casadi_functions), evaluated in C++")
+      .def(py::init<const std::string&, const std::string&>(), py::arg("path"), py::arg("name"))
+      .def("name", &GeneratedFunction::name)
+      .def("path", [](const GeneratedFunction& f) { return f.library()->path(); })
+      .def("n_in", &GeneratedFunction::n_in)
+      .def("n_out", &GeneratedFunction::n_out)
+      .def("input_shape", [](const GeneratedFunction& f, int i) { return std::pair<int, int>(f.input_rows(i), f.input_cols(i)); },
+           py::arg("i"))
+      .def("output_shape", [](const GeneratedFunction& f, int i) { return std::pair<int, int>(f.output_rows(i), f.output_cols(i)); },
+           py::arg("i"))
+      .def("input_name", &GeneratedFunction::input_name, py::arg("i"))
+      .def("output_name", &GeneratedFunction::output_name, py::arg("i"))
+      .def("__call__",
+           [input_array](const GeneratedFunction& f, const py::args& args) {
+             if (static_cast<int>(args.size()) != f.n_in()) {
+               std::string names;
+               for (int i = 0; i < f.n_in(); ++i) names += (i ? ", " : "") + f.input_name(i);
+               throw InputError(str_cat("'", f.name(), "' takes ", f.n_in(), " inputs (", names, "), got ", args.size()));
+             }
+             std::vector<ColumnMajor> inputs;
+             std::vector<const double*> input_data;
+             for (int i = 0; i < f.n_in(); ++i) {
+               inputs.push_back(input_array(f, i, args[static_cast<std::size_t>(i)]));
+               input_data.push_back(inputs.back().data());
+             }
+             std::vector<py::array_t<double, py::array::f_style>> outputs;
+             std::vector<double*> output_data;
+             for (int o = 0; o < f.n_out(); ++o) {
+               outputs.emplace_back(std::vector<py::ssize_t>{f.output_rows(o), f.output_cols(o)});
+               output_data.push_back(outputs.back().mutable_data());
+             }
+             {
+               py::gil_scoped_release release;
+               f.eval(input_data.data(), output_data.data());
+             }
+             return outputs;
+           },
+           "Evaluates in C++ (the GIL released): one input per argument (a number, a 1-D array for a vector, or an"
+           " array of the input's shape); one 2-D array per output")
+      .def("__repr__", [](const GeneratedFunction& f) {
+        return str_cat("GeneratedFunction('", f.library()->path(), "', '", f.name(), "')");
+      });
+}
+
 PYBIND11_MODULE(_core, m) {
   m.doc() = "hinf_cpp core: H-infinity tracking control of nonlinear underactuated vehicles";
   m.attr("__version__") = HINF_VERSION;
@@ -1778,4 +1848,6 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
   m.def("results_json", &results_json, py::arg("result"), py::arg("indent") = 2,
         "The results file of scenarios.md (JSON; non-finite numbers as null)");
   m.def("results_csv", &results_csv, py::arg("result"), "The time series on the output grid (CSV, one row per time)");
+
+  bind_generated_function(m);
 }

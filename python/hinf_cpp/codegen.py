@@ -1,0 +1,236 @@
+"""CasADi functions as a shared library for the C++ core.
+
+A model written with CasADi symbols is evaluated in C++ without Python: its functions
+(``casadi.Function``) are written out as C by CasADi's code generator, compiled once with the
+system C compiler into a shared library, and loaded by ``hinf_cpp.GeneratedFunction`` (C++:
+``hinf/generated_function.hpp``)::
+
+    import casadi as ca
+    from hinf_cpp.codegen import compile_casadi_functions
+
+    q = ca.SX.sym("q", 3)
+    f = ca.Function("f", [q], [ca.sin(q)])
+    lib = compile_casadi_functions([f, ca.Function("J", [q], [ca.jacobian(ca.sin(q), q)])], "demo")
+    J = lib.function("J")            # hinf_cpp.GeneratedFunction
+    J([0.1, 0.2, 0.3])               # [3 x 3 numpy array]
+
+Libraries are cached: the file name carries a SHA-256 of the generated C source, the
+compiler's identity (its path and ``--version``) and the flags, so the same functions compile
+once per machine and compiler; a changed expression is another file. The cache folder is
+``$HINF_CPP_CACHE``, else ``$XDG_CACHE_HOME/hinf_cpp/casadi`` (``~/.cache/hinf_cpp/casadi``).
+Each file is written under a temporary name and renamed into place, so processes compiling the
+same functions at once each end with a complete library.
+
+The generated code is pinned to the ABI the C++ loader reads: ``casadi_real = double`` and
+``casadi_int = long long int``; the library also reports both sizes
+(``hinf_casadi_int_size()``, ``hinf_casadi_real_size()``), which the loader checks.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import hashlib
+import os
+import pathlib
+import re
+import secrets
+import shlex
+import shutil
+import subprocess
+import tempfile
+import time
+from typing import TYPE_CHECKING, Sequence
+
+if TYPE_CHECKING:  # casadi is optional (the extra "symbolic"); imported when used
+    import casadi
+
+    from ._core import GeneratedFunction
+
+# What the C++ loader reads (hinf/generated_function.hpp).
+GENERATOR_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_header": False}
+# Reported by the library so that the loader can check the ABI it was compiled with.
+ABI_FUNCTIONS = """
+/* Added by hinf_cpp.codegen: the sizes of this file's types, checked by the loader. */
+#ifdef __cplusplus
+extern "C" {
+#endif
+CASADI_SYMBOL_EXPORT int hinf_casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int hinf_casadi_real_size(void) { return (int) sizeof(casadi_real); }
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+"""
+# -O2 (measured with GCC 12, docs/models.md): -O3 evaluates no faster; -O1 compiles long
+# straight-line code (SX, 20000 lines) 4 times faster at the same speed, but evaluates the
+# loops of MX code (matrix products) 3 times slower, and compilation happens once per entry.
+# Extra arguments given with the compiler come after these (compiler="cc -O1" overrides -O2).
+COMPILE_FLAGS = ("-O2", "-fPIC", "-shared")
+LINK_LIBRARIES = ("-lm",)  # sin, exp, sqrt, ... of the generated code
+# Part of every cache key: a change to how libraries are made changes every file name.
+CACHE_FORMAT = "hinf_cpp.codegen 1"
+C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+class CompilationError(RuntimeError):
+    """The C compiler is missing or failed on the generated code."""
+
+
+class CacheDirectoryError(OSError):
+    """The cache folder cannot be created or written."""
+
+
+@dataclasses.dataclass(frozen=True)
+class CompiledLibrary:
+    """A compiled library: its path, whether it came from the cache, and the seconds spent
+    generating the C source (also on a cache hit: the key is its hash) and compiling it
+    (0 on a cache hit)."""
+
+    path: pathlib.Path
+    cache_hit: bool
+    generate_seconds: float
+    compile_seconds: float
+
+    def function(self, name: str) -> GeneratedFunction:
+        """The function ``name`` of the library, loaded (``hinf_cpp.GeneratedFunction``)."""
+        from ._core import GeneratedFunction
+
+        return GeneratedFunction(str(self.path), name)
+
+
+def default_cache_dir() -> pathlib.Path:
+    """``$HINF_CPP_CACHE``, else ``$XDG_CACHE_HOME/hinf_cpp/casadi`` or ``~/.cache/hinf_cpp/casadi``."""
+    if os.environ.get("HINF_CPP_CACHE"):
+        return pathlib.Path(os.environ["HINF_CPP_CACHE"])
+    base = os.environ.get("XDG_CACHE_HOME") or pathlib.Path.home() / ".cache"
+    return pathlib.Path(base) / "hinf_cpp" / "casadi"
+
+
+def _import_casadi():
+    try:
+        import casadi
+    except ImportError as error:
+        raise ImportError("hinf_cpp.codegen needs CasADi: pip install casadi "
+                          "(or pip install 'hinf_cpp[symbolic]')") from error
+    return casadi
+
+
+def generate_c_source(functions: Sequence[casadi.Function], name: str) -> str:
+    """One C file holding every function, as CasADi's code generator writes it with the
+    options the C++ loader needs (GENERATOR_OPTIONS), plus the ABI functions."""
+    casadi = _import_casadi()
+    if not C_IDENTIFIER.fullmatch(name):
+        raise ValueError(f"the library name must be a C identifier (letters, digits, _), got {name!r}")
+    if isinstance(functions, casadi.Function) or not functions:
+        raise ValueError("functions must be a non-empty list of casadi.Function")
+    seen: set[str] = set()
+    for f in functions:
+        if not isinstance(f, casadi.Function):
+            raise ValueError(f"functions must be casadi.Function objects, got {type(f).__name__}")
+        if f.name() in seen:
+            raise ValueError(f"two functions are named {f.name()!r}: names are the symbols of the library")
+        seen.add(f.name())
+    generator = casadi.CodeGenerator(f"{name}.c", GENERATOR_OPTIONS)
+    for f in functions:
+        generator.add(f)
+    return generator.dump() + ABI_FUNCTIONS
+
+
+def _compiler_command(compiler: str | None) -> list[str]:
+    """The compiler as a command: the argument, else $CC, else cc (split like a shell would)."""
+    if compiler:
+        text, origin = compiler, "the compiler argument"
+    elif os.environ.get("CC"):
+        text, origin = os.environ["CC"], "$CC"
+    else:
+        text, origin = "cc", "the default"
+    command = shlex.split(text)
+    if not command:
+        raise CompilationError(f"the C compiler command from {origin} is empty ({text!r})")
+    found = shutil.which(command[0])
+    if found is None:
+        raise CompilationError(
+            f"C compiler {command[0]!r} not found (from {origin}): install one (Debian/Ubuntu: "
+            "apt-get install build-essential), or name it with $CC or the compiler argument")
+    return [found, *command[1:]]
+
+
+@functools.lru_cache(maxsize=None)
+def _compiler_identity(command: tuple[str, ...]) -> str:
+    """The compiler's resolved path and ``--version`` text: part of the cache key, so that
+    another compiler (or an upgrade) compiles anew."""
+    try:
+        done = subprocess.run([*command, "--version"], capture_output=True, text=True, timeout=60)
+        version = done.stdout
+    except (OSError, subprocess.TimeoutExpired) as error:
+        version = f"unknown ({error})"
+    return f"{os.path.realpath(command[0])} {' '.join(command[1:])}\n{version}"
+
+
+def _prepare_cache_dir(cache_dir: pathlib.Path) -> None:
+    try:
+        cache_dir.mkdir(parents=True, exist_ok=True)
+        probe = tempfile.NamedTemporaryFile(dir=cache_dir, prefix=".probe-", delete=True)
+        probe.close()
+    except OSError as error:
+        raise CacheDirectoryError(
+            f"cannot write compiled CasADi functions to the cache folder {cache_dir}: "
+            f"{error.strerror or error}. Set HINF_CPP_CACHE to a writable folder, or pass cache_dir=") from error
+
+
+def _write_atomically(path: pathlib.Path, write) -> None:
+    """Writes through write(temporary path) and renames the result into place: readers see the
+    old file or the new one, never a part. The temporary name is unique to this call (process
+    id and random digits) and write() creates the file, so its permissions follow the umask
+    like any new file's (mkstemp would make it private to the user)."""
+    temporary = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(8)}.tmp")
+    try:
+        write(temporary)
+        os.replace(temporary, path)
+    finally:
+        temporary.unlink(missing_ok=True)
+
+
+def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
+                             cache_dir: str | os.PathLike | None = None,
+                             compiler: str | None = None) -> CompiledLibrary:
+    """Generates one C file with every function and compiles it into a shared library in the
+    cache folder (see the module's documentation), or finds it there.
+
+    name: the library's name (a C identifier), the start of its file name. compiler: the C
+    compiler command (default $CC, else cc); arguments in it come after COMPILE_FLAGS. Raises CompilationError when the compiler is
+    missing or fails (with the end of its error output), CacheDirectoryError when the cache
+    folder cannot be written, ValueError for bad arguments."""
+    started = time.perf_counter()
+    source = generate_c_source(functions, name)
+    generate_seconds = time.perf_counter() - started
+
+    command = _compiler_command(compiler)
+    key_text = "\0".join([CACHE_FORMAT, _compiler_identity(tuple(command)), " ".join(COMPILE_FLAGS + LINK_LIBRARIES),
+                          source])
+    key = hashlib.sha256(key_text.encode()).hexdigest()[:32]
+    folder = pathlib.Path(cache_dir) if cache_dir is not None else default_cache_dir()
+    library = folder / f"{name}-{key}.so"
+    if library.exists():
+        return CompiledLibrary(library, True, generate_seconds, 0.0)
+
+    _prepare_cache_dir(folder)
+    started = time.perf_counter()
+    # The source is kept beside the library (same key), for reading and debugging.
+    c_file = library.with_suffix(".c")
+    _write_atomically(c_file, lambda temporary: temporary.write_text(source))
+
+    def compile_to(output: pathlib.Path) -> None:
+        arguments = [command[0], *COMPILE_FLAGS, *command[1:], "-o", str(output), str(c_file), *LINK_LIBRARIES]
+        try:
+            done = subprocess.run(arguments, capture_output=True, text=True, timeout=3600)
+        except OSError as error:
+            raise CompilationError(f"cannot run the C compiler {command[0]}: {error}") from error
+        if done.returncode != 0:
+            tail = "\n".join((done.stderr or done.stdout).strip().splitlines()[-30:])
+            raise CompilationError(
+                f"the C compiler failed (exit status {done.returncode}) on the generated code of '{name}' "
+                f"({c_file}):\n$ {shlex.join(arguments)}\n{tail or '(no output)'}")
+
+    _write_atomically(library, compile_to)
+    return CompiledLibrary(library, False, generate_seconds, time.perf_counter() - started)
