@@ -21,6 +21,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <tuple>
@@ -35,6 +36,7 @@
 #include "hinf/errors.hpp"
 #include "hinf/fleet.hpp"
 #include "hinf/generated_function.hpp"
+#include "hinf/generated_model.hpp"
 #include "hinf/metrics.hpp"
 #include "hinf/model.hpp"
 #include "hinf/output_feedback.hpp"
@@ -1420,6 +1422,39 @@ A model implemented in Python does not pickle.)doc")
   bind_vehicle<PlanarVtol, PlanarVtolParameters>(
       m, "PlanarVtol", "Planar VTOL aircraft of Hauser, Sastry and Meyer (1992) (vehicles.hpp)");
   bind_vehicle<Auv, AuvParameters>(m, "Auv", "Underactuated AUV in the horizontal plane (vehicles.hpp)");
+
+  py::class_<GeneratedModel, Model, py::smart_holder>(
+      m, "GeneratedModel",
+      "A model evaluated by CasADi-generated C code (generated_model.hpp; build it with "
+      "hinf_cpp.symbolic.SymbolicModel)")
+      .def(py::init<const std::string&, const std::map<std::string, double>&>(), py::arg("metadata_path"),
+           py::arg("parameters") = std::map<std::string, double>{})
+      .def("metadata_path", &GeneratedModel::metadata_path)
+      .def("library_path", &GeneratedModel::library_path)
+      .def("parameter_names", &GeneratedModel::parameter_names)
+      .def("parameters", &GeneratedModel::parameters)
+      .def(py::pickle(
+          [](const GeneratedModel& model) { return py::make_tuple(model.metadata_path(), model.parameters()); },
+          [](const py::tuple& state) {
+            check_state(state, 2, "GeneratedModel");
+            return std::make_shared<GeneratedModel>(state[0].cast<std::string>(),
+                                                    state[1].cast<std::map<std::string, double>>());
+          }));
+
+  py::class_<ModelStructure>(m, "ModelStructure", "What a model says about itself (model.hpp)")
+      .def(py::init<>())
+      .def_readwrite("name", &ModelStructure::name)
+      .def_readwrite("n", &ModelStructure::n)
+      .def_readwrite("m", &ModelStructure::m)
+      .def_readwrite("nw", &ModelStructure::nw)
+      .def_readwrite("state_names", &ModelStructure::state_names)
+      .def_readwrite("position_indices", &ModelStructure::position_indices)
+      .def_readwrite("heading_index", &ModelStructure::heading_index)
+      .def_readwrite("noise_channels", &ModelStructure::noise_channels)
+      .def_readwrite("constant_input_matrices", &ModelStructure::constant_input_matrices)
+      .def_readwrite("state_dependent_inputs", &ModelStructure::state_dependent_inputs);
+  m.def("check_model_structure", &check_structure, py::arg("structure"),
+        "ValueError naming the first fault of a model's structure (names per state, indices in range)");
 
   // ---- options ----
   bind_options<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)");

@@ -18,6 +18,7 @@
 #include <toml++/toml.h>
 
 #include "hinf/errors.hpp"
+#include "hinf/generated_model.hpp"
 #include "hinf/ship.hpp"
 #include "hinf/vehicles.hpp"
 
@@ -251,6 +252,7 @@ const std::vector<std::pair<std::string, std::vector<std::string>>>& model_kind_
   static const std::vector<std::pair<std::string, std::vector<std::string>>> kinds = {
       {"ship", {"m_u", "m_v", "m_r", "d_u", "d_v", "d_r"}},
       {"linear", {"A", "B", "D", "C"}},
+      {"casadi", {"file", "parameters"}},
       {"fossen_vessel", {"preset", "M", "D"}},
       {"hovercraft", {"d", "d_r"}},
       {"pvtol", {"g", "epsilon"}},
@@ -352,6 +354,26 @@ ModelPtr parse_vehicle_model(TableReader& r, const std::string& kind, const std:
 ModelPtr parse_model(const toml::table& table, const std::string& source) {
   std::string kind;
   TableReader r = model_reader(table, source, kind);
+  if (kind == "casadi") {
+    // The model's description (model.json, written by hinf_cpp.symbolic.SymbolicModel.export),
+    // relative to the scenario file's folder.
+    std::filesystem::path file = r.string("file");
+    std::error_code ec;
+    if (file.is_relative() && std::filesystem::is_regular_file(source, ec))
+      file = std::filesystem::path(source).parent_path() / file;
+    std::map<std::string, double> parameters;
+    if (const toml::node* node = r.get("parameters")) {
+      const toml::table* values = node->as_table();
+      if (values == nullptr) r.fail("parameters", "expected a table of name = number, got " + type_name(*node));
+      for (auto&& [key, value] : *values)
+        parameters[std::string(key.str())] = r.as_number(value, str_cat("parameters.", key.str()));
+    }
+    try {
+      return std::make_shared<GeneratedModel>(file.lexically_normal().string(), parameters);
+    } catch (const InputError& e) {
+      r.fail("file", e.what());
+    }
+  }
   if (kind == "ship") {
     ShipParameters p;
     p.m_u = r.number_or("m_u", p.m_u);
@@ -801,8 +823,15 @@ toml::table model_toml(const Model& model) {
     return table;
   }
   if (std::optional<toml::table> vehicle = vehicle_model_toml(model)) return *vehicle;
+  if (const auto* generated = dynamic_cast<const GeneratedModel*>(&model)) {
+    toml::table parameters;
+    for (const auto& [name, value] : generated->parameters()) parameters.insert(name, value);
+    return toml::table{{"kind", "casadi"},
+                       {"file", std::filesystem::absolute(generated->metadata_path()).lexically_normal().string()},
+                       {"parameters", parameters}};
+  }
   throw InputError(str_cat("the model '", model.name(), "' has no scenario-file form (only the built-in models",
-                           " have one: the ship, linear models and the vehicles of vehicles.hpp)"));
+                           " and kind = \"casadi\" have one; a model implemented in Python has none)"));
 }
 
 }  // namespace

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     Base class of the numerical failures of hinf_cpp.
@@ -446,37 +446,57 @@ class VectorSignal:
         ...
 class Model:
     """
-    Control-affine model dq/dt = f(t, q) + B(t) u + D(t) w (paper eq. 7).
-    Subclass it in Python and implement n(), m(), nw(), f(t, q), dfdq(t, q), B(t), D(t). Its structure
-    (n, m, nw, name, state_names, position_indices, heading_index, noise_channels,
-    constant_input_matrices) is read once, when the library first needs it, and validated; it must not
-    change afterwards. What f, dfdq, B, D, C and error_split return is checked at every call.
+    Control-affine model dq/dt = f(t, q) + G(t, q) u + D(t, q) w (paper eq. 7; model.hpp).
+    Subclass it in Python and implement n(), m(), nw(), f(t, q), G(t, q), D(t, q), and if you can
+    dfdq(t, q) (else a numerical Jacobian is used: the complex step when f accepts complex q, else
+    central differences; jacobian_method() says which). A G or D that depends on q needs
+    state_dependent_inputs() -> True and constant_input_matrices() -> False (dGudq(t, q, u) =
+    d/dq [G(t, q) u] is optional: central differences otherwise). Its structure (n, m, nw, name,
+    state_names, position_indices, heading_index, noise_channels, constant_input_matrices,
+    state_dependent_inputs) is read once, when the library first needs it, and validated; it must not
+    change afterwards. What f, dfdq, G, D, C and error_split return is checked at every call.
     A model implemented in Python does not pickle.
     """
-    def B(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
-        ...
     def C(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         """
         measurement matrix of y = C q + E w (paper eq. 25)
         """
-    def D(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
-        ...
+    def D(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        disturbance matrix D(t, q) (n x nw)
+        """
+    def G(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        input matrix G(t, q) (n x m)
+        """
     def __getstate__(self) -> tuple:
         ...
     def __init__(self) -> None:
         ...
     def constant_input_matrices(self) -> bool:
         ...
+    def dGudq(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        d/dq [G(t, q) u] (n x n; zero when G does not depend on q)
+        """
     def dfdq(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         ...
-    def error_split(self, t: typing.SupportsFloat | typing.SupportsIndex, q_d: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], q_e: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
+    def error_split(self, t: typing.SupportsFloat | typing.SupportsIndex, q_d: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], q_e: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
         """
-        (A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31)
+        (A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31; f_e includes G(q) u_d - G(q_d) u_d)
         """
     def f(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         ...
     def heading_index(self) -> int:
         ...
+    def jacobian_method(self) -> str:
+        """
+        how dfdq is obtained: analytic, automatic differentiation, complex step or central differences
+        """
+    def linearize(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        d/dq [f(t, q) + G(t, q) u] (A_e(t) at q_d(t), u_d(t))
+        """
     def m(self) -> int:
         ...
     def n(self) -> int:
@@ -495,6 +515,8 @@ class Model:
         """
         L with |f_e - A_e q_e| <= L |q_e|^2 for |q_e| <= radius, or NaN if the model has none
         """
+    def state_dependent_inputs(self) -> bool:
+        ...
     def state_names(self) -> list[str]:
         ...
 class ShipParameters:
@@ -567,6 +589,8 @@ class LinearModel(Model):
     """
     def A(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         ...
+    def B(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        ...
     def __getstate__(self) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]]:
         ...
     def __init__(self, A: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], B: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], D: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], C: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ...) -> None:
@@ -594,6 +618,287 @@ class FleetModel(Model):
     def count(self) -> int:
         ...
     def member(self) -> Model:
+        ...
+class FossenVesselParameters:
+    """
+    M (mass) and D (damping) of the 3-DOF vessel in Fossen's form; defaults: the supply vessel (bis units)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('M', 'D')
+    @staticmethod
+    def supply_vessel() -> FossenVesselParameters:
+        """
+        Fossen, Sagatun and Sorensen (1996), in bis units (the defaults)
+        """
+    def __eq__(self, arg0: FossenVesselParameters) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, M: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., D: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def D(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        ...
+    @D.setter
+    def D(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def M(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        ...
+    @M.setter
+    def M(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+class HovercraftParameters:
+    """
+    Damping per unit mass (d) and inertia (d_r) of the planar hovercraft (1/s)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('d', 'd_r')
+    def __eq__(self, arg0: HovercraftParameters) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, d: typing.SupportsFloat | typing.SupportsIndex = 0.2, d_r: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def d(self) -> float:
+        ...
+    @d.setter
+    def d(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def d_r(self) -> float:
+        ...
+    @d_r.setter
+    def d_r(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class PlanarVtolParameters:
+    """
+    Gravity g and coupling epsilon of the planar VTOL (normalized units)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('g', 'epsilon')
+    def __eq__(self, arg0: PlanarVtolParameters) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, g: typing.SupportsFloat | typing.SupportsIndex = 1.0, epsilon: typing.SupportsFloat | typing.SupportsIndex = 0.1) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def epsilon(self) -> float:
+        ...
+    @epsilon.setter
+    def epsilon(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def g(self) -> float:
+        ...
+    @g.setter
+    def g(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class AuvParameters:
+    """
+    Masses (kg, kg m^2) and drag coefficients of the AUV; defaults: the Sirene AUV
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('m11', 'm22', 'm33', 'X_u', 'X_uu', 'Y_v', 'Y_vv', 'N_r', 'N_rr')
+    @staticmethod
+    def sirene() -> AuvParameters:
+        """
+        Aguiar and Pascoal (2007) (the defaults)
+        """
+    def __eq__(self, arg0: AuvParameters) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, m11: typing.SupportsFloat | typing.SupportsIndex = 215.0, m22: typing.SupportsFloat | typing.SupportsIndex = 265.0, m33: typing.SupportsFloat | typing.SupportsIndex = 80.0, X_u: typing.SupportsFloat | typing.SupportsIndex = 70.0, X_uu: typing.SupportsFloat | typing.SupportsIndex = 100.0, Y_v: typing.SupportsFloat | typing.SupportsIndex = 100.0, Y_vv: typing.SupportsFloat | typing.SupportsIndex = 200.0, N_r: typing.SupportsFloat | typing.SupportsIndex = 50.0, N_rr: typing.SupportsFloat | typing.SupportsIndex = 100.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def N_r(self) -> float:
+        ...
+    @N_r.setter
+    def N_r(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def N_rr(self) -> float:
+        ...
+    @N_rr.setter
+    def N_rr(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def X_u(self) -> float:
+        ...
+    @X_u.setter
+    def X_u(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def X_uu(self) -> float:
+        ...
+    @X_uu.setter
+    def X_uu(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def Y_v(self) -> float:
+        ...
+    @Y_v.setter
+    def Y_v(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def Y_vv(self) -> float:
+        ...
+    @Y_vv.setter
+    def Y_vv(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def m11(self) -> float:
+        ...
+    @m11.setter
+    def m11(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def m22(self) -> float:
+        ...
+    @m22.setter
+    def m22(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def m33(self) -> float:
+        ...
+    @m33.setter
+    def m33(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class FossenVessel(Model):
+    """
+    3-DOF underactuated surface vessel M nu' + C(nu) nu + D nu = tau (vehicles.hpp)
+    """
+    def __getstate__(self) -> tuple[FossenVesselParameters]:
+        ...
+    def __init__(self, parameters: FossenVesselParameters = ...) -> None:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def parameters(self) -> FossenVesselParameters:
+        ...
+class Hovercraft(Model):
+    """
+    Planar hovercraft in inertial coordinates (vehicles.hpp)
+    """
+    def __getstate__(self) -> tuple[HovercraftParameters]:
+        ...
+    def __init__(self, parameters: HovercraftParameters = ...) -> None:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def parameters(self) -> HovercraftParameters:
+        ...
+class PlanarVtol(Model):
+    """
+    Planar VTOL aircraft of Hauser, Sastry and Meyer (1992) (vehicles.hpp)
+    """
+    def __getstate__(self) -> tuple[PlanarVtolParameters]:
+        ...
+    def __init__(self, parameters: PlanarVtolParameters = ...) -> None:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def parameters(self) -> PlanarVtolParameters:
+        ...
+class Auv(Model):
+    """
+    Underactuated AUV in the horizontal plane (vehicles.hpp)
+    """
+    def __getstate__(self) -> tuple[AuvParameters]:
+        ...
+    def __init__(self, parameters: AuvParameters = ...) -> None:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def parameters(self) -> AuvParameters:
+        ...
+class GeneratedModel(Model):
+    """
+    A model evaluated by CasADi-generated C code (generated_model.hpp; build it with hinf_cpp.symbolic.SymbolicModel)
+    """
+    def __getstate__(self) -> tuple[str, dict[str, float]]:
+        ...
+    def __init__(self, metadata_path: str, parameters: collections.abc.Mapping[str, typing.SupportsFloat | typing.SupportsIndex] = {}) -> None:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def library_path(self) -> str:
+        ...
+    def metadata_path(self) -> str:
+        ...
+    def parameter_names(self) -> list[str]:
+        ...
+    def parameters(self) -> dict[str, float]:
+        ...
+class ModelStructure:
+    """
+    What a model says about itself (model.hpp)
+    """
+    constant_input_matrices: bool
+    name: str
+    state_dependent_inputs: bool
+    def __init__(self) -> None:
+        ...
+    @property
+    def heading_index(self) -> int:
+        ...
+    @heading_index.setter
+    def heading_index(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def m(self) -> int:
+        ...
+    @m.setter
+    def m(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def n(self) -> int:
+        ...
+    @n.setter
+    def n(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def noise_channels(self) -> list[int]:
+        ...
+    @noise_channels.setter
+    def noise_channels(self, arg0: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex]) -> None:
+        ...
+    @property
+    def nw(self) -> int:
+        ...
+    @nw.setter
+    def nw(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def position_indices(self) -> list[int]:
+        ...
+    @position_indices.setter
+    def position_indices(self, arg0: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex]) -> None:
+        ...
+    @property
+    def state_names(self) -> list[str]:
+        ...
+    @state_names.setter
+    def state_names(self, arg0: collections.abc.Sequence[str]) -> None:
         ...
 class SolverOptions:
     """
@@ -769,7 +1074,17 @@ class Trajectory:
     Desired trajectory of paper eq. (8) with dense output
     """
     def A_e(self, t: typing.Any) -> typing.Any:
-        ...
+        """
+        d/dq [f + G u_d] at q_d(t)
+        """
+    def B_e(self, t: typing.Any) -> typing.Any:
+        """
+        G(t, q_d(t))
+        """
+    def D_e(self, t: typing.Any) -> typing.Any:
+        """
+        D(t, q_d(t))
+        """
     def __getstate__(self) -> tuple[Model, typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], VectorSignal, float, float, PiecewisePolynomial, StepStats]:
         ...
     def __init__(self, model: Model, q_d0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Any, t0: typing.SupportsFloat | typing.SupportsIndex, tf: typing.SupportsFloat | typing.SupportsIndex, options: TrajectoryOptions = ...) -> None:
@@ -1684,6 +1999,10 @@ class GeneratedFunction:
 def certify(Z: RiccatiSolution, kappa: typing.Any, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> Certificates:
     """
     The certificates of paper §3 for a design Z (its gamma), the gain scaling kappa(t) and the weight Q
+    """
+def check_model_structure(structure: ModelStructure) -> None:
+    """
+    ValueError naming the first fault of a model's structure (names per state, indices in range)
     """
 def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> Metrics:
     ...

@@ -27,6 +27,7 @@ import math
 import os
 import pathlib
 import sys
+import time
 import warnings
 
 from . import _core
@@ -320,6 +321,48 @@ def cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+def load_symbolic_model(spec: str):
+    """The SymbolicModel made by `spec`, "module:callable" or "path/to/file.py:callable"."""
+    import importlib
+    import importlib.util
+
+    from .symbolic import SymbolicModel
+
+    where, sep, name = spec.rpartition(":")
+    if not sep or not where or not name:
+        raise ValueError(f"'{spec}': name the model as MODULE:CALLABLE or FILE.py:CALLABLE")
+    if where.endswith(".py"):
+        path = pathlib.Path(where)
+        if not path.is_file():
+            raise ValueError(f"'{where}': no such Python file")
+        module_spec = importlib.util.spec_from_file_location(path.stem, path)
+        module = importlib.util.module_from_spec(module_spec)
+        module_spec.loader.exec_module(module)
+    else:
+        try:
+            module = importlib.import_module(where)
+        except ImportError as e:
+            raise ValueError(f"'{where}': cannot import it ({e})") from e
+    factory = getattr(module, name, None)
+    if not callable(factory):
+        raise ValueError(f"'{spec}': the module has no callable '{name}'")
+    model = factory()
+    if not isinstance(model, SymbolicModel):
+        raise ValueError(f"'{spec}' returned {type(model).__name__}, not a hinf_cpp.symbolic.SymbolicModel")
+    return model
+
+
+def cmd_model_export(args: argparse.Namespace) -> int:
+    model = load_symbolic_model(args.model)
+    started = time.perf_counter()
+    built = model.build()
+    path = model.export(args.out)
+    how = "from the cache" if built.cache_hit else (
+        f"generated in {built.generate_seconds:.2f} s, compiled in {built.compile_seconds:.2f} s")
+    print(f"{path} ({how}; {time.perf_counter() - started:.2f} s in all)")
+    return 0
+
+
 def cmd_paper(args: argparse.Namespace) -> int:
     from . import scenario_path
     from .compare import compare
@@ -491,6 +534,14 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--threads", type=int, default=2)
     _add_outputs(sweep, json="the sweep", plot="the figure", quiet=True)
     sweep.set_defaults(handler=cmd_sweep_gamma)
+
+    model = sub.add_parser("model", help="symbolic models (CasADi): export one for scenario files")
+    model_sub = model.add_subparsers(dest="model_command", required=True)
+    export = model_sub.add_parser("export", help="generate, compile and write a model's folder (model.json, "
+                                                 "the library and its C source) for [model] kind = \"casadi\"")
+    export.add_argument("model", help="MODULE:CALLABLE or FILE.py:CALLABLE returning a hinf_cpp.symbolic.SymbolicModel")
+    export.add_argument("--out", required=True, help="output folder")
+    export.set_defaults(handler=cmd_model_export)
 
     paper = sub.add_parser("paper", help="the paper's runs: figures, results files, metrics and the "
                                          "comparison of the three laws")
