@@ -1885,4 +1885,10 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
   m.def("results_csv", &results_csv, py::arg("result"), "The time series on the output grid (CSV, one row per time)");
 
   bind_generated_function(m);
+
+  // [model] kind = "python" in scenario files: the model is made by hinf_cpp.scenario.
+  set_python_model_hook([](const std::string& callable, const std::string& source) -> ModelPtr {
+    py::gil_scoped_acquire gil;
+    return py::module_::import("hinf_cpp.scenario").attr("model_from_callable")(callable, source).cast<ModelPtr>();
+  });
 }

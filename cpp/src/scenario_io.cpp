@@ -253,6 +253,7 @@ const std::vector<std::pair<std::string, std::vector<std::string>>>& model_kind_
       {"ship", {"m_u", "m_v", "m_r", "d_u", "d_v", "d_r"}},
       {"linear", {"A", "B", "D", "C"}},
       {"casadi", {"file", "parameters"}},
+      {"python", {"callable"}},
       {"fossen_vessel", {"preset", "M", "D"}},
       {"hovercraft", {"d", "d_r"}},
       {"pvtol", {"g", "epsilon"}},
@@ -351,9 +352,23 @@ ModelPtr parse_vehicle_model(TableReader& r, const std::string& kind, const std:
 
 // ---- end of the built-in vehicles ----
 
+PythonModelHook& python_model_hook() {
+  static PythonModelHook hook;
+  return hook;
+}
+
 ModelPtr parse_model(const toml::table& table, const std::string& source) {
   std::string kind;
   TableReader r = model_reader(table, source, kind);
+  if (kind == "python") {
+    const std::string callable = r.string("callable");
+    if (!python_model_hook())
+      r.fail("kind", "\"python\" names a model made by Python code (" + callable +
+                         "): run this scenario with hinf-cpp, or export the model as kind = \"casadi\" for hinf-sim");
+    ModelPtr model = python_model_hook()(callable, source);
+    if (model == nullptr) r.fail("callable", "'" + callable + "' made no model");
+    return model;
+  }
   if (kind == "casadi") {
     // The model's description (model.json, written by hinf_cpp.symbolic.SymbolicModel.export),
     // relative to the scenario file's folder.
@@ -835,6 +850,8 @@ toml::table model_toml(const Model& model) {
 }
 
 }  // namespace
+
+void set_python_model_hook(PythonModelHook hook) { python_model_hook() = std::move(hook); }
 
 std::string scenario_toml(const Scenario& s) {
   require(s.model != nullptr, "the scenario has no model");

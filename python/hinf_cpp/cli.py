@@ -323,30 +323,10 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def load_symbolic_model(spec: str):
     """The SymbolicModel made by `spec`, "module:callable" or "path/to/file.py:callable"."""
-    import importlib
-    import importlib.util
-
+    from .scenario import resolve_callable
     from .symbolic import SymbolicModel
 
-    where, sep, name = spec.rpartition(":")
-    if not sep or not where or not name:
-        raise ValueError(f"'{spec}': name the model as MODULE:CALLABLE or FILE.py:CALLABLE")
-    if where.endswith(".py"):
-        path = pathlib.Path(where)
-        if not path.is_file():
-            raise ValueError(f"'{where}': no such Python file")
-        module_spec = importlib.util.spec_from_file_location(path.stem, path)
-        module = importlib.util.module_from_spec(module_spec)
-        module_spec.loader.exec_module(module)
-    else:
-        try:
-            module = importlib.import_module(where)
-        except ImportError as e:
-            raise ValueError(f"'{where}': cannot import it ({e})") from e
-    factory = getattr(module, name, None)
-    if not callable(factory):
-        raise ValueError(f"'{spec}': the module has no callable '{name}'")
-    model = factory()
+    model = resolve_callable(spec)()
     if not isinstance(model, SymbolicModel):
         raise ValueError(f"'{spec}' returned {type(model).__name__}, not a hinf_cpp.symbolic.SymbolicModel")
     return model

@@ -8,7 +8,10 @@ messages. A dictionary (the parsed form of a file) is written back to TOML text 
 
 from __future__ import annotations
 
+import importlib
+import importlib.util
 import os
+import pathlib
 from typing import Any
 
 import tomli_w
@@ -21,6 +24,48 @@ __all__ = ["load_scenario", "scenario_from_dict", "signal_from_spec"]
 def load_scenario(path: str | os.PathLike) -> _core.Scenario:
     """Reads a scenario file; anything wrong with it raises ValueError naming the file and the key."""
     return _core.load_scenario_toml(os.fspath(path))
+
+
+def resolve_callable(spec: str, base: str | os.PathLike | None = None):
+    """The callable named by `spec`: "package.module:name", or "path/to/file.py:name" (a relative
+    path is taken from the folder `base`, else the current one). ValueError naming what is wrong."""
+    where, sep, name = str(spec).rpartition(":")
+    if not sep or not where or not name:
+        raise ValueError(f"'{spec}': name it as MODULE:CALLABLE or FILE.py:CALLABLE")
+    if where.endswith(".py"):
+        path = pathlib.Path(where)
+        if not path.is_absolute() and base is not None:
+            path = pathlib.Path(base) / path
+        if not path.is_file():
+            raise ValueError(f"'{spec}': no Python file {path}")
+        module_spec = importlib.util.spec_from_file_location(f"hinf_cpp_user_{path.stem}", path)
+        module = importlib.util.module_from_spec(module_spec)
+        module_spec.loader.exec_module(module)
+    else:
+        try:
+            module = importlib.import_module(where)
+        except ImportError as error:
+            raise ValueError(f"'{spec}': cannot import {where} ({error})") from error
+    factory = getattr(module, name, None)
+    if not callable(factory):
+        raise ValueError(f"'{spec}': {where} has no callable '{name}'")
+    return factory
+
+
+def model_from_callable(spec: str, source: str = "") -> _core.Model:
+    """The model of [model] kind = "python" (Python-only: hinf-sim cannot run it): the callable
+    `spec` is called with no arguments and returns an hc.Model (a subclass written in Python,
+    or a built-in one) or a hinf_cpp.symbolic.SymbolicModel (compiled, cached). A relative file
+    path is taken from the scenario file's folder."""
+    base = pathlib.Path(source).parent if source and pathlib.Path(source).is_file() else None
+    model = resolve_callable(spec, base)()
+    if isinstance(model, _core.Model):
+        return model
+    from .symbolic import SymbolicModel
+
+    if isinstance(model, SymbolicModel):
+        return model.compile()
+    raise ValueError(f"'{spec}' returned {type(model).__name__}, not an hc.Model or a SymbolicModel")
 
 
 def _toml_text(document: Any, source: str) -> str:

@@ -263,3 +263,97 @@ def test_a_wrong_error_split_is_refused(cache_dir):
                       error_split=lambda q_d, u_d, q_e: (ca.SX.zeros(2, 2), ca.SX.zeros(2, 1)))
     with pytest.raises(ValueError, match="error_split is not a decomposition of the error dynamics"):
         model.compile(cache_dir=cache_dir)
+
+
+# ---- [model] kind = "python": Python-only ----
+
+PYTHON_MODELS = '''
+import casadi as ca
+import numpy as np
+import hinf_cpp as hc
+from hinf_cpp.symbolic import SymbolicModel
+
+
+class Integrator(hc.Model):
+    """dp/dt = v, dv/dt = u + w (positions in p)."""
+    def n(self): return 2
+    def m(self): return 1
+    def nw(self): return 1
+    def f(self, t, q): return np.array([q[1], 0.0])
+    def G(self, t, q): return np.array([[0.0], [1.0]])
+    def D(self, t, q): return np.array([[0.0], [1.0]])
+    def position_indices(self): return [0]
+
+
+def subclass():
+    return Integrator()
+
+
+def symbolic():
+    q = ca.SX.sym("q", 2)
+    return SymbolicModel("integrator", state=q, inputs=1, f=ca.vertcat(q[1], 0), G=ca.DM([[0], [1]]),
+                         D=ca.DM([[0], [1]]), position_indices=[0])
+
+
+def not_a_model():
+    return 42
+'''
+
+INTEGRATOR_SCENARIO = """
+[model]
+kind = "python"
+callable = "{callable}"
+
+[horizon]
+tf = 10.0
+
+[desired]
+q0 = [0.0, 1.0]
+u1 = 0.0
+
+[initial]
+q0 = [1.0, 1.0]
+
+[controller]
+gamma = 5.0
+"""
+
+
+@pytest.mark.parametrize("factory, model_class", [("subclass", "Model"), ("symbolic", "GeneratedModel")])
+def test_python_kind_in_hinf_cpp(tmp_path, factory, model_class, monkeypatch):
+    monkeypatch.setenv("HINF_CPP_CACHE", str(tmp_path / "cache"))
+    (tmp_path / "my_models.py").write_text(PYTHON_MODELS)
+    path = tmp_path / "s.toml"
+    path.write_text(INTEGRATOR_SCENARIO.format(callable=f"my_models.py:{factory}"))
+    scenario = hc.load_scenario(path)
+    assert type(scenario.model).__name__ in ("Integrator", model_class)
+    result = hc.run_scenario(scenario)
+    assert result.metrics.final_position_error < 0.1  # from 1 m: the loop converges
+    out = tmp_path / "cpp.json"
+    run = subprocess.run([str(BIN / "hinf-cpp"), "run", str(path), "--json", str(out)], capture_output=True,
+                         text=True, timeout=300, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+
+
+@pytest.mark.skipif(not (BIN / "hinf-sim").exists(), reason="hinf-sim is not installed next to this Python")
+def test_python_kind_is_refused_by_hinf_sim(tmp_path):
+    path = tmp_path / "s.toml"
+    path.write_text(INTEGRATOR_SCENARIO.format(callable="my_models.py:subclass"))
+    run = subprocess.run([str(BIN / "hinf-sim"), str(path)], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2
+    assert len(run.stderr.splitlines()) == 1 and "run this scenario with hinf-cpp" in run.stderr
+
+
+@pytest.mark.parametrize("callable_, message", [
+    ("my_models.py:not_a_model", "returned int, not an hc.Model or a SymbolicModel"),
+    ("my_models.py:absent", "has no callable 'absent'"),
+    ("missing.py:f", "no Python file"),
+    ("no_such_module_anywhere:f", "cannot import no_such_module_anywhere"),
+    ("nocolon", "name it as MODULE:CALLABLE or FILE.py:CALLABLE"),
+])
+def test_python_kind_errors(tmp_path, callable_, message):
+    (tmp_path / "my_models.py").write_text(PYTHON_MODELS)
+    path = tmp_path / "s.toml"
+    path.write_text(INTEGRATOR_SCENARIO.format(callable=callable_))
+    with pytest.raises(ValueError, match=message):
+        hc.load_scenario(path)

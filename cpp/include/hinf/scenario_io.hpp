@@ -1,6 +1,7 @@
 // Scenario files (TOML, docs/scenarios.md) and the results files (JSON, CSV; docs/results.md).
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "hinf/scenario.hpp"
@@ -25,6 +26,13 @@ Scenario load_scenario_toml(const std::string& path);
 // equal scenario (numbers written exactly). A model or signal that has no file form (a model
 // or a signal implemented in Python) is an InputError naming it.
 std::string scenario_toml(const Scenario& scenario);
+// [model] kind = "python", callable = "module:function" names a model made by Python code
+// (Python-only, docs/scenarios.md). The Python package installs the hook that makes it; without
+// one (hinf-sim) such a scenario is an InputError that says to run it with hinf-cpp. The hook
+// gets the callable's name and the scenario's source (for relative file paths).
+using PythonModelHook = std::function<ModelPtr(const std::string& callable, const std::string& source)>;
+void set_python_model_hook(PythonModelHook hook);
+
 // A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 // scenario), e.g. "kappa = { offset = 1.0 }".
 Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source);
