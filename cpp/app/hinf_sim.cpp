@@ -86,6 +86,9 @@ int main(int argc, char** argv) {
               << ", L2 gain = " << m.l2_gain;
     if (result.gamma_star) std::cout << ", gamma* = " << *result.gamma_star;
     std::cout << " (total " << result.timing.total * 1e3 << " ms)\n";
+    // Warnings after a success only: a failure is one line on stderr with nothing before it.
+    for (const std::string& warning : hinf::scenario_warnings(scenario))
+      std::cerr << "hinf-sim: warning: " << scenario_path << ": " << warning << "\n";
     if (result.simulation.status != hinf::RunStatus::Completed)
       std::cerr << "hinf-sim: warning: the run " << hinf::to_string(result.simulation.status) << ": "
                 << result.simulation.status_message << "\n";

@@ -85,6 +85,7 @@ HINF_ENUM_CASTER(FilterLinearization);
 HINF_ENUM_CASTER(CouplingPolicy);
 HINF_ENUM_CASTER(GammaCondition);
 HINF_ENUM_CASTER(NewtonSystems);
+HINF_ENUM_CASTER(Interpolation);
 #undef HINF_ENUM_CASTER
 
 }  // namespace pybind11::detail
@@ -1001,15 +1002,21 @@ void check_state(const py::tuple& state, std::size_t size, const char* type) {
   require(state.size() == size, "a pickled ", type, " has ", size, " items, got ", state.size());
 }
 
-// (offset, harmonics) or (table_t, table_values).
+// ("harmonics", offset, harmonics) or ("table", table_t, table_values, interpolation).
 py::tuple signal_state(const Signal& s) {
-  if (s.is_table()) return py::make_tuple<py::return_value_policy::copy>("table", s.table_t(), s.table_values());
+  if (s.is_table())
+    return py::make_tuple<py::return_value_policy::copy>("table", s.table_t(), s.table_values(),
+                                                         to_string(s.interpolation()));
   return py::make_tuple<py::return_value_policy::copy>("harmonics", s.offset(), s.harmonics());
 }
 Signal signal_from_state(const py::tuple& state) {
+  require(state.size() > 0, "a pickled Signal has no items");
+  if (state[0].cast<std::string>() == "table") {
+    check_state(state, 4, "Signal table");
+    return Signal::table(state[1].cast<std::vector<double>>(), state[2].cast<std::vector<double>>(),
+                         from_string<Interpolation>(state[3].cast<std::string>()));
+  }
   check_state(state, 3, "Signal");
-  if (state[0].cast<std::string>() == "table")
-    return Signal::table(state[1].cast<std::vector<double>>(), state[2].cast<std::vector<double>>());
   return Signal(state[1].cast<double>(), state[2].cast<std::vector<Harmonic>>());
 }
 
@@ -1228,6 +1235,7 @@ PYBIND11_MODULE(_core, m) {
                             "What a violation of rho(Sigma Z) < gamma^2 does (output_feedback.hpp)");
   bind_enum<GammaCondition>(m, "GammaCondition", "The condition a gamma fails (analysis.hpp)");
   bind_enum<NewtonSystems>(m, "NewtonSystems", "How BDF solves the Newton systems of a Riccati equation (solver_options.hpp)");
+  bind_enum<Interpolation>(m, "Interpolation", "How a table Signal is interpolated between its points (signal.hpp)");
 
   // ---- signals ----
   bind_options<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal");
@@ -1236,8 +1244,17 @@ PYBIND11_MODULE(_core, m) {
       .def(py::init<>())
       .def(py::init<double>(), py::arg("constant"))
       .def(py::init<double, std::vector<Harmonic>>(), py::arg("offset"), py::arg("harmonics"))
-      .def_static("table", &Signal::table, py::arg("t"), py::arg("values"),
-                  "Natural cubic spline through (t_i, v_i); at least two points, strictly increasing t")
+      .def_static("table", [](std::vector<double> t, std::vector<double> values, Interpolation interpolation) {
+            Signal signal = Signal::table(std::move(t), std::move(values), interpolation);
+            const std::string warning = overshoot_warning(signal, "Signal.table");
+            if (!warning.empty() && PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0)
+              throw py::error_already_set();  // warnings turned into errors
+            return signal;
+          },
+          py::arg("t"), py::arg("values"), py::arg("interpolation") = Interpolation::Pchip,
+          "The table (t_i, v_i), interpolated by \"pchip\" (default, no overshoot), \"linear\", \"hold\" "
+          "(the value of the last point at or before t) or \"cubic\" (natural spline; a UserWarning when it "
+          "overshoots the values' range); at least two points, strictly increasing t")
       .def("__call__", [](const Signal& s, const py::object& t) {
         return vectorize(t, 0, 0, [&s](double tt, double* out) { out[0] = s(tt); });
       }, py::arg("t"))
@@ -1249,10 +1266,15 @@ PYBIND11_MODULE(_core, m) {
       .def("harmonics", &Signal::harmonics)
       .def("table_t", &Signal::table_t)
       .def("table_values", &Signal::table_values)
+      .def("interpolation", &Signal::interpolation)
+      .def("overshoot", &Signal::overshoot,
+           "(how far a table's interpolant leaves the range of its values, where); (0, t_first) inside it")
       .def("describe", &Signal::describe)
       .def("__repr__", [](const Signal& s) { return "Signal(" + s.describe() + ")"; })
       .def(py::pickle(&signal_state, &signal_from_state));
   py::implicitly_convertible<double, Signal>();
+  m.def("overshoot_warning", &overshoot_warning, py::arg("signal"), py::arg("name"),
+        "The warning for a table whose interpolant overshoots the range of its values, naming it `name`; '' otherwise");
 
   py::class_<VectorSignal>(m, "VectorSignal", "A vector signal: one Signal per channel, or a function of t")
       .def(py::init([](const py::sequence& channels) { return VectorSignal(to_signals(channels, "channels")); }),
@@ -1869,6 +1891,9 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
         "The smallest gamma of a scenario's output-feedback design");
   m.def("scenario_certificates", &scenario_certificates, py::arg("scenario"),
         py::call_guard<py::gil_scoped_release>(), "The certificates of paper §3 for a scenario's design");
+  m.def("scenario_warnings", &scenario_warnings, py::arg("scenario"),
+        "What is legal in a scenario but probably not meant (a table whose interpolation overshoots its"
+        " values), one message per finding naming the key");
   m.def("scenario_noise", &scenario_noise, py::arg("scenario"),
         "The seeded standard normal noise samples of a scenario with [measurement]");
 

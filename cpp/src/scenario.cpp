@@ -201,6 +201,23 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
 
 RunResult run_scenario(const Scenario& scenario) { return run(scenario, nullptr); }
 
+std::vector<std::string> scenario_warnings(const Scenario& scenario) {
+  std::vector<std::string> warnings;
+  auto check = [&](const Signal& signal, const std::string& name) {
+    const std::string warning = overshoot_warning(signal, name);
+    if (!warning.empty()) warnings.push_back(warning);
+  };
+  auto check_channels = [&](const VectorSignal& signals, const std::string& prefix) {
+    if (signals.is_function()) return;
+    for (std::size_t i = 0; i < signals.channels().size(); ++i)
+      check(signals.channels()[i], str_cat(prefix, i + 1));
+  };
+  check_channels(scenario.desired_u, "[desired] u");
+  check(scenario.kappa, "[controller] kappa");
+  check_channels(scenario.disturbance, "[disturbance] w");
+  return warnings;
+}
+
 
 GammaStarResult scenario_gamma_star(const Scenario& scenario, GammaStarOptions options) {
   const Scenario s = scenario.resolved();

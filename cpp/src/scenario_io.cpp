@@ -184,12 +184,13 @@ class TableReader {
         fail(key, "a tabulated signal cannot also have offset or harmonics");
       const toml::table* tab = reader.get("table")->as_table();
       if (tab == nullptr) fail(key + ".table", "expected a table { t = [...], value = [...] }");
-      TableReader points(*tab, where_, source_, {"t", "value"}, key_prefix_ + key + ".table.");
+      TableReader points(*tab, where_, source_, {"t", "value", "interpolation"}, key_prefix_ + key + ".table.");
       const Vec t = points.vector("t", -1);
       const Vec v = points.vector("value", -1);
+      const Interpolation interpolation = points.enum_or("interpolation", Interpolation::Pchip);
       try {
         return Signal::table(std::vector<double>(t.data(), t.data() + t.size()),
-                             std::vector<double>(v.data(), v.data() + v.size()));
+                             std::vector<double>(v.data(), v.data() + v.size()), interpolation);
       } catch (const InputError& e) {
         fail(key, e.what());
       }
@@ -758,7 +759,9 @@ void insert_signal(toml::table& table, const std::string& key, const Signal& sig
     toml::array t, value;
     for (double x : signal.table_t()) t.push_back(x);
     for (double x : signal.table_values()) value.push_back(x);
-    spec.insert("table", toml::table{{"t", std::move(t)}, {"value", std::move(value)}});
+    spec.insert("table", toml::table{{"t", std::move(t)},
+                                     {"value", std::move(value)},
+                                     {"interpolation", to_string(signal.interpolation())}});
   } else {
     spec.insert("offset", signal.offset());
     toml::array harmonics;

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     Base class of the numerical failures of hinf_cpp.
@@ -336,6 +336,55 @@ class NewtonSystems:
     @property
     def value(self) -> int:
         ...
+class Interpolation:
+    """
+    How a table Signal is interpolated between its points (signal.hpp)
+    
+    Members:
+    
+      pchip
+    
+      linear
+    
+      hold
+    
+      cubic
+    """
+    __members__: typing.ClassVar[dict[str, Interpolation]]
+    cubic: typing.ClassVar[Interpolation]
+    hold: typing.ClassVar[Interpolation]
+    linear: typing.ClassVar[Interpolation]
+    pchip: typing.ClassVar[Interpolation]
+    def __eq__(self: Interpolation | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: Interpolation | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: Interpolation | str) -> int:
+        ...
+    def __ne__(self: Interpolation | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
 class Harmonic:
     """
     a sin(omega t + phase) (or cos) term of a Signal
@@ -376,9 +425,9 @@ class Signal:
     A scalar signal of absolute time: offset + harmonics, or a table
     """
     @staticmethod
-    def table(t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], values: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> Signal:
+    def table(t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], values: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], interpolation: Interpolation | str = Interpolation.pchip) -> Signal:
         """
-        Natural cubic spline through (t_i, v_i); at least two points, strictly increasing t
+        The table (t_i, v_i), interpolated by "pchip" (default, no overshoot), "linear", "hold" (the value of the last point at or before t) or "cubic" (natural spline; a UserWarning when it overshoots the values' range); at least two points, strictly increasing t
         """
     def __call__(self, t: typing.Any) -> typing.Any:
         ...
@@ -401,6 +450,8 @@ class Signal:
         ...
     def harmonics(self) -> list[Harmonic]:
         ...
+    def interpolation(self) -> Interpolation:
+        ...
     def is_constant(self) -> bool:
         ...
     def is_table(self) -> bool:
@@ -411,6 +462,10 @@ class Signal:
         """
     def offset(self) -> float:
         ...
+    def overshoot(self) -> tuple[float, float]:
+        """
+        (how far a table's interpolant leaves the range of its values, where); (0, t_first) inside it
+        """
     def table_t(self) -> list[float]:
         ...
     def table_values(self) -> list[float]:
@@ -2044,6 +2099,10 @@ def output_count(t0: typing.SupportsFloat | typing.SupportsIndex, tf: typing.Sup
     ...
 def output_grid(t0: typing.SupportsFloat | typing.SupportsIndex, tf: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex) -> list[float]:
     ...
+def overshoot_warning(signal: Signal, name: str) -> str:
+    """
+    The warning for a table whose interpolant overshoots the range of its values, naming it `name`; '' otherwise
+    """
 def parse_scenario_toml(text: str, source: str) -> Scenario:
     """
     The one scenario reader (the one hinf-sim uses): same checks, same messages
@@ -2087,6 +2146,10 @@ def scenario_noise(scenario: Scenario) -> typing.Annotated[numpy.typing.NDArray[
 def scenario_toml(scenario: Scenario) -> str:
     """
     The scenario as a scenario file that reads back to an equal scenario
+    """
+def scenario_warnings(scenario: Scenario) -> list[str]:
+    """
+    What is legal in a scenario but probably not meant (a table whose interpolation overshoots its values), one message per finding naming the key
     """
 def simulate_output_feedback(problem: OutputFeedbackProblem, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: OutputFeedbackOptions = ..., simulation: SimulationOptions = ...) -> SimulationResult:
     """

@@ -541,13 +541,14 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     # Warnings are held back while the command runs: a failure is one line on stderr with
-    # nothing before it; a command that succeeds shows them at its end.
+    # nothing before it; a command that succeeds shows them at its end, one line each (as
+    # hinf-sim does).
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("default")
         status = _run(args)
     if status == 0:
         for w in caught:
-            warnings.showwarning(w.message, w.category, w.filename, w.lineno, w.file, w.line)
+            print(f"hinf-cpp: warning: {' '.join(str(w.message).split())}", file=sys.stderr)
     return status
 
 

@@ -160,7 +160,7 @@ def _describe_signal(signal: _core.Signal) -> str | None:
     """``0.1 cos(1.25664 t)`` and the like; None for the zero signal."""
     if signal.is_table():
         t = signal.table_t()
-        return f"a table of {len(t)} points on [{t[0]:g}, {t[-1]:g}] s"
+        return f"a table of {len(t)} points on [{t[0]:g}, {t[-1]:g}] s ({signal.interpolation().name})"
     terms = [f"{signal.offset():g}"] if signal.offset() != 0.0 else []
     for h in signal.harmonics():
         if h.amplitude == 0.0:

@@ -12,6 +12,7 @@ import importlib
 import importlib.util
 import os
 import pathlib
+import warnings
 from typing import Any
 
 import tomli_w
@@ -22,8 +23,16 @@ __all__ = ["load_scenario", "scenario_from_dict", "signal_from_spec"]
 
 
 def load_scenario(path: str | os.PathLike) -> _core.Scenario:
-    """Reads a scenario file; anything wrong with it raises ValueError naming the file and the key."""
-    return _core.load_scenario_toml(os.fspath(path))
+    """Reads a scenario file; anything wrong with it raises ValueError naming the file and the key.
+    What is legal but probably not meant (a table whose cubic spline overshoots its values) is a
+    UserWarning naming the file and the key."""
+    return _warn_about(_core.load_scenario_toml(os.fspath(path)), os.fspath(path))
+
+
+def _warn_about(scenario: _core.Scenario, source: str) -> _core.Scenario:
+    for message in _core.scenario_warnings(scenario):
+        warnings.warn(f"{source}: {message}", UserWarning, stacklevel=3)
+    return scenario
 
 
 def resolve_callable(spec: str, base: str | os.PathLike | None = None):
@@ -83,10 +92,14 @@ def _toml_text(document: Any, source: str) -> str:
 def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
     """Builds a :class:`Scenario` from the dictionary form of a scenario file (as
     :func:`tomllib.load` gives it); the same checks and messages as :func:`load_scenario`."""
-    return _core.parse_scenario_toml(_toml_text(root, source), source)
+    return _warn_about(_core.parse_scenario_toml(_toml_text(root, source), source), source)
 
 
 def signal_from_spec(spec: Any, name: str = "signal") -> _core.Signal:
     """A :class:`Signal` from its TOML form (a number or a table), e.g.
     ``{"harmonics": [{"amplitude": 0.3, "omega": 0.2}]}``; messages name it `name`."""
-    return _core.parse_signal_toml(_toml_text({name: spec}, "<python>"), name, "<python>")
+    signal = _core.parse_signal_toml(_toml_text({name: spec}, "<python>"), name, "<python>")
+    message = _core.overshoot_warning(signal, name)
+    if message:
+        warnings.warn(message, UserWarning, stacklevel=2)
+    return signal

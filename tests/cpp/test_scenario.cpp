@@ -151,6 +151,8 @@ Scenario parse(const std::string& text, const std::string& source = "tests/my_ca
   return hinf::parse_scenario_toml(text, source);
 }
 
+bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
+
 TEST(ScenarioFile, DefaultsOfTheContract) {
   const Scenario s = parse(kMinimal);
   EXPECT_EQ(s.name, "my_case") << "the name defaults to the file's stem";
@@ -199,6 +201,34 @@ TEST(ScenarioFile, SignalsFrequencyPhaseCosTableAndInfGamma) {
   EXPECT_TRUE(std::isinf(s.gamma) && s.gamma > 0) << "gamma = inf is the LQR limit";
   EXPECT_NEAR(s.kappa(5.0), 2.0, hinf_test::kRoundoff * 2.0);
   EXPECT_NO_THROW(s.resolved().validate());
+}
+
+TEST(ScenarioFile, TableInterpolationKey) {
+  // u1: a hold (by definition, the value of the last point at or before t); kappa: the default
+  // (PCHIP: the table's value at its points); w1: a natural spline that overshoots.
+  std::string text = replace(kMinimal, "u1 = { offset = 1.0 }",
+                             "u1 = { table = { t = [0.0, 4.0, 10.0], value = [1.0, 1.5, 0.5], interpolation = \"hold\" } }");
+  text = replace(text, "gamma = 5.0", "gamma = 5.0\nkappa = { table = { t = [0.0, 5.0, 10.0], value = [1.0, 2.0, 1.0] } }");
+  text += "\n[disturbance]\nw1 = { table = { t = [0.0, 5.0, 10.0], value = [0.0, 0.1, 0.1], interpolation = \"cubic\" } }\n";
+  const Scenario s = parse(text);
+  EXPECT_EQ(s.desired_u.channels()[0].interpolation(), hinf::Interpolation::Hold);
+  EXPECT_EQ(s.kappa.interpolation(), hinf::Interpolation::Pchip);
+  EXPECT_EQ(s.disturbance.channels()[0].interpolation(), hinf::Interpolation::Cubic);
+  EXPECT_EQ(s.desired_u(3.999)[0], 1.0);
+  EXPECT_EQ(s.desired_u(4.0)[0], 1.5);
+  EXPECT_EQ(s.desired_u(10.0)[0], 0.5);
+  // Written with its interpolation and read back to the same signals.
+  const std::string written = hinf::scenario_toml(s);
+  EXPECT_TRUE(contains(written, "interpolation = \"hold\"")) << written;
+  const Scenario again = parse(written, "written.toml");
+  EXPECT_EQ(again.desired_u.channels()[0].interpolation(), hinf::Interpolation::Hold);
+  EXPECT_EQ(again.kappa.interpolation(), hinf::Interpolation::Pchip);
+  EXPECT_EQ(again.disturbance.channels()[0].interpolation(), hinf::Interpolation::Cubic);
+  // Warned about: the overshooting spline only, named by its key.
+  const std::vector<std::string> warnings = hinf::scenario_warnings(s);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(contains(warnings[0], "[disturbance] w1")) << warnings[0];
+  EXPECT_TRUE(hinf::scenario_warnings(parse(kMinimal)).empty());
 }
 
 // ======================================================================= errors naming the key
@@ -255,6 +285,13 @@ TEST(ScenarioFile, ErrorsNameTheKey) {
   expect_error(replace(kMinimal, "u1 = { offset = 1.0 }",
                        "u1 = { table = { t = [0.0, 2.0, 1.0], value = [1.0, 1.0, 1.0] } }"),
                {"u1"}, "table with decreasing times");
+  expect_error(replace(kMinimal, "u1 = { offset = 1.0 }",
+                       "u1 = { table = { t = [0.0, 20.0], value = [1.0, 1.0], interpolation = \"spline\" } }"),
+               {"u1.table.interpolation", "spline", "\"pchip\", \"linear\", \"hold\" or \"cubic\""},
+               "unknown interpolation");
+  expect_error(replace(kMinimal, "u1 = { offset = 1.0 }",
+                       "u1 = { offset = 1.0, interpolation = \"linear\" }"),
+               {"interpolation"}, "interpolation of a harmonic signal");
   // Invalid TOML: the message points at the source.
   expect_error(replace(kMinimal, "gamma = 5.0", "gamma = = 5.0"), {"my_case.toml"}, "invalid TOML");
   expect_error(kMinimal + "\n[controller]\ngamma = 6.0\n", {"my_case.toml"}, "duplicate table");
@@ -321,8 +358,6 @@ std::string error_of(const std::string& text, const std::string& source = "tests
   }
   return "(accepted)";
 }
-
-bool contains(const std::string& text, const std::string& piece) { return text.find(piece) != std::string::npos; }
 
 TEST(ScenarioReader, ByteOrderMarkIsSkipped) {
   const Scenario with_bom = parse("\xEF\xBB\xBF" + kMinimal);

@@ -101,6 +101,11 @@ struct RunResult {
 
 RunResult run_scenario(const Scenario& scenario);
 
+// What is legal but probably not meant, one message per finding, naming the key: a table
+// whose interpolation overshoots the range of its values ([desired] u1, [disturbance] w2,
+// [controller] kappa). The front ends print them (hinf-sim) or warn (Python).
+std::vector<std::string> scenario_warnings(const Scenario& scenario);
+
 // gamma* (eq. 14) of the scenario's state-feedback design (trajectory, Q, Qf, horizon; also
 // for a scenario with [measurement]). options.solver is replaced by the scenario's [solver].
 GammaStarResult scenario_gamma_star(const Scenario& scenario, GammaStarOptions options = {});

@@ -2,19 +2,42 @@
 //
 // A scalar Signal is either
 //   offset + sum_k a_k sin(omega_k t + phase_k)    (or cos, per harmonic), or
-//   a table (t_i, v_i) interpolated by a natural cubic spline; evaluating a table outside
-//   [t_first, t_last] is an InputError.
+//   a table (t_i, v_i) interpolated as its Interpolation says (PCHIP by default); evaluating a
+//   table outside [t_first, t_last] is an InputError.
 // A VectorSignal stacks scalar Signals (one per channel) or wraps any function of t.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <utility>
 #include <string>
 #include <vector>
 
+#include "hinf/enum_names.hpp"
 #include "hinf/types.hpp"
 
 namespace hinf {
+
+// How a table (t_i, v_i) is interpolated between its points (docs/scenarios.md).
+enum class Interpolation {
+  Pchip,   // piecewise cubic Hermite with the slopes of Fritsch and Carlson, weighted harmonic
+           // mean of Fritsch and Butland (as SciPy's PchipInterpolator): C1, and on each
+           // interval between v_i and v_{i+1}: no overshoot (the default)
+  Linear,  // straight lines between the points: C0, no overshoot
+  Hold,    // zero-order hold: the value of the last point at or before t; no overshoot
+  Cubic    // natural cubic spline (second derivative zero at both ends): C2, but it can leave
+           // the range of the values (a step rings on both sides)
+};
+
+template <>
+struct EnumNames<Interpolation> {
+  static constexpr const char* what = "interpolation";
+  static constexpr std::array<std::pair<Interpolation, const char*>, 4> names{
+      {{Interpolation::Pchip, "pchip"},
+       {Interpolation::Linear, "linear"},
+       {Interpolation::Hold, "hold"},
+       {Interpolation::Cubic, "cubic"}}};
+};
 
 struct Harmonic {
   double amplitude = 0.0;
@@ -30,14 +53,21 @@ class Signal {
   // A constant.
   explicit Signal(double constant);
   Signal(double offset, std::vector<Harmonic> harmonics);
-  // Natural cubic spline through (t_i, v_i); at least two points, strictly increasing t.
-  static Signal table(std::vector<double> t, std::vector<double> values);
+  // The table (t_i, v_i), interpolated as `interpolation` says; at least two points, strictly
+  // increasing t.
+  static Signal table(std::vector<double> t, std::vector<double> values,
+                      Interpolation interpolation = Interpolation::Pchip);
 
   double operator()(double t) const;
   // The smallest value on [t0, tf] and where it is taken: exact for constants and tables
   // (cubic pieces); for harmonics, sampled at 64 points per period of the fastest term and
   // refined by golden-section search.
   std::pair<double, double> minimum(double t0, double tf) const;
+  // How far a table's interpolant leaves the range [min v_i, max v_i] of its values on
+  // [t_first, t_last], and where (exact: the extremes of each cubic piece); (0, t_first) when
+  // it stays inside, and (0, 0) for a signal that is not a table. Only Interpolation::Cubic
+  // can overshoot.
+  std::pair<double, double> overshoot() const;
 
   bool is_table() const { return !table_t_.empty(); }
   bool is_constant() const { return !is_table() && harmonics_.empty(); }
@@ -45,13 +75,25 @@ class Signal {
   const std::vector<Harmonic>& harmonics() const { return harmonics_; }
   const std::vector<double>& table_t() const { return table_t_; }
   const std::vector<double>& table_values() const { return table_v_; }
+  Interpolation interpolation() const { return interpolation_; }
   std::string describe() const;
 
  private:
+  // The extreme of sign * s(t) on [t0, tf] (sign = +1: the minimum, -1: the maximum) over the
+  // table's cubic pieces, and where it is taken.
+  std::pair<double, double> table_extreme(double t0, double tf, double sign) const;
+
   double offset_ = 0.0;
   std::vector<Harmonic> harmonics_;
-  std::vector<double> table_t_, table_v_, table_m2_;  // m2: spline second derivatives
+  std::vector<double> table_t_, table_v_;
+  Interpolation interpolation_ = Interpolation::Pchip;
+  // Piece i on [t_i, t_{i+1}]: c0 + c1 s + c2 s^2 + c3 s^3 with s = t - t_i (4 numbers a piece).
+  std::vector<std::array<double, 4>> pieces_;
 };
+
+// A warning when a table's interpolant overshoots the range of its values (see
+// Signal::overshoot), naming the signal `name`; empty otherwise.
+std::string overshoot_warning(const Signal& signal, const std::string& name);
 
 class VectorSignal {
  public:
