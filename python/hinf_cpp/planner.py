@@ -1,0 +1,635 @@
+"""Feasible desired trajectories from waypoints or a sampled path (docs/planning.md).
+
+The paper tracks "a feasible trajectory": q_d driven by inputs u_d through the model. This
+module finds such a pair from where the vehicle should go. :func:`plan` solves
+
+    minimize    effort_weight * int |u / s|^2 dt + rate_weight * int |du/dt / s|^2 dt
+    subject to  dq/dt = f(t, q) + G(t, q) u,  q(t0) = q0,  u_min <= u <= u_max,
+                |p(t_j) - (x_j, y_j)| <= tolerance at every waypoint j (and its heading
+                and speed when given),
+
+(s: the input scale) by direct multiple shooting with CasADi's Opti and IPOPT: u is piecewise
+linear between the nodes of a time grid that contains every waypoint's time, and the state
+jumps from node to node by classical Runge-Kutta steps (``substeps`` per interval) in which u is
+evaluated exactly where it is. The planned u_d is stored as tables with interpolation =
+"linear" (so the signal is the optimizer's u, not an approximation of it), and the project's
+own integrator (``hc.Trajectory``: Dormand-Prince at rtol 1e-10) re-simulates q_d from it. The
+open-loop mismatch between the planned states and the re-simulated ones is the report's
+``position_mismatch``; the substeps are doubled until it is below ``max_mismatch``.
+
+The waypoint conditions are soft in the optimization (exact penalty with slacks), so that the
+problem always has a solution: a waypoint the inputs cannot reach shows as a miss of the
+best compromise, reported by :class:`UnreachableWaypointError` with the waypoint's index and
+the distance, instead of a long fruitless search for a feasible point.
+
+The model's dynamics enter as CasADi expressions: a :class:`~hinf_cpp.symbolic.SymbolicModel`,
+or a built-in model through :func:`~hinf_cpp.symbolic_builtin.symbolic_model`.
+
+Units are the model's (positions in its unit of length, time in s, angles in rad); times are
+absolute.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from collections.abc import Sequence
+
+import numpy as np
+
+from . import _core
+from .symbolic import SymbolicModel, _casadi
+from .symbolic_builtin import symbolic_model
+
+__all__ = ["FeasibilityReport", "Plan", "PlanOptions", "PlanningError", "UnreachableWaypointError", "Waypoint",
+           "plan", "waypoints_from_path"]
+
+# Part of every cache key (planned_scenario.py): a change to the formulation changes it.
+PLANNER_VERSION = 1
+# Weights of a waypoint condition's slack (per tolerance). An exact penalty meets every
+# reachable waypoint once it exceeds the condition's multiplier; the first weight is enough for
+# most plans and keeps IPOPT fast when a waypoint is out of reach, and a miss is confirmed with
+# the larger ones before it is reported.
+PENALTIES = (1e2, 1e4, 1e6)
+
+
+class PlanningError(_core.HinfError):
+    """The optimizer failed (IPOPT's status in the message), or the plan could not be made
+    accurate enough (its re-simulation mismatch stayed above max_mismatch)."""
+
+
+class UnreachableWaypointError(ValueError):
+    """A waypoint cannot be reached within its tolerance with the input bounds and the time
+    given. ``index`` (0-based) names it, ``miss`` is how far the best plan stays from it."""
+
+    def __init__(self, message: str, index: int, miss: float):
+        super().__init__(message)
+        self.index = index
+        self.miss = miss
+
+
+@dataclasses.dataclass(frozen=True)
+class Waypoint:
+    """Where the vehicle should be: position (x, y) in the model's unit of length; optionally
+    the arrival time t (absolute, s), the heading (rad, the model's heading state, compared
+    modulo 2 pi) and the speed |d(x, y)/dt| on arrival."""
+
+    x: float
+    y: float
+    t: float | None = None
+    heading: float | None = None
+    speed: float | None = None
+
+    def describe(self) -> str:
+        parts = [f"x = {self.x:g}, y = {self.y:g}"]
+        parts += [f"{name} = {getattr(self, name):g}" for name in ("t", "heading", "speed")
+                  if getattr(self, name) is not None]
+        return "(" + ", ".join(parts) + ")"
+
+
+@dataclasses.dataclass(frozen=True)
+class PlanOptions:
+    """The planner's settings; each is also a key of a scenario file's [desired.plan]."""
+
+    tolerance: float = 0.05  # how close to each waypoint's position (unit of length)
+    heading_tolerance: float = 0.01  # rad
+    speed_tolerance: float = 0.01  # unit of length per s
+    speed: float | None = None  # nominal speed that times waypoints given without t
+    u_min: tuple[float, ...] | None = None  # per input; -inf: unbounded
+    u_max: tuple[float, ...] | None = None
+    input_scale: tuple[float, ...] | None = None  # s of the cost; default max(|u_min|, |u_max|) or 1
+    effort_weight: float = 1.0
+    rate_weight: float = 1.0
+    interval: float | None = None  # largest spacing of the input's nodes (s); default horizon / 60
+    substeps: int = 8  # Runge-Kutta steps per interval (doubled until the mismatch is met)
+    max_mismatch: float = 1e-6  # re-simulated against planned positions (unit of length)
+    max_iterations: int = 1000  # of IPOPT
+
+    def checked(self, m: int) -> "PlanOptions":
+        """The options with the per-input tuples resolved to m numbers; ValueError naming the
+        first bad one."""
+        for name in ("tolerance", "heading_tolerance", "speed_tolerance", "max_mismatch"):
+            _positive(getattr(self, name), name)
+        for name in ("effort_weight", "rate_weight"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+                raise ValueError(f"{name} must be a number >= 0, got {value!r}")
+        if self.effort_weight == 0 and self.rate_weight == 0:
+            raise ValueError("effort_weight and rate_weight are both 0: nothing to minimize; make one > 0")
+        for name in ("speed", "interval"):
+            if getattr(self, name) is not None:
+                _positive(getattr(self, name), name)
+        for name in ("substeps", "max_iterations"):
+            value = getattr(self, name)
+            if not (isinstance(value, int) and not isinstance(value, bool) and value >= 1):
+                raise ValueError(f"{name} must be an integer >= 1, got {value!r}")
+        if self.tolerance <= 10 * self.max_mismatch:
+            raise ValueError(f"tolerance ({self.tolerance:g}) must be more than 10 max_mismatch "
+                             f"({self.max_mismatch:g}): the optimizer aims 10 max_mismatch inside it")
+        u_min = _per_input(self.u_min, m, "u_min", -math.inf)
+        u_max = _per_input(self.u_max, m, "u_max", math.inf)
+        for i in range(m):
+            if not u_min[i] < u_max[i]:
+                raise ValueError(f"u_min[{i}] = {u_min[i]:g} must be below u_max[{i}] = {u_max[i]:g}")
+        default_scale = tuple(max(abs(a) if math.isfinite(a) else 0.0, abs(b) if math.isfinite(b) else 0.0) or 1.0
+                              for a, b in zip(u_min, u_max))
+        scale = _per_input(self.input_scale, m, "input_scale", None) if self.input_scale is not None else default_scale
+        for i, s in enumerate(scale):
+            _positive(s, f"input_scale[{i}]")
+        return dataclasses.replace(self, u_min=u_min, u_max=u_max, input_scale=scale)
+
+
+def _positive(value, name: str) -> None:
+    if not (isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) and value > 0):
+        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
+
+
+def _per_input(values, m: int, name: str, fallback) -> tuple[float, ...]:
+    """m numbers from None (fallback), a number (for every input) or m numbers."""
+    if values is None:
+        return (fallback,) * m
+    if isinstance(values, (int, float)):
+        values = (values,) * m
+    values = tuple(values)
+    if len(values) != m:
+        raise ValueError(f"{name} needs one number per input ({m}), got {len(values)}")
+    for i, v in enumerate(values):
+        if not isinstance(v, (int, float)) or isinstance(v, bool) or math.isnan(v):
+            raise ValueError(f"{name}[{i}] must be a number, got {v!r}")
+    return tuple(float(v) for v in values)
+
+
+@dataclasses.dataclass
+class FeasibilityReport:
+    """How well the plan is feasible for the model, checked by re-simulating it."""
+
+    position_mismatch: float  # max over the nodes of |p_planned - p_re-simulated| (unit of length)
+    position_mismatch_t: float  # where it is largest (s)
+    state_mismatch: float  # max over the nodes and states of |q_planned - q_re-simulated|
+    waypoint_errors: list[float]  # |p(t_j) - (x_j, y_j)| of the re-simulated trajectory
+    heading_errors: list[float | None]  # |psi(t_j) - heading_j| wrapped, where a heading is given
+    speed_errors: list[float | None]  # ||dp/dt(t_j)| - speed_j|, where a speed is given
+    iterations: int  # IPOPT iterations, summed over the refinements
+    solve_seconds: float  # IPOPT's wall time, summed
+    seconds: float  # all of plan(): formulation, solves, re-simulation
+    substeps: int  # Runge-Kutta steps per interval of the final solve
+    intervals: int  # of the input's time grid
+    status: str  # IPOPT's return status of the final solve
+    cache_hit: bool = False  # True: read back from the plan cache (planned_scenario.py)
+
+    def summary(self) -> str:
+        how = "from the cache" if self.cache_hit else f"{self.iterations} IPOPT iterations, {self.seconds:.2f} s"
+        return (f"{self.intervals} intervals x {self.substeps} RK4 steps, {how}; re-simulation mismatch "
+                f"{self.position_mismatch:.2e} (max over the nodes), waypoints met within "
+                f"{max(self.waypoint_errors, default=0.0):.3g}")
+
+    def to_dict(self) -> dict:
+        return dataclasses.asdict(self)
+
+
+@dataclasses.dataclass
+class Plan:
+    """A desired trajectory planned for a model: the inputs u_d (as signals and at the nodes),
+    the planned states at the nodes, and q_d re-simulated from u_d by the project's integrator."""
+
+    model: _core.Model  # the C++ model that re-simulated it
+    waypoints: list[Waypoint]  # with their times resolved
+    waypoint_nodes: list[int]  # the node of each waypoint's time
+    t: np.ndarray  # the nodes, (N + 1,)
+    q: np.ndarray  # planned states at the nodes, (N + 1, n)
+    u: np.ndarray  # inputs at the nodes, (N + 1, m); linear in between
+    trajectory: _core.Trajectory  # q_d re-simulated from u_d
+    report: FeasibilityReport
+
+    @property
+    def q0(self) -> np.ndarray:
+        return self.q[0]
+
+    @property
+    def t0(self) -> float:
+        return float(self.t[0])
+
+    @property
+    def tf(self) -> float:
+        return float(self.t[-1])
+
+    def inputs(self) -> _core.VectorSignal:
+        """u_d as signals: one table per input, interpolation "linear" (the optimizer's)."""
+        return _input_signal(self.t, self.u)
+
+    def input_tables(self) -> dict:
+        """u_d in the form of a scenario file's [desired]: {"u1": {"table": {...}}, ...}."""
+        return {f"u{i + 1}": {"table": {"t": self.t.tolist(), "value": self.u[:, i].tolist(),
+                                        "interpolation": "linear"}}
+                for i in range(self.u.shape[1])}
+
+
+def _input_signal(t: np.ndarray, u: np.ndarray) -> _core.VectorSignal:
+    return _core.VectorSignal([_core.Signal.table(t, u[:, i], "linear") for i in range(u.shape[1])])
+
+
+def waypoints_from_path(x: Sequence[float], y: Sequence[float], speed, start: Sequence[float], t0: float = 0.0,
+                        tolerance: float = 0.0) -> list[Waypoint]:
+    """The samples (x_i, y_i) of a path as waypoints, timed by a speed profile: `speed` is one
+    number or one per sample (> 0; linear in between along the path), and the vehicle starts
+    at the position `start` at t0. The time to cover a piece of length L whose speeds at its
+    ends are a and b is 2 L / (a + b) (constant acceleration along the path); from `start` to
+    the first sample, the first sample's speed. A first sample within `tolerance` of the start
+    is the start itself and is left out."""
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    if x.ndim != 1 or x.shape != y.shape or len(x) < 1:
+        raise ValueError(f"a path needs x and y of the same length >= 1, got {x.shape} and {y.shape}")
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
+        raise ValueError("a path's x and y must be finite")
+    speeds = np.broadcast_to(np.asarray(speed, dtype=float), x.shape) if np.ndim(speed) == 0 else np.asarray(speed, dtype=float)
+    if speeds.shape != x.shape:
+        raise ValueError(f"a path's speed must be one number or one per sample ({len(x)}), got {speeds.shape[0]}")
+    if not np.all(np.isfinite(speeds) & (speeds > 0)):
+        raise ValueError("a path's speed must be finite and > 0 at every sample")
+    px, py = np.concatenate([[start[0]], x]), np.concatenate([[start[1]], y])
+    v = np.concatenate([[speeds[0]], speeds])
+    lengths = np.hypot(np.diff(px), np.diff(py))
+    times = t0 + np.concatenate([[0.0], np.cumsum(2.0 * lengths / (v[:-1] + v[1:]))])
+    points = [Waypoint(float(x[i]), float(y[i]), t=float(times[i + 1])) for i in range(len(x))]
+    if lengths[0] <= tolerance:
+        points = points[1:]
+    for a, b in zip(points[:-1], points[1:]):
+        if not b.t > a.t:
+            raise ValueError(f"a path's samples must be distinct: ({a.x:g}, {a.y:g}) repeats")
+    return points
+
+
+def resolve_times(waypoints: Sequence[Waypoint], start: Sequence[float], t0: float, tf: float | None,
+                  speed: float | None) -> list[Waypoint]:
+    """Waypoints with every time given: a waypoint without t is reached at `speed` from the one
+    before (the start, at t0, for the first); without a speed, the last waypoint is reached at
+    tf and the others without t at constant speed along the polyline between the timed ones."""
+    if len(waypoints) == 0:
+        raise ValueError("plan needs at least one waypoint")
+    points = [(float(start[0]), float(start[1]))] + [(w.x, w.y) for w in waypoints]
+    arc = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(np.array(points), axis=0).T))])
+    times: list[float | None] = [t0] + [w.t for w in waypoints]
+    if speed is not None:
+        for j in range(1, len(times)):
+            if times[j] is None:
+                times[j] = times[j - 1] + (arc[j] - arc[j - 1]) / speed
+    else:
+        if times[-1] is None:
+            if tf is None:
+                raise ValueError("the last waypoint has no time t: give it one, or a speed, or tf")
+            times[-1] = tf
+        anchors = [j for j, t in enumerate(times) if t is not None]
+        for a, b in zip(anchors[:-1], anchors[1:]):
+            for j in range(a + 1, b):
+                share = (arc[j] - arc[a]) / (arc[b] - arc[a]) if arc[b] > arc[a] else (j - a) / (b - a)
+                times[j] = times[a] + share * (times[b] - times[a])
+    resolved = [dataclasses.replace(w, t=float(t)) for w, t in zip(waypoints, times[1:])]
+    previous = t0
+    for j, w in enumerate(resolved):
+        if not (math.isfinite(w.t) and w.t > previous):
+            raise ValueError(f"waypoint {j} {w.describe()}: its time must be after "
+                             f"{'t0' if j == 0 else f'waypoint {j - 1}'}'s ({previous:g} s): times must increase")
+        previous = w.t
+    if tf is not None and resolved[-1].t > tf * (1 + 1e-12) + 1e-12:
+        raise ValueError(f"waypoint {len(resolved) - 1} {resolved[-1].describe()} comes after the end of the "
+                         f"horizon tf = {tf:g}: give a later tf or an earlier time")
+    return resolved
+
+
+def time_grid(t0: float, tf: float, key_times: Sequence[float], interval: float) -> np.ndarray:
+    """Nodes from t0 to tf that contain every key time, equally spaced between consecutive key
+    times at most `interval` apart."""
+    knots = sorted({t0, tf, *key_times})
+    nodes = [t0]
+    for a, b in zip(knots[:-1], knots[1:]):
+        count = max(1, math.ceil((b - a) / interval - 1e-9))
+        nodes += [a + (b - a) * i / count for i in range(1, count)] + [b]
+    return np.array(nodes)
+
+
+def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 0.0, tf: float | None = None,
+         options: PlanOptions | None = None) -> Plan:
+    """Plans a desired trajectory through the waypoints, from the state q0 at t0 to tf (default:
+    the last waypoint's time), for the model (a built-in model or a SymbolicModel).
+
+    Returns a :class:`Plan`: the inputs, the planned and re-simulated states, the report.
+    Raises ValueError for bad arguments, :class:`UnreachableWaypointError` (a ValueError) when a
+    waypoint cannot be met with the input bounds and the time given, and
+    :class:`PlanningError` when IPOPT fails or the plan cannot be made accurate enough."""
+    started = time.perf_counter()
+    ca = _casadi()
+    symbolic = symbolic_model(model)
+    cpp_model = model if isinstance(model, _core.Model) else symbolic.compile()
+    n, m = symbolic.n, symbolic.m
+    options = (options or PlanOptions()).checked(m)
+    q0 = np.asarray(q0, dtype=float)
+    if q0.shape != (n,) or not np.all(np.isfinite(q0)):
+        raise ValueError(f"q0 must be {n} finite numbers (the model's state), got {q0.tolist()}")
+    positions = list(symbolic.position_indices)
+    if len(positions) != 2:
+        raise ValueError(f"the model '{symbolic.name}' has {len(positions)} position components; waypoints "
+                         "(x, y) need exactly two (position_indices)")
+    heading = symbolic.heading_index
+    for j, w in enumerate(waypoints):
+        _check_waypoint(j, w, heading)
+    t0 = float(t0)
+    waypoints = resolve_times(waypoints, q0[positions], t0, tf, options.speed)
+    tf = waypoints[-1].t if tf is None else float(tf)
+    t = time_grid(t0, tf, [w.t for w in waypoints], options.interval or (tf - t0) / 60.0)
+    nodes = [int(np.searchsorted(t, w.t)) for w in waypoints]
+
+    dynamics = _dynamics_function(ca, symbolic)
+    iterate = _Iterate(*_initial_guess(dynamics, symbolic, q0, t, waypoints, nodes, options))
+    # A first solve with a quarter of the substeps finds the solution (or the unreachable
+    # waypoint) at a quarter of the cost per iteration; each solve after it starts from the
+    # previous one's primal and dual values and takes a few iterations.
+    substeps = min(options.substeps, max(2, options.substeps // 4))
+    penalties = list(PENALTIES)
+    iterations, solve_seconds = 0, 0.0
+    while True:
+        iterate = _solve(ca, dynamics, symbolic, q0, t, waypoints, nodes, options, substeps, penalties[0], iterate)
+        iterations += iterate.stats["iter_count"]
+        solve_seconds += iterate.stats["seconds"]
+        missed = _missed_waypoints(symbolic, iterate.q, dynamics, t, iterate.u, waypoints, nodes, options)
+        if missed and len(penalties) > 1:  # a larger penalty confirms a miss (or meets the waypoint)
+            penalties.pop(0)
+            continue
+        if substeps < options.substeps:  # the accurate solve, also to confirm a miss
+            substeps = options.substeps
+            continue
+        if missed:
+            raise _unreachable(missed, waypoints, options)
+        trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, iterate.u), t0, tf)
+        mismatch = _mismatch(trajectory, t, iterate.q, positions)
+        if mismatch[0] <= options.max_mismatch:
+            break
+        if substeps >= 16 * options.substeps:
+            raise PlanningError(f"the planned states stay {mismatch[0]:.3g} from their re-simulation (at t = "
+                                f"{mismatch[1]:g}) with {substeps} Runge-Kutta steps per interval, more than "
+                                f"max_mismatch = {options.max_mismatch:g}: give a smaller interval")
+        substeps *= 2
+    report = FeasibilityReport(
+        position_mismatch=mismatch[0], position_mismatch_t=mismatch[1], state_mismatch=mismatch[2],
+        waypoint_errors=[], heading_errors=[], speed_errors=[], iterations=iterations,
+        solve_seconds=solve_seconds, seconds=0.0, substeps=substeps, intervals=len(t) - 1,
+        status=iterate.stats["return_status"])
+    result = Plan(cpp_model, waypoints, nodes, t, iterate.q, iterate.u, trajectory, report)
+    check_waypoints(result, options)
+    report.seconds = time.perf_counter() - started
+    return result
+
+
+@dataclasses.dataclass
+class _Iterate:
+    """A point of the optimization: states and inputs at the nodes, and after a solve the
+    slacks, the constraints' multipliers (to start the next solve from) and IPOPT's stats."""
+
+    q: np.ndarray
+    u: np.ndarray
+    slack: np.ndarray | None = None
+    duals: np.ndarray | None = None
+    stats: dict | None = None
+
+
+def _check_waypoint(j: int, w: Waypoint, heading: int) -> None:
+    if not isinstance(w, Waypoint):
+        raise ValueError(f"waypoint {j} must be a hinf_cpp.planner.Waypoint, got {type(w).__name__}")
+    for name in ("x", "y", "t", "heading", "speed"):
+        value = getattr(w, name)
+        if value is None and name not in ("x", "y"):
+            continue
+        if not (isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)):
+            raise ValueError(f"waypoint {j}: {name} must be a finite number, got {value!r}")
+    if w.speed is not None and w.speed < 0:
+        raise ValueError(f"waypoint {j}: speed must be >= 0, got {w.speed:g}")
+    if w.heading is not None and heading < 0:
+        raise ValueError(f"waypoint {j} gives a heading, but the model has no heading state (heading_index)")
+
+
+def _dynamics_function(ca, symbolic: SymbolicModel):
+    """F(t, q, u) = f + G u with the model's parameters at their values."""
+    rhs = symbolic.f + ca.mtimes(symbolic.G, symbolic.u)
+    values = ca.DM([symbolic.parameter_values[name] for name in symbolic.parameter_names])
+    F = ca.Function("F", [symbolic.t, symbolic.q, symbolic.u, symbolic.p], [rhs])
+    t, q, u = ca.SX.sym("t"), ca.SX.sym("q", symbolic.n), ca.SX.sym("u", symbolic.m)
+    try:
+        return ca.Function("F", [t, q, u], [F(t, q, u, values)])
+    except RuntimeError:  # MX-only operations: keep the function as it is
+        t, q, u = ca.MX.sym("t"), ca.MX.sym("q", symbolic.n), ca.MX.sym("u", symbolic.m)
+        return ca.Function("F", [t, q, u], [F(t, q, u, values)])
+
+
+def _build_interval(ca, F, n: int, m: int, substeps: int):
+    """The state at the end of an interval [t0, t0 + h]: `substeps` classical Runge-Kutta steps
+    with u linear from u0 to u1, evaluated at each stage's time (so exactly the "linear" table)."""
+    symbol = ca.SX if F.is_a("SXFunction") else ca.MX
+    t0, h = symbol.sym("t0"), symbol.sym("h")
+    x0, u0, u1 = symbol.sym("x0", n), symbol.sym("u0", m), symbol.sym("u1", m)
+    step = h / substeps
+    x = x0
+    for j in range(substeps):
+        a, b, c = j / substeps, (j + 0.5) / substeps, (j + 1) / substeps
+        k1 = F(t0 + a * h, x, u0 + a * (u1 - u0))
+        k2 = F(t0 + b * h, x + step / 2 * k1, u0 + b * (u1 - u0))
+        k3 = F(t0 + b * h, x + step / 2 * k2, u0 + b * (u1 - u0))
+        k4 = F(t0 + c * h, x + step * k3, u0 + c * (u1 - u0))
+        x = x + step / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+    return ca.Function("interval", [t0, h, x0, u0, u1], [x])
+
+
+def _heading_turns_velocity(F, symbolic: SymbolicModel, q0: np.ndarray, t0: float) -> bool:
+    """Whether turning the heading turns the velocity of the position, as for a vehicle whose
+    velocity states are in its body frame (the ship, the Fossen vessel, the AUV): then the
+    heading is guessed along the path. Probed with every other non-position state at 1."""
+    positions, heading = list(symbolic.position_indices), symbolic.heading_index
+    probe = np.ones(symbolic.n)
+    probe[positions] = q0[positions]
+    probe[heading] = q0[heading]
+    zero = np.zeros(symbolic.m)
+    velocity = np.asarray(F(t0, probe, zero)).ravel()[positions]
+    probe[heading] += math.pi / 2
+    turned = np.asarray(F(t0, probe, zero)).ravel()[positions]
+    size = np.linalg.norm(velocity)
+    return bool(size > 0 and np.linalg.norm(turned - [-velocity[1], velocity[0]]) <= 1e-9 * size)
+
+
+def _initial_guess(F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoints: list[Waypoint],
+                   nodes: list[int], options: PlanOptions) -> tuple[np.ndarray, np.ndarray]:
+    """States: q0 everywhere but the position, straight from waypoint to waypoint in time (held
+    after the last), and for a body-frame vehicle the heading along that polyline. Inputs: 0,
+    or the bound nearest to it."""
+    positions, heading = list(symbolic.position_indices), symbolic.heading_index
+    times = np.concatenate([[t[0]], [w.t for w in waypoints]])
+    xs = np.concatenate([[q0[positions[0]]], [w.x for w in waypoints]])
+    ys = np.concatenate([[q0[positions[1]]], [w.y for w in waypoints]])
+    q = np.tile(q0, (len(t), 1))
+    q[:, positions[0]] = np.interp(t, times, xs)
+    q[:, positions[1]] = np.interp(t, times, ys)
+    if heading >= 0 and _heading_turns_velocity(F, symbolic, q0, float(t[0])):
+        directions = np.unwrap(np.arctan2(np.diff(ys), np.diff(xs)))
+        # Start within pi of the initial heading, and keep each leg's direction from its start.
+        directions += 2 * math.pi * round((q0[heading] - directions[0]) / (2 * math.pi))
+        leg = np.clip(np.searchsorted(times, t, side="right") - 1, 0, len(directions) - 1)
+        q[1:, heading] = directions[leg[1:]]
+    u = np.clip(np.zeros((len(t), symbolic.m)), options.u_min, options.u_max)
+    return q, u
+
+
+def _solve(ca, F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoints: list[Waypoint],
+           nodes: list[int], options: PlanOptions, substeps: int, penalty: float, start: _Iterate) -> _Iterate:
+    """One IPOPT solve of the multiple-shooting problem from `start` (warm with its multipliers)."""
+    n, m, count = symbolic.n, symbolic.m, len(t) - 1
+    positions, heading = list(symbolic.position_indices), symbolic.heading_index
+    h = np.diff(t)
+    opti = ca.Opti()
+    X, U = opti.variable(n, count + 1), opti.variable(m, count + 1)
+    interval = _build_interval(ca, F, n, m, substeps).map(count)
+    opti.subject_to(X[:, 0] == q0)
+    opti.subject_to(X[:, 1:] == interval(t[:-1].reshape(1, -1), h.reshape(1, -1), X[:, :-1], U[:, :-1], U[:, 1:]))
+    for i in range(m):
+        low, high = options.u_min[i], options.u_max[i]
+        if math.isfinite(low) and math.isfinite(high):
+            opti.subject_to(opti.bounded(low, U[i, :], high))
+        elif math.isfinite(low):
+            opti.subject_to(U[i, :] >= low)
+        elif math.isfinite(high):
+            opti.subject_to(U[i, :] <= high)
+
+    # Cost: the exact integrals of the piecewise linear u / s squared and of its slope squared.
+    scaled = U / np.asarray(options.input_scale).reshape(-1, 1)
+    a, b = scaled[:, :-1], scaled[:, 1:]
+    effort = ca.sum2(ca.sum1(a * a + a * b + b * b) * (h / 3.0).reshape(1, -1))
+    rate = ca.sum2(ca.sum1((b - a) ** 2) * (1.0 / h).reshape(1, -1))
+
+    # The waypoint conditions, each relaxed by a slack >= 0 that the penalty drives to 0 where
+    # it can. The optimizer aims 10 max_mismatch inside each tolerance, so that the re-simulated
+    # trajectory, within max_mismatch of the planned one, is inside it.
+    # The slacks are in units of the tolerance, and the penalty is linear in them (an L1 penalty
+    # on the distance beyond the tolerance): a compromise puts the miss on the waypoint that
+    # cannot be reached instead of spreading it over its neighbours.
+    margin = 10.0 * options.max_mismatch
+    conditions = []  # (left, right as a function of the slack, the slack's weight): left <= right(slack)
+    for j, (w, k) in enumerate(zip(waypoints, nodes)):
+        # Earlier waypoints weigh up to twice as much: a compromise misses the later end of a
+        # chain that cannot be met, and the first miss names the waypoint out of reach.
+        weight = 2.0 - j / len(waypoints)
+        tolerance = options.tolerance - margin
+        distance2 = ((X[positions[0], k] - w.x) ** 2 + (X[positions[1], k] - w.y) ** 2) / tolerance**2
+        conditions.append((distance2, lambda s: (1.0 + s) ** 2, weight))
+        if w.heading is not None:
+            tolerance = options.heading_tolerance - min(margin, 0.5 * options.heading_tolerance)
+            off = (1.0 - ca.cos(X[heading, k] - w.heading)) / (1.0 - math.cos(tolerance))
+            conditions.append((off, lambda s: 1.0 + s, weight))
+        if w.speed is not None:
+            tolerance = options.speed_tolerance - min(margin, 0.5 * options.speed_tolerance)
+            speed2 = ca.sumsqr(F(t[k], X[:, k], U[:, k])[positions])
+            conditions.append((speed2 / (w.speed + tolerance) ** 2, lambda s: 1.0 + s, weight))
+            if w.speed > tolerance:
+                conditions.append((1.0 - speed2 / (w.speed - tolerance) ** 2, lambda s: s, weight))
+    slack = opti.variable(len(conditions))
+    opti.subject_to(slack >= 0)
+    for i, (left, right, _) in enumerate(conditions):
+        opti.subject_to(left <= right(slack[i]))
+    weights = np.array([weight for _, _, weight in conditions])
+    opti.minimize(options.effort_weight * effort + options.rate_weight * rate
+                  + penalty * ca.dot(weights, slack))
+
+    opti.set_initial(X, start.q.T)
+    opti.set_initial(U, start.u.T)
+    opti.set_initial(slack, 0.0 if start.slack is None else start.slack)
+    ipopt = {"print_level": 0, "sb": "yes", "max_iter": options.max_iterations, "tol": 1e-9,
+             "constr_viol_tol": 1e-10, "acceptable_iter": 0}
+    if start.duals is not None:  # next to the solution: start there, with a small barrier
+        opti.set_initial(opti.lam_g, start.duals)
+        ipopt.update(warm_start_init_point="yes", mu_init=1e-6, warm_start_bound_push=1e-9,
+                     warm_start_mult_bound_push=1e-9)
+    # Evaluation warnings (a trial step where the model overflows) are IPOPT's business: it
+    # backs off; they are not the user's.
+    opti.solver("ipopt", {"print_time": False, "show_eval_warnings": False}, ipopt)
+    advice = ("Give the waypoints more time, an interval that resolves the manoeuvres, or (if it ran out) "
+              "more max_iterations")
+    started = time.perf_counter()
+    try:
+        solution = opti.solve()
+    except RuntimeError:  # Opti raises when IPOPT does not succeed; its stats say why
+        stats = opti.stats()
+        raise PlanningError(f"the planner's optimizer (IPOPT) stopped without a solution: "
+                            f"{stats.get('return_status', 'unknown status')} after {stats.get('iter_count', 0)} "
+                            f"iterations. {advice}") from None
+    stats = dict(solution.stats(), seconds=time.perf_counter() - started)
+    return _Iterate(q=np.asarray(solution.value(X)).reshape(n, count + 1).T,
+                    u=np.asarray(solution.value(U)).reshape(m, count + 1).T,
+                    slack=np.atleast_1d(solution.value(slack)), duals=np.asarray(solution.value(opti.lam_g)),
+                    stats=stats)
+
+
+def _bounds_text(options: PlanOptions) -> str:
+    parts = [f"u{i + 1} in [{low:g}, {high:g}]" for i, (low, high) in enumerate(zip(options.u_min, options.u_max))
+             if math.isfinite(low) or math.isfinite(high)]
+    return "the input bounds " + ", ".join(parts) if parts else "unbounded inputs"
+
+
+def _missed_waypoints(symbolic: SymbolicModel, q: np.ndarray, F, t: np.ndarray, u: np.ndarray,
+                      waypoints: list[Waypoint], nodes: list[int], options: PlanOptions) -> list[tuple]:
+    """(index, what, miss in tolerances, text) of each waypoint condition the plan misses."""
+    positions, heading = list(symbolic.position_indices), symbolic.heading_index
+    missed = []
+    for j, (w, k) in enumerate(zip(waypoints, nodes)):
+        distance = math.hypot(q[k, positions[0]] - w.x, q[k, positions[1]] - w.y)
+        if distance > options.tolerance:
+            missed.append((j, distance / options.tolerance, f"{distance:.4g} away (tolerance {options.tolerance:g})"))
+        if w.heading is not None:
+            error = abs(_core.wrap_angle(q[k, heading] - w.heading))
+            if error > options.heading_tolerance:
+                missed.append((j, error / options.heading_tolerance,
+                               f"with a heading {error:.4g} rad off (tolerance {options.heading_tolerance:g})"))
+        if w.speed is not None:
+            speed = float(np.linalg.norm(np.asarray(F(t[k], q[k], u[k])).ravel()[positions]))
+            if abs(speed - w.speed) > options.speed_tolerance:
+                missed.append((j, abs(speed - w.speed) / options.speed_tolerance,
+                               f"at a speed of {speed:.4g} (tolerance {options.speed_tolerance:g})"))
+    return missed
+
+
+def _unreachable(missed: list[tuple], waypoints: list[Waypoint], options: PlanOptions) -> UnreachableWaypointError:
+    """The error for the first miss: the waypoint that cannot be reached after the ones before it."""
+    j, miss, text = missed[0]
+    w = waypoints[j]
+    others = f" ({len(missed) - 1} later waypoint condition(s) missed too)" if len(missed) > 1 else ""
+    return UnreachableWaypointError(
+        f"waypoints[{j}] {w.describe()} cannot be reached with {_bounds_text(options)} by t = {w.t:g}: the best "
+        f"plan comes {text}{others}. Give it more time, move it, or widen the input bounds", j, miss)
+
+
+def _mismatch(trajectory: _core.Trajectory, t: np.ndarray, q: np.ndarray, positions: list[int]):
+    """(max position distance, its time, max state difference) of planned and re-simulated states."""
+    resimulated = np.array([trajectory.q_d(float(tk)) for tk in t])
+    distance = np.hypot(*(resimulated[:, positions] - q[:, positions]).T)
+    k = int(np.argmax(distance))
+    return float(distance[k]), float(t[k]), float(np.max(np.abs(resimulated - q)))
+
+
+def check_waypoints(result: Plan, options: PlanOptions) -> None:
+    """Fills the report's waypoint errors from the re-simulated trajectory (what is tracked) and
+    raises PlanningError if one is outside its tolerance."""
+    model, report = result.model, result.report
+    positions, heading = list(model.position_indices()), model.heading_index()
+    report.waypoint_errors, report.heading_errors, report.speed_errors = [], [], []
+    for j, w in enumerate(result.waypoints):
+        q = np.asarray(result.trajectory.q_d(w.t))
+        report.waypoint_errors.append(float(math.hypot(q[positions[0]] - w.x, q[positions[1]] - w.y)))
+        report.heading_errors.append(None if w.heading is None else
+                                     float(abs(_core.wrap_angle(q[heading] - w.heading))))
+        if w.speed is None:
+            report.speed_errors.append(None)
+        else:
+            u = np.asarray(result.trajectory.u_d(w.t))
+            velocity = (np.asarray(model.f(w.t, q)) + np.asarray(model.G(w.t, q)) @ u)[positions]
+            report.speed_errors.append(float(abs(np.linalg.norm(velocity) - w.speed)))
+        for name, errors, tolerance in (("position", report.waypoint_errors, options.tolerance),
+                                        ("heading", report.heading_errors, options.heading_tolerance),
+                                        ("speed", report.speed_errors, options.speed_tolerance)):
+            if errors[j] is not None and errors[j] > tolerance:
+                raise PlanningError(f"waypoints[{j}] {w.describe()}: the re-simulated trajectory misses its {name} "
+                                    f"by {errors[j]:.4g}, more than the tolerance {tolerance:g}")
