@@ -1901,6 +1901,8 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
         "The one scenario reader (the one hinf-sim uses): same checks, same messages");
   m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), "Reads a scenario file (parse_scenario_toml)");
+  m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"),
+        "The model of a document's [model] section, read as parse_scenario_toml reads it");
   m.def("scenario_toml", &scenario_toml, py::arg("scenario"),
         "The scenario as a scenario file that reads back to an equal scenario");
   m.def("parse_signal_toml", &parse_signal_toml, py::arg("text"), py::arg("key"), py::arg("source"),

@@ -600,7 +600,16 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   {
     std::vector<std::string> known{"q0"};
     for (int i = 1; i <= m; ++i) known.push_back(str_cat("u", i));
-    TableReader r(*section(root, "desired", source, true), "[desired]", source, known);
+    const toml::table& desired = *section(root, "desired", source, true);
+    // Planning (docs/planning.md) is the Python package's: it replaces these keys by the planned
+    // inputs before the scenario reaches this reader.
+    for (const char* key : {"waypoints", "path", "plan"})
+      if (desired.contains(key))
+        throw InputError(str_cat(source, ": [desired] ", key, ": a desired trajectory planned from waypoints or a "
+                                 "path needs the planner of the Python package (docs/planning.md): run this file "
+                                 "with hinf-cpp run, or write the planned scenario with hinf-cpp plan FILE -o "
+                                 "PLANNED.toml and run that"));
+    TableReader r(desired, "[desired]", source, known);
     s.desired_q0 = r.vector("q0", n);
     std::vector<Signal> inputs;
     for (int i = 1; i <= m; ++i) inputs.push_back(r.signal(str_cat("u", i)));
@@ -698,6 +707,11 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     s.output_dt = r.number_or("dt", s.output_dt);
   }
   return s;
+}
+
+ModelPtr parse_model_toml(const std::string& text, const std::string& source) {
+  const toml::table root = parse_toml(text, source);
+  return parse_model(*section(root, "model", source, true), source);
 }
 
 Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source) {

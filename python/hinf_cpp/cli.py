@@ -1,6 +1,7 @@
 """The ``hinf-cpp`` command line.
 
     hinf-cpp run SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--npz OUT.npz] [--plot OUT.png] [--gamma-star]
+    hinf-cpp plan SCENARIO.toml -o PLANNED.toml [--json REPORT.json] [--plot OUT.png] [--no-cache]
     hinf-cpp compare SCENARIO.toml [--controllers hinf,lqr,cascade] [--feedback state,output]
                      [--worst-case] [--json OUT.json] [--plot OUT.png] [--quiet]
     hinf-cpp recovery [SCENARIO.toml ...] [--controllers ...] [--json OUT.json] [--plot OUT.png] [--quiet]
@@ -96,12 +97,26 @@ def _number(x):
     return float(x) if x is not None and math.isfinite(x) else None
 
 
+def _load_with_plan(path: str):
+    """(scenario, plan or None): a file whose [desired] gives waypoints or a path is planned
+    (cached; docs/planning.md)."""
+    from .planned_scenario import load_planned
+
+    planned = load_planned(path)
+    if planned is None:
+        return load_scenario(path), None
+    load_scenario(path)  # the warnings of the file (the plan comes from the cache)
+    return planned.scenario, planned.plan
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from .export import npz_path, save_npz
 
     _check_outputs(files=[args.json, args.csv, None if args.npz is None else npz_path(args.npz)],
                    figures=[args.plot])
-    scenario = load_scenario(args.scenario)
+    scenario, planned = _load_with_plan(args.scenario)
+    if planned is not None:
+        print(f"planned u_d through {len(planned.waypoints)} waypoints: {planned.report.summary()}")
     result = _core.run_scenario(scenario)
     if args.gamma_star:
         result.gamma_star = _core.scenario_gamma_star(scenario).gamma_star
@@ -114,11 +129,57 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         from .plotting import save_figure, xy_figure
 
-        save_figure(xy_figure(result), args.plot)
+        save_figure(xy_figure(result, waypoints=planned.waypoints if planned is not None else ()), args.plot)
     print(summary(result))
     if result.simulation.status != _core.RunStatus.completed:
         print(f"hinf-cpp: warning: the run {result.simulation.status.name}: {result.simulation.status_message}",
               file=sys.stderr)
+    return 0
+
+
+def planned_scenario_text(planned) -> str:
+    """The planned scenario as a scenario file (hinf-sim runs it as is), with a header saying
+    where its inputs come from."""
+    plan, report = planned.plan, planned.plan.report
+    lines = [f"# Planned by hinf-cpp plan from {planned.source}: u_d through the waypoints below,",
+             "# as tables with interpolation = \"linear\" (the optimizer's inputs, docs/planning.md).",
+             f"# {report.summary()}.",
+             "# Waypoints:"]
+    lines += [f"#   {j}: {w.describe()}" for j, w in enumerate(plan.waypoints)]
+    return "\n".join(lines) + "\n" + _core.scenario_toml(planned.scenario)
+
+
+def plan_dict(planned) -> dict:
+    """The plan's report for --json: the feasibility check, the solver's effort, the waypoints."""
+    import dataclasses
+
+    return {"scenario": planned.scenario.name, "model": planned.plan.model.name(),
+            "waypoints": [dataclasses.asdict(w) for w in planned.plan.waypoints],
+            "report": planned.plan.report.to_dict()}
+
+
+def cmd_plan(args: argparse.Namespace) -> int:
+    from .planned_scenario import load_planned
+
+    _check_outputs(files=[args.output, args.json], figures=[args.plot])
+    planned = load_planned(args.scenario, cache=not args.no_cache)
+    if planned is None:
+        load_scenario(args.scenario)  # a file that cannot be read or parsed: the reader's message
+        raise ValueError(f"{args.scenario}: [desired] gives no waypoints or path: there is nothing to plan "
+                         "(docs/planning.md)")
+    write_text(args.output, planned_scenario_text(planned))
+    report = planned.plan.report
+    print(f"scenario {planned.scenario.name}: planned u_d for the {planned.plan.model.name()} model through "
+          f"{len(planned.plan.waypoints)} waypoints")
+    print(f"  {report.summary()}")
+    print(f"  waypoint errors (re-simulated): max {max(report.waypoint_errors):.3g}; IPOPT {report.status}")
+    if args.json is not None:
+        write_text(args.json, json.dumps(plan_dict(planned), indent=2) + "\n")
+    if args.plot is not None:
+        from .plotting import plan_figure, save_figure
+
+        save_figure(plan_figure(planned.plan, title=f"{planned.scenario.name}: planned"), args.plot)
+    print(f"wrote {args.output}")
     return 0
 
 
@@ -463,6 +524,14 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--plot", help="write the x-y plot (PNG, PDF or SVG)")
     run.add_argument("--gamma-star", action="store_true", help="also compute gamma* (eq. 14) for the results file")
     run.set_defaults(handler=cmd_run)
+
+    planner = sub.add_parser("plan", help="plan the desired inputs of a scenario that gives waypoints or a path, "
+                                          "and write the planned scenario (which hinf-sim runs as is)")
+    planner.add_argument("scenario", help="scenario file (TOML) whose [desired] gives waypoints or a path")
+    planner.add_argument("-o", "--output", required=True, help="write the planned scenario (TOML)")
+    planner.add_argument("--no-cache", action="store_true", help="plan anew even if this plan is cached")
+    _add_outputs(planner, json="the feasibility report", plot="the planned path and the waypoints")
+    planner.set_defaults(handler=cmd_plan)
 
     comp = sub.add_parser("compare", help="the H-infinity law against the baselines (lqr, cascade)")
     comp.add_argument("scenario", help="scenario file (TOML)")

@@ -32,8 +32,13 @@ absolute.
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+import json
 import math
+import os
+import pathlib
 import time
+import warnings
 from collections.abc import Sequence
 
 import numpy as np
@@ -43,7 +48,7 @@ from .symbolic import SymbolicModel, _casadi
 from .symbolic_builtin import symbolic_model
 
 __all__ = ["FeasibilityReport", "Plan", "PlanOptions", "PlanningError", "UnreachableWaypointError", "Waypoint",
-           "plan", "waypoints_from_path"]
+           "default_cache_dir", "plan", "waypoints_from_path"]
 
 # Part of every cache key (planned_scenario.py): a change to the formulation changes it.
 PLANNER_VERSION = 1
@@ -309,14 +314,19 @@ def time_grid(t0: float, tf: float, key_times: Sequence[float], interval: float)
 
 
 def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 0.0, tf: float | None = None,
-         options: PlanOptions | None = None) -> Plan:
+         options: PlanOptions | None = None, cache_dir: str | os.PathLike | None = None) -> Plan:
     """Plans a desired trajectory through the waypoints, from the state q0 at t0 to tf (default:
     the last waypoint's time), for the model (a built-in model or a SymbolicModel).
 
     Returns a :class:`Plan`: the inputs, the planned and re-simulated states, the report.
     Raises ValueError for bad arguments, :class:`UnreachableWaypointError` (a ValueError) when a
     waypoint cannot be met with the input bounds and the time given, and
-    :class:`PlanningError` when IPOPT fails or the plan cannot be made accurate enough."""
+    :class:`PlanningError` when IPOPT fails or the plan cannot be made accurate enough.
+
+    cache_dir: a folder (e.g. :func:`default_cache_dir`) where plans are kept by the content of
+    what they depend on (the model's equations, q0, the horizon, the waypoints, the options,
+    the planner's version): the same request again is read back, re-simulated and checked
+    instead of optimized. None: no cache."""
     started = time.perf_counter()
     ca = _casadi()
     symbolic = symbolic_model(model)
@@ -340,6 +350,12 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     nodes = [int(np.searchsorted(t, w.t)) for w in waypoints]
 
     dynamics = _dynamics_function(ca, symbolic)
+    cache_path = None
+    if cache_dir is not None:
+        cache_path = pathlib.Path(cache_dir) / f"{_cache_key(dynamics, cpp_model, q0, t0, tf, waypoints, options)}.json"
+        cached = _read_cached(cache_path, cpp_model, waypoints, nodes, t, q0, options, started)
+        if cached is not None:
+            return cached
     iterate = _Iterate(*_initial_guess(dynamics, symbolic, q0, t, waypoints, nodes, options))
     # A first solve with a quarter of the substeps finds the solution (or the unreachable
     # waypoint) at a quarter of the cost per iteration; each solve after it starts from the
@@ -377,7 +393,71 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     result = Plan(cpp_model, waypoints, nodes, t, iterate.q, iterate.u, trajectory, report)
     check_waypoints(result, options)
     report.seconds = time.perf_counter() - started
+    if cache_path is not None:
+        _write_cached(cache_path, result)
     return result
+
+
+def default_cache_dir() -> pathlib.Path:
+    """``$HINF_CPP_CACHE/plans``, else ``$XDG_CACHE_HOME/hinf_cpp/plans`` or ``~/.cache/hinf_cpp/plans``."""
+    if os.environ.get("HINF_CPP_CACHE"):
+        return pathlib.Path(os.environ["HINF_CPP_CACHE"]) / "plans"
+    base = os.environ.get("XDG_CACHE_HOME") or pathlib.Path.home() / ".cache"
+    return pathlib.Path(base) / "hinf_cpp" / "plans"
+
+
+def _cache_key(F, cpp_model, q0, t0, tf, waypoints, options) -> str:
+    """SHA-256 of everything the plan depends on; the dynamics by CasADi's serialization of
+    F(t, q, u) (which holds the parameters' values)."""
+    content = {"planner": PLANNER_VERSION, "package": _core.__version__, "model": cpp_model.name(),
+               "dynamics": F.serialize(), "q0": q0.tolist(), "t0": t0, "tf": tf,
+               "waypoints": [dataclasses.asdict(w) for w in waypoints], "options": dataclasses.asdict(options)}
+    return hashlib.sha256(json.dumps(content, sort_keys=True).encode()).hexdigest()
+
+
+def _read_cached(path: pathlib.Path, cpp_model, waypoints, nodes, t, q0, options, started) -> Plan | None:
+    """The cached plan, re-simulated and checked again; None if absent, unreadable or failing
+    its checks (then it is planned anew)."""
+    try:
+        data = json.loads(path.read_text())
+        q, u = np.array(data["q"], dtype=float), np.array(data["u"], dtype=float)
+        if not (np.array_equal(np.array(data["t"]), t) and q.shape == (len(t), len(q0)) and u.shape[0] == len(t)):
+            return None
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, u), float(t[0]), float(t[-1]))
+    mismatch = _mismatch(trajectory, t, q, list(cpp_model.position_indices()))
+    if mismatch[0] > options.max_mismatch:
+        return None
+    stats = data["stats"]
+    report = FeasibilityReport(
+        position_mismatch=mismatch[0], position_mismatch_t=mismatch[1], state_mismatch=mismatch[2],
+        waypoint_errors=[], heading_errors=[], speed_errors=[], iterations=int(stats["iterations"]),
+        solve_seconds=float(stats["solve_seconds"]), seconds=0.0, substeps=int(stats["substeps"]),
+        intervals=len(t) - 1, status=str(stats["status"]), cache_hit=True)
+    result = Plan(cpp_model, waypoints, nodes, t, q, u, trajectory, report)
+    try:
+        check_waypoints(result, options)
+    except PlanningError:
+        return None
+    report.seconds = time.perf_counter() - started
+    return result
+
+
+def _write_cached(path: pathlib.Path, result: Plan) -> None:
+    """Keeps the plan (written whole or not at all); a cache that cannot be written is a warning."""
+    r = result.report
+    data = {"t": result.t.tolist(), "q": result.q.tolist(), "u": result.u.tolist(),
+            "stats": {"iterations": r.iterations, "solve_seconds": r.solve_seconds, "substeps": r.substeps,
+                      "status": r.status}}
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+        temporary.write_text(json.dumps(data))
+        os.replace(temporary, path)
+    except OSError as error:
+        warnings.warn(f"the plan could not be cached in {path.parent}: {error.strerror or error} (set HINF_CPP_CACHE "
+                      "to a writable folder)", UserWarning, stacklevel=3)
 
 
 @dataclasses.dataclass

@@ -130,16 +130,24 @@ def _span(paths: list[np.ndarray]) -> float:
 
 
 def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows: int = 0,
-              length_unit: str = "m") -> Figure:
+              length_unit: str = "m", waypoints=(), ax=None) -> Figure:
     """The paper's x-y plot: desired path solid, actual path dashed, start points marked;
-    optionally ``heading_arrows`` arrows of the heading along the actual path. ``length_unit``
-    labels the axes (the model's unit of length)."""
+    optionally ``heading_arrows`` arrows of the heading along the actual path, and the
+    ``waypoints`` a desired trajectory was planned through (hinf_cpp.planner.Waypoint: crosses,
+    and a short line for a waypoint's heading). ``length_unit`` labels the axes (the model's
+    unit of length). ``ax``: draw into these axes instead of a new figure."""
     ix, iy = _position_indices(result)
     sim = result.simulation
-    fig = Figure(figsize=(6.4, 5.2), layout="constrained")
-    ax = fig.subplots()
-    ax.plot(sim.q_d[:, ix], sim.q_d[:, iy], "-", color="black", lw=1.5, label="desired")
+    if ax is None:
+        fig = Figure(figsize=(6.4, 5.2), layout="constrained")
+        ax = fig.subplots()
+    else:
+        fig = ax.figure
+    desired = "planned (desired)" if waypoints else "desired"
+    ax.plot(sim.q_d[:, ix], sim.q_d[:, iy], "-", color="black", lw=1.5, label=desired)
     ax.plot(sim.q[:, ix], sim.q[:, iy], "--", color="tab:blue", lw=1.5, label="actual")
+    if waypoints:
+        _waypoint_marks(ax, waypoints, 0.04 * _span([sim.q_d[:, [ix, iy]]]))
     ax.plot(sim.q_d[0, ix], sim.q_d[0, iy], "o", color="black", ms=5, label="desired start")
     ax.plot(sim.q[0, ix], sim.q[0, iy], "s", color="tab:blue", ms=5, label="actual start")
     if heading_arrows > 0:
@@ -152,6 +160,41 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
     ax.legend(loc="best", fontsize="small")
     ax.set_title(title if title is not None else
                  f"{result.scenario_name}: {run_key(result.law, result.output_feedback)}, gamma = {result.gamma:g}")
+    return fig
+
+
+def _waypoint_marks(ax, waypoints, length: float) -> None:
+    """Crosses at the waypoints, a line along each given heading, and the waypoint's number."""
+    x = [w.x for w in waypoints]
+    y = [w.y for w in waypoints]
+    ax.plot(x, y, "x", color="tab:red", ms=7, mew=1.6, label="waypoints", zorder=7)
+    for j, w in enumerate(waypoints):
+        if w.heading is not None:
+            ax.plot([w.x, w.x + length * math.cos(w.heading)], [w.y, w.y + length * math.sin(w.heading)], "-",
+                    color="tab:red", lw=1.2, zorder=7)
+        if len(waypoints) <= 12:
+            ax.annotate(str(j), (w.x, w.y), textcoords="offset points", xytext=(4, 4), fontsize="x-small",
+                        color="tab:red")
+
+
+def plan_figure(planned_plan, title: str | None = None, length_unit: str = "m") -> Figure:
+    """A plan (hinf_cpp.planner.Plan) before any tracking: the re-simulated desired path, the
+    planned states at the nodes, and the waypoints."""
+    model = planned_plan.model
+    ix, iy = model.position_indices()
+    t = np.linspace(planned_plan.t0, planned_plan.tf, 2001)
+    q = np.array([planned_plan.trajectory.q_d(tk) for tk in t])
+    fig = Figure(figsize=(6.4, 5.2), layout="constrained")
+    ax = fig.subplots()
+    ax.plot(q[:, ix], q[:, iy], "-", color="black", lw=1.5, label="desired (re-simulated)")
+    ax.plot(planned_plan.q[:, ix], planned_plan.q[:, iy], ".", color="tab:gray", ms=3, label="planned nodes")
+    _waypoint_marks(ax, planned_plan.waypoints, 0.04 * _span([q[:, [ix, iy]]]))
+    ax.set_xlabel(f"x [{length_unit}]")
+    ax.set_ylabel(f"y [{length_unit}]")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    ax.set_title(title or f"plan for the {model.name()} model: {len(planned_plan.waypoints)} waypoints")
     return fig
 
 

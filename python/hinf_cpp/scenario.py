@@ -25,7 +25,13 @@ __all__ = ["load_scenario", "scenario_from_dict", "signal_from_spec"]
 def load_scenario(path: str | os.PathLike) -> _core.Scenario:
     """Reads a scenario file; anything wrong with it raises ValueError naming the file and the key.
     What is legal but probably not meant (a table whose cubic spline overshoots its values) is a
-    UserWarning naming the file and the key."""
+    UserWarning naming the file and the key. A file whose [desired] gives waypoints or a path is
+    planned first (hinf_cpp.planned_scenario, docs/planning.md; the plan is cached)."""
+    from .planned_scenario import load_planned
+
+    planned = load_planned(path)
+    if planned is not None:
+        return _warn_about(planned.scenario, os.fspath(path))
     return _warn_about(_core.load_scenario_toml(os.fspath(path)), os.fspath(path))
 
 
@@ -92,6 +98,10 @@ def _toml_text(document: Any, source: str) -> str:
 def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
     """Builds a :class:`Scenario` from the dictionary form of a scenario file (as
     :func:`tomllib.load` gives it); the same checks and messages as :func:`load_scenario`."""
+    from .planned_scenario import needs_planning, plan_scenario
+
+    if needs_planning(root):
+        return _warn_about(plan_scenario(root, source).scenario, source)
     return _warn_about(_core.parse_scenario_toml(_toml_text(root, source), source), source)
 
 

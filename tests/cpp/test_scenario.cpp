@@ -289,6 +289,11 @@ TEST(ScenarioFile, ErrorsNameTheKey) {
                        "u1 = { table = { t = [0.0, 20.0], value = [1.0, 1.0], interpolation = \"spline\" } }"),
                {"u1.table.interpolation", "spline", "\"pchip\", \"linear\", \"hold\" or \"cubic\""},
                "unknown interpolation");
+  expect_error(replace(kMinimal, "u1 = { offset = 1.0 }\nu2 = { harmonics = [ { amplitude = 0.3, omega = 0.2 } ] }",
+                       "waypoints = [ { x = 5.0, y = 0.0, t = 5.0 } ]"),
+               {"[desired] waypoints", "hinf-cpp run", "hinf-cpp plan"}, "waypoints need the Python planner");
+  expect_error(replace(kMinimal, "u1 = { offset = 1.0 }", "path = { x = [1.0], y = [0.0], speed = 1.0 }"),
+               {"[desired] path", "docs/planning.md"}, "a path needs the Python planner");
   expect_error(replace(kMinimal, "u1 = { offset = 1.0 }",
                        "u1 = { offset = 1.0, interpolation = \"linear\" }"),
                {"interpolation"}, "interpolation of a harmonic signal");

@@ -33,6 +33,10 @@ std::string scenario_toml(const Scenario& scenario);
 using PythonModelHook = std::function<ModelPtr(const std::string& callable, const std::string& source)>;
 void set_python_model_hook(PythonModelHook hook);
 
+// The model of a document's [model] section, read as parse_scenario_toml reads it (the planner
+// of the Python package needs the model before the desired inputs exist).
+ModelPtr parse_model_toml(const std::string& text, const std::string& source);
+
 // A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 // scenario), e.g. "kappa = { offset = 1.0 }".
 Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source);

@@ -1,0 +1,215 @@
+"""Scenario files whose [desired] gives waypoints or a path instead of inputs (docs/planning.md).
+
+The planner (``hinf_cpp.planner``) turns the waypoints into inputs u_d, which take the place of
+the planning keys in [desired] as tables with interpolation = "linear"; the scenario then goes
+through the one C++ reader like any other. Plans are cached by the content of what they depend
+on (``hinf_cpp.planner.default_cache_dir``), so running a file again does not optimize again.
+``hinf-sim`` does not plan: it refuses these keys and says to run ``hinf-cpp run`` or to write
+the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml``.
+
+    [desired]
+    q0 = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    waypoints = [ { x = 20.0, y = 0.0, t = 20.0 },
+                  { x = 60.0, y = 3.5, t = 60.0, heading = 0.0 } ]
+    # or: path = { x = [...], y = [...], speed = 1.0 }
+    [desired.plan]
+    u_min = [0.0, -0.5]
+    u_max = [2.0, 0.5]
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import math
+import os
+import pathlib
+import re
+import tomllib
+
+from . import _core
+from .planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
+                      waypoints_from_path)
+from .scenario import _toml_text, resolve_callable
+
+__all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario"]
+
+PLANNING_KEYS = ("waypoints", "path", "plan")
+WAYPOINT_KEYS = ("x", "y", "t", "heading", "speed")
+PATH_KEYS = ("x", "y", "speed")
+PER_INPUT = ("u_min", "u_max", "input_scale")
+INTEGERS = ("substeps", "max_iterations")
+
+
+@dataclasses.dataclass
+class PlannedScenario:
+    """A scenario with planned inputs: the scenario (as the C++ reader built it), the plan, and
+    the scenario file's dictionary with the planned inputs in [desired] in place of the
+    planning keys."""
+
+    scenario: _core.Scenario
+    plan: Plan
+    document: dict
+    source: str
+
+
+def needs_planning(root) -> bool:
+    """Whether a scenario's dictionary asks for planning ([desired] has waypoints, path or plan)."""
+    desired = root.get("desired") if isinstance(root, dict) else None
+    return isinstance(desired, dict) and any(key in desired for key in PLANNING_KEYS)
+
+
+def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario | None:
+    """The planned scenario of a file whose [desired] asks for planning; None for any other file
+    (also one that is not valid TOML: the C++ reader reports that)."""
+    path = os.fspath(path)
+    try:
+        root = tomllib.loads(pathlib.Path(path).read_text(encoding="utf-8-sig"))
+    except (OSError, ValueError):
+        return None
+    return plan_scenario(root, path, cache) if needs_planning(root) else None
+
+
+def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> PlannedScenario:
+    """Plans the inputs of a scenario's dictionary whose [desired] gives waypoints or a path, and
+    reads the planned scenario. ValueError naming the source and the key for anything wrong
+    (an UnreachableWaypointError for a waypoint out of reach)."""
+    desired = root["desired"]
+    planning = {key: desired[key] for key in PLANNING_KEYS if key in desired}
+    if ("waypoints" in planning) == ("path" in planning):
+        raise ValueError(f"{source}: [desired] give either waypoints or path (docs/planning.md), "
+                         f"{'not both' if 'path' in planning else 'got neither'}")
+    inputs = sorted(key for key in desired if re.fullmatch(r"u\d+", key))
+    if inputs:
+        raise ValueError(f"{source}: [desired] {inputs[0]}: give the inputs or {next(iter(planning))} "
+                         "(planned inputs), not both")
+    model = _core.parse_model_toml(_toml_text({key: root[key] for key in ("model",) if key in root}, source), source)
+    # Everything but the inputs, checked by the C++ reader first (with zero inputs in their place).
+    skeleton = copy.deepcopy(root)
+    skeleton["desired"] = {key: value for key, value in desired.items() if key not in PLANNING_KEYS}
+    skeleton["desired"].update({f"u{i + 1}": 0.0 for i in range(model.m())})
+    checked = _core.parse_scenario_toml(_toml_text(skeleton, source), source)
+    options = _plan_options(planning.get("plan", {}), source, model.m())
+    if "waypoints" in planning:
+        waypoints = _waypoints(planning["waypoints"], source)
+        where = "[desired]"
+    else:
+        positions = model.position_indices()
+        start = [checked.desired_q0[i] for i in positions] if len(positions) == 2 else [0.0, 0.0]
+        waypoints = _path_waypoints(planning["path"], source, start, checked.t0, options.tolerance)
+        where = "[desired] path:"
+    planner_model = _planner_model(root.get("model", {}), model, source)
+    try:
+        result = plan(planner_model, waypoints, q0=checked.desired_q0, t0=checked.t0, tf=checked.tf, options=options,
+                      cache_dir=default_cache_dir() if cache else None)
+    except UnreachableWaypointError as error:
+        raise UnreachableWaypointError(f"{source}: {where} {error}", error.index, error.miss) from None
+    except ValueError as error:
+        text = str(error)
+        section = "[model]" if "has no CasADi form" in text else where
+        raise ValueError(f"{source}: {section} {text}") from None
+    document = copy.deepcopy(root)
+    document["desired"] = dict(skeleton["desired"], **result.input_tables())
+    scenario = _core.parse_scenario_toml(_toml_text(document, source), source)
+    return PlannedScenario(scenario, result, document, source)
+
+
+def _planner_model(table: dict, model: _core.Model, source: str):
+    """The model for the planner: its CasADi expressions are needed. kind = "python" may name a
+    SymbolicModel (called again here: the C++ reader got its compiled form); kind = "casadi" has
+    only a compiled library."""
+    kind = table.get("kind") if isinstance(table, dict) else None
+    if kind == "casadi":
+        raise ValueError(f"{source}: [model] kind = \"casadi\": the planner needs the model's CasADi expressions, and "
+                         "model.json holds only compiled functions; name the SymbolicModel itself with kind = "
+                         "\"python\", callable = \"FILE.py:FUNCTION\" to plan (docs/planning.md)")
+    if kind == "python":
+        from .symbolic import SymbolicModel
+
+        base = pathlib.Path(source).parent if source and pathlib.Path(source).is_file() else None
+        made = resolve_callable(table["callable"], base)()
+        if isinstance(made, SymbolicModel):
+            return made
+    return model
+
+
+# ---- the planning keys, read with messages that name the source and the key ----
+
+def _number(value, where: str, allow_infinite: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"{where}: expected a number, got {_type_name(value)}")
+    if math.isnan(value) or (math.isinf(value) and not allow_infinite):
+        raise ValueError(f"{where}: expected a finite number, got {value}")
+    return float(value)
+
+
+def _type_name(value) -> str:
+    return {bool: "a boolean", str: "a string", list: "an array", dict: "a table"}.get(type(value), type(value).__name__)
+
+
+def _known(table, known: tuple[str, ...], where: str) -> dict:
+    if not isinstance(table, dict):
+        raise ValueError(f"{where}: expected a table, got {_type_name(table)}")
+    for key in table:
+        if key not in known:
+            raise ValueError(f"{where}: unknown key '{key}' (known keys: {', '.join(known)})")
+    return table
+
+
+def _plan_options(table, source: str, m: int) -> PlanOptions:
+    where = f"{source}: [desired.plan]"
+    fields = tuple(field.name for field in dataclasses.fields(PlanOptions))
+    values = {}
+    for key, value in _known(table, fields, where).items():
+        if key in PER_INPUT:
+            items = value if isinstance(value, list) else [value]
+            if not items:
+                raise ValueError(f"{where} {key}: expected a number or one number per input, got an empty array")
+            values[key] = tuple(_number(v, f"{where} {key}", allow_infinite=key != "input_scale") for v in items)
+        elif key in INTEGERS:
+            if isinstance(value, bool) or not isinstance(value, int):
+                raise ValueError(f"{where} {key}: expected an integer, got {_type_name(value)}")
+            values[key] = value
+        else:
+            values[key] = _number(value, f"{where} {key}")
+    options = PlanOptions(**values)
+    try:
+        options.checked(m)
+    except ValueError as error:
+        raise ValueError(f"{where} {error}") from None
+    return options
+
+
+def _waypoints(value, source: str) -> list[Waypoint]:
+    where = f"{source}: [desired] waypoints"
+    if not isinstance(value, list) or not value:
+        raise ValueError(f"{where}: expected an array of tables {{ x = ..., y = ..., t = ... }}, got "
+                         f"{'an empty array' if isinstance(value, list) else _type_name(value)}")
+    out = []
+    for i, item in enumerate(value):
+        table = _known(item, WAYPOINT_KEYS, f"{where}[{i}]")
+        for key in ("x", "y"):
+            if key not in table:
+                raise ValueError(f"{where}[{i}]: {key} is required")
+        out.append(Waypoint(**{key: _number(v, f"{where}[{i}].{key}") for key, v in table.items()}))
+    return out
+
+
+def _path_waypoints(value, source: str, start, t0: float, tolerance: float) -> list[Waypoint]:
+    where = f"{source}: [desired] path"
+    table = _known(value, PATH_KEYS, where)
+    for key in PATH_KEYS:
+        if key not in table:
+            raise ValueError(f"{where}: {key} is required")
+    columns = {}
+    for key in ("x", "y"):
+        if not isinstance(table[key], list) or not table[key]:
+            raise ValueError(f"{where}.{key}: expected an array of numbers")
+        columns[key] = [_number(v, f"{where}.{key}[{i}]") for i, v in enumerate(table[key])]
+    speed = table["speed"]
+    speed = ([_number(v, f"{where}.speed[{i}]") for i, v in enumerate(speed)] if isinstance(speed, list)
+             else _number(speed, f"{where}.speed"))
+    try:
+        return waypoints_from_path(columns["x"], columns["y"], speed, start=start, t0=t0, tolerance=tolerance)
+    except ValueError as error:
+        raise ValueError(f"{where}: {error}") from None
