@@ -1,5 +1,7 @@
 #include "hinf/trajectory.hpp"
 
+#include <algorithm>
+
 #include "hinf/checks.hpp"
 #include "hinf/errors.hpp"
 
@@ -34,7 +36,14 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
   Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
   Vec y = q_d0_;
   try {
-    stepper.integrate(rhs, t0, tf, y.data(), [&](const DensePiece& piece) { dense_.append(piece); });
+    // A table input is a polynomial between its points only: the integration stops at every
+    // point inside the horizon, so that no step straddles a kink (a "linear" table's, say),
+    // which the error estimate of a step would not see.
+    double a = t0;
+    for (double b : input_breakpoints(t0, tf)) {
+      stepper.integrate(rhs, a, b, y.data(), [&](const DensePiece& piece) { dense_.append(piece); });
+      a = b;
+    }
   } catch (const SolverError& e) {
     throw SolverError(str_cat("the desired trajectory could not be integrated: ", e.what()),
                       e.t(), e.flag());
@@ -53,6 +62,19 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
           " pieces");
   require(dense_.t_min() <= t0 && dense_.t_max() >= tf, "the dense output covers [", dense_.t_min(), ", ",
           dense_.t_max(), "], not the horizon [", t0, ", ", tf, "]");
+}
+
+std::vector<double> Trajectory::input_breakpoints(double t0, double tf) const {
+  std::vector<double> points;
+  if (!u_d_.is_function())
+    for (const Signal& channel : u_d_.channels())
+      if (channel.is_table())
+        for (double t : channel.table_t())
+          if (t > t0 && t < tf) points.push_back(t);
+  points.push_back(tf);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
 }
 
 void Trajectory::check_arguments() const {

@@ -518,27 +518,29 @@ def _build_interval(ca, F, n: int, m: int, substeps: int):
     return ca.Function("interval", [t0, h, x0, u0, u1], [x])
 
 
-def _heading_turns_velocity(F, symbolic: SymbolicModel, q0: np.ndarray, t0: float) -> bool:
-    """Whether turning the heading turns the velocity of the position, as for a vehicle whose
-    velocity states are in its body frame (the ship, the Fossen vessel, the AUV): then the
-    heading is guessed along the path. Probed with every other non-position state at 1."""
+def _moves_where_it_points(F, symbolic: SymbolicModel, q0: np.ndarray, t0: float, scale) -> bool:
+    """Whether the input that accelerates the position most (d^2 p/dt^2 per input, times its
+    scale) pushes along the heading (cos psi, sin psi): a vehicle that goes where it points (the
+    ship's surge force, the hovercraft's thrust), whose heading is then guessed along the path.
+    Not so for the VTOL, whose thrust is across its roll angle."""
+    ca = _casadi()
     positions, heading = list(symbolic.position_indices), symbolic.heading_index
-    probe = np.ones(symbolic.n)
-    probe[positions] = q0[positions]
-    probe[heading] = q0[heading]
-    zero = np.zeros(symbolic.m)
-    velocity = np.asarray(F(t0, probe, zero)).ravel()[positions]
-    probe[heading] += math.pi / 2
-    turned = np.asarray(F(t0, probe, zero)).ravel()[positions]
-    size = np.linalg.norm(velocity)
-    return bool(size > 0 and np.linalg.norm(turned - [-velocity[1], velocity[0]]) <= 1e-9 * size)
+    t, q, u = ca.SX.sym("t"), ca.SX.sym("q", symbolic.n), ca.SX.sym("u", symbolic.m)
+    rhs = F(t, q, u)
+    acceleration = ca.mtimes(ca.jacobian(rhs[positions], q), rhs)  # d^2 p/dt^2
+    per_input = ca.Function("a", [t, q, u], [ca.jacobian(acceleration, u)])
+    effect = np.asarray(per_input(t0, q0, np.zeros(symbolic.m))) * np.asarray(scale)  # 2 x m
+    strongest = effect[:, int(np.argmax(np.linalg.norm(effect, axis=0)))]
+    size = np.linalg.norm(strongest)
+    along = np.array([math.cos(q0[heading]), math.sin(q0[heading])])
+    return bool(size > 0 and abs(strongest @ along) >= 0.99 * size)
 
 
 def _initial_guess(F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoints: list[Waypoint],
                    nodes: list[int], options: PlanOptions) -> tuple[np.ndarray, np.ndarray]:
     """States: q0 everywhere but the position, straight from waypoint to waypoint in time (held
-    after the last), and for a body-frame vehicle the heading along that polyline. Inputs: 0,
-    or the bound nearest to it."""
+    after the last), and for a vehicle that goes where it points the heading along that
+    polyline. Inputs: 0, or the bound nearest to it."""
     positions, heading = list(symbolic.position_indices), symbolic.heading_index
     times = np.concatenate([[t[0]], [w.t for w in waypoints]])
     xs = np.concatenate([[q0[positions[0]]], [w.x for w in waypoints]])
@@ -546,7 +548,7 @@ def _initial_guess(F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, wa
     q = np.tile(q0, (len(t), 1))
     q[:, positions[0]] = np.interp(t, times, xs)
     q[:, positions[1]] = np.interp(t, times, ys)
-    if heading >= 0 and _heading_turns_velocity(F, symbolic, q0, float(t[0])):
+    if heading >= 0 and _moves_where_it_points(F, symbolic, q0, float(t[0]), options.input_scale):
         directions = np.unwrap(np.arctan2(np.diff(ys), np.diff(xs)))
         # Start within pi of the initial heading, and keep each leg's direction from its start.
         directions += 2 * math.pi * round((q0[heading] - directions[0]) / (2 * math.pi))

@@ -280,6 +280,32 @@ class TimeVaryingScalar final : public hinf::Model {
   bool constant_input_matrices() const override { return false; }
 };
 
+TEST(DesiredTrajectory, LinearTableInputAgainstTheClosedForm) {
+  // dq/dt = -q + u(t) with u a "linear" table that zig-zags (slopes +-40 between points 0.05 s
+  // apart, kinks at every point). On a piece where u = a + b s (s = t - t_k):
+  //   q = a - b + b s + (q_k - a + b) exp(-s).
+  // The integration restarts at the table's points, so it keeps its tolerance (rtol 1e-10,
+  // atol 1e-12) across the kinks: 1e-9 allows 200 steps' worth of local errors (|q| <= 1).
+  std::vector<double> t, v;
+  for (int k = 0; k <= 200; ++k) {
+    t.push_back(0.05 * k);
+    v.push_back(k % 2 == 0 ? 1.0 : -1.0);
+  }
+  const hinf::Signal u = hinf::Signal::table(t, v, hinf::Interpolation::Linear);
+  auto model = std::make_shared<const hinf::LinearModel>(Mat::Constant(1, 1, -1.0), Mat::Constant(1, 1, 1.0),
+                                                         Mat::Identity(1, 1));
+  const hinf::Trajectory trajectory(model, Vec::Constant(1, 0.5), hinf::VectorSignal({u}), 0.0, 10.0);
+  double q_k = 0.5;
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    const double a = v[k], b = (v[k + 1] - v[k]) / (t[k + 1] - t[k]);
+    for (double s : {0.0, 0.013, 0.025, 0.041})
+      EXPECT_NEAR(trajectory.q_d(t[k] + s)[0], a - b + b * s + (q_k - a + b) * std::exp(-s), 1e-9) << t[k] + s;
+    const double h = t[k + 1] - t[k];
+    q_k = a - b + b * h + (q_k - a + b) * std::exp(-h);
+  }
+  EXPECT_NEAR(trajectory.q_d(10.0)[0], q_k, 1e-9);
+}
+
 TEST(SimulationTimeVarying, ClosedLoopErrorHasTheClosedForm) {
   // gamma = inf, Q = 0, Qf = qf, q_d = 2 (u_d = 0, f = 0). Then w := 1/z obeys
   // dw/dt = -b^2, so w(t) = 1/qf + int_t^tf b^2, and the error e = q - q_d under

@@ -1,12 +1,13 @@
 // The desired (feasible) trajectory of paper eq. (8):
 //     dq_d/dt = f(t, q_d) + G(t, q_d) u_d(t),   q_d(t0) = q_d0,
-// integrated forward once with Dormand-Prince 5(4) at tight tolerances and kept as its dense
-// output, so q_d(t), u_d(t) and the linearization along it (paper eq. 10, model.hpp)
+// integrated forward once with Dormand-Prince 5(4) at tight tolerances (restarting at the points
+// of table inputs, where u_d is not smooth) and kept as its dense output, so q_d(t), u_d(t) and the linearization along it (paper eq. 10, model.hpp)
 //     A_e(t) = d/dq [f + G u_d](t, q_d(t)),  B_e(t) = G(t, q_d(t)),  D_e(t) = D(t, q_d(t))
 // are available at any t in [t0, tf].
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "hinf/dopri5.hpp"
 #include "hinf/model.hpp"
@@ -57,6 +58,8 @@ class Trajectory {
  private:
   // The checks of the constructors' arguments (not of the dense output).
   void check_arguments() const;
+  // The points of u_d's tables inside (t0, tf), and tf: where the integration restarts.
+  std::vector<double> input_breakpoints(double t0, double tf) const;
 
   ModelPtr model_;
   Vec q_d0_;
