@@ -11,6 +11,7 @@
     hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N] [--quiet]
     hinf-cpp paper [--out DIR] [--quiet]
     hinf-cpp vehicles [--out DIR] [--quiet]
+    hinf-cpp planned [--out DIR] [--no-cache] [--quiet]
 
 Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
 too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
@@ -475,6 +476,22 @@ def cmd_vehicles(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_planned(args: argparse.Namespace) -> int:
+    from .gallery import PLANNED, planned_table, run_planned, write_planned_gallery
+
+    _check_outputs(folders=[args.out])
+    runs = []
+    with Progress(quiet=args.quiet) as progress:
+        for index, case in enumerate(PLANNED, start=1):
+            progress(index, len(PLANNED), f"planning and running {case.scenario}")
+            runs.append(run_planned(case, cache=not args.no_cache))
+    print("the shipped planned scenarios: planning (docs/planning.md) and state-feedback tracking")
+    print(text_table(*planned_table(runs)), end="")
+    written = write_planned_gallery(args.out, runs)
+    print(f"\nwrote {args.out}/: " + ", ".join(sorted(p.name for p in written)))
+    return 0
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with errors on one line of stderr (exit status 2), like every other error."""
 
@@ -603,6 +620,12 @@ def build_parser() -> argparse.ArgumentParser:
     vehicles.add_argument("--out", default="out/vehicles", help="output folder (default: out/vehicles)")
     _add_quiet(vehicles)
     vehicles.set_defaults(handler=cmd_vehicles)
+    planned = sub.add_parser("planned", help="the shipped planned scenarios (waypoints, a path): plans, their "
+                                             "feasibility, tracking, figures and a table")
+    planned.add_argument("--out", default="out/planned", help="output folder (default: out/planned)")
+    planned.add_argument("--no-cache", action="store_true", help="plan anew even where a plan is cached")
+    _add_quiet(planned)
+    planned.set_defaults(handler=cmd_planned)
     return parser
 
 

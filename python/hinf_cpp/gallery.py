@@ -1,6 +1,7 @@
 """The gallery of the built-in vehicles (docs/vehicles.md): the shipped scenario of each vehicle
 run with state feedback, its gamma*, its x-y figure and a table of the tracking results
-(``hinf-cpp vehicles --out DIR``)."""
+(``hinf-cpp vehicles --out DIR``); and the gallery of the shipped planned scenarios
+(docs/planning.md): plan, feasibility, waypoints and tracking (``hinf-cpp planned --out DIR``)."""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ from . import _core
 from .outputs import write_text
 from .tables import markdown_table
 
-__all__ = ["VEHICLES", "VehicleRun", "gallery_figure", "gallery_table", "run_vehicle", "write_gallery"]
+__all__ = ["PLANNED", "VEHICLES", "PlannedRun", "VehicleRun", "gallery_figure", "gallery_table", "planned_table",
+           "run_planned", "run_vehicle", "write_gallery", "write_planned_gallery"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -114,4 +116,87 @@ def write_gallery(out: str | pathlib.Path, runs: list[VehicleRun]) -> list[pathl
             "of length; gamma* of eq. (14) for the scenario's design.\n\n"
             + markdown_table(header, rows) + "\n![x-y paths of the vehicles](vehicles_xy.png)\n")
     written.append(write_text(out / "metrics.md", text))
+    return [pathlib.Path(p) for p in written]
+
+
+# ---- the shipped planned scenarios (docs/planning.md): ``hinf-cpp planned --out DIR`` ----
+
+@dataclasses.dataclass(frozen=True)
+class PlannedCase:
+    label: str  # for tables and titles
+    scenario: str  # the shipped scenario (scenarios/<scenario>.toml)
+    length_unit: str
+
+
+PLANNED = [PlannedCase(f"{vehicle}: {pattern.replace('_', ' ')}", f"planned/{stem}_{pattern}", "m")
+           for vehicle, stem in (("ship", "ship"), ("hovercraft", "hovercraft"))
+           for pattern in ("lane_change", "figure_eight", "lawnmower", "docking")]
+
+
+@dataclasses.dataclass
+class PlannedRun:
+    case: PlannedCase
+    planned: object  # hinf_cpp.planned_scenario.PlannedScenario
+    result: _core.RunResult
+
+
+def run_planned(case: PlannedCase, cache: bool = True) -> PlannedRun:
+    """Plans the case's shipped scenario (from the cache when it can) and runs it."""
+    from . import scenario_path
+    from .planned_scenario import load_planned
+
+    planned = load_planned(scenario_path(case.scenario), cache=cache)
+    return PlannedRun(case, planned, _core.run_scenario(planned.scenario))
+
+
+def planned_table(runs: list[PlannedRun]) -> tuple[list[str], list[list[str]]]:
+    """(header, rows): the plan's cost and feasibility and the tracking, one row per scenario."""
+    header = ["scenario", "waypoints", "intervals x RK4 steps", "IPOPT iterations", "planning time",
+              "re-simulation mismatch", "largest waypoint error", "final position error",
+              "RMS position error, last half"]
+    rows = []
+    for run in runs:
+        report = run.planned.plan.report
+        rows.append([run.result.scenario_name, str(len(run.planned.plan.waypoints)),
+                     f"{report.intervals} x {report.substeps}", str(report.iterations),
+                     "cached" if report.cache_hit else f"{report.seconds:.2f} s",
+                     f"{report.position_mismatch:.1e} m", f"{max(report.waypoint_errors):.3g} m",
+                     f"{run.result.metrics.final_position_error:.3g} m",
+                     f"{run.result.metrics.rms_position_error_last_half:.3g} m"])
+    return header, rows
+
+
+def write_planned_gallery(out: str | pathlib.Path, runs: list[PlannedRun]) -> list[pathlib.Path]:
+    """Writes <name>.json (results file) and <name>_xy.png (waypoints, planned path, tracked
+    path) per scenario, planned_xy.png (all of them) and planned.md (the table) into `out`."""
+    from .plotting import save_figure, xy_figure
+
+    out = pathlib.Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    columns = 4
+    rows = math.ceil(len(runs) / columns)
+    overview = Figure(figsize=(4.6 * columns, 4.0 * rows), layout="constrained")
+    axes = np.atleast_1d(overview.subplots(rows, columns)).ravel()
+    for ax, run in zip(axes, runs):
+        stem = pathlib.Path(run.case.scenario).name
+        waypoints = run.planned.plan.waypoints
+        written.append(write_text(out / f"{stem}.json", _core.results_json(run.result) + "\n"))
+        figure = xy_figure(run.result, title=f"{run.case.label}: planned and tracked", heading_arrows=6,
+                           length_unit=run.case.length_unit, waypoints=waypoints)
+        written.append(save_figure(figure, out / f"{stem}_xy.png"))
+        xy_figure(run.result, title=run.case.label, length_unit=run.case.length_unit, waypoints=waypoints, ax=ax)
+        ax.legend().set_visible(False)
+    for ax in axes[len(runs):]:
+        ax.set_visible(False)
+    axes[0].legend(loc="best", fontsize="x-small")
+    written.append(save_figure(overview, out / "planned_xy.png"))
+    header, table_rows = planned_table(runs)
+    text = ("# Planned desired trajectories: planning and tracking\n\n"
+            "Each scenario's inputs planned from its waypoints (docs/planning.md); the re-simulation "
+            "mismatch is the largest distance between the planned positions and those the project's "
+            "integrator re-simulates from the planned inputs; the tracking is the scenario's H-infinity "
+            "state feedback from 1.41 m off.\n\n"
+            + markdown_table(header, table_rows) + "\n![planned and tracked paths](planned_xy.png)\n")
+    written.append(write_text(out / "planned.md", text))
     return [pathlib.Path(p) for p in written]

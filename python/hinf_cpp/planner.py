@@ -374,6 +374,10 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
         if substeps < options.substeps:  # the accurate solve, also to confirm a miss
             substeps = options.substeps
             continue
+        if len(missed) > 1:  # which one is out of reach: meet the earlier ones first
+            iterate = _solve(ca, dynamics, symbolic, q0, t, waypoints, nodes, options, substeps, penalties[0],
+                             iterate, ordered=True)
+            missed = _missed_waypoints(symbolic, iterate.q, dynamics, t, iterate.u, waypoints, nodes, options) or missed
         if missed:
             raise _unreachable(missed, waypoints, options)
         trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, iterate.u), t0, tf)
@@ -559,7 +563,8 @@ def _initial_guess(F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, wa
 
 
 def _solve(ca, F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoints: list[Waypoint],
-           nodes: list[int], options: PlanOptions, substeps: int, penalty: float, start: _Iterate) -> _Iterate:
+           nodes: list[int], options: PlanOptions, substeps: int, penalty: float, start: _Iterate,
+           ordered: bool = False) -> _Iterate:
     """One IPOPT solve of the multiple-shooting problem from `start` (warm with its multipliers)."""
     n, m, count = symbolic.n, symbolic.m, len(t) - 1
     positions, heading = list(symbolic.position_indices), symbolic.heading_index
@@ -593,9 +598,13 @@ def _solve(ca, F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoi
     margin = 10.0 * options.max_mismatch
     conditions = []  # (left, right as a function of the slack, the slack's weight): left <= right(slack)
     for j, (w, k) in enumerate(zip(waypoints, nodes)):
-        # Earlier waypoints weigh up to twice as much: a compromise misses the later end of a
-        # chain that cannot be met, and the first miss names the waypoint out of reach.
-        weight = 2.0 - j / len(waypoints)
+        # Earlier waypoints weigh more: a compromise misses the later end of a chain that cannot
+        # be met, so the first miss names the waypoint out of reach. Mildly (twice as much for
+        # the first as for the last) while planning, which keeps IPOPT fast; strongly (1000
+        # times) to name the culprit once a miss is certain, as reaching further ahead at one
+        # waypoint can bring the next one closer by more.
+        share = (len(waypoints) - 1 - j) / max(1, len(waypoints) - 1)
+        weight = 1000.0**share if ordered else 1.0 + share
         tolerance = options.tolerance - margin
         distance2 = ((X[positions[0], k] - w.x) ** 2 + (X[positions[1], k] - w.y) ** 2) / tolerance**2
         conditions.append((distance2, lambda s: (1.0 + s) ** 2, weight))

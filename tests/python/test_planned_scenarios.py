@@ -1,0 +1,184 @@
+"""Scenario files planned from waypoints or a path (docs/planning.md): every shipped planned
+scenario (re-simulation within 1e-6 of the plan, waypoints met, tracking converges, hinf-sim on
+the written scenario gives the results of hinf-cpp run), the plan cache, and the messages for
+what is wrong in the planning keys."""
+
+from __future__ import annotations
+
+import json
+import os
+import pathlib
+import subprocess
+import sys
+import tomllib
+
+import numpy as np
+import pytest
+
+import hinf_cpp as hc
+from _support import numbers_close
+
+pytest.importorskip("casadi")
+
+from hinf_cpp.planned_scenario import load_planned, plan_scenario  # noqa: E402
+from hinf_cpp.planner import UnreachableWaypointError  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+PLANNED = sorted((ROOT / "scenarios" / "planned").glob("*.toml"))
+BIN = pathlib.Path(sys.executable).parent
+LANE = (ROOT / "scenarios" / "planned" / "ship_lane_change.toml").read_text()
+
+
+@pytest.fixture(autouse=True)
+def plan_cache(tmp_path_factory, monkeypatch):
+    """A cache of this test session only (the programs started by the tests get it too)."""
+    folder = tmp_path_factory.getbasetemp() / "hinf_cpp_cache"
+    monkeypatch.setenv("HINF_CPP_CACHE", str(folder))
+    return folder
+
+
+def mutate(text: str, old: str, new: str) -> str:
+    assert old in text, f"test bug: {old!r} not in the scenario text"
+    return text.replace(old, new)
+
+
+def test_the_shipped_planned_scenarios():
+    names = {path.stem for path in PLANNED}
+    for vehicle in ("ship", "hovercraft"):
+        for pattern in ("lane_change", "figure_eight", "lawnmower", "docking"):
+            assert f"{vehicle}_{pattern}" in names
+    assert hc.scenario_path("planned/ship_lane_change").is_file()
+
+
+@pytest.mark.parametrize("path", PLANNED, ids=[path.stem for path in PLANNED])
+def test_shipped_plan_is_feasible_and_tracked(path):
+    planned = load_planned(path)
+    report = planned.plan.report
+    # The paper's feasibility, checked: the project's integrator re-simulates q_d from the
+    # planned u_d to within 1e-6 m of the planned states (at every node).
+    assert report.position_mismatch < 1e-6
+    options = tomllib.loads(path.read_text())["desired"]["plan"]
+    assert max(report.waypoint_errors) <= options.get("tolerance", 0.05)
+    for error in report.heading_errors:
+        assert error is None or error <= options.get("heading_tolerance", 0.01)
+    for error in report.speed_errors:
+        assert error is None or error <= options.get("speed_tolerance", 0.01)
+    # Inside the input bounds.
+    assert np.all(planned.plan.u >= np.array(options["u_min"]) - 1e-9)
+    assert np.all(planned.plan.u <= np.array(options["u_max"]) + 1e-9)
+    # The tracking converges: from 1.41 m off at t0 to a small fraction of it.
+    result = hc.run_scenario(planned.scenario)
+    assert result.simulation.status == hc.RunStatus.completed
+    assert result.metrics.max_position_error >= np.hypot(1.0, 1.0) - 1e-12
+    assert result.metrics.final_position_error < 0.15 * np.hypot(1.0, 1.0)
+
+
+@pytest.mark.skipif(not ((BIN / "hinf-sim").exists() and (BIN / "hinf-cpp").exists()),
+                    reason="hinf-sim / hinf-cpp are not installed next to this Python")
+@pytest.mark.parametrize("path", PLANNED, ids=[path.stem for path in PLANNED])
+def test_hinf_sim_on_the_written_scenario_equals_hinf_cpp_run(path, tmp_path):
+    def run(*args):
+        done = subprocess.run([str(a) for a in args], capture_output=True, text=True, timeout=600,
+                              env=dict(os.environ))
+        assert done.returncode == 0, done.stderr
+        return done
+
+    written = tmp_path / "planned.toml"
+    run(BIN / "hinf-cpp", "plan", path, "-o", written, "--json", tmp_path / "plan.json")
+    run(BIN / "hinf-sim", written, "--json", tmp_path / "sim.json")
+    cpp = run(BIN / "hinf-cpp", "run", path, "--json", tmp_path / "cpp.json")
+    assert "planned u_d through" in cpp.stdout and "from the cache" in cpp.stdout
+    numbers_close(json.loads((tmp_path / "sim.json").read_text()), json.loads((tmp_path / "cpp.json").read_text()))
+    report = json.loads((tmp_path / "plan.json").read_text())["report"]
+    assert report["position_mismatch"] < 1e-6
+    # hinf-sim refuses the file with the waypoints and says what to do.
+    refused = subprocess.run([str(BIN / "hinf-sim"), str(path)], capture_output=True, text=True, timeout=60)
+    assert refused.returncode == 2
+    assert "needs the planner of the Python package" in refused.stderr and "hinf-cpp plan" in refused.stderr
+
+
+def test_the_cache_reads_back_the_same_plan(tmp_path, monkeypatch):
+    plan_cache = tmp_path / "cache"  # empty: this test's own
+    monkeypatch.setenv("HINF_CPP_CACHE", str(plan_cache))
+    path = tmp_path / "lane.toml"
+    path.write_text(LANE)
+    first = load_planned(path)
+    again = load_planned(path)
+    assert not first.plan.report.cache_hit and again.plan.report.cache_hit
+    np.testing.assert_array_equal(again.plan.u, first.plan.u)
+    np.testing.assert_array_equal(again.plan.t, first.plan.t)
+    assert again.plan.report.position_mismatch == first.plan.report.position_mismatch
+    # Another option is another plan.
+    path.write_text(mutate(LANE, "tolerance = 0.05", "tolerance = 0.04"))
+    other = load_planned(path)
+    assert not other.plan.report.cache_hit and max(other.plan.report.waypoint_errors) <= 0.04
+    # A damaged cache file is planned anew.
+    for file in (plan_cache / "plans").glob("*.json"):
+        file.write_text("{")
+    path.write_text(LANE)
+    assert not load_planned(path).plan.report.cache_hit
+
+
+def test_load_scenario_and_dict_plan_too(tmp_path):
+    path = tmp_path / "lane.toml"
+    path.write_text(LANE)
+    from_file = hc.load_scenario(path)
+    from_dict = hc.scenario_from_dict(tomllib.loads(LANE), str(path))
+    times = np.linspace(0.0, 60.0, 301)
+    np.testing.assert_array_equal(from_file.desired_u(times), from_dict.desired_u(times))
+    assert all(s.interpolation() == hc.Interpolation.linear for s in from_file.desired_u.channels())
+
+
+@pytest.mark.parametrize("old,new,match", [
+    ("{ x = 20.0, y = 0.0, t = 20.0, heading = 0.0 }", "{ x = 20.0, y = 0.0, t = 20.0, z = 1.0 }",
+     r"\[desired\] waypoints\[0\]: unknown key 'z' \(known keys: x, y, t, heading, speed\)"),
+    ("{ x = 20.0, y = 0.0, t = 20.0, heading = 0.0 }", "{ y = 0.0, t = 20.0 }", r"waypoints\[0\]: x is required"),
+    ("{ x = 20.0, y = 0.0, t = 20.0, heading = 0.0 }", "{ x = \"20\", y = 0.0, t = 20.0 }",
+     r"waypoints\[0\].x: expected a number, got a string"),
+    ("tolerance = 0.05", "tolerence = 0.05", r"\[desired.plan\]: unknown key 'tolerence'"),
+    ("tolerance = 0.05", "tolerance = -0.05", r"\[desired.plan\] tolerance must be a finite number > 0"),
+    ("u_max = [2.0, 0.5]", "u_max = [2.0]", r"\[desired.plan\] u_max needs one number per input \(2\), got 1"),
+    ("[desired.plan]", "u1 = 1.0\n[desired.plan]", r"\[desired\] u1: give the inputs or waypoints"),
+    ("{ x = 60.0, y = 3.5, t = 60.0, heading = 0.0 },", "{ x = 60.0, y = 3.5, t = 61.0, heading = 0.0 },",
+     r"waypoint 2 .* comes after the end of the horizon tf = 60"),
+])
+def test_planning_keys_errors_name_the_file_and_key(tmp_path, old, new, match):
+    path = tmp_path / "bad.toml"
+    path.write_text(mutate(LANE, old, new))
+    with pytest.raises(ValueError, match=match) as caught:
+        hc.load_scenario(path)
+    assert str(caught.value).startswith(f"{path}: ")
+
+
+def test_an_unreachable_waypoint_in_a_file(tmp_path):
+    path = tmp_path / "far.toml"
+    path.write_text(mutate(LANE, "{ x = 40.0, y = 3.5, t = 40.0, heading = 0.0 }",
+                           "{ x = 140.0, y = 3.5, t = 40.0, heading = 0.0 }"))
+    with pytest.raises(UnreachableWaypointError, match=rf"^{path}: \[desired\] waypoints\[1\] \(x = 140, y = 3.5, "
+                                                        r"t = 40, heading = 0\) cannot be reached") as caught:
+        hc.load_scenario(path)
+    assert caught.value.index == 1
+    if (BIN / "hinf-cpp").exists():
+        done = subprocess.run([str(BIN / "hinf-cpp"), "run", str(path)], capture_output=True, text=True, timeout=300)
+        assert done.returncode == 2
+        assert done.stderr.count("\n") == 1 and "hinf-cpp: error: " in done.stderr and "waypoints[1]" in done.stderr
+
+
+def test_models_the_planner_cannot_use(tmp_path):
+    text = mutate(LANE, 'kind = "ship"', 'kind = "casadi"\nfile = "model.json"')
+    with pytest.raises(ValueError, match=r"model.json|kind = \"casadi\""):
+        plan_scenario(tomllib.loads(text), str(tmp_path / "x.toml"))
+
+
+def test_a_symbolic_model_named_by_a_python_callable(tmp_path):
+    """kind = "python" naming a SymbolicModel (examples/ship_casadi.py): planned with its own
+    expressions, and the same plan as the built-in ship's (the same equations)."""
+    path = tmp_path / "lane.toml"
+    path.write_text(mutate(LANE, 'kind = "ship"', f'kind = "python"\ncallable = "{ROOT / "examples" / "ship_casadi.py"}:ship"'))
+    planned = load_planned(path)
+    builtin = plan_scenario(tomllib.loads(LANE), "lane.toml")
+    assert planned.plan.report.position_mismatch < 1e-6
+    assert planned.plan.model.name() == "ship-casadi"
+    # Two statements of the same model, one compiled from CasADi: the same optimum to IPOPT's
+    # tolerance (1e-9 relative), far below the inputs' size (~1).
+    np.testing.assert_allclose(planned.plan.u, builtin.plan.u, atol=1e-6)
