@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: set-up (scripts/setup.sh), then the paper's runs with their figures, results
 # files and a metrics table in out/paper/ (or the folder given as the first argument), and the
-# built-in vehicles' runs (docs/vehicles.md) in its subfolder vehicles/ (a few seconds more).
+# built-in vehicles' runs (docs/vehicles.md) in its subfolder vehicles/ and the planned
+# scenarios (docs/planning.md) in planned/ (a few seconds more each).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -9,3 +10,4 @@ bash scripts/setup.sh
 OUT="${1:-out/paper}"
 .venv/bin/hinf-cpp paper --out "$OUT"
 .venv/bin/hinf-cpp vehicles --out "$OUT/vehicles"
+.venv/bin/hinf-cpp planned --out "$OUT/planned"

@@ -23,7 +23,7 @@ REPOSITORY_PATH = re.compile(
 MARKDOWN_NAME = re.compile(r"(?<![\w./-])([\w-]+\.md)\b")
 TEXT_SUFFIXES = {".md", ".py", ".cpp", ".hpp", ".txt", ".toml", ".sh", ".cmake", ".in", ".pyi"}
 # Files the command lines write into an output folder: named as outputs, not as references.
-OUTPUT_FILES = {"metrics.md", "comparison.md", "report.md", "summary.md"}
+OUTPUT_FILES = {"metrics.md", "comparison.md", "report.md", "summary.md", "planned.md"}
 
 
 def tracked_files() -> list[pathlib.Path]:
