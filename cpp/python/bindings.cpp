@@ -1901,6 +1901,9 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
         "The one scenario reader (the one hinf-sim uses): same checks, same messages");
   m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), "Reads a scenario file (parse_scenario_toml)");
+  m.def("needs_planning_toml", &needs_planning_toml, py::arg("text"), py::arg("source"),
+        "Whether a scenario document's [desired] gives waypoints, a path or plan options (parsed with every guard"
+        " of the reader)");
   m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"),
         "The model of a document's [model] section, read as parse_scenario_toml reads it");
   m.def("scenario_toml", &scenario_toml, py::arg("scenario"),

@@ -709,6 +709,15 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   return s;
 }
 
+bool needs_planning_toml(const std::string& text, const std::string& source) {
+  const toml::table root = parse_toml(text, source);
+  const toml::table* desired = root["desired"].as_table();
+  if (desired == nullptr) return false;
+  for (const char* key : {"waypoints", "path", "plan"})
+    if (desired->contains(key)) return true;
+  return false;
+}
+
 ModelPtr parse_model_toml(const std::string& text, const std::string& source) {
   const toml::table root = parse_toml(text, source);
   return parse_model(*section(root, "model", source, true), source);

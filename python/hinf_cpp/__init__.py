@@ -7,8 +7,10 @@ core ``hinf_cpp._core``; this package adds scenario files, plots and the command
 (figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON),
 ``hinf_cpp.analysis`` (attenuation against gamma), ``hinf_cpp.gallery`` (the built-in
 vehicles' shipped runs: FossenVessel, Hovercraft, PlanarVtol, Auv; docs/vehicles.md),
-``hinf_cpp.symbolic`` (your own vehicle in CasADi symbols, evaluated in C++; docs/models.md)
-and ``hinf_cpp.codegen`` (CasADi functions compiled for the C++ core; needs casadi).
+``hinf_cpp.symbolic`` (your own vehicle in CasADi symbols, evaluated in C++; docs/models.md),
+``hinf_cpp.codegen`` (CasADi functions compiled for the C++ core; needs casadi) and
+``hinf_cpp.planner`` (feasible desired trajectories from waypoints or a path; needs casadi;
+docs/planning.md).
 
 Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
 errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved

@@ -61,13 +61,18 @@ def needs_planning(root) -> bool:
 
 def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario | None:
     """The planned scenario of a file whose [desired] asks for planning; None for any other file
-    (also one that is not valid TOML: the C++ reader reports that)."""
+    (also one that cannot be read or parsed: the C++ reader reports that)."""
     path = os.fspath(path)
     try:
-        root = tomllib.loads(pathlib.Path(path).read_text(encoding="utf-8-sig"))
+        text = pathlib.Path(path).read_text(encoding="utf-8-sig")
+        # The C++ parser first, with the reader's guards (tomllib takes time and memory
+        # quadratic in the depth of a dotted key).
+        if not _core.needs_planning_toml(text, path):
+            return None
+        root = tomllib.loads(text)
     except (OSError, ValueError):
         return None
-    return plan_scenario(root, path, cache) if needs_planning(root) else None
+    return plan_scenario(root, path, cache)
 
 
 def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> PlannedScenario:

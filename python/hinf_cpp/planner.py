@@ -13,7 +13,8 @@ linear between the nodes of a time grid that contains every waypoint's time, and
 jumps from node to node by classical Runge-Kutta steps (``substeps`` per interval) in which u is
 evaluated exactly where it is. The planned u_d is stored as tables with interpolation =
 "linear" (so the signal is the optimizer's u, not an approximation of it), and the project's
-own integrator (``hc.Trajectory``: Dormand-Prince at rtol 1e-10) re-simulates q_d from it. The
+own integrator (``hc.Trajectory``: Dormand-Prince at rtol 1e-10, restarting at the table's
+points) re-simulates q_d from it. The
 open-loop mismatch between the planned states and the re-simulated ones is the report's
 ``position_mismatch``; the substeps are doubled until it is below ``max_mismatch``.
 
@@ -293,11 +294,11 @@ def resolve_times(waypoints: Sequence[Waypoint], start: Sequence[float], t0: flo
     previous = t0
     for j, w in enumerate(resolved):
         if not (math.isfinite(w.t) and w.t > previous):
-            raise ValueError(f"waypoint {j} {w.describe()}: its time must be after "
-                             f"{'t0' if j == 0 else f'waypoint {j - 1}'}'s ({previous:g} s): times must increase")
+            raise ValueError(f"waypoints[{j}] {w.describe()}: its time must be after "
+                             f"{'t0' if j == 0 else f'waypoints[{j - 1}]'}'s ({previous:g} s): times must increase")
         previous = w.t
     if tf is not None and resolved[-1].t > tf * (1 + 1e-12) + 1e-12:
-        raise ValueError(f"waypoint {len(resolved) - 1} {resolved[-1].describe()} comes after the end of the "
+        raise ValueError(f"waypoints[{len(resolved) - 1}] {resolved[-1].describe()} comes after the end of the "
                          f"horizon tf = {tf:g}: give a later tf or an earlier time")
     return resolved
 
@@ -395,7 +396,7 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
         solve_seconds=solve_seconds, seconds=0.0, substeps=substeps, intervals=len(t) - 1,
         status=iterate.stats["return_status"])
     result = Plan(cpp_model, waypoints, nodes, t, iterate.q, iterate.u, trajectory, report)
-    check_waypoints(result, options)
+    _check_waypoints(result, options)
     report.seconds = time.perf_counter() - started
     if cache_path is not None:
         _write_cached(cache_path, result)
@@ -441,7 +442,7 @@ def _read_cached(path: pathlib.Path, cpp_model, waypoints, nodes, t, q0, options
         intervals=len(t) - 1, status=str(stats["status"]), cache_hit=True)
     result = Plan(cpp_model, waypoints, nodes, t, q, u, trajectory, report)
     try:
-        check_waypoints(result, options)
+        _check_waypoints(result, options)
     except PlanningError:
         return None
     report.seconds = time.perf_counter() - started
@@ -478,17 +479,17 @@ class _Iterate:
 
 def _check_waypoint(j: int, w: Waypoint, heading: int) -> None:
     if not isinstance(w, Waypoint):
-        raise ValueError(f"waypoint {j} must be a hinf_cpp.planner.Waypoint, got {type(w).__name__}")
+        raise ValueError(f"waypoints[{j}] must be a hinf_cpp.planner.Waypoint, got {type(w).__name__}")
     for name in ("x", "y", "t", "heading", "speed"):
         value = getattr(w, name)
         if value is None and name not in ("x", "y"):
             continue
         if not (isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)):
-            raise ValueError(f"waypoint {j}: {name} must be a finite number, got {value!r}")
+            raise ValueError(f"waypoints[{j}].{name} must be a finite number, got {value!r}")
     if w.speed is not None and w.speed < 0:
-        raise ValueError(f"waypoint {j}: speed must be >= 0, got {w.speed:g}")
+        raise ValueError(f"waypoints[{j}].speed must be >= 0, got {w.speed:g}")
     if w.heading is not None and heading < 0:
-        raise ValueError(f"waypoint {j} gives a heading, but the model has no heading state (heading_index)")
+        raise ValueError(f"waypoints[{j}] gives a heading, but the model has no heading state (heading_index)")
 
 
 def _dynamics_function(ca, symbolic: SymbolicModel):
@@ -701,7 +702,7 @@ def _mismatch(trajectory: _core.Trajectory, t: np.ndarray, q: np.ndarray, positi
     return float(distance[k]), float(t[k]), float(np.max(np.abs(resimulated - q)))
 
 
-def check_waypoints(result: Plan, options: PlanOptions) -> None:
+def _check_waypoints(result: Plan, options: PlanOptions) -> None:
     """Fills the report's waypoint errors from the re-simulated trajectory (what is tracked) and
     raises PlanningError if one is outside its tolerance."""
     model, report = result.model, result.report

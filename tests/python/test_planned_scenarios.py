@@ -140,7 +140,7 @@ def test_load_scenario_and_dict_plan_too(tmp_path):
     ("u_max = [2.0, 0.5]", "u_max = [2.0]", r"\[desired.plan\] u_max needs one number per input \(2\), got 1"),
     ("[desired.plan]", "u1 = 1.0\n[desired.plan]", r"\[desired\] u1: give the inputs or waypoints"),
     ("{ x = 60.0, y = 3.5, t = 60.0, heading = 0.0 },", "{ x = 60.0, y = 3.5, t = 61.0, heading = 0.0 },",
-     r"waypoint 2 .* comes after the end of the horizon tf = 60"),
+     r"waypoints\[2\] .* comes after the end of the horizon tf = 60"),
 ])
 def test_planning_keys_errors_name_the_file_and_key(tmp_path, old, new, match):
     path = tmp_path / "bad.toml"

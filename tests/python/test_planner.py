@@ -181,9 +181,9 @@ def test_path_with_a_speed_profile_and_grid():
     (dict(options=PlanOptions(u_min=(0.0,))), r"u_min needs one number per input \(2\), got 1"),
     (dict(options=PlanOptions(tolerance=-1.0)), "tolerance must be a finite number > 0, got -1.0"),
     (dict(waypoints=[Waypoint(1.0, 0.0, t=5.0), Waypoint(2.0, 0.0, t=4.0)]),
-     r"waypoint 1 \(x = 2, y = 0, t = 4\): its time must be after waypoint 0's \(5 s\)"),
+     r"waypoints\[1\] \(x = 2, y = 0, t = 4\): its time must be after waypoints\[0\]'s \(5 s\)"),
     (dict(waypoints=[Waypoint(1.0, 0.0)]), "the last waypoint has no time t: give it one, or a speed, or tf"),
-    (dict(waypoints=[Waypoint(1.0, math.nan, t=3.0)]), "waypoint 0: y must be a finite number"),
+    (dict(waypoints=[Waypoint(1.0, math.nan, t=3.0)]), r"waypoints\[0\].y must be a finite number"),
     (dict(q0=[1.0, 0.0]), r"q0 must be 6 finite numbers"),
 ])
 def test_bad_arguments_name_the_problem(kwargs, match):

@@ -33,6 +33,10 @@ std::string scenario_toml(const Scenario& scenario);
 using PythonModelHook = std::function<ModelPtr(const std::string& callable, const std::string& source)>;
 void set_python_model_hook(PythonModelHook hook);
 
+// Whether a scenario document's [desired] gives waypoints, a path or plan options (the planner
+// of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
+// (an InputError for what it refuses).
+bool needs_planning_toml(const std::string& text, const std::string& source);
 // The model of a document's [model] section, read as parse_scenario_toml reads it (the planner
 // of the Python package needs the model before the desired inputs exist).
 ModelPtr parse_model_toml(const std::string& text, const std::string& source);
