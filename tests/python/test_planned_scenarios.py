@@ -50,6 +50,7 @@ def test_the_shipped_planned_scenarios():
     assert hc.scenario_path("planned/ship_lane_change").is_file()
 
 
+@pytest.mark.ipopt
 @pytest.mark.parametrize("path", PLANNED, ids=[path.stem for path in PLANNED])
 def test_shipped_plan_is_feasible_and_tracked(path):
     planned = load_planned(path)
@@ -73,6 +74,7 @@ def test_shipped_plan_is_feasible_and_tracked(path):
     assert result.metrics.final_position_error < 0.15 * np.hypot(1.0, 1.0)
 
 
+@pytest.mark.ipopt
 @pytest.mark.skipif(not ((BIN / "hinf-sim").exists() and (BIN / "hinf-cpp").exists()),
                     reason="hinf-sim / hinf-cpp are not installed next to this Python")
 @pytest.mark.parametrize("path", PLANNED, ids=[path.stem for path in PLANNED])
@@ -97,6 +99,7 @@ def test_hinf_sim_on_the_written_scenario_equals_hinf_cpp_run(path, tmp_path):
     assert "needs the planner of the Python package" in refused.stderr and "hinf-cpp plan" in refused.stderr
 
 
+@pytest.mark.ipopt
 def test_the_cache_reads_back_the_same_plan(tmp_path, monkeypatch):
     plan_cache = tmp_path / "cache"  # empty: this test's own
     monkeypatch.setenv("HINF_CPP_CACHE", str(plan_cache))
@@ -119,6 +122,7 @@ def test_the_cache_reads_back_the_same_plan(tmp_path, monkeypatch):
     assert not load_planned(path).plan.report.cache_hit
 
 
+@pytest.mark.ipopt
 def test_load_scenario_and_dict_plan_too(tmp_path):
     path = tmp_path / "lane.toml"
     path.write_text(LANE)
@@ -150,6 +154,7 @@ def test_planning_keys_errors_name_the_file_and_key(tmp_path, old, new, match):
     assert str(caught.value).startswith(f"{path}: ")
 
 
+@pytest.mark.ipopt
 def test_an_unreachable_waypoint_in_a_file(tmp_path):
     path = tmp_path / "far.toml"
     path.write_text(mutate(LANE, "{ x = 40.0, y = 3.5, t = 40.0, heading = 0.0 }",
@@ -170,6 +175,7 @@ def test_models_the_planner_cannot_use(tmp_path):
         plan_scenario(tomllib.loads(text), str(tmp_path / "x.toml"))
 
 
+@pytest.mark.ipopt
 def test_a_symbolic_model_named_by_a_python_callable(tmp_path):
     """kind = "python" naming a SymbolicModel (examples/ship_casadi.py): planned with its own
     expressions, and the same plan as the built-in ship's (the same equations)."""

@@ -113,6 +113,7 @@ def scipy_states(model, plan_result):
     return solution.y.T
 
 
+@pytest.mark.ipopt
 @pytest.mark.parametrize("name,model,q0,u_d,bounds", [
     ("ship", hc.ShipModel(), [1.0, 0.0, 0.0, 0.0, 0.0, 0.0], [1.0, hc.Signal(0.0, [hc.Harmonic(0.3, 0.2)])],
      ((0.0, -1.0), (2.0, 1.0))),
@@ -146,6 +147,7 @@ def test_round_trip_through_sampled_waypoints(name, model, q0, u_d, bounds):
     assert report.iterations > 0 and report.status == "Solve_Succeeded"
 
 
+@pytest.mark.ipopt
 def test_unreachable_waypoint_is_a_clear_error_fast():
     ship = hc.ShipModel()
     options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5))
