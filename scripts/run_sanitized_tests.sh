@@ -43,9 +43,10 @@ core=("$BUILD"/cpp/python/_core.*.so)
 [ -f "${core[0]}" ] || fail "no extension module in $BUILD/cpp/python"
 # Rebuilt from scratch every time, so nothing stale of an earlier run is imported.
 rm -rf "$site/hinf_cpp"
-mkdir -p "$site/hinf_cpp/scenarios"
+mkdir -p "$site/hinf_cpp"
 cp python/hinf_cpp/*.py python/hinf_cpp/_core.pyi python/hinf_cpp/py.typed "${core[0]}" "$site/hinf_cpp/"
-cp scenarios/*.toml "$site/hinf_cpp/scenarios/"
+# The whole tree of scenarios/, as cpp/python/CMakeLists.txt installs it (subfolders included).
+(cd scenarios && find . -name '*.toml' -exec install -D -m 644 {} "$site/hinf_cpp/scenarios/{}" \;)
 cp "$BUILD/cpp/hinf-sim" "$STAGE/bin/hinf-sim"
 cat >"$STAGE/bin/hinf-cpp" <<EOF
 #!$STAGE/bin/python

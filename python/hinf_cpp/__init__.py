@@ -32,10 +32,12 @@ from .scenario import load_scenario, scenario_from_dict, signal_from_spec
 
 
 def scenario_path(name: str) -> _pathlib.Path:
-    """Path of a shipped scenario, e.g. ``scenario_path("paper_fig1")``."""
-    path = _pathlib.Path(str(_resources.files(__name__) / "scenarios" / f"{name}.toml"))
+    """Path of a shipped scenario, e.g. ``scenario_path("paper_fig1")`` or
+    ``scenario_path("planned/ship_lane_change")``."""
+    folder = _pathlib.Path(str(_resources.files(__name__) / "scenarios"))
+    path = folder / f"{name}.toml"
     if not path.exists():
-        shipped = sorted(p.stem for p in path.parent.glob("*.toml"))
+        shipped = sorted(p.relative_to(folder).with_suffix("").as_posix() for p in folder.glob("**/*.toml"))
         raise ValueError(f"no shipped scenario '{name}' (shipped: {', '.join(shipped)})")
     return path
 
