@@ -215,6 +215,7 @@ ScenarioDesign design_scenario(const Scenario& s) {
     }
     if (s.worst_case && s.law == Law::Lqr && design.solution)
       design.game = solve_grde(design.trajectory, s.Q, s.Qf, s.gamma, s.solver);
+    if (design.solution) design.solution->eigenvalue_bounds(design.Z_min_eig, design.Z_max_eig);
   } catch (...) {
     design.error = std::current_exception();
   }
@@ -292,10 +293,9 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   result.timing.simulate = seconds_since(simulate_start);
 
   const auto analysis_start = std::chrono::steady_clock::now();
-  if (result.solution) {
-    result.Z0 = result.solution->Z(s.t0);
-    result.solution->eigenvalue_bounds(result.Z_min_eig, result.Z_max_eig);
-  }
+  if (result.solution) result.Z0 = result.solution->Z(s.t0);
+  result.Z_min_eig = design.Z_min_eig;
+  result.Z_max_eig = design.Z_max_eig;
   result.metrics = compute_metrics(*s.model, result.simulation, s.Q);
   result.timing.analysis = seconds_since(analysis_start);
   return result;

@@ -2,6 +2,7 @@
 // compute a design once and run every scenario that shares it (private to the library).
 #pragma once
 
+#include <cmath>
 #include <exception>
 #include <optional>
 #include <string>
@@ -26,6 +27,10 @@ struct ScenarioDesign {
   // Anything else that failed (the trajectory, a SolverError of a Riccati solve, the game):
   // every run of the design fails with it.
   std::exception_ptr error;
+  // m and M of paper eq. (22): the extreme eigenvalues of Z over [t0, tf] (RunResult::Z_min_eig,
+  // Z_max_eig). Part of the design so that runs sharing it do not search them again (a few ms
+  // for the ship, as long as a short closed loop); NaN without a solution.
+  double Z_min_eig = NAN, Z_max_eig = NAN;
   double seconds = 0.0;  // wall-clock time of the design
 };
 

@@ -85,9 +85,9 @@ struct Scenario {
 void check_plant(const Model& model, const Model& plant, double t0);
 
 struct Timing {
-  double design = 0.0;    // desired trajectory + GRDE
+  double design = 0.0;    // desired trajectory, GRDE, eigenvalue bounds of Z
   double simulate = 0.0;  // closed loop
-  double analysis = 0.0;  // eigenvalue bounds, metrics
+  double analysis = 0.0;  // metrics
   double total = 0.0;
 };
 
