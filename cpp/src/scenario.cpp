@@ -1,6 +1,7 @@
 #include "hinf/scenario.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -9,7 +10,9 @@
 #include "hinf/controller.hpp"
 #include "hinf/errors.hpp"
 #include "hinf/output_feedback.hpp"
+#include "hinf/scenario_io.hpp"
 #include "hinf/ship.hpp"
+#include "scenario_run.hpp"
 
 namespace hinf {
 
@@ -45,6 +48,45 @@ Scenario Scenario::resolved() const {
   return s;
 }
 
+namespace {
+
+// The rows of C(t) (measured outputs), or -1 for a model without a measurement.
+long measured_outputs(const Model& model, double t) {
+  try {
+    return static_cast<long>(model.C(t).rows());
+  } catch (const InputError&) {
+    return -1;  // Model::C of a model without a measurement
+  }
+}
+
+std::string list_text(const std::vector<int>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) text += str_cat(i > 0 ? ", " : "", values[i]);
+  return text + "]";
+}
+
+}  // namespace
+
+void check_plant(const Model& model, const Model& plant, double t0) {
+  try {
+    check_structure(structure_of(plant));
+  } catch (const InputError& e) {
+    throw InputError(str_cat("[plant] ", e.what()));
+  }
+  const auto same = [&](const char* what, const auto& a, const auto& b) {
+    require(a == b, "[plant] the plant '", plant.name(), "' has ", what, " = ", b, ", the design model '",
+            model.name(), "' has ", a, ": a plant must have the design model's structure (n, m, nw, measured"
+            " outputs, noise channels, heading and position indices)");
+  };
+  same("n", model.n(), plant.n());
+  same("m", model.m(), plant.m());
+  same("nw", model.nw(), plant.nw());
+  same("noise channels", list_text(model.noise_channels()), list_text(plant.noise_channels()));
+  same("heading index", model.heading_index(), plant.heading_index());
+  same("position indices", list_text(model.position_indices()), list_text(plant.position_indices()));
+  same("measured outputs (rows of C; -1: none)", measured_outputs(model, t0), measured_outputs(plant, t0));
+}
+
 void Scenario::validate() const {
   require(model != nullptr, "the scenario has no model");
   check_horizon(t0, tf);
@@ -52,6 +94,14 @@ void Scenario::validate() const {
   const int n = model->n(), m = model->m(), nw = model->nw();
   check_size(desired_q0, n, "[desired] q0");
   validate_model(*model, t0, desired_q0);
+  if (plant) {
+    check_plant(*model, *plant, t0);
+    try {
+      validate_model(*plant, t0, desired_q0);
+    } catch (const InputError& e) {
+      throw InputError(str_cat("[plant] ", e.what()));
+    }
+  }
   require(desired_u.dim() == m, "[desired] needs ", m, " input signals (u1..u", m, "), got ",
           desired_u.dim());
   require(!std::isnan(gamma) && gamma > 0.0, "[controller] gamma must be > 0 (or inf), got ", gamma);
@@ -134,31 +184,87 @@ TrajectoryPtr trajectory_of(const Scenario& s) {
 
 }  // namespace
 
+namespace detail {
+
 namespace {
 
-RunResult run(const Scenario& scenario, const RowMat* noise) {
+// The law's gamma: the scenario's, or inf for the lqr law.
+double design_gamma(const Scenario& s) {
+  return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
+}
+
+// The exact text of a double (for design_key): hexadecimal floating point.
+std::string exact(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%a", value);
+  return text;
+}
+
+}  // namespace
+
+ScenarioDesign design_scenario(const Scenario& s) {
   const auto start = std::chrono::steady_clock::now();
-  const Scenario s = scenario.resolved();
-  s.validate();
+  ScenarioDesign design;
+  try {
+    design.trajectory = trajectory_of(s);
+    // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
+    try {
+      design.solution = solve_grde(design.trajectory, s.Q, s.Qf, design_gamma(s), s.solver);
+    } catch (const ConjugatePointError&) {
+      design.solution_error = std::current_exception();
+    }
+    if (s.worst_case && s.law == Law::Lqr && design.solution)
+      design.game = solve_grde(design.trajectory, s.Q, s.Qf, s.gamma, s.solver);
+    if (design.solution) design.solution->eigenvalue_bounds(design.Z_min_eig, design.Z_max_eig);
+  } catch (...) {
+    design.error = std::current_exception();
+  }
+  design.seconds = seconds_since(start);
+  return design;
+}
+
+std::optional<std::string> design_key(const Scenario& s) {
+  Scenario key = s;
+  key.name.clear();
+  key.description.clear();
+  key.gamma = design_gamma(s);
+  key.law = Law::Hinf;
+  key.kappa = Signal(1.0);
+  key.cascade = CascadeGains{};
+  key.disturbance = VectorSignal::zeros(s.model->nw());
+  key.worst_case = false;
+  key.initial_q0 = s.desired_q0;
+  key.measurement.reset();
+  key.output_dt = Scenario{}.output_dt;
+  key.divergence_factor = Scenario{}.divergence_factor;
+  key.plant.reset();
+  std::string text;
+  try {
+    text = scenario_toml(key);
+  } catch (const InputError&) {
+    return std::nullopt;  // no file form
+  }
+  const bool game = s.worst_case && s.law == Law::Lqr;
+  return str_cat(text, "# game gamma ", game ? exact(s.gamma) : std::string("none"), "\n# escape_norm ",
+                 exact(s.solver.escape_norm), "\n");
+}
+
+RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise) {
+  // The cascade law with state feedback does not use the law's design: there it is only
+  // reported, and a gamma at or below gamma* leaves it out instead of failing the run.
+  const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
+  if (design.error) std::rethrow_exception(design.error);
+  if (!design.solution && design_needed) std::rethrow_exception(design.solution_error);
 
   RunResult result;
   result.scenario_name = s.name;
   result.law = s.law;
   result.output_feedback = s.measurement.has_value();
-  result.gamma = s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
-  result.trajectory = trajectory_of(s);
-  // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
-  // The cascade law with state feedback does not use it: there it is only reported, and a
-  // gamma at or below gamma* leaves it out instead of failing the run.
-  const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
-  try {
-    result.solution = solve_grde(result.trajectory, s.Q, s.Qf, result.gamma, s.solver);
-  } catch (const ConjugatePointError&) {
-    if (design_needed) throw;
-  }
-  RiccatiSolutionPtr game = result.solution;  // the H-infinity design at the scenario's gamma
-  if (s.worst_case && s.law == Law::Lqr) game = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
-  result.timing.design = seconds_since(start);
+  result.gamma = design_gamma(s);
+  result.trajectory = design.trajectory;
+  result.plant = s.plant;
+  result.solution = design.solution;
+  const RiccatiSolutionPtr& game = design.game ? design.game : design.solution;  // the H-infinity design at gamma
 
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
@@ -179,20 +285,33 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
     options.filter_A = ms.filter_A;
     options.on_coupling_violation = ms.on_coupling_violation;
     result.simulation = simulate_output_feedback(problem, *controller, disturbance, s.initial_q0, options,
-                                                 s.simulation_options());
+                                                 s.simulation_options(), s.plant.get());
   } else {
-    result.simulation =
-        simulate_state_feedback(*result.trajectory, *controller, disturbance, s.initial_q0, s.simulation_options());
+    result.simulation = simulate_state_feedback(*result.trajectory, *controller, disturbance, s.initial_q0,
+                                                s.simulation_options(), s.plant.get());
   }
   result.timing.simulate = seconds_since(simulate_start);
 
   const auto analysis_start = std::chrono::steady_clock::now();
-  if (result.solution) {
-    result.Z0 = result.solution->Z(s.t0);
-    result.solution->eigenvalue_bounds(result.Z_min_eig, result.Z_max_eig);
-  }
+  if (result.solution) result.Z0 = result.solution->Z(s.t0);
+  result.Z_min_eig = design.Z_min_eig;
+  result.Z_max_eig = design.Z_max_eig;
   result.metrics = compute_metrics(*s.model, result.simulation, s.Q);
   result.timing.analysis = seconds_since(analysis_start);
+  return result;
+}
+
+}  // namespace detail
+
+namespace {
+
+RunResult run(const Scenario& scenario, const RowMat* noise) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scenario s = scenario.resolved();
+  s.validate();
+  const detail::ScenarioDesign design = detail::design_scenario(s);
+  RunResult result = detail::simulate_scenario(s, design, noise);
+  result.timing.design = design.seconds;
   result.timing.total = seconds_since(start);
   return result;
 }
