@@ -717,8 +717,8 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
                 partial.save(index, table)
             tables[index] = table
             done = sum(chunks[i][1] - chunks[i][0] for i in tables)
-            callback(done, study.runs, f"study {study.name}: {done} of {study.runs} runs"
-                     + _eta(started, done, done - resumed, study.runs))
+            callback(done, study.runs,
+                     f"study {study.name}: runs done" + _eta(started, done, done - resumed, study.runs))
 
     try:
         if client is None:
@@ -759,17 +759,18 @@ def replay(study: Study | str | os.PathLike, run: int) -> _core.RunResult:
 
 
 def replay_command(study: Study, run: int, scenario: str | None = None) -> str:
-    """The ``hinf-cpp run`` command that runs run `run` alone."""
+    """The ``hinf-cpp run`` command that runs run `run` alone: ``--set KEY=VALUE`` for each
+    value of its row (floats written exactly), "feedback" last, and ``--seed N`` for a drawn
+    measurement seed (left out for a state-feedback run, which has no noise)."""
     import shlex
 
     document = study.document(run)
+    settings = study.settings(run)
     parts = ["hinf-cpp", "run", shlex.quote(scenario or study.source)]
-    for key, value in study.settings(run):
-        if key == SEED_KEY and "measurement" in document:
-            continue
-        if key == SEED_KEY:  # a state-feedback run: no noise to seed
-            continue
-        parts += ["--set", shlex.quote(f"{key}={_toml_value(value)}")]
-    if any(key == SEED_KEY for key, _ in study.settings(run)) and "measurement" in document:
+    ordered = [s for s in settings if s[0] != FEEDBACK_KEY] + [s for s in settings if s[0] == FEEDBACK_KEY]
+    for key, value in ordered:
+        if key != SEED_KEY:
+            parts += ["--set", shlex.quote(f"{key}={_toml_value(value)}")]
+    if any(key == SEED_KEY for key, _ in settings) and "measurement" in document:
         parts += ["--seed", str(document["measurement"]["seed"])]
     return " ".join(parts)
