@@ -194,12 +194,22 @@ def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: st
         stats = part.groupby(part[gamma_key].astype(float))[metric].quantile([0.05, 0.5, 0.95]).unstack()
         colour = _LAW_COLOURS.get(law, None)
         ax.plot(stats.index, stats[0.5], "o-", ms=3, color=colour, label=_label(law, of))
-        ax.fill_between(stats.index, stats[0.05], stats[0.95], color=colour, alpha=0.2, lw=0)
+        ax.fill_between(stats.index, stats[0.05], stats[0.95], color=colour, alpha=0.15, lw=0)
+    failed = df[(df["status"] != "completed")]
+    if len(failed):
+        gammas = np.unique(failed[gamma_key].astype(float))
+        ax.plot(gammas, np.full(len(gammas), np.nan), "x")  # keeps them in the axis range
+        for g in gammas:
+            ax.axvline(g, color="tab:red", lw=0.6, ls=":", alpha=0.7)
+        ax.plot([], [], color="tab:red", lw=0.6, ls=":", label="some runs failed")
+    values = df[gamma_key].astype(float)
+    if len(values) and values.min() > 0 and values.max() / values.min() > 20:
+        ax.set_xscale("log")
     ax.set_xlabel("gamma")
     ax.set_ylabel(metric)
     ax.set_title(title or f"{metric} against gamma: median, 5-95 % band", fontsize=9)
     ax.grid(True, alpha=0.3)
-    if keys:
+    if keys or len(failed):
         ax.legend(fontsize=8)
     return fig
 
