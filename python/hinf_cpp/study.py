@@ -728,16 +728,20 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
         else:
             from dask.distributed import as_completed
 
-            remote = client.scatter(study, broadcast=True)
-            key = study.content_hash()[:16]
-            futures = {client.submit(_dask_chunk, remote, *chunks[index], key=f"study-{key}-{index}",
-                                     pure=False): index for index in todo}
+            import uuid
+
+            # Keys unique to this call: a second run of the same study on the same client must
+            # not meet the first one's futures while the scheduler releases them.
+            remote = client.scatter(study, broadcast=True, hash=False)
+            key = f"study-{study.content_hash()[:12]}-{uuid.uuid4().hex[:8]}"
+            futures = {client.submit(_dask_chunk, remote, *chunks[index], key=f"{key}-{index}", pure=False): index
+                       for index in todo}
             try:
                 for future in as_completed(futures):
                     finished(futures[future], future.result())
-            finally:
-                for future in futures:
-                    future.cancel()
+            except BaseException:
+                client.cancel(list(futures))
+                raise
     finally:
         close()
     table = pa.concat_tables([tables[i] for i in range(len(chunks))]) if chunks else \

@@ -138,9 +138,19 @@ def dask_client():
 
 @pytest.mark.slow
 def test_a_dask_cluster_of_two_processes_gives_the_same_table(mc_study, mc_table, dask_client):
+    assert len(dask_client.scheduler_info()["workers"]) == 2
     table = hs.run_study(mc_study, client=dask_client, progress=False)
     pdt.assert_frame_equal(table, mc_table, check_exact=True)
-    assert set(dask_client.run(lambda: 1)) and len(dask_client.scheduler_info()["workers"]) == 2
+    # twice on the same client (fresh task keys), and from the command line with --scheduler
+    pdt.assert_frame_equal(hs.run_study(mc_study, client=dask_client, progress=False), mc_table, check_exact=True)
+    if HINF_CPP.exists():
+        out = pathlib.Path(mc_study.source).parent / "dask-out"
+        study_file = pathlib.Path(mc_study.source).parent / "study.toml"
+        done = cli("study", study_file, "--out", out, "--scheduler", dask_client.scheduler.address, "--quiet")
+        assert done.returncode == 0, done.stderr
+        assert "on Dask scheduler" in done.stdout
+        pdt.assert_frame_equal(pd.read_parquet(out / "runs.parquet"), mc_table.astype({"seed": "Int64"}),
+                               check_exact=True, check_dtype=False)
 
 
 # ---- replay ----
