@@ -433,8 +433,11 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
     report = definition.get("report", {})
     if not isinstance(report, dict):
         raise ValueError(f"{where}: [report] must be a table")
-    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric"},
+    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric", "group_by"},
           f"{where}: [report]")
+    group_by = report.get("group_by", [])
+    if not (isinstance(group_by, list) and all(k in seen for k in group_by)):
+        raise ValueError(f"{where}: [report] group_by must list grid or random keys of the study")
     for name in list(report.get("metrics", [])) + [report.get("distribution"), report.get("gamma_metric")]:
         if name is not None and name not in METRIC_NAMES:
             raise ValueError(f"{where}: [report]: no metric '{name}' (metrics: {', '.join(METRIC_NAMES)})")

@@ -33,9 +33,14 @@ _LAW_COLOURS = {"hinf": "tab:blue", "lqr": "tab:orange", "cascade": "tab:green"}
 
 
 def _group_columns(df, study=None) -> list[str]:
-    if study is not None:
-        return [key for axis in study.grid for key in axis.keys]
-    return [c for c in df.attrs.get("grid_columns", [])]
+    """The groups of the summary: [report] group_by, else every grid key but the two of the
+    region-of-attraction map (a group is then a law and feedback mode over the map)."""
+    if study is None:
+        return []
+    if "group_by" in study.report:
+        return list(study.report["group_by"])
+    skip = set(study.report.get("roa", ()))
+    return [key for axis in study.grid for key in axis.keys if key not in skip]
 
 
 def _groups(df, columns):
@@ -94,6 +99,14 @@ def summary_markdown(df, study, seconds: float | None = None) -> str:
     counts = status_counts(df, study)
     shown = [s for s in _STATUS_ORDER if counts[s].sum() > 0] if len(counts) else []
     header = [c for c in counts.columns if c not in _STATUS_ORDER] + shown
+    if study.report.get("roa"):
+        tol, deg = study.report.get("position_tol", 0.5), study.report.get("heading_tol", 10.0)
+        ok = df.assign(_ok=recovered(df, tol, deg))
+        columns = _group_columns(df, study)
+        shares = [int(group["_ok"].sum()) for _, group in _groups(ok, columns)]
+        counts = counts.assign(recovered=shares)
+        header.append("recovered")
+        lines += [f"Recovered: completed with |p_e(tf)| < {tol:g} and |psi_e(tf)| < {deg:g} degrees.", ""]
     lines += ["## Runs per status", "", markdown_table(header, counts[header].values.tolist())]
     stats = summarize(df, study, metrics)
     group_columns = _group_columns(df, study)
@@ -141,8 +154,18 @@ def recovered(df, position_tol: float = 0.5, heading_tol_deg: float = 10.0) -> n
     return (df["status"].to_numpy() == "completed") & ok
 
 
+def axis_label(key: str, state_names: Sequence[str] = ()) -> str:
+    """"initial.q0[5]" as "psi(t0) (initial.q0[5])" when the model names its states."""
+    import re
+
+    match = re.fullmatch(r"initial\.q0\[(\d+)\]", key)
+    if match and int(match.group(1)) < len(state_names):
+        return f"{state_names[int(match.group(1))]}(t0)  ({key})"
+    return key
+
+
 def roa_figure(df, x: str, y: str, position_tol: float = 0.5, heading_tol_deg: float = 10.0,
-               title: str | None = None) -> Figure:
+               title: str | None = None, state_names: Sequence[str] = ()) -> Figure:
     """Region of attraction: over the grid of initial conditions (x, y), the fraction of runs
     that recovered, one panel per law and feedback mode."""
     frame = df.assign(_ok=recovered(df, position_tol, heading_tol_deg))
@@ -163,8 +186,8 @@ def roa_figure(df, x: str, y: str, position_tol: float = 0.5, heading_tol_deg: f
             grid[np.searchsorted(ys, yv), np.searchsorted(xs, xv)] = value
         image = ax.pcolormesh(_edges(xs), _edges(ys), grid, cmap="RdYlGn", vmin=0.0, vmax=1.0, shading="flat")
         ax.set_title(_label(law, of), fontsize=9)
-        ax.set_xlabel(x, fontsize=8)
-        ax.set_ylabel(y, fontsize=8)
+        ax.set_xlabel(axis_label(x, state_names), fontsize=8)
+        ax.set_ylabel(axis_label(y, state_names), fontsize=8)
         ax.tick_params(labelsize=7)
     for ax in list(axes.flat)[len(keys):]:
         ax.set_visible(False)
@@ -241,8 +264,9 @@ def write_study_outputs(study, df, out, seconds: float | None = None) -> list[pa
                              out / "distribution.png"))
     if report.get("roa"):
         x, y = report["roa"]
-        written.append(_save(roa_figure(df, x, y, report.get("position_tol", 0.5), report.get("heading_tol", 10.0)),
-                             out / "roa.png"))
+        names = study.scenario(0).model.state_names()
+        written.append(_save(roa_figure(df, x, y, report.get("position_tol", 0.5), report.get("heading_tol", 10.0),
+                                        state_names=names), out / "roa.png"))
     if any("controller.gamma" in axis.keys for axis in study.grid):
         gamma_metric = report.get("gamma_metric", "rms_position_error_last_half")
         written.append(_save(gamma_figure(df, gamma_metric, title=f"{study.name}: {gamma_metric} against gamma"),
