@@ -21,7 +21,7 @@ from matplotlib.figure import Figure
 from .outputs import atomic_output, write_text
 from .tables import markdown_table
 
-__all__ = ["DEFAULT_METRICS", "distribution_figure", "gamma_figure", "recovered", "roa_figure",
+__all__ = ["DEFAULT_METRICS", "distribution_figure", "gamma_figure", "paired_differences", "recovered", "roa_figure",
            "status_counts", "summarize", "summary_markdown", "write_study_outputs"]
 
 DEFAULT_METRICS = ["rms_position_error_last_half", "rms_heading_error_last_half", "final_position_error",
@@ -86,6 +86,32 @@ def summarize(df, study=None, metrics: Sequence[str] | None = None):
     return pd.DataFrame(rows)
 
 
+def paired_differences(df, study, metric: str, key: str = "controller.law"):
+    """Per sample (the same noise and plant: common random numbers), the metric of each value
+    of the grid axis `key` minus that of its first value, over the samples where both runs
+    completed: mean, standard deviation, standard error and the share of samples where it is
+    lower. One row per value (after the first) and group of the other grid keys."""
+    import pandas as pd
+
+    others = [k for k in _group_columns(df, study) if k != key]
+    values = next(axis.values for axis in study.grid if key in axis.keys and len(axis.keys) == 1)
+    rows = []
+    for group_key, group in _groups(df, others):
+        group_key = group_key if isinstance(group_key, tuple) else (group_key,)
+        done = group[group["status"] == "completed"]
+        table = done.pivot_table(index="sample", columns=key, values=metric, aggfunc="first")
+        for value in values[1:]:
+            if value not in table or values[0] not in table:
+                continue
+            d = (table[value] - table[values[0]]).dropna().to_numpy(dtype=float)
+            rows.append({**dict(zip(others, group_key)), key: f"{value} - {values[0]}", "n": len(d),
+                         "mean": float(d.mean()) if len(d) else math.nan,
+                         "std": float(d.std(ddof=1)) if len(d) > 1 else math.nan,
+                         "stderr": float(d.std(ddof=1) / math.sqrt(len(d))) if len(d) > 1 else math.nan,
+                         "lower": float((d < 0).mean()) if len(d) else math.nan})
+    return pd.DataFrame(rows)
+
+
 def summary_markdown(df, study, seconds: float | None = None) -> str:
     """summary.md: what the study is, the status counts per group and the statistics of the
     report's metrics per group."""
@@ -115,6 +141,15 @@ def summary_markdown(df, study, seconds: float | None = None) -> str:
         header = group_columns + ["n", "mean", "std", "p5", "p50", "p95"]
         rows = part[group_columns + ["count", "mean", "std", "p5", "p50", "p95"]].values.tolist()
         lines += [f"## {metric} (completed runs)", "", markdown_table(header, rows)]
+    law_axis = [axis for axis in study.grid if axis.keys == ("controller.law",)]
+    if study.samples > 1 and law_axis and len(law_axis[0].values) > 1:
+        lines += ["## Paired differences between the laws (same samples: same noise and plant)", "",
+                  "Per sample, the metric of a law minus that of the first law, over the samples where both "
+                  "completed; 'lower' is the share of samples where the difference is negative.", ""]
+        for metric in metrics:
+            pairs = paired_differences(df, study, metric)
+            if len(pairs):
+                lines += [f"### {metric}", "", markdown_table(list(pairs.columns), pairs.values.tolist())]
     return "\n".join(lines)
 
 

@@ -18,7 +18,7 @@ import pytest
 
 import hinf_cpp as hc
 from hinf_cpp import study as hs
-from hinf_cpp.study_report import status_counts, summarize, write_study_outputs
+from hinf_cpp.study_report import paired_differences, status_counts, summarize, summary_markdown, write_study_outputs
 
 BIN = pathlib.Path(sys.executable).parent
 HINF_CPP = BIN / "hinf-cpp"
@@ -335,6 +335,11 @@ def test_summary_statistics(mc_study, mc_table):
     hinf = mc_table[mc_table["law"] == "hinf"]["final_position_error"]
     row = stats.iloc[0]
     assert row["count"] == 4 and row["mean"] == pytest.approx(hinf.mean()) and row["p50"] == pytest.approx(hinf.median())
+    pairs = paired_differences(mc_table, mc_study, "final_position_error")
+    lqr = mc_table[mc_table["law"] == "lqr"]["final_position_error"].to_numpy()
+    assert list(pairs["controller.law"]) == ["lqr - hinf", "cascade - hinf"]
+    assert pairs["mean"][0] == pytest.approx(np.mean(lqr - hinf.to_numpy()))
+    assert "Paired differences" in summary_markdown(mc_table, mc_study)
 
 
 def test_outputs_with_roa_and_gamma_figures(tmp_path):
