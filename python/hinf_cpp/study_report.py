@@ -262,7 +262,12 @@ def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: st
         ax.plot([], [], color="tab:red", lw=0.6, ls=":", label="some runs failed")
     values = df[gamma_key].astype(float)
     if len(values) and values.min() > 0 and values.max() / values.min() > 20:
+        from matplotlib.ticker import NullFormatter
+
         ax.set_xscale("log")
+        ticks = np.unique(values)
+        ax.set_xticks(ticks, [f"{g:g}" for g in ticks], fontsize=7)
+        ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("gamma")
     ax.set_ylabel(metric)
     ax.set_title(title or f"{metric} against gamma: median, 5-95 % band", fontsize=9)
