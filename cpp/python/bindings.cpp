@@ -13,6 +13,7 @@
 // Scenarios, models, options and results pickle (see the pickling section).
 #include <pybind11/complex.h>
 #include <pybind11/eigen.h>
+#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -46,6 +47,7 @@
 #include "hinf/scenario_io.hpp"
 #include "hinf/ship.hpp"
 #include "hinf/simulation.hpp"
+#include "hinf/study.hpp"
 #include "hinf/trajectory.hpp"
 #include "hinf/vehicles.hpp"
 
@@ -86,6 +88,7 @@ HINF_ENUM_CASTER(CouplingPolicy);
 HINF_ENUM_CASTER(GammaCondition);
 HINF_ENUM_CASTER(NewtonSystems);
 HINF_ENUM_CASTER(Interpolation);
+HINF_ENUM_CASTER(RunOutcome);
 #undef HINF_ENUM_CASTER
 
 }  // namespace pybind11::detail
@@ -822,6 +825,19 @@ struct Fields<RunResult> {
       field("gamma_star", &RunResult::gamma_star), field("simulation", &RunResult::simulation),
       field("metrics", &RunResult::metrics), field("timing", &RunResult::timing));
 };
+template <>
+struct Fields<StudyOptions> {
+  static constexpr auto list =
+      std::make_tuple(field("threads", &StudyOptions::threads), field("share_designs", &StudyOptions::share_designs));
+};
+template <>
+struct Fields<StudyRun> {
+  static constexpr auto list = std::make_tuple(
+      field("status", &StudyRun::status), field("reason", &StudyRun::reason), field("metrics", &StudyRun::metrics),
+      field("gamma", &StudyRun::gamma), field("law", &StudyRun::law),
+      field("output_feedback", &StudyRun::output_feedback), field("design_seconds", &StudyRun::design_seconds),
+      field("simulate_seconds", &StudyRun::simulate_seconds), field("design", &StudyRun::design));
+};
 
 template <class T, class = void>
 struct has_fields : std::false_type {};
@@ -1236,6 +1252,7 @@ PYBIND11_MODULE(_core, m) {
   bind_enum<GammaCondition>(m, "GammaCondition", "The condition a gamma fails (analysis.hpp)");
   bind_enum<NewtonSystems>(m, "NewtonSystems", "How BDF solves the Newton systems of a Riccati equation (solver_options.hpp)");
   bind_enum<Interpolation>(m, "Interpolation", "How a table Signal is interpolated between its points (signal.hpp)");
+  bind_enum<RunOutcome>(m, "RunOutcome", "How a run of a study ended (study.hpp)");
 
   // ---- signals ----
   bind_options<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal");
@@ -1877,6 +1894,51 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
         py::call_guard<py::gil_scoped_release>(),
         "Run a scenario with [measurement] on the given noise samples (one row per hold interval, one column per"
         " measured output) instead of the seeded ones, so that a run can be replayed exactly");
+  // ---- studies (study.hpp) ----
+  bind_options<StudyOptions>(m, "StudyOptions",
+                             "Options of run_study. threads: worker threads (0: the hardware's; never more than"
+                             " runs; one when a model or signal is implemented in Python); share_designs: compute each"
+                             " distinct design (trajectory and Riccati solutions) once");
+  bind_result<StudyRun>(m, "StudyRun",
+                        "One row of run_study: status (its name: 'completed', 'diverged', 'conjugate_point',"
+                        " 'coupling_violation', 'solver_failure', 'invalid_input', 'failed'; outcome is the"
+                        " RunOutcome), reason (empty when completed), metrics (as RunResult.metrics; NaN when the"
+                        " run failed), gamma, law, output_feedback, design_seconds, simulate_seconds, design (runs"
+                        " with the same number shared one design; -1: none was made)",
+                        /*repr=*/false)
+      .def_property_readonly("status", [](const StudyRun& r) { return to_string(r.status); },
+                             "how the run ended, by name (outcome: the RunOutcome)")
+      .def_property_readonly("outcome", [](const StudyRun& r) { return r.status; }, "how the run ended")
+      .def("__repr__", [](const StudyRun& r) {
+        return str_cat("StudyRun(status='", to_string(r.status), "', law='", to_string(r.law),
+                       "', output_feedback=", r.output_feedback ? "True" : "False", ", gamma=", r.gamma,
+                       ", design=", r.design, r.reason.empty() ? "" : ", reason=" + py::repr(py::str(r.reason)).cast<std::string>(),
+                       ")");
+      });
+  m.def("run_study",
+        [](const std::vector<Scenario>& scenarios, StudyOptions options,
+           const std::optional<std::function<void(std::size_t, std::size_t)>>& progress) {
+          // Every call into Python holds the GIL: runs of a model or signals implemented in
+          // Python would only contend for it.
+          for (const Scenario& s : scenarios)
+            if (dynamic_cast<const PyModel*>(s.model.get()) != nullptr || s.desired_u.is_function() ||
+                s.disturbance.is_function())
+              options.threads = 1;
+          // Called on this thread while the workers run: Ctrl-C (a pending KeyboardInterrupt) and
+          // an exception of the callable stop the study.
+          const auto report = [&progress](std::size_t done, std::size_t total) {
+            py::gil_scoped_acquire gil;
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            if (progress) (*progress)(done, total);
+          };
+          py::gil_scoped_release release;
+          return run_study(scenarios, options, report);
+        },
+        py::arg("scenarios"), py::arg("options") = StudyOptions{}, py::arg("progress") = py::none(),
+        "Runs every scenario (in parallel, designs shared; study.hpp) and returns one StudyRun per scenario, in"
+        " order: each row is what run_scenario gives for that scenario alone, and a run that fails is a row with"
+        " its status and reason. progress(done, total), if given, is called on this thread about every 0.1 s"
+        " and at the end; an exception it raises (or Ctrl-C) stops the study and is raised here");
   m.def("scenario_gamma_star",
         [](const Scenario& scenario, const GammaStarOptions& options) {
           return scenario_gamma_star(scenario, serial_for_python_models(scenario.model.get(), options));

@@ -1,6 +1,7 @@
 #include "hinf/scenario.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -9,7 +10,9 @@
 #include "hinf/controller.hpp"
 #include "hinf/errors.hpp"
 #include "hinf/output_feedback.hpp"
+#include "hinf/scenario_io.hpp"
 #include "hinf/ship.hpp"
+#include "scenario_run.hpp"
 
 namespace hinf {
 
@@ -134,31 +137,84 @@ TrajectoryPtr trajectory_of(const Scenario& s) {
 
 }  // namespace
 
+namespace detail {
+
 namespace {
 
-RunResult run(const Scenario& scenario, const RowMat* noise) {
+// The law's gamma: the scenario's, or inf for the lqr law.
+double design_gamma(const Scenario& s) {
+  return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
+}
+
+// The exact text of a double (for design_key): hexadecimal floating point.
+std::string exact(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%a", value);
+  return text;
+}
+
+}  // namespace
+
+ScenarioDesign design_scenario(const Scenario& s) {
   const auto start = std::chrono::steady_clock::now();
-  const Scenario s = scenario.resolved();
-  s.validate();
+  ScenarioDesign design;
+  try {
+    design.trajectory = trajectory_of(s);
+    // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
+    try {
+      design.solution = solve_grde(design.trajectory, s.Q, s.Qf, design_gamma(s), s.solver);
+    } catch (const ConjugatePointError&) {
+      design.solution_error = std::current_exception();
+    }
+    if (s.worst_case && s.law == Law::Lqr && design.solution)
+      design.game = solve_grde(design.trajectory, s.Q, s.Qf, s.gamma, s.solver);
+  } catch (...) {
+    design.error = std::current_exception();
+  }
+  design.seconds = seconds_since(start);
+  return design;
+}
+
+std::optional<std::string> design_key(const Scenario& s) {
+  Scenario key = s;
+  key.name.clear();
+  key.description.clear();
+  key.gamma = design_gamma(s);
+  key.law = Law::Hinf;
+  key.kappa = Signal(1.0);
+  key.cascade = CascadeGains{};
+  key.disturbance = VectorSignal::zeros(s.model->nw());
+  key.worst_case = false;
+  key.initial_q0 = s.desired_q0;
+  key.measurement.reset();
+  key.output_dt = Scenario{}.output_dt;
+  key.divergence_factor = Scenario{}.divergence_factor;
+  std::string text;
+  try {
+    text = scenario_toml(key);
+  } catch (const InputError&) {
+    return std::nullopt;  // no file form
+  }
+  const bool game = s.worst_case && s.law == Law::Lqr;
+  return str_cat(text, "# game gamma ", game ? exact(s.gamma) : std::string("none"), "\n# escape_norm ",
+                 exact(s.solver.escape_norm), "\n");
+}
+
+RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise) {
+  // The cascade law with state feedback does not use the law's design: there it is only
+  // reported, and a gamma at or below gamma* leaves it out instead of failing the run.
+  const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
+  if (design.error) std::rethrow_exception(design.error);
+  if (!design.solution && design_needed) std::rethrow_exception(design.solution_error);
 
   RunResult result;
   result.scenario_name = s.name;
   result.law = s.law;
   result.output_feedback = s.measurement.has_value();
-  result.gamma = s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
-  result.trajectory = trajectory_of(s);
-  // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
-  // The cascade law with state feedback does not use it: there it is only reported, and a
-  // gamma at or below gamma* leaves it out instead of failing the run.
-  const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
-  try {
-    result.solution = solve_grde(result.trajectory, s.Q, s.Qf, result.gamma, s.solver);
-  } catch (const ConjugatePointError&) {
-    if (design_needed) throw;
-  }
-  RiccatiSolutionPtr game = result.solution;  // the H-infinity design at the scenario's gamma
-  if (s.worst_case && s.law == Law::Lqr) game = solve_grde(result.trajectory, s.Q, s.Qf, s.gamma, s.solver);
-  result.timing.design = seconds_since(start);
+  result.gamma = design_gamma(s);
+  result.trajectory = design.trajectory;
+  result.solution = design.solution;
+  const RiccatiSolutionPtr& game = design.game ? design.game : design.solution;  // the H-infinity design at gamma
 
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
@@ -193,6 +249,20 @@ RunResult run(const Scenario& scenario, const RowMat* noise) {
   }
   result.metrics = compute_metrics(*s.model, result.simulation, s.Q);
   result.timing.analysis = seconds_since(analysis_start);
+  return result;
+}
+
+}  // namespace detail
+
+namespace {
+
+RunResult run(const Scenario& scenario, const RowMat* noise) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scenario s = scenario.resolved();
+  s.validate();
+  const detail::ScenarioDesign design = detail::design_scenario(s);
+  RunResult result = detail::simulate_scenario(s, design, noise);
+  result.timing.design = design.seconds;
   result.timing.total = seconds_since(start);
   return result;
 }

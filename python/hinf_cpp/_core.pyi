@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_study', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     Base class of the numerical failures of hinf_cpp.
@@ -372,6 +372,64 @@ class Interpolation:
     def __int__(self: Interpolation | str) -> int:
         ...
     def __ne__(self: Interpolation | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class RunOutcome:
+    """
+    How a run of a study ended (study.hpp)
+    
+    Members:
+    
+      completed
+    
+      diverged
+    
+      conjugate_point
+    
+      coupling_violation
+    
+      solver_failure
+    
+      invalid_input
+    
+      failed
+    """
+    __members__: typing.ClassVar[dict[str, RunOutcome]]
+    completed: typing.ClassVar[RunOutcome]
+    conjugate_point: typing.ClassVar[RunOutcome]
+    coupling_violation: typing.ClassVar[RunOutcome]
+    diverged: typing.ClassVar[RunOutcome]
+    failed: typing.ClassVar[RunOutcome]
+    invalid_input: typing.ClassVar[RunOutcome]
+    solver_failure: typing.ClassVar[RunOutcome]
+    def __eq__(self: RunOutcome | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: RunOutcome | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: RunOutcome | str) -> int:
+        ...
+    def __ne__(self: RunOutcome | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
@@ -2023,6 +2081,77 @@ class RunResult:
     @property
     def trajectory(self) -> Trajectory:
         ...
+class StudyOptions:
+    """
+    Options of run_study. threads: worker threads (0: the hardware's; never more than runs; one when a model or signal is implemented in Python); share_designs: compute each distinct design (trajectory and Riccati solutions) once
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('threads', 'share_designs')
+    share_designs: bool
+    def __eq__(self, arg0: StudyOptions) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, threads: typing.SupportsInt | typing.SupportsIndex = 0, share_designs: bool = True) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def threads(self) -> int:
+        ...
+    @threads.setter
+    def threads(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+class StudyRun:
+    """
+    One row of run_study: status (its name: 'completed', 'diverged', 'conjugate_point', 'coupling_violation', 'solver_failure', 'invalid_input', 'failed'; outcome is the RunOutcome), reason (empty when completed), metrics (as RunResult.metrics; NaN when the run failed), gamma, law, output_feedback, design_seconds, simulate_seconds, design (runs with the same number shared one design; -1: none was made)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('status', 'reason', 'metrics', 'gamma', 'law', 'output_feedback', 'design_seconds', 'simulate_seconds', 'design')
+    def __eq__(self, arg0: StudyRun) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def design(self) -> int:
+        ...
+    @property
+    def design_seconds(self) -> float:
+        ...
+    @property
+    def gamma(self) -> float:
+        ...
+    @property
+    def law(self) -> Law:
+        ...
+    @property
+    def metrics(self) -> Metrics:
+        ...
+    @property
+    def outcome(self) -> RunOutcome:
+        """
+        how the run ended
+        """
+    @property
+    def output_feedback(self) -> bool:
+        ...
+    @property
+    def reason(self) -> str:
+        ...
+    @property
+    def simulate_seconds(self) -> float:
+        ...
+    @property
+    def status(self) -> str:
+        """
+        how the run ended, by name (outcome: the RunOutcome)
+        """
 class GeneratedFunction:
     """
     A function of a shared library compiled from CasADi generated C code (hinf_cpp.codegen.compile_casadi_functions), evaluated in C++
@@ -2134,6 +2263,10 @@ def run_scenario(scenario: Scenario) -> RunResult:
 def run_scenario_with_noise(scenario: Scenario, noise: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> RunResult:
     """
     Run a scenario with [measurement] on the given noise samples (one row per hold interval, one column per measured output) instead of the seeded ones, so that a run can be replayed exactly
+    """
+def run_study(scenarios: collections.abc.Sequence[Scenario], options: StudyOptions = ..., progress: collections.abc.Callable[[int, int], None] | None = None) -> list[StudyRun]:
+    """
+    Runs every scenario (in parallel, designs shared; study.hpp) and returns one StudyRun per scenario, in order: each row is what run_scenario gives for that scenario alone, and a run that fails is a row with its status and reason. progress(done, total), if given, is called on this thread about every 0.1 s and at the end; an exception it raises (or Ctrl-C) stops the study and is raised here
     """
 def scenario_certificates(scenario: Scenario) -> Certificates:
     """

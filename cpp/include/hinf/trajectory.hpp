@@ -3,7 +3,9 @@
 // integrated forward once with Dormand-Prince 5(4) at tight tolerances (restarting at the points
 // of table inputs, where u_d is not smooth) and kept as its dense output, so q_d(t), u_d(t) and the linearization along it (paper eq. 10, model.hpp)
 //     A_e(t) = d/dq [f + G u_d](t, q_d(t)),  B_e(t) = G(t, q_d(t)),  D_e(t) = D(t, q_d(t))
-// are available at any t in [t0, tf].
+// are available at any t in [t0, tf]. A Trajectory is immutable once made: its const functions
+// keep no state (lookups take caller-owned cursors), so one trajectory may be read from several
+// threads at once (run_study shares one between runs, study.hpp).
 #pragma once
 
 #include <memory>

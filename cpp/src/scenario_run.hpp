@@ -1,0 +1,50 @@
+// run_scenario in two parts, the design and the closed loop, so that run_study (study.cpp) can
+// compute a design once and run every scenario that shares it (private to the library).
+#pragma once
+
+#include <exception>
+#include <optional>
+#include <string>
+
+#include "hinf/scenario.hpp"
+
+namespace hinf::detail {
+
+// The design of a scenario: the desired trajectory and the Riccati solution(s) of its law.
+// Immutable once made, and safe to use from several threads at once (a Trajectory and a
+// RiccatiSolution keep no state between const calls: lookups take caller-owned cursors).
+struct ScenarioDesign {
+  TrajectoryPtr trajectory;
+  // Z of the law: at gamma (hinf, cascade) or at inf (lqr). Null when it does not exist:
+  // solution_error is then the ConjugatePointError (the cascade law with state feedback runs
+  // without it, as it does in run_scenario).
+  RiccatiSolutionPtr solution;
+  std::exception_ptr solution_error;
+  // [disturbance] worst_case with the lqr law: the H-infinity design at the scenario's gamma
+  // (otherwise the worst case uses `solution`).
+  RiccatiSolutionPtr game;
+  // Anything else that failed (the trajectory, a SolverError of a Riccati solve, the game):
+  // every run of the design fails with it.
+  std::exception_ptr error;
+  double seconds = 0.0;  // wall-clock time of the design
+};
+
+// The design of a resolved, validated scenario. Never throws: failures are kept in the design.
+ScenarioDesign design_scenario(const Scenario& s);
+
+// The rest of run_scenario for a resolved, validated scenario and its design (which may come
+// from another scenario with the same design_key): rethrows the design's failure where s needs
+// what failed, then simulates the closed loop and computes the metrics. noise: explicit noise
+// samples, or null for the seeded ones. Fills every field but timing.design and timing.total.
+RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise);
+
+// A text equal for two resolved, validated scenarios exactly when design_scenario gives them
+// the same design: the scenario file (scenario_toml) of a copy with everything that is not a
+// design input set to fixed values (name, description, kappa, cascade gains, disturbance,
+// initial state, measurement, output, divergence factor; the law only through the gamma of its
+// design), followed by what the file does not hold (the gamma of the worst-case game design,
+// solver.escape_norm). nullopt when the scenario has no file form (a model or a signal
+// implemented in Python): such a scenario shares no design.
+std::optional<std::string> design_key(const Scenario& s);
+
+}  // namespace hinf::detail
