@@ -80,7 +80,7 @@ def main(argv=None) -> int:
         args.seeds, args.repeat, args.scipy_repeat = 40, 1, 1
     study = make_study(args.seeds)
     scenarios = [study.scenario(i) for i in range(study.runs)]
-    batch = "hc.run_study" if hasattr(hc, "run_study") else "run_scenario on a thread pool (no hc.run_study)"
+    batch = "hc.run_study (C++ batch runner)"
     results: dict = {"seeds": args.seeds, "repeat": args.repeat, "batch_runner": batch}
     lines = [f"Figure-2 Monte Carlo: {args.seeds} noise seeds, hinf, output feedback (design shared)",
              f"  load average before: {os.getloadavg()}"]

@@ -471,44 +471,12 @@ def load_study(path: str | os.PathLike) -> Study:
 # Running
 
 
-def _fallback_run_study(scenarios, threads, progress=None):
-    """hc.run_study for a core without it: run_scenario on a thread pool (GIL released in the
-    runs), exceptions mapped to statuses. Same rows, no shared designs."""
-    from concurrent.futures import ThreadPoolExecutor
-
-    def one(scenario):
-        row = {"gamma": scenario.gamma, "law": scenario.law.name, "output_feedback": scenario.measurement is not None,
-               "metrics": {}, "status": "completed", "reason": ""}
-        try:
-            result = _core.run_scenario(scenario)
-        except _core.ConjugatePointError as error:
-            return {**row, "status": "conjugate_point", "reason": str(error)}
-        except _core.CouplingConditionError as error:
-            return {**row, "status": "coupling_violation", "reason": str(error)}
-        except _core.SolverError as error:
-            return {**row, "status": "solver_failure", "reason": str(error)}
-        except ValueError as error:
-            return {**row, "status": "invalid_input", "reason": str(error)}
-        except Exception as error:  # noqa: BLE001 - a failed run is a row
-            return {**row, "status": "failed", "reason": f"{type(error).__name__}: {error}"}
-        row["metrics"] = {name: getattr(result.metrics, name) for name in METRIC_NAMES}
-        if result.simulation.status != _core.RunStatus.completed:
-            row["status"], row["reason"] = result.simulation.status.name, result.simulation.status_message
-        return row
-
-    workers = threads if threads and threads > 0 else (os.cpu_count() or 1)
-    with ThreadPoolExecutor(max_workers=workers) as pool:
-        return list(pool.map(one, scenarios))
-
-
-def _batch(scenarios: list, threads: int) -> list[dict]:
-    """Rows of hc.run_study (the C++ batch runner) for a list of scenarios."""
-    if hasattr(_core, "run_study"):
-        runs = _core.run_study(scenarios, _core.StudyOptions(threads=threads, share_designs=True))
-        return [{"status": r.status, "reason": r.reason, "metrics": dict(r.metrics), "gamma": r.gamma,
-                 "law": r.law.name if hasattr(r.law, "name") else str(r.law),
-                 "output_feedback": bool(r.output_feedback)} for r in runs]
-    return _fallback_run_study(scenarios, threads)
+def _batch(scenarios: list, threads: int, progress: Callable[[int, int], None] | None = None) -> list[dict]:
+    """Rows of hc.run_study (the C++ batch runner: threads in C++, the GIL released, one design
+    per distinct design input) for a list of scenarios."""
+    runs = _core.run_study(scenarios, _core.StudyOptions(threads=threads, share_designs=True), progress)
+    return [{"status": r.status, "reason": r.reason, "metrics": {name: getattr(r.metrics, name) for name in METRIC_NAMES},
+             "gamma": r.gamma, "law": r.law.name, "output_feedback": bool(r.output_feedback)} for r in runs]
 
 
 def study_table_schema(study: Study):
@@ -548,9 +516,11 @@ def _cell(value: Any, arrow_type) -> Any:
     return value
 
 
-def run_chunk(study: Study, start: int, stop: int, threads: int = 0):
+def run_chunk(study: Study, start: int, stop: int, threads: int = 0,
+              progress: Callable[[int, int], None] | None = None):
     """Runs start..stop-1 of a study (the task of a worker, local or Dask); an Arrow table.
-    A run whose scenario the reader refuses is a row with status "invalid_input"."""
+    A run whose scenario the reader refuses is a row with status "invalid_input".
+    `progress(done, total)` is hc.run_study's (about every 0.1 s, on this thread)."""
     import pyarrow as pa
 
     schema = study_table_schema(study)
@@ -562,7 +532,7 @@ def run_chunk(study: Study, start: int, stop: int, threads: int = 0):
             scenarios.append(study.scenario(run))
         except ValueError as error:
             failed[run] = str(error)
-    rows = iter(_batch(scenarios, threads))
+    rows = iter(_batch(scenarios, threads, progress))
     columns: dict[str, list] = {field.name: [] for field in schema}
     for run, s in zip(range(start, stop), settings):
         grid, sample, _ = study.point(run)
@@ -714,20 +684,29 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     started, resumed = time.perf_counter(), sum(chunks[i][1] - chunks[i][0] for i in tables)
     lock = threading.Lock()
 
+    def done_runs() -> int:
+        return sum(chunks[i][1] - chunks[i][0] for i in tables)
+
+    def show(done: int) -> None:
+        callback(done, study.runs, f"study {study.name}: runs done" + _eta(started, done, done - resumed, study.runs))
+
     def finished(index: int, table) -> None:
         with lock:
             if partial is not None:
                 partial.save(index, table)
             tables[index] = table
-            done = sum(chunks[i][1] - chunks[i][0] for i in tables)
-            callback(done, study.runs,
-                     f"study {study.name}: runs done" + _eta(started, done, done - resumed, study.runs))
+            show(done_runs())
 
     try:
         if client is None:
             threads = workers or 0
             for index in todo:
-                finished(index, run_chunk(study, *chunks[index], threads))
+                # The terminal line also moves within a chunk; a callable is called per chunk.
+                inner = None
+                if not callable(progress) and progress:
+                    before = done_runs()
+                    inner = lambda done, total, before=before: show(before + done)  # noqa: E731
+                finished(index, run_chunk(study, *chunks[index], threads, inner))
         else:
             from dask.distributed import as_completed
 
