@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import functools
 import hashlib
 import json
 import math
@@ -246,9 +247,9 @@ class Study:
 
     def content_hash(self) -> str:
         """Changes with anything that changes the table: the study's definition, the base
-        scenario and the library's version."""
-        text = json.dumps([_core.__version__, self.definition, self.base, self.seed, self.samples, self.chunk],
-                          sort_keys=True, default=repr)
+        scenario and the library (its version and the compiled core's bytes)."""
+        text = json.dumps([_core.__version__, _core_fingerprint(), self.definition, self.base, self.seed,
+                           self.samples, self.chunk], sort_keys=True, default=repr)
         return hashlib.sha256(text.encode()).hexdigest()
 
     def point(self, run: int) -> tuple[int, int, tuple[int, ...]]:
@@ -282,6 +283,13 @@ class Study:
     def scenario(self, run: int) -> _core.Scenario:
         """The scenario of run `run` (read by the one C++ reader)."""
         return scenario_from_dict(self.document(run), self.source)
+
+
+@functools.lru_cache(maxsize=1)
+def _core_fingerprint() -> str:
+    """SHA-256 of the compiled core: a rebuilt library may give other rows."""
+    with open(_core.__file__, "rb") as f:
+        return hashlib.file_digest(f, "sha256").hexdigest()
 
 
 def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> float:
