@@ -29,6 +29,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # see bench_paper_fig2.py
 
 import argparse  # noqa: E402
 import json  # noqa: E402
+import math  # noqa: E402
 import pathlib  # noqa: E402
 import platform  # noqa: E402
 import sys  # noqa: E402
@@ -53,19 +54,38 @@ def make_study(seeds: int) -> hs.Study:
     return hs.study_from_dict(definition, "bench", base=base)
 
 
+class _Lines(list):
+    """The report's lines, each printed as it is added."""
+
+    def __init__(self, lines):
+        super().__init__()
+        for line in lines:
+            self.append(line)
+
+    def append(self, line: str) -> None:
+        print(line, flush=True)
+        super().append(line)
+
+
 def rate(fn, runs: int, repeat: int) -> dict:
-    """Runs per second of fn() (which does `runs` runs): median, min, max over `repeat`."""
+    """Runs per second of fn() (which does `runs` runs): median, min, max over `repeat`; and
+    this process's CPU seconds per wall second (the cores it kept busy: a check on whether
+    threads ran in parallel when other jobs share the machine)."""
     fn()  # warm-up
-    samples = []
+    samples, busy = [], []
     for _ in range(repeat):
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         fn()
-        samples.append(runs / (time.perf_counter() - start))
-    return {"median": float(np.median(samples)), "min": min(samples), "max": max(samples), "all": samples}
+        wall = time.perf_counter() - start
+        samples.append(runs / wall)
+        busy.append((time.process_time() - cpu) / wall)
+    return {"median": float(np.median(samples)), "min": min(samples), "max": max(samples), "all": samples,
+            "cores_busy": float(np.median(busy))}
 
 
 def show(label: str, r: dict) -> str:
-    return f"  {label:<52} {r['median']:8.1f} runs/s  [{r['min']:.1f}-{r['max']:.1f}]"
+    return (f"  {label:<52} {r['median']:8.1f} runs/s  [{r['min']:.1f}-{r['max']:.1f}]"
+            f"  cores busy {r['cores_busy']:.2f}")
 
 
 def main(argv=None) -> int:
@@ -82,8 +102,8 @@ def main(argv=None) -> int:
     scenarios = [study.scenario(i) for i in range(study.runs)]
     batch = "hc.run_study (C++ batch runner)"
     results: dict = {"seeds": args.seeds, "repeat": args.repeat, "batch_runner": batch}
-    lines = [f"Figure-2 Monte Carlo: {args.seeds} noise seeds, hinf, output feedback (design shared)",
-             f"  load average before: {os.getloadavg()}"]
+    lines = _Lines([f"Figure-2 Monte Carlo: {args.seeds} noise seeds, hinf, output feedback (design shared)",
+             f"  load average before: {os.getloadavg()}"])
 
     results["python_loop"] = rate(lambda: [hc.run_scenario(s) for s in scenarios], len(scenarios), args.repeat)
     lines.append(show("Python loop over run_scenario", results["python_loop"]))
@@ -124,12 +144,11 @@ def main(argv=None) -> int:
         seconds.append(time.perf_counter() - start)
     scipy_rate = [1.0 / s for s in seconds]
     results["scipy_one_seed_at_a_time"] = {"median": float(np.median(scipy_rate)), "min": min(scipy_rate),
-                                           "max": max(scipy_rate), "all": scipy_rate}
+                                           "max": max(scipy_rate), "all": scipy_rate, "cores_busy": math.nan}
     lines.append(show("SciPy twin, one seed at a time (design per seed)", results["scipy_one_seed_at_a_time"]))
     results["study_2_vs_scipy"] = results["study_2"]["median"] / results["scipy_one_seed_at_a_time"]["median"]
     lines.append(f"  study (2 workers) / SciPy: {results['study_2_vs_scipy']:.0f}x")
     lines.append(f"  load average after: {os.getloadavg()}")
-    print("\n".join(lines))
     if args.json:
         import scipy
 
