@@ -14,7 +14,7 @@ noise. Measured, each as runs per second, median [min - max] over `--repeat` rep
 3. hinf_cpp.study.run_study, the whole study (expansion, scenarios, table), 1 and 2 workers;
 4. the same on a Dask LocalCluster of 2 worker processes (1 thread each), started before the
    timing (its start-up is reported apart);
-5. the SciPy twin (benchmarks/scipy_output_feedback.run_reference), one seed at a time as a user
+5. the SciPy twin (run_reference of benchmarks/scipy_output_feedback.py), one seed at a time as a user
    would write the study with SciPy (design and loop per seed), on `--scipy-repeat` seeds.
 
 Every timed call is preceded by a warm-up. ``--json OUT`` saves every number, the machine and

@@ -712,8 +712,9 @@ def build_parser() -> argparse.ArgumentParser:
     study.add_argument("study", help="study file (TOML)")
     study.add_argument("--out", required=True, help="output folder (finished runs are kept in OUT/partial: "
                                                     "an interrupted study resumes)")
-    study.add_argument("--workers", type=_positive_int, help="local threads (default: all cores)")
-    study.add_argument("--scheduler", help="run on the Dask cluster with this scheduler ADDRESS (tcp://host:port)")
+    study.add_argument("--workers", type=_positive_int, metavar="N", help="local threads (default: all cores)")
+    study.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run on the Dask cluster with this scheduler address (tcp://host:port)")
     _add_quiet(study)
     study.set_defaults(handler=cmd_study)
     return parser
