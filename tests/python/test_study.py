@@ -363,3 +363,23 @@ def test_outputs_with_roa_and_gamma_figures(tmp_path):
     df = hs.run_study(study, progress=False)
     written = {p.name for p in write_study_outputs(study, df, tmp_path / "out")}
     assert {"roa.png", "gamma.png", "distribution.png", "summary.md"} <= written
+
+
+def test_a_relative_axis_takes_its_base_from_the_model_when_the_scenario_omits_it(tmp_path):
+    """[model] without d_r: the base value is the model's parameter (the ship's default, 1.0)."""
+    path = write_study(tmp_path, """\
+        [study]
+        scenario = "fig2.toml"
+        samples = 2
+        [[random]]
+        key = "model.d_r"
+        distribution = "uniform"
+        low = 0.7
+        high = 1.3
+        relative = true
+        """)
+    path.parent.joinpath("fig2.toml").write_text(path.parent.joinpath("fig2.toml").read_text().replace("d_r = 1.0\n", ""))
+    study = hs.load_study(path)
+    assert study.random[0].base == 1.0  # ShipParameters().d_r, the paper's
+    rng = np.random.default_rng(np.random.SeedSequence(0).spawn(2)[1])
+    assert dict(study.settings(1))["model.d_r"] == rng.uniform(0.7, 1.3) * 1.0
