@@ -17,6 +17,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/typing.h>
 
 #include <atomic>
 #include <cmath>
@@ -225,6 +226,17 @@ class PyModel : public Model, public py::trampoline_self_life_support {
   std::vector<int> noise_channels() const override { return structure().noise_channels; }
 
   bool state_dependent_inputs() const override { return structure().state_dependent_inputs; }
+
+  std::vector<std::pair<std::string, double>> named_parameters() const override {
+    py::gil_scoped_acquire gil;
+    py::function override = py::get_override(static_cast<const Model*>(this), "named_parameters");
+    if (!override) return {};
+    const py::object value = override();
+    const auto parameters = try_cast<std::vector<std::pair<std::string, double>>>(
+        py::isinstance<py::dict>(value) ? py::object(py::list(value.attr("items")())) : value);
+    if (!parameters) wrong_value(value, "the Python model's named_parameters()", "return a dict of str: float");
+    return *parameters;
+  }
 
   Mat G(double t, const ConstVecRef& q) const override {
     const ModelStructure& s = structure();
@@ -820,7 +832,8 @@ struct Fields<RunResult> {
   static constexpr auto list = std::make_tuple(
       field("scenario_name", &RunResult::scenario_name), field("law", &RunResult::law),
       field("output_feedback", &RunResult::output_feedback), field("gamma", &RunResult::gamma),
-      field("trajectory", &RunResult::trajectory), field("solution", &RunResult::solution),
+      field("trajectory", &RunResult::trajectory), field("plant", &RunResult::plant),
+      field("solution", &RunResult::solution),
       field("Z0", &RunResult::Z0), field("Z_min_eig", &RunResult::Z_min_eig), field("Z_max_eig", &RunResult::Z_max_eig),
       field("gamma_star", &RunResult::gamma_star), field("simulation", &RunResult::simulation),
       field("metrics", &RunResult::metrics), field("timing", &RunResult::timing));
@@ -1394,6 +1407,15 @@ A model implemented in Python does not pickle.)doc")
       .def("state_names", &Model::state_names)
       .def("position_indices", &Model::position_indices)
       .def("heading_index", &Model::heading_index)
+      .def("named_parameters",
+           [](const Model& model) {
+             py::typing::Dict<py::str, py::float_> parameters;
+             for (const auto& [name, value] : model.named_parameters()) parameters[py::str(name)] = value;
+             return parameters;
+           },
+           "the parameters by name, the keys of the model's scenario-file section ([model], [plant]); a matrix"
+           " entry as NAME[i][j] (from 0); empty for a model without named parameters. A model implemented in"
+           " Python may define it (returning a dict of numbers)")
       .def("__getstate__", [](const Model& model) -> py::tuple {
         cannot_pickle(str_cat("the model '", model.name(), "'"),
                       "a model implemented in Python does not pickle (ShipModel and LinearModel do)");
@@ -1703,16 +1725,17 @@ A model implemented in Python does not pickle.)doc")
   m.def("output_count", &output_count, py::arg("t0"), py::arg("tf"), py::arg("dt"));
   m.def("simulate_state_feedback",
         [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance, const Vec& q0,
-           const SimulationOptions& options) {
+           const SimulationOptions& options, const std::optional<ModelPtr>& plant) {
           check_controller_fits(controller, trajectory.model());
           const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
           py::gil_scoped_release release;
-          return simulate_state_feedback(trajectory, controller, w, q0, options);
+          return simulate_state_feedback(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
-        py::arg("options") = SimulationOptions{},
+        py::arg("options") = SimulationOptions{}, py::arg("plant") = py::none(),
         "Closed loop under state feedback (paper eq. 7); disturbance: a Disturbance, a VectorSignal, a callable"
-        " w(t) -> array, a list of Signals/numbers, or None (zero)");
+        " w(t) -> array, a list of Signals/numbers, or None (zero); plant: the vehicle integrated (None: the"
+        " trajectory's model)");
 
   bind_options<OutputFeedbackProblem>(m, "OutputFeedbackProblem",
                                       "The output-feedback problem: design, measurement noise, filter weights"
@@ -1736,18 +1759,22 @@ A model implemented in Python does not pickle.)doc")
         "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
   m.def("simulate_output_feedback",
         [](const OutputFeedbackProblem& problem, Controller& controller, const py::object& disturbance,
-           const Vec& q0, const OutputFeedbackOptions& options, const SimulationOptions& simulation) {
+           const Vec& q0, const OutputFeedbackOptions& options, const SimulationOptions& simulation,
+           const std::optional<ModelPtr>& plant) {
           require(problem.design != nullptr, "the output-feedback problem needs a design (a GRDE solution)");
           const Model& model = problem.design->trajectory().model();
           check_controller_fits(controller, model);
           const Disturbance w = to_disturbance(disturbance, model.nw());
           py::gil_scoped_release release;
-          return simulate_output_feedback(problem, controller, w, q0, options, simulation);
+          return simulate_output_feedback(problem, controller, w, q0, options, simulation,
+                                          plant ? plant->get() : nullptr);
         },
         py::arg("problem"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
         py::arg("options") = OutputFeedbackOptions{}, py::arg("simulation") = SimulationOptions{},
+        py::arg("plant") = py::none(),
         "Output-feedback closed loop (paper 34-36): filter and estimator of the problem's design, control by"
-        " `controller` at the estimated state; disturbance as in simulate_state_feedback");
+        " `controller` at the estimated state; disturbance as in simulate_state_feedback; plant: the vehicle"
+        " integrated (None: the design's model)");
 
   // ---- metrics (metrics.hpp: metric_table() is their one definition) ----
   py::class_<MetricDefinition>(m, "MetricDefinition", "One metric of a run: name, label, unit, definition")
@@ -1840,6 +1867,10 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
       .def_readwrite("name", &Scenario::name)
       .def_readwrite("description", &Scenario::description)
       .def_readwrite("model", &Scenario::model)
+      .def_property(
+          "plant", [](const Scenario& s) { return s.plant ? std::optional<ModelPtr>(s.plant) : std::nullopt; },
+          [](Scenario& s, const std::optional<ModelPtr>& plant) { s.plant = plant.value_or(nullptr); },
+          "[plant]: the vehicle the closed loop integrates, or None (the design model)")
       .def_readwrite("t0", &Scenario::t0)
       .def_readwrite("tf", &Scenario::tf)
       .def_readwrite("desired_q0", &Scenario::desired_q0)
@@ -1887,7 +1918,10 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
                                            " does, for the results file); == is not defined (its trajectory and"
                                            " design are shared objects)",
                                            /*repr=*/false, /*equality=*/false)
-      .def_readwrite("gamma_star", &RunResult::gamma_star);
+      .def_readwrite("gamma_star", &RunResult::gamma_star)
+      .def_property_readonly(
+          "plant", [](const RunResult& r) { return r.plant ? std::optional<ModelPtr>(r.plant) : std::nullopt; },
+          "the scenario's [plant], the vehicle the closed loop integrated; None: the design model");
 
   m.def("run_scenario", &run_scenario, py::arg("scenario"), py::call_guard<py::gil_scoped_release>(), "Run a scenario");
   m.def("run_scenario_with_noise", &run_scenario_with_noise, py::arg("scenario"), py::arg("noise"),

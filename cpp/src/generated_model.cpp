@@ -135,6 +135,13 @@ std::map<std::string, double> GeneratedModel::parameters() const {
   return out;
 }
 
+std::vector<std::pair<std::string, double>> GeneratedModel::named_parameters() const {
+  std::vector<std::pair<std::string, double>> named;
+  for (std::size_t k = 0; k < parameter_names_.size(); ++k)
+    named.emplace_back(parameter_names_[k], p_[static_cast<Eigen::Index>(k)]);
+  return named;
+}
+
 void GeneratedModel::evaluate(const GeneratedFunction& function, std::initializer_list<const double*> inputs,
                               MatRef out) const {
   // The generated code writes dense column-major rows x cols: straight into `out` when it is

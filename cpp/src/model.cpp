@@ -41,6 +41,12 @@ Mat Model::C(double) const {
 
 std::vector<std::string> Model::state_names() const { return numbered_state_names(n()); }
 
+void append_matrix_parameters(std::vector<std::pair<std::string, double>>& parameters, const std::string& name,
+                              const Mat& M) {
+  for (Eigen::Index i = 0; i < M.rows(); ++i)
+    for (Eigen::Index j = 0; j < M.cols(); ++j) parameters.emplace_back(str_cat(name, "[", i, "][", j, "]"), M(i, j));
+}
+
 std::vector<std::string> Model::numbered_state_names(int n) {
   std::vector<std::string> names;
   for (int i = 0; i < n; ++i) names.push_back("q" + std::to_string(i));
@@ -142,6 +148,15 @@ LinearModel::LinearModel(Mat A, Mat B, Mat D, Mat C)
 Mat LinearModel::C(double t) const {
   if (C_.size() == 0) return Model::C(t);
   return C_;
+}
+
+std::vector<std::pair<std::string, double>> LinearModel::named_parameters() const {
+  std::vector<std::pair<std::string, double>> named;
+  append_matrix_parameters(named, "A", A_);
+  append_matrix_parameters(named, "B", B_);
+  append_matrix_parameters(named, "D", process_D());
+  append_matrix_parameters(named, "C", C_);
+  return named;
 }
 
 std::vector<int> LinearModel::noise_channels() const {

@@ -54,7 +54,9 @@ RowMat standard_normal_samples(std::uint64_t seed, long count, int channels) {
 namespace {
 
 // The closed loop of plant, estimator (35) and filter Riccati (36); state
-// x = [q (n), q_hat (n), Sigma (packed, n(n+1)/2)].
+// x = [q (n), q_hat (n), Sigma (packed, n(n+1)/2)]. The vehicle integrated is `plant`, the
+// design model or another of its structure; the estimator and the filter use the design model
+// (its error split, G(t, q_d), D(t, q_d), C).
 template <int N>
 class OutputFeedbackSystem {
  public:
@@ -62,8 +64,9 @@ class OutputFeedbackSystem {
   using VecN = Eigen::Matrix<double, N, 1>;
 
   OutputFeedbackSystem(const OutputFeedbackProblem& problem, Controller& controller, const Disturbance& disturbance,
-                       const OutputFeedbackOptions& options)
-      : grde_(*problem.design), trajectory_(grde_.trajectory()), model_(trajectory_.model()), controller_(controller),
+                       const OutputFeedbackOptions& options, const Model& plant)
+      : grde_(*problem.design), trajectory_(grde_.trajectory()), model_(trajectory_.model()), plant_(plant),
+        controller_(controller),
         disturbance_(disturbance), problem_(problem), options_(options), n_(grde_.n()), m_(model_.m()),
         nw_(model_.nw()),
         noise_channels_(model_.noise_channels()), heading_(model_.heading_index()),
@@ -93,6 +96,21 @@ class OutputFeedbackSystem {
     noise_term_.setZero();
     z_packed_.resize(static_cast<std::size_t>(packed_size(n_)));
     set_matrices(trajectory_.t0(), trajectory_.q_d0());
+    if (&plant_ != &model_) {
+      // Another vehicle than the design model: its own inputs, and its own measurement matrix
+      // if that differs (the same C keeps the innovation C (q - q_d - q_hat) as it is).
+      plant_constant_ = plant_.constant_input_matrices();
+      if (plant_constant_) {
+        const Vec q0 = trajectory_.q_d0();
+        plant_G_sparse_ = SparseMatrix(checked_plant_G(trajectory_.t0(), q0));
+        plant_D_sparse_ = SparseMatrix(checked_plant_D(trajectory_.t0(), q0));
+      }
+      const Mat plant_C = plant_.C(trajectory_.t0());
+      if (plant_C.rows() != p_ || plant_C.cols() != n_)
+        throw InputError(str_cat("the plant '", plant_.name(), "' measures C of shape (", plant_C.rows(), ", ",
+                                 plant_C.cols(), "), the design model (", p_, ", ", n_, ")"));
+      if (plant_C != C_) plant_C_ = plant_C;
+    }
   }
 
   int n() const { return n_; }
@@ -109,7 +127,7 @@ class OutputFeedbackSystem {
     Eigen::Map<const VecN> q(x, n_);
     Eigen::Map<VecN> dq(dx, n_), dq_hat(dx + n_, n_);
     // Plant, with the control (34) u = u_d - kappa B_e' Z q_hat.
-    model_.f(t, q, dq);
+    plant_.f(t, q, dq);
     add_inputs(t, q, dx);
     // Estimator (35); the innovation enters as C' N^-1 (y_e - C q_hat) with
     // y_e - C q_hat = C (q - q_d - q_hat) + sigma v, whose heading component is an angle: it is
@@ -117,7 +135,15 @@ class OutputFeedbackSystem {
     // psi_d + psi_hat), so that the estimator never turns the long way round.
     model_.error_split(t, q_d_, u_d_, q_hat_, A_, alpha_);
     error_ = q - q_d_ - q_hat_;
-    if (heading_row_ >= 0) {
+    if (plant_C_.size() > 0) {
+      // y = C_plant q + sigma v against the design's C (q_d + q_hat).
+      innovation_.noalias() = plant_C_ * q;
+      q_estimate_ = q_d_ + q_hat_;
+      innovation_.noalias() -= C_ * q_estimate_;
+      innovation_ += problem_.sigma * noise_;
+      if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+      dq_hat_.noalias() = CtNinv_ * innovation_;
+    } else if (heading_row_ >= 0) {
       innovation_.noalias() = C_ * error_;
       innovation_ += problem_.sigma * noise_;
       innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
@@ -171,7 +197,7 @@ class OutputFeedbackSystem {
     for (int i = 0; i < m_; ++i) u[i] = u_[i];
     for (int i = 0; i < nw_; ++i) w[i] = w_[i];
     Eigen::Map<const Vec> q(x, n_);
-    Eigen::Map<Vec>(y, p_) = C_ * q + problem_.sigma * noise_;
+    Eigen::Map<Vec>(y, p_) = (plant_C_.size() > 0 ? plant_C_ : C_) * q + problem_.sigma * noise_;
     if (heading_row_ >= 0) y[heading_row_] = wrap_angle(y[heading_row_]);  // a measured angle
     detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
     rho = rho_of_current();
@@ -202,8 +228,28 @@ class OutputFeedbackSystem {
     return G;
   }
 
+  Mat checked_plant_G(double t, const ConstVecRef& q) const {
+    Mat G = plant_.G(t, q);
+    check_shape(G, n_, m_, str_cat("G(t, q) at t = ", t, " of the plant '", plant_.name(), "'"));
+    return G;
+  }
+  Mat checked_plant_D(double t, const ConstVecRef& q) const {
+    Mat D = plant_.D(t, q);
+    check_shape(D, n_, nw_, str_cat("D(t, q) at t = ", t, " of the plant '", plant_.name(), "'"));
+    return D;
+  }
+
   // dx[0:n] += G(t, q) u + D(t, q) w, the plant's inputs.
   void add_inputs(double t, const ConstVecRef& q, double* dx) {
+    if (&plant_ != &model_) {
+      if (plant_constant_) {
+        plant_G_sparse_.add_product(u_.data(), dx);
+        plant_D_sparse_.add_product(w_.data(), dx);
+      } else {
+        Eigen::Map<Vec>(dx, n_) += checked_plant_G(t, q) * u_ + checked_plant_D(t, q) * w_;
+      }
+      return;
+    }
     if (constant_) {
       B_sparse_.add_product(u_.data(), dx);
       D_sparse_.add_product(w_.data(), dx);
@@ -246,7 +292,11 @@ class OutputFeedbackSystem {
 
   const RiccatiSolution& grde_;
   const Trajectory& trajectory_;
-  const Model& model_;
+  const Model& model_;  // the design model
+  const Model& plant_;  // the vehicle integrated (may be model_)
+  bool plant_constant_ = false;
+  SparseMatrix plant_G_sparse_, plant_D_sparse_;  // a plant's constant G and D
+  Mat plant_C_;         // a plant's C when it differs from the design model's (else empty)
   Controller& controller_;
   const HinfStateFeedback* own_law_ = nullptr;
   const Disturbance& disturbance_;
@@ -289,8 +339,8 @@ DensePiece hermite_piece(double t_start, double h, int dim, const double* y0, co
 template <int N>
 SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller& controller,
                                const Disturbance& disturbance, const Vec& q0, const OutputFeedbackOptions& options,
-                               const SimulationOptions& simulation) {
-  OutputFeedbackSystem<N> system(problem, controller, disturbance, options);
+                               const SimulationOptions& simulation, const Model& plant) {
+  OutputFeedbackSystem<N> system(problem, controller, disturbance, options, plant);
   const RiccatiSolution& grde = *problem.design;
   const RowMat& noise = problem.noise;
   const SolverOptions& solver = simulation.solver;
@@ -495,11 +545,14 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
 
 SimulationResult simulate_output_feedback(const OutputFeedbackProblem& problem, Controller& controller,
                                           const Disturbance& disturbance, const Vec& q0,
-                                          const OutputFeedbackOptions& options, const SimulationOptions& simulation) {
+                                          const OutputFeedbackOptions& options, const SimulationOptions& simulation,
+                                          const Model* plant) {
   require(problem.design != nullptr, "the output-feedback problem needs a design (a GRDE solution)");
   const RiccatiSolution& grde = *problem.design;
   const Trajectory& trajectory = grde.trajectory();
   const Model& model = trajectory.model();
+  const Model& vehicle = plant != nullptr ? *plant : model;
+  check_plant_sizes(model, vehicle);
   const int n = model.n();
   const Mat C = model.C(trajectory.t0());
   const int p = static_cast<int>(C.rows());
@@ -527,7 +580,7 @@ SimulationResult simulate_output_feedback(const OutputFeedbackProblem& problem, 
   require(controller.n() == 0 || controller.n() == n, "the controller acts on states of ", controller.n(),
           " numbers, the model '", model.name(), "' has ", n);
   return detail::with_state_size(n, [&](auto size) {
-    return simulate_impl<decltype(size)::value>(problem, controller, disturbance, q0, options, simulation);
+    return simulate_impl<decltype(size)::value>(problem, controller, disturbance, q0, options, simulation, vehicle);
   });
 }
 

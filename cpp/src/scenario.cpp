@@ -48,6 +48,45 @@ Scenario Scenario::resolved() const {
   return s;
 }
 
+namespace {
+
+// The rows of C(t) (measured outputs), or -1 for a model without a measurement.
+long measured_outputs(const Model& model, double t) {
+  try {
+    return static_cast<long>(model.C(t).rows());
+  } catch (const InputError&) {
+    return -1;  // Model::C of a model without a measurement
+  }
+}
+
+std::string list_text(const std::vector<int>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) text += str_cat(i > 0 ? ", " : "", values[i]);
+  return text + "]";
+}
+
+}  // namespace
+
+void check_plant(const Model& model, const Model& plant, double t0) {
+  try {
+    check_structure(structure_of(plant));
+  } catch (const InputError& e) {
+    throw InputError(str_cat("[plant] ", e.what()));
+  }
+  const auto same = [&](const char* what, const auto& a, const auto& b) {
+    require(a == b, "[plant] the plant '", plant.name(), "' has ", what, " = ", b, ", the design model '",
+            model.name(), "' has ", a, ": a plant must have the design model's structure (n, m, nw, measured"
+            " outputs, noise channels, heading and position indices)");
+  };
+  same("n", model.n(), plant.n());
+  same("m", model.m(), plant.m());
+  same("nw", model.nw(), plant.nw());
+  same("noise channels", list_text(model.noise_channels()), list_text(plant.noise_channels()));
+  same("heading index", model.heading_index(), plant.heading_index());
+  same("position indices", list_text(model.position_indices()), list_text(plant.position_indices()));
+  same("measured outputs (rows of C; -1: none)", measured_outputs(model, t0), measured_outputs(plant, t0));
+}
+
 void Scenario::validate() const {
   require(model != nullptr, "the scenario has no model");
   check_horizon(t0, tf);
@@ -55,6 +94,14 @@ void Scenario::validate() const {
   const int n = model->n(), m = model->m(), nw = model->nw();
   check_size(desired_q0, n, "[desired] q0");
   validate_model(*model, t0, desired_q0);
+  if (plant) {
+    check_plant(*model, *plant, t0);
+    try {
+      validate_model(*plant, t0, desired_q0);
+    } catch (const InputError& e) {
+      throw InputError(str_cat("[plant] ", e.what()));
+    }
+  }
   require(desired_u.dim() == m, "[desired] needs ", m, " input signals (u1..u", m, "), got ",
           desired_u.dim());
   require(!std::isnan(gamma) && gamma > 0.0, "[controller] gamma must be > 0 (or inf), got ", gamma);
@@ -189,6 +236,7 @@ std::optional<std::string> design_key(const Scenario& s) {
   key.measurement.reset();
   key.output_dt = Scenario{}.output_dt;
   key.divergence_factor = Scenario{}.divergence_factor;
+  key.plant.reset();
   std::string text;
   try {
     text = scenario_toml(key);
@@ -213,6 +261,7 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   result.output_feedback = s.measurement.has_value();
   result.gamma = design_gamma(s);
   result.trajectory = design.trajectory;
+  result.plant = s.plant;
   result.solution = design.solution;
   const RiccatiSolutionPtr& game = design.game ? design.game : design.solution;  // the H-infinity design at gamma
 
@@ -235,10 +284,10 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
     options.filter_A = ms.filter_A;
     options.on_coupling_violation = ms.on_coupling_violation;
     result.simulation = simulate_output_feedback(problem, *controller, disturbance, s.initial_q0, options,
-                                                 s.simulation_options());
+                                                 s.simulation_options(), s.plant.get());
   } else {
-    result.simulation =
-        simulate_state_feedback(*result.trajectory, *controller, disturbance, s.initial_q0, s.simulation_options());
+    result.simulation = simulate_state_feedback(*result.trajectory, *controller, disturbance, s.initial_q0,
+                                                s.simulation_options(), s.plant.get());
   }
   result.timing.simulate = seconds_since(simulate_start);
 

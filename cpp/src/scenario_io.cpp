@@ -247,18 +247,26 @@ const toml::table* section(const toml::table& root, const std::string& name, con
   return table;
 }
 
-// The keys of [model] besides "kind", for each kind. A key of another kind is refused naming
-// the kinds it belongs to; any other unknown key with the list of the kind's keys.
+// `first`, then the keys of a table of (scenario-file key, parameter) (kShipParameterKeys, ...).
+template <class Keys>
+std::vector<std::string> key_names(const Keys& keys, std::vector<std::string> first = {}) {
+  for (const auto& [key, member] : keys) first.push_back(key);
+  return first;
+}
+
+// The keys of a model section ([model], [plant]) besides "kind", for each kind. A key of
+// another kind is refused naming the kinds it belongs to; any other unknown key with the list
+// of the kind's keys.
 const std::vector<std::pair<std::string, std::vector<std::string>>>& model_kind_keys() {
   static const std::vector<std::pair<std::string, std::vector<std::string>>> kinds = {
-      {"ship", {"m_u", "m_v", "m_r", "d_u", "d_v", "d_r"}},
+      {"ship", key_names(kShipParameterKeys)},
       {"linear", {"A", "B", "D", "C"}},
       {"casadi", {"file", "parameters"}},
       {"python", {"callable"}},
       {"fossen_vessel", {"preset", "M", "D"}},
-      {"hovercraft", {"d", "d_r"}},
-      {"pvtol", {"g", "epsilon"}},
-      {"auv", {"preset", "m11", "m22", "m33", "X_u", "X_uu", "Y_v", "Y_vv", "N_r", "N_rr"}},
+      {"hovercraft", key_names(kHovercraftParameterKeys)},
+      {"pvtol", key_names(kPlanarVtolParameterKeys)},
+      {"auv", key_names(kAuvParameterKeys, {"preset"})},
   };
   return kinds;
 }
@@ -267,10 +275,12 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// A TableReader of [model] for its kind (read first: it decides which keys are known).
-TableReader model_reader(const toml::table& table, const std::string& source, std::string& kind) {
-  const auto fail = [&source](const std::string& key, const std::string& problem) {
-    return InputError(str_cat(source, ": [model] ", key, ": ", problem));
+// A TableReader of a model section (`where`: "[model]" or "[plant]") for its kind (read first:
+// it decides which keys are known).
+TableReader model_reader(const toml::table& table, const std::string& source, const std::string& where,
+                         std::string& kind) {
+  const auto fail = [&source, &where](const std::string& key, const std::string& problem) {
+    return InputError(str_cat(source, ": ", where, " ", key, ": ", problem));
   };
   const toml::node* node = table.get("kind");
   if (node == nullptr) throw fail("kind", "is required");
@@ -293,19 +303,28 @@ TableReader model_reader(const toml::table& table, const std::string& source, st
   }
   std::vector<std::string> known{"kind"};
   known.insert(known.end(), keys->begin(), keys->end());
-  return TableReader(table, "[model]", source, known);
+  return TableReader(table, where, source, known);
 }
 
 // ---- the built-in vehicles (vehicles.hpp) in [model] ----
 
-// A vehicle from its parameters; a parameter the constructor refuses is reported as [model]'s.
+// A vehicle from its parameters; a parameter the constructor refuses is reported as the
+// section's (`where`).
 template <class Vehicle, class Parameters>
-ModelPtr make_vehicle(const Parameters& parameters, const std::string& source) {
+ModelPtr make_vehicle(const Parameters& parameters, const std::string& source, const std::string& where) {
   try {
     return std::make_shared<Vehicle>(parameters);
   } catch (const InputError& e) {
-    throw InputError(str_cat(source, ": [model] ", e.what()));
+    throw InputError(str_cat(source, ": ", where, " ", e.what()));
   }
+}
+
+// The numbers of a parameter struct read by their keys (kShipParameterKeys, ...); a key not
+// given keeps the value in p.
+template <class Parameters, std::size_t N>
+void read_parameters(TableReader& r, const std::array<std::pair<const char*, double Parameters::*>, N>& keys,
+                     Parameters& p) {
+  for (const auto& [key, member] : keys) p.*member = r.number_or(key, p.*member);
 }
 
 // The preset named by the key "preset" (the default preset when absent); the only preset of a
@@ -319,34 +338,30 @@ void check_preset(TableReader& r, const std::string& kind, const std::string& pr
 
 // kind = "fossen_vessel", "hovercraft", "pvtol" or "auv" (docs/scenarios.md); nullptr for
 // another kind.
-ModelPtr parse_vehicle_model(TableReader& r, const std::string& kind, const std::string& source) {
+ModelPtr parse_vehicle_model(TableReader& r, const std::string& kind, const std::string& source,
+                             const std::string& where) {
   if (kind == "fossen_vessel") {
     check_preset(r, kind, "supply_vessel");
     FossenVesselParameters p = FossenVesselParameters::supply_vessel();
     if (r.has("M")) p.M = r.matrix("M", 3, 3, false);
     if (r.has("D")) p.D = r.matrix("D", 3, 3, false);
-    return make_vehicle<FossenVessel>(p, source);
+    return make_vehicle<FossenVessel>(p, source, where);
   }
   if (kind == "hovercraft") {
     HovercraftParameters p;
-    p.d = r.number_or("d", p.d);
-    p.d_r = r.number_or("d_r", p.d_r);
-    return make_vehicle<Hovercraft>(p, source);
+    read_parameters(r, kHovercraftParameterKeys, p);
+    return make_vehicle<Hovercraft>(p, source, where);
   }
   if (kind == "pvtol") {
     PlanarVtolParameters p;
-    p.g = r.number_or("g", p.g);
-    p.epsilon = r.number_or("epsilon", p.epsilon);
-    return make_vehicle<PlanarVtol>(p, source);
+    read_parameters(r, kPlanarVtolParameterKeys, p);
+    return make_vehicle<PlanarVtol>(p, source, where);
   }
   if (kind == "auv") {
     check_preset(r, kind, "sirene");
     AuvParameters p = AuvParameters::sirene();
-    const std::pair<const char*, double*> keys[] = {{"m11", &p.m11}, {"m22", &p.m22}, {"m33", &p.m33},
-                                                    {"X_u", &p.X_u},  {"X_uu", &p.X_uu}, {"Y_v", &p.Y_v},
-                                                    {"Y_vv", &p.Y_vv}, {"N_r", &p.N_r},  {"N_rr", &p.N_rr}};
-    for (const auto& [key, value] : keys) *value = r.number_or(key, *value);
-    return make_vehicle<Auv>(p, source);
+    read_parameters(r, kAuvParameterKeys, p);
+    return make_vehicle<Auv>(p, source, where);
   }
   return nullptr;
 }
@@ -358,9 +373,11 @@ PythonModelHook& python_model_hook() {
   return hook;
 }
 
-ModelPtr parse_model(const toml::table& table, const std::string& source) {
+// The model of a model section: [model], or (where = "[plant]") the [plant] table that
+// parse_plant merged with [model].
+ModelPtr parse_model(const toml::table& table, const std::string& source, const std::string& where = "[model]") {
   std::string kind;
-  TableReader r = model_reader(table, source, kind);
+  TableReader r = model_reader(table, source, where, kind);
   if (kind == "python") {
     const std::string callable = r.string("callable");
     if (!python_model_hook())
@@ -392,12 +409,7 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
   }
   if (kind == "ship") {
     ShipParameters p;
-    p.m_u = r.number_or("m_u", p.m_u);
-    p.m_v = r.number_or("m_v", p.m_v);
-    p.m_r = r.number_or("m_r", p.m_r);
-    p.d_u = r.number_or("d_u", p.d_u);
-    p.d_v = r.number_or("d_v", p.d_v);
-    p.d_r = r.number_or("d_r", p.d_r);
+    read_parameters(r, kShipParameterKeys, p);
     return std::make_shared<ShipModel>(p);
   }
   if (kind == "linear") {
@@ -424,7 +436,28 @@ ModelPtr parse_model(const toml::table& table, const std::string& source) {
     if (r.has("C")) C = r.matrix("C", dimensions("C", "p x n").first, n, false);
     return std::make_shared<LinearModel>(A, B, D, C);
   }
-  return parse_vehicle_model(r, kind, source);  // model_kind_keys() has no other kind
+  return parse_vehicle_model(r, kind, source, where);  // model_kind_keys() has no other kind
+}
+
+// [plant]: a model section with the keys of [model]. Its kind defaults to [model]'s; with the
+// same kind, a key not given is [model]'s (for kind = "casadi", each name of [plant.parameters]
+// not given is [model.parameters]'), so only what differs need be written; with another kind,
+// a key not given is that kind's default. Messages name [plant].
+ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const std::string& source) {
+  const toml::node* kind = plant.get("kind");
+  const bool same_kind = kind == nullptr || (kind->is_string() && model.get("kind")->is_string() &&
+                                             kind->as_string()->get() == model.get("kind")->as_string()->get());
+  if (!same_kind) return parse_model(plant, source, "[plant]");
+  toml::table merged = model;
+  for (auto&& [key, value] : plant) {
+    toml::table* base_parameters = merged.get_as<toml::table>("parameters");
+    if (key.str() == "parameters" && value.is_table() && base_parameters != nullptr) {
+      for (auto&& [name, number] : *value.as_table()) base_parameters->insert_or_assign(name, number);
+    } else {
+      merged.insert_or_assign(key, value);
+    }
+  }
+  return parse_model(merged, source, "[plant]");
 }
 
 std::string file_stem(const std::string& path) {
@@ -583,19 +616,28 @@ toml::table parse_toml(const std::string& text, const std::string& source) {
 Scenario parse_scenario_toml(const std::string& text, const std::string& source) {
   const toml::table root = parse_toml(text, source);
   TableReader top(root, "top level", source,
-                  {"name", "description", "model", "horizon", "desired", "controller",
+                  {"name", "description", "model", "plant", "horizon", "desired", "controller",
                    "disturbance", "initial", "measurement", "solver", "output"});
   Scenario s;
   s.name = top.string_or("name", file_stem(source));
   s.description = top.string_or("description", "");
 
-  s.model = parse_model(*section(root, "model", source, true), source);
+  const toml::table& model = *section(root, "model", source, true);
+  s.model = parse_model(model, source);
   const int n = s.model->n(), m = s.model->m(), nw = s.model->nw();
+  if (const toml::table* plant = section(root, "plant", source, false)) s.plant = parse_plant(*plant, model, source);
 
   {
     TableReader r(*section(root, "horizon", source, true), "[horizon]", source, {"t0", "tf"});
     s.t0 = r.number_or("t0", 0.0);
     s.tf = r.number("tf");
+  }
+  if (s.plant) {
+    try {
+      check_plant(*s.model, *s.plant, s.t0);
+    } catch (const InputError& e) {
+      throw InputError(str_cat(source, ": ", e.what()));
+    }
   }
   {
     std::vector<std::string> known{"q0"};
@@ -826,37 +868,30 @@ toml::array matrix_toml(const Mat& M) {
 
 // ---- the built-in vehicles (vehicles.hpp) in [model] ----
 
+// kind = `kind` and every named parameter (Model::named_parameters: the section's keys).
+toml::table named_parameters_toml(const std::string& kind, const Model& model) {
+  toml::table table{{"kind", kind}};
+  for (const auto& [name, value] : model.named_parameters()) table.insert(name, value);
+  return table;
+}
+
 // The [model] table of a built-in vehicle, every parameter written out; nullopt for another model.
 std::optional<toml::table> vehicle_model_toml(const Model& model) {
   if (const auto* vessel = dynamic_cast<const FossenVessel*>(&model)) {
     const FossenVesselParameters& p = vessel->parameters();
     return toml::table{{"kind", "fossen_vessel"}, {"M", matrix_toml(p.M)}, {"D", matrix_toml(p.D)}};
   }
-  if (const auto* hovercraft = dynamic_cast<const Hovercraft*>(&model)) {
-    const HovercraftParameters& p = hovercraft->parameters();
-    return toml::table{{"kind", "hovercraft"}, {"d", p.d}, {"d_r", p.d_r}};
-  }
-  if (const auto* vtol = dynamic_cast<const PlanarVtol*>(&model)) {
-    const PlanarVtolParameters& p = vtol->parameters();
-    return toml::table{{"kind", "pvtol"}, {"g", p.g}, {"epsilon", p.epsilon}};
-  }
-  if (const auto* auv = dynamic_cast<const Auv*>(&model)) {
-    const AuvParameters& p = auv->parameters();
-    return toml::table{{"kind", "auv"}, {"m11", p.m11}, {"m22", p.m22}, {"m33", p.m33},
-                       {"X_u", p.X_u},   {"X_uu", p.X_uu}, {"Y_v", p.Y_v}, {"Y_vv", p.Y_vv},
-                       {"N_r", p.N_r},   {"N_rr", p.N_rr}};
-  }
+  if (dynamic_cast<const Hovercraft*>(&model) != nullptr) return named_parameters_toml("hovercraft", model);
+  if (dynamic_cast<const PlanarVtol*>(&model) != nullptr) return named_parameters_toml("pvtol", model);
+  if (dynamic_cast<const Auv*>(&model) != nullptr) return named_parameters_toml("auv", model);
   return std::nullopt;
 }
 
 // ---- end of the built-in vehicles ----
 
+// The model section ([model], [plant]) of a model, every parameter written out.
 toml::table model_toml(const Model& model) {
-  if (const auto* ship = dynamic_cast<const ShipModel*>(&model)) {
-    const ShipParameters& p = ship->parameters();
-    return toml::table{{"kind", "ship"}, {"m_u", p.m_u}, {"m_v", p.m_v}, {"m_r", p.m_r},
-                       {"d_u", p.d_u}, {"d_v", p.d_v}, {"d_r", p.d_r}};
-  }
+  if (dynamic_cast<const ShipModel*>(&model) != nullptr) return named_parameters_toml("ship", model);
   if (const auto* linear = dynamic_cast<const LinearModel*>(&model)) {
     toml::table table{{"kind", "linear"}, {"A", matrix_toml(linear->A())}, {"B", matrix_toml(linear->B())},
                       {"D", matrix_toml(linear->process_D())}};
@@ -886,6 +921,7 @@ std::string scenario_toml(const Scenario& s) {
   root.insert("name", s.name);
   if (!s.description.empty()) root.insert("description", s.description);
   root.insert("model", model_toml(model));
+  if (s.plant) root.insert("plant", model_toml(*s.plant));
   root.insert("horizon", toml::table{{"t0", s.t0}, {"tf", s.tf}});
   toml::table desired{{"q0", vector_toml(s.desired_q0)}};
   insert_vector_signal(desired, "u", s.desired_u, "[desired] u_d", /*all_channels=*/true);
@@ -931,8 +967,15 @@ std::string results_json(const RunResult& r, int indent) {
   const Metrics& mt = r.metrics;
   nlohmann::json j;
   j["scenario"] = r.scenario_name;
+  const auto parameters_json = [](const Model& model) {
+    nlohmann::json parameters = nlohmann::json::object();
+    for (const auto& [name, value] : model.named_parameters()) parameters[name] = number(value);
+    return parameters;
+  };
   j["model"] = {{"name", r.trajectory ? r.trajectory->model().name() : std::string()},
-                {"jacobian", r.trajectory ? r.trajectory->model().jacobian_method() : std::string()}};
+                {"jacobian", r.trajectory ? r.trajectory->model().jacobian_method() : std::string()},
+                {"parameters", r.trajectory ? parameters_json(r.trajectory->model()) : nlohmann::json::object()}};
+  if (r.plant) j["plant"] = {{"name", r.plant->name()}, {"parameters", parameters_json(*r.plant)}};
   j["controller"] = to_string(r.law) + (r.output_feedback ? "-output-feedback" : "");
   j["gamma"] = number(r.gamma);
   j["Z0"] = r.solution ? matrix_json(r.Z0) : nlohmann::json(nullptr);

@@ -41,9 +41,9 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
 // A text equal for two resolved, validated scenarios exactly when design_scenario gives them
 // the same design: the scenario file (scenario_toml) of a copy with everything that is not a
 // design input set to fixed values (name, description, kappa, cascade gains, disturbance,
-// initial state, measurement, output, divergence factor; the law only through the gamma of its
-// design), followed by what the file does not hold (the gamma of the worst-case game design,
-// solver.escape_norm). nullopt when the scenario has no file form (a model or a signal
+// initial state, measurement, output, divergence factor, plant; the law only through the
+// gamma of its design), followed by what the file does not hold (the gamma of the worst-case
+// game design, solver.escape_norm). nullopt when the scenario has no file form (a model or a signal
 // implemented in Python): such a scenario shares no design.
 std::optional<std::string> design_key(const Scenario& s);
 

@@ -62,10 +62,22 @@ double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::
   return divergence_factor * scale;
 }
 
+void check_plant_sizes(const Model& model, const Model& plant) {
+  if (&plant == &model) return;
+  require(plant.n() == model.n() && plant.m() == model.m() && plant.nw() == model.nw(), "the plant '", plant.name(),
+          "' has (n, m, nw) = (", plant.n(), ", ", plant.m(), ", ", plant.nw(), "), the design model '", model.name(),
+          "' has (", model.n(), ", ", model.m(), ", ", model.nw(), ")");
+  require(plant.heading_index() == model.heading_index(), "the plant '", plant.name(), "' has heading index ",
+          plant.heading_index(), ", the design model '", model.name(), "' has ", model.heading_index());
+}
+
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
-                                         const SimulationOptions& simulation) {
-  const Model& model = trajectory.model();
+                                         const SimulationOptions& simulation, const Model* plant) {
+  // The design model (sizes, heading) and the vehicle integrated: the plant, or the design model.
+  const Model& design_model = trajectory.model();
+  const Model& model = plant != nullptr ? *plant : design_model;
+  check_plant_sizes(design_model, model);
   const int n = model.n(), m = model.m(), nw = model.nw();
   check_size(q0, n, "the initial state q0");
   require(controller.m() == m, "the controller gives ", controller.m(), " inputs, the model has ", m);

@@ -140,6 +140,13 @@ Mat FossenVessel::D(double, const ConstVecRef&) const { return disturbance_on_ro
 
 Mat FossenVessel::C(double) const { return pick_rows(3, 4, 5); }
 
+std::vector<std::pair<std::string, double>> FossenVessel::named_parameters() const {
+  std::vector<std::pair<std::string, double>> named;
+  append_matrix_parameters(named, "M", p_.M);
+  append_matrix_parameters(named, "D", p_.D);
+  return named;
+}
+
 // ------------------------------------------------------------------------ Hovercraft
 
 Hovercraft::Hovercraft(const HovercraftParameters& parameters) : p_(parameters) {

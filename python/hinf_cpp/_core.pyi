@@ -616,6 +616,10 @@ class Model:
         ...
     def name(self) -> str:
         ...
+    def named_parameters(self) -> dict[str, float]:
+        """
+        the parameters by name, the keys of the model's scenario-file section ([model], [plant]); a matrix entry as NAME[i][j] (from 0); empty for a model without named parameters. A model implemented in Python may define it (returning a dict of numbers)
+        """
     def noise_channels(self) -> list[int]:
         """
         the w channels that carry measurement noise
@@ -1993,6 +1997,14 @@ class Scenario:
     def output_dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
+    def plant(self) -> Model | None:
+        """
+        [plant]: the vehicle the closed loop integrates, or None (the design model)
+        """
+    @plant.setter
+    def plant(self, arg1: Model | None) -> None:
+        ...
+    @property
     def t0(self) -> float:
         ...
     @t0.setter
@@ -2034,7 +2046,7 @@ class RunResult:
     """
     Result of run_scenario (gamma_star may be set afterwards, as hinf-sim does, for the results file); == is not defined (its trajectory and design are shared objects)
     """
-    __match_args__: typing.ClassVar[tuple] = ('scenario_name', 'law', 'output_feedback', 'gamma', 'trajectory', 'solution', 'Z0', 'Z_min_eig', 'Z_max_eig', 'gamma_star', 'simulation', 'metrics', 'timing')
+    __match_args__: typing.ClassVar[tuple] = ('scenario_name', 'law', 'output_feedback', 'gamma', 'trajectory', 'plant', 'solution', 'Z0', 'Z_min_eig', 'Z_max_eig', 'gamma_star', 'simulation', 'metrics', 'timing')
     def __getstate__(self) -> tuple:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -2066,6 +2078,11 @@ class RunResult:
     @property
     def output_feedback(self) -> bool:
         ...
+    @property
+    def plant(self) -> Model | None:
+        """
+        the scenario's [plant], the vehicle the closed loop integrated; None: the design model
+        """
     @property
     def scenario_name(self) -> str:
         ...
@@ -2292,13 +2309,13 @@ def scenario_warnings(scenario: Scenario) -> list[str]:
     """
     What is legal in a scenario but probably not meant (a table whose interpolation overshoots its values), one message per finding naming the key
     """
-def simulate_output_feedback(problem: OutputFeedbackProblem, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: OutputFeedbackOptions = ..., simulation: SimulationOptions = ...) -> SimulationResult:
+def simulate_output_feedback(problem: OutputFeedbackProblem, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: OutputFeedbackOptions = ..., simulation: SimulationOptions = ..., plant: Model | None = None) -> SimulationResult:
     """
-    Output-feedback closed loop (paper 34-36): filter and estimator of the problem's design, control by `controller` at the estimated state; disturbance as in simulate_state_feedback
+    Output-feedback closed loop (paper 34-36): filter and estimator of the problem's design, control by `controller` at the estimated state; disturbance as in simulate_state_feedback; plant: the vehicle integrated (None: the design's model)
     """
-def simulate_state_feedback(trajectory: Trajectory, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SimulationOptions = ...) -> SimulationResult:
+def simulate_state_feedback(trajectory: Trajectory, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SimulationOptions = ..., plant: Model | None = None) -> SimulationResult:
     """
-    Closed loop under state feedback (paper eq. 7); disturbance: a Disturbance, a VectorSignal, a callable w(t) -> array, a list of Signals/numbers, or None (zero)
+    Closed loop under state feedback (paper eq. 7); disturbance: a Disturbance, a VectorSignal, a callable w(t) -> array, a list of Signals/numbers, or None (zero); plant: the vehicle integrated (None: the trajectory's model)
     """
 def solve_filter_riccati(trajectory: Trajectory, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: SolverOptions = ...) -> FilterRiccatiSolution:
     """

@@ -59,6 +59,13 @@ def summary(result: _core.RunResult) -> str:
     lines = [f"scenario {result.scenario_name}: controller {run_key(result.law, result.output_feedback)}, "
              f"gamma = {result.gamma:g}",
              f"  Z(t) eigenvalues in [{result.Z_min_eig:.4g}, {result.Z_max_eig:.4g}]"]
+    if result.plant is not None:
+        # [plant]: the vehicle integrated differs from the design model; say how.
+        design = result.trajectory.model().named_parameters()
+        changed = [f"{name} = {value:g}" for name, value in result.plant.named_parameters().items()
+                   if design.get(name) != value]
+        lines.append(f"  plant: {result.plant.name()}"
+                     + (f" ({', '.join(changed)})" if changed else " (the design model's parameters)"))
     estimator = result.simulation.estimator
     if estimator is not None and math.isfinite(estimator.coupling_violation_t):
         lines.append(f"  coupling condition rho(Sigma Z) < gamma^2 violated from "

@@ -255,7 +255,8 @@ def test_both_programs_write_the_same_results(name, tmp_path, warm_python_cli):
         assert done.returncode == 0 and done.stderr == "", done.stderr
     sim, cpp = (json.loads((tmp_path / f"{p}.json").read_text()) for p in ("sim", "cpp"))
     numbers_close(sim, cpp)
-    assert sim["model"] == {"name": SCENARIOS[name]().name(), "jacobian": "analytic"}
+    assert sim["model"] == {"name": SCENARIOS[name]().name(), "jacobian": "analytic",
+                            "parameters": hc.load_scenario(path).model.named_parameters()}
     sim_csv, cpp_csv = (np.loadtxt(tmp_path / f"{p}.csv", delimiter=",", skiprows=1) for p in ("sim", "cpp"))
     np.testing.assert_array_equal(sim_csv, cpp_csv)  # the same run printed with 17 digits
 

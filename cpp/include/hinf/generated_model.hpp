@@ -43,6 +43,8 @@ class GeneratedModel final : public Model {
   const Vec& parameter_values() const { return p_; }
   // The values by name (what a scenario file writes back).
   std::map<std::string, double> parameters() const;
+  // The same, in the order of parameter_names() (the keys of [model.parameters]).
+  std::vector<std::pair<std::string, double>> named_parameters() const override;
 
   std::string name() const override { return structure_.name; }
   int n() const override { return structure_.n; }

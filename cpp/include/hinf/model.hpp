@@ -16,8 +16,11 @@
 //   * matrices are column-major Eigen objects; G is n x m, D is n x nw.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hinf/errors.hpp"
@@ -81,9 +84,29 @@ class Model {
   // Index of the heading angle (rad), or -1.
   virtual int heading_index() const { return -1; }
 
+  // The model's parameters by name, in a fixed order: a number by its key in the model's
+  // scenario-file section ([model], [plant]: "d_u" of the ship), an entry of a matrix as
+  // NAME[i][j] (row i, column j, from 0: "D[1][2]" of the Fossen vessel). Empty for a model
+  // without named parameters. Studies perturb a model from these base values; the results file
+  // records them.
+  virtual std::vector<std::pair<std::string, double>> named_parameters() const { return {}; }
+
   // "q0", "q1", ..., the default state_names().
   static std::vector<std::string> numbered_state_names(int n);
 };
+
+// NAME[i][j] = M(i, j), row by row, appended to `parameters` (named_parameters of a matrix).
+void append_matrix_parameters(std::vector<std::pair<std::string, double>>& parameters, const std::string& name,
+                              const Mat& M);
+
+// The named parameters of a struct of numbers from its table of (scenario-file key, member).
+template <class Parameters, std::size_t N>
+std::vector<std::pair<std::string, double>> named_parameters_of(
+    const Parameters& p, const std::array<std::pair<const char*, double Parameters::*>, N>& keys) {
+  std::vector<std::pair<std::string, double>> named;
+  for (const auto& [key, member] : keys) named.emplace_back(key, p.*member);
+  return named;
+}
 
 using ModelPtr = std::shared_ptr<const Model>;
 
@@ -148,6 +171,8 @@ class LinearModel final : public Model {
   // The matrices as given to the constructor: D without the noise channels, C empty if none.
   Mat process_D() const { return D_.leftCols(D_.cols() - C_.rows()); }
   const Mat& measurement_C() const { return C_; }
+  // A[i][j], B[i][j], D[i][j] (process D), C[i][j]: the entries of the scenario file's matrices.
+  std::vector<std::pair<std::string, double>> named_parameters() const override;
 
  private:
   Mat A_, B_, D_, C_;

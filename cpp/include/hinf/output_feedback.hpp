@@ -97,9 +97,11 @@ struct OutputFeedbackOptions {
 // rho(Sigma Z) reaches gamma^2 (to 1e-3; with Flag this is a SolverError naming the violation).
 // The measured heading (the row of C that picks the model's heading) and its innovation are
 // angles, wrapped to (-pi, pi].
+// The vehicle integrated is `plant` (null: the design's model), with y = C q of the plant; the
+// estimator, the filter and the control stay those of the design (its model and trajectory).
 SimulationResult simulate_output_feedback(const OutputFeedbackProblem& problem, Controller& controller,
                                           const Disturbance& disturbance, const Vec& q0,
                                           const OutputFeedbackOptions& options = {},
-                                          const SimulationOptions& simulation = {});
+                                          const SimulationOptions& simulation = {}, const Model* plant = nullptr);
 
 }  // namespace hinf

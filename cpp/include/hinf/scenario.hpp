@@ -46,7 +46,10 @@ struct EnumNames<Law> {
 struct Scenario {
   std::string name;
   std::string description;
-  ModelPtr model;
+  ModelPtr model;             // the design model: desired trajectory, GRDE, controller, estimator
+  // [plant]: the vehicle the closed loop integrates (its f, G, D), when it differs from the
+  // design model; null: the design model. Same structure as the model (check_plant).
+  ModelPtr plant;
   double t0 = 0.0;
   double tf = 0.0;
   Vec desired_q0;             // q_d(t0)
@@ -76,6 +79,11 @@ struct Scenario {
   SimulationOptions simulation_options() const;
 };
 
+// InputError unless `plant` can stand in for `model` in a closed loop: the same n, m, nw, noise
+// channels, heading index and position indices, and as many measured outputs (rows of C(t0)),
+// or no measurement when the model has none. Messages name [plant].
+void check_plant(const Model& model, const Model& plant, double t0);
+
 struct Timing {
   double design = 0.0;    // desired trajectory + GRDE
   double simulate = 0.0;  // closed loop
@@ -88,7 +96,8 @@ struct RunResult {
   Law law = Law::Hinf;
   bool output_feedback = false;
   double gamma = 0.0;
-  TrajectoryPtr trajectory;
+  TrajectoryPtr trajectory;   // its model is the design model
+  ModelPtr plant;             // the scenario's plant; null when the closed loop integrated the design model
   RiccatiSolutionPtr solution;  // the law's design; null only for the cascade law with state
                                 // feedback when no design exists at gamma (gamma <= gamma*)
   Mat Z0;

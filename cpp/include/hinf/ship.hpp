@@ -4,7 +4,9 @@
 // reader and the scenario runner (input/output) do.
 #pragma once
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hinf/controller.hpp"
@@ -33,11 +35,23 @@ struct ShipParameters {
   double d_v = 2.0;
   double d_r = 1.0;
 };
+// The parameters by their keys in a scenario file's [model] (and [plant]) section: the reader,
+// the writer and ShipModel::named_parameters() go through this one list.
+inline constexpr std::array<std::pair<const char*, double ShipParameters::*>, 6> kShipParameterKeys{
+    {{"m_u", &ShipParameters::m_u},
+     {"m_v", &ShipParameters::m_v},
+     {"m_r", &ShipParameters::m_r},
+     {"d_u", &ShipParameters::d_u},
+     {"d_v", &ShipParameters::d_v},
+     {"d_r", &ShipParameters::d_r}}};
 
 class ShipModel final : public Model {
  public:
   explicit ShipModel(const ShipParameters& parameters = {});
   const ShipParameters& parameters() const { return p_; }
+  std::vector<std::pair<std::string, double>> named_parameters() const override {
+    return named_parameters_of(p_, kShipParameterKeys);
+  }
 
   std::string name() const override { return "ship"; }
   int n() const override { return 6; }

@@ -1,6 +1,9 @@
 // Closed-loop simulation of the nonlinear model under a tracking controller (paper eq. 7):
 //     dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),   u = controller(t, q),   q(t0) = q0,
-// integrated with the chosen method; the time series are sampled on the output grid.
+// integrated with the chosen method; the time series are sampled on the output grid. f, G and
+// D are the plant's: the design model's, or another model of the same structure (a plant with
+// other parameters, for robustness studies), while the desired trajectory and the controller
+// stay those of the design model.
 //
 // A closed loop that leaves the neighbourhood of the desired trajectory where the linearized
 // design means anything stops early with status Diverged: when the tracking error |q_e|_inf
@@ -85,8 +88,15 @@ struct SimulationResult {
 double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::vector<double>& grid,
                         double divergence_factor);
 
+// InputError unless the plant has the design model's n, m, nw and heading index (nothing to
+// check when they are the same object). Scenario files check more (check_plant, scenario.hpp).
+void check_plant_sizes(const Model& model, const Model& plant);
+
+// The closed loop of `plant` (null: the trajectory's model) under `controller`: the plant's f,
+// G and D are integrated; the trajectory (of the design model) gives q_d and the divergence
+// bound. A plant other than the design model is the model error of a robustness study.
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
-                                         const SimulationOptions& options = {});
+                                         const SimulationOptions& options = {}, const Model* plant = nullptr);
 
 }  // namespace hinf

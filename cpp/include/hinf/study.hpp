@@ -20,8 +20,9 @@
 // the gamma of the law's design (the scenario's gamma for hinf and cascade, inf for lqr; with
 // [disturbance] worst_case and the lqr law also the scenario's gamma, for the game design).
 // Everything else differs freely between runs that share a design: the initial state, the
-// disturbance, kappa, the cascade gains, [measurement] (seed, sigma, N, Q0, eta: the filter
-// Riccati equation is integrated with each closed loop), [output], the divergence factor.
+// disturbance, the plant ([plant]), kappa, the cascade gains, [measurement] (seed, sigma, N,
+// Q0, eta: the filter Riccati equation is integrated with each closed loop), [output], the
+// divergence factor.
 // The comparison is made on the scenario-file text of the design inputs, so a scenario whose
 // model or signals are implemented in Python (no file form) gets a design of its own.
 // Distinct designs used by several runs are computed first, in parallel; a design used by a

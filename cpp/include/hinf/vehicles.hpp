@@ -25,7 +25,9 @@
 // is no analytic remainder bound (NaN: certificates use their sampled estimate).
 #pragma once
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hinf/model.hpp"
@@ -66,6 +68,8 @@ class FossenVessel final : public Model {
   // symmetric part of D positive definite.
   explicit FossenVessel(const FossenVesselParameters& parameters = {});
   const FossenVesselParameters& parameters() const { return p_; }
+  // M[i][j] and D[i][j], the entries of [model] M and D.
+  std::vector<std::pair<std::string, double>> named_parameters() const override;
 
   std::string name() const override { return "fossen_vessel"; }
   int n() const override { return 6; }
@@ -99,12 +103,18 @@ struct HovercraftParameters {
   double d = 0.2;    // translational damping per unit mass (1/s), >= 0
   double d_r = 0.5;  // rotational damping per unit inertia (1/s), >= 0
 };
+// The parameters by their scenario-file keys (the reader, the writer, named_parameters()).
+inline constexpr std::array<std::pair<const char*, double HovercraftParameters::*>, 2> kHovercraftParameterKeys{
+    {{"d", &HovercraftParameters::d}, {"d_r", &HovercraftParameters::d_r}}};
 
 class Hovercraft final : public Model {
  public:
   // InputError unless d and d_r are finite and >= 0.
   explicit Hovercraft(const HovercraftParameters& parameters = {});
   const HovercraftParameters& parameters() const { return p_; }
+  std::vector<std::pair<std::string, double>> named_parameters() const override {
+    return named_parameters_of(p_, kHovercraftParameterKeys);
+  }
 
   std::string name() const override { return "hovercraft"; }
   int n() const override { return 6; }
@@ -141,12 +151,18 @@ struct PlanarVtolParameters {
   double g = 1.0;        // gravity (1: the normalized form), >= 0
   double epsilon = 0.1;  // coupling of the rolling moment into the translation, finite
 };
+// The parameters by their scenario-file keys (the reader, the writer, named_parameters()).
+inline constexpr std::array<std::pair<const char*, double PlanarVtolParameters::*>, 2> kPlanarVtolParameterKeys{
+    {{"g", &PlanarVtolParameters::g}, {"epsilon", &PlanarVtolParameters::epsilon}}};
 
 class PlanarVtol final : public Model {
  public:
   // InputError unless g is finite and >= 0 and epsilon finite.
   explicit PlanarVtol(const PlanarVtolParameters& parameters = {});
   const PlanarVtolParameters& parameters() const { return p_; }
+  std::vector<std::pair<std::string, double>> named_parameters() const override {
+    return named_parameters_of(p_, kPlanarVtolParameterKeys);
+  }
 
   std::string name() const override { return "pvtol"; }
   int n() const override { return 6; }
@@ -197,12 +213,26 @@ struct AuvParameters {
   // 2007 (the defaults above).
   static AuvParameters sirene() { return {}; }
 };
+// The parameters by their scenario-file keys (the reader, the writer, named_parameters()).
+inline constexpr std::array<std::pair<const char*, double AuvParameters::*>, 9> kAuvParameterKeys{
+    {{"m11", &AuvParameters::m11},
+     {"m22", &AuvParameters::m22},
+     {"m33", &AuvParameters::m33},
+     {"X_u", &AuvParameters::X_u},
+     {"X_uu", &AuvParameters::X_uu},
+     {"Y_v", &AuvParameters::Y_v},
+     {"Y_vv", &AuvParameters::Y_vv},
+     {"N_r", &AuvParameters::N_r},
+     {"N_rr", &AuvParameters::N_rr}}};
 
 class Auv final : public Model {
  public:
   // InputError unless the masses are finite and > 0 and the drag coefficients finite and >= 0.
   explicit Auv(const AuvParameters& parameters = {});
   const AuvParameters& parameters() const { return p_; }
+  std::vector<std::pair<std::string, double>> named_parameters() const override {
+    return named_parameters_of(p_, kAuvParameterKeys);
+  }
 
   std::string name() const override { return "auv"; }
   int n() const override { return 6; }
