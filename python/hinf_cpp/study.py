@@ -293,12 +293,16 @@ def _core_fingerprint() -> str:
 
 
 def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> float:
-    """The base value of a relative axis: the key in the scenario, else for plant.X / model.X
-    the other table's X, else the model's parameter X."""
-    candidates = [key]
+    """The base value of a relative axis: the key in the scenario; for plant.X, else [model]'s X
+    (when [plant] has the same kind), else the model's parameter X (Model.named_parameters(),
+    of the plant for plant.X: the kind's default or the preset's)."""
     head, _, rest = key.partition(".")
-    if head in ("plant", "model") and rest:
-        candidates.append(("model." if head == "plant" else "plant.") + rest)
+    candidates = [key]
+    plant = base.get("plant") if isinstance(base.get("plant"), dict) else {}
+    model = base.get("model") if isinstance(base.get("model"), dict) else {}
+    other_kind = "kind" in plant and plant.get("kind") != model.get("kind")
+    if head == "plant" and rest and not other_kind:
+        candidates.append("model." + rest)
     for candidate in candidates:
         try:
             value = _get(base, candidate)
@@ -308,10 +312,15 @@ def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> flo
             return float(value)
         raise ValueError(f"relative = true: '{candidate}' is {value!r} in the scenario, not a number")
     if head in ("plant", "model") and rest and scenario is not None:
-        parameters = scenario.model.parameters()
-        if not isinstance(parameters, dict):
-            parameters = {name: getattr(parameters, name) for name in dir(parameters)
-                          if not name.startswith("_") and isinstance(getattr(parameters, name), (int, float))}
+        vehicle = getattr(scenario, "plant", None) if head == "plant" else None
+        vehicle = vehicle if vehicle is not None else scenario.model
+        if hasattr(vehicle, "named_parameters"):
+            parameters = dict(vehicle.named_parameters())
+        else:
+            parameters = vehicle.parameters()
+            if not isinstance(parameters, dict):
+                parameters = {name: getattr(parameters, name) for name in dir(parameters)
+                              if not name.startswith("_") and isinstance(getattr(parameters, name), (int, float))}
         if rest in parameters:
             return float(parameters[rest])
         raise ValueError(f"relative = true: the model has no parameter '{rest}' "

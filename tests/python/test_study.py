@@ -383,3 +383,38 @@ def test_a_relative_axis_takes_its_base_from_the_model_when_the_scenario_omits_i
     assert study.random[0].base == 1.0  # ShipParameters().d_r, the paper's
     rng = np.random.default_rng(np.random.SeedSequence(0).spawn(2)[1])
     assert dict(study.settings(1))["model.d_r"] == rng.uniform(0.7, 1.3) * 1.0
+
+
+def test_plant_axes_perturb_the_simulated_plant_only(tmp_path):
+    """plant.<name> sets [plant] (the design stays on [model]): base values from [model], rows
+    replay exactly, and the designs are those of the nominal model (same gamma, same Z0)."""
+    path = write_study(tmp_path, """\
+        [study]
+        scenario = "fig2.toml"
+        samples = 3
+        seed = 5
+        [[random]]
+        key = "plant.d_u"
+        distribution = "uniform"
+        low = 0.7
+        high = 1.3
+        relative = true
+        [[random]]
+        key = "plant.m_v"
+        distribution = "normal"
+        mean = 1.0
+        std = 0.1
+        relative = true
+        """)
+    study = hs.load_study(path)
+    assert [axis.base for axis in study.random] == [1.0, -2.0]
+    df = hs.run_study(study, progress=False)
+    assert (df["status"] == "completed").all()
+    assert df["rms_position_error_last_half"].nunique() == 3
+    nominal = hc.run_scenario(hc.scenario_from_dict(study.base, study.source))
+    for run in range(3):
+        result = hs.replay(study, run)
+        assert study.scenario(run).plant is not None
+        np.testing.assert_array_equal(result.Z0, nominal.Z0)  # the design is the nominal model's
+        np.testing.assert_array_equal(result.metrics.rms_position_error_last_half,
+                                      df["rms_position_error_last_half"][run])
