@@ -2,7 +2,9 @@
 # The main job: set-up (scripts/setup.sh), then the paper's runs with their figures, results
 # files and a metrics table in out/paper/ (or the folder given as the first argument), and the
 # built-in vehicles' runs (docs/vehicles.md) in its subfolder vehicles/ and the planned
-# scenarios (docs/planning.md) in planned/ (a few seconds more each).
+# scenarios (docs/planning.md) in planned/ (a few seconds more each), and a small study (50 noise
+# seeds of Figure 2 per law, docs/studies.md) in studies/quick_monte_carlo/ (a few seconds; the
+# full shipped studies take minutes: scripts/run_studies.sh).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -11,3 +13,4 @@ OUT="${1:-out/paper}"
 .venv/bin/hinf-cpp paper --out "$OUT"
 .venv/bin/hinf-cpp vehicles --out "$OUT/vehicles"
 .venv/bin/hinf-cpp planned --out "$OUT/planned"
+.venv/bin/hinf-cpp study studies/quick_monte_carlo.toml --out "$OUT/studies/quick_monte_carlo"

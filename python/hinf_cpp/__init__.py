@@ -10,7 +10,9 @@ vehicles' shipped runs: FossenVessel, Hovercraft, PlanarVtol, Auv; docs/vehicles
 ``hinf_cpp.symbolic`` (your own vehicle in CasADi symbols, evaluated in C++; docs/models.md),
 ``hinf_cpp.codegen`` (CasADi functions compiled for the C++ core; needs casadi) and
 ``hinf_cpp.planner`` (feasible desired trajectories from waypoints or a path; needs casadi;
-docs/planning.md).
+docs/planning.md) and ``hinf_cpp.study`` (studies: grid and random axes over scenario keys, one
+row per run as a pandas DataFrame, locally or on Dask; ``hinf_cpp.study_report`` summarizes and
+plots them; docs/studies.md).
 
 Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
 errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved

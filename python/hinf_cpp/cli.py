@@ -1,6 +1,7 @@
 """The ``hinf-cpp`` command line.
 
-    hinf-cpp run SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--npz OUT.npz] [--plot OUT.png] [--gamma-star]
+    hinf-cpp run SCENARIO.toml [--set KEY=VALUE ...] [--seed N] [--json OUT.json] [--csv OUT.csv] [--npz OUT.npz]
+                 [--plot OUT.png] [--gamma-star]
     hinf-cpp plan SCENARIO.toml -o PLANNED.toml [--json REPORT.json] [--plot OUT.png] [--no-cache]
     hinf-cpp compare SCENARIO.toml [--controllers hinf,lqr,cascade] [--feedback state,output]
                      [--worst-case] [--json OUT.json] [--plot OUT.png] [--quiet]
@@ -12,6 +13,7 @@
     hinf-cpp paper [--out DIR] [--quiet]
     hinf-cpp vehicles [--out DIR] [--quiet]
     hinf-cpp planned [--out DIR] [--no-cache] [--quiet]
+    hinf-cpp study STUDY.toml --out DIR [--workers N | --scheduler ADDRESS] [--quiet]
 
 Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
 too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
@@ -96,6 +98,16 @@ def _check_outputs(files=(), figures=(), folders=()) -> None:
             check_output_folder(path)
 
 
+def _seed(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"invalid seed '{text}': an integer in [0, 2^63)") from None
+    if not 0 <= value < 2 ** 63:
+        raise argparse.ArgumentTypeError(f"invalid seed '{text}': an integer in [0, 2^63)")
+    return value
+
+
 def _gamma_star_options(args: argparse.Namespace) -> _core.GammaStarOptions:
     return _core.GammaStarOptions(lower=args.lower, upper=args.upper, rtol=args.rtol,
                                   max_evaluations=args.max_evaluations, threads=args.threads)
@@ -117,12 +129,38 @@ def _load_with_plan(path: str):
     return planned.scenario, planned.plan
 
 
+def _load_with_settings(path: str, settings: list[str], seed: int | None):
+    """The scenario file with --set KEY=VALUE applied in order, then --seed N ([measurement]
+    seed), read by the one C++ reader (hinf_cpp.study.apply_settings)."""
+    import tomllib
+
+    from .scenario import scenario_from_dict
+    from .study import apply_settings, parse_setting
+
+    pairs = [parse_setting(text) for text in settings]
+    try:
+        with open(path, "rb") as f:
+            document = tomllib.load(f)
+    except OSError as error:
+        raise ValueError(f"cannot read '{path}': {error.strerror}") from None
+    except tomllib.TOMLDecodeError as error:
+        raise ValueError(f"{path}: {error}") from None
+    try:
+        document = apply_settings(document, pairs, seed)
+    except ValueError as error:
+        raise ValueError(f"{path}: {error}") from None
+    return scenario_from_dict(document, path)
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from .export import npz_path, save_npz
 
     _check_outputs(files=[args.json, args.csv, None if args.npz is None else npz_path(args.npz)],
                    figures=[args.plot])
-    scenario, planned = _load_with_plan(args.scenario)
+    if args.set or args.seed is not None:
+        scenario, planned = _load_with_settings(args.scenario, args.set, args.seed), None
+    else:
+        scenario, planned = _load_with_plan(args.scenario)
     if planned is not None:
         print(f"planned u_d through {len(planned.waypoints)} waypoints: {planned.report.summary()}")
     result = _core.run_scenario(scenario)
@@ -499,6 +537,44 @@ def cmd_planned(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_study(args: argparse.Namespace) -> int:
+    from .study import load_study, run_study
+    from .study_report import status_counts, write_study_outputs
+
+    if args.workers is not None and args.scheduler is not None:
+        raise ValueError("--workers and --scheduler exclude each other: --workers sets the local threads, "
+                         "a Dask cluster runs on its own workers")
+    _check_outputs(folders=[args.out])
+    study = load_study(args.study)
+    client = None
+    if args.scheduler is not None:
+        try:
+            from dask.distributed import Client
+        except ImportError:
+            raise ValueError("--scheduler needs Dask: pip install 'hinf_cpp[dask]'") from None
+        client = Client(args.scheduler, timeout="20s")
+    started = time.perf_counter()
+    try:
+        with Progress(quiet=args.quiet) as progress:
+            table = run_study(study, workers=args.workers, client=client, out=args.out, progress=progress)
+    finally:
+        if client is not None:
+            client.close()
+    seconds = time.perf_counter() - started
+    written = write_study_outputs(study, table, args.out, seconds)
+    if table.attrs.get("restarted"):
+        print(f"note: {args.out}/partial held runs of another version of this study (the study, its scenario "
+              "or the library changed): started over")
+    counts = status_counts(table)
+    statuses = ", ".join(f"{name} {int(counts[name].sum())}" for name in counts.columns
+                         if name != "runs" and counts[name].sum() > 0)
+    where = f"Dask scheduler {args.scheduler}" if client is not None else \
+        f"{args.workers or os.cpu_count()} local threads"
+    print(f"study {study.name}: {study.runs} runs ({statuses}) in {seconds:.1f} s on {where}")
+    print(f"wrote {args.out}/: " + ", ".join(sorted(p.name for p in written)))
+    return 0
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with errors on one line of stderr (exit status 2), like every other error."""
 
@@ -547,6 +623,10 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--npz", help="write every time series, the metrics and the metadata (NPZ)")
     run.add_argument("--plot", help="write the x-y plot (PNG, PDF or SVG)")
     run.add_argument("--gamma-star", action="store_true", help="also compute gamma* (eq. 14) for the results file")
+    run.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                     help="set a scenario key (VALUE is a TOML value: controller.gamma=12, "
+                          "'controller.law=\"lqr\"', initial.q0[5]=0.5, feedback=\"state\"); repeatable")
+    run.add_argument("--seed", type=_seed, help="set [measurement] seed (the noise of an output-feedback run)")
     run.set_defaults(handler=cmd_run)
 
     planner = sub.add_parser("plan", help="plan the desired inputs of a scenario that gives waypoints or a path, "
@@ -633,7 +713,28 @@ def build_parser() -> argparse.ArgumentParser:
     planned.add_argument("--no-cache", action="store_true", help="plan anew even where a plan is cached")
     _add_quiet(planned)
     planned.set_defaults(handler=cmd_planned)
+
+    study = sub.add_parser("study", help="a study (Monte Carlo, model uncertainty, grids of initial conditions, "
+                                         "gamma sweeps): one row per run, a summary and figures (docs/studies.md)")
+    study.add_argument("study", help="study file (TOML)")
+    study.add_argument("--out", required=True, help="output folder (finished runs are kept in OUT/partial: "
+                                                    "an interrupted study resumes)")
+    study.add_argument("--workers", type=_positive_int, metavar="N", help="local threads (default: all cores)")
+    study.add_argument("--scheduler", metavar="ADDRESS",
+                       help="run on the Dask cluster with this scheduler address (tcp://host:port)")
+    _add_quiet(study)
+    study.set_defaults(handler=cmd_study)
     return parser
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"invalid count '{text}': an integer >= 1") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"invalid count '{text}': an integer >= 1")
+    return value
 
 
 def main(argv: list[str] | None = None) -> int:

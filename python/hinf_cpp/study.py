@@ -1,0 +1,779 @@
+"""Studies: many runs of one scenario with some of its keys varied (docs/studies.md).
+
+A study file (TOML) names a base scenario and what varies: grid axes (every combination of
+their values) and random axes (drawn ``samples`` times per grid point from one master seed).
+:func:`load_study` reads it, :func:`run_study` runs it (locally on all cores with the C++
+batch runner, or on a Dask cluster) and returns one row per run as a pandas DataFrame;
+:func:`replay` runs any one row alone, :func:`replay_command` gives the ``hinf-cpp run``
+command that does the same. Failing runs are rows with a status and a reason.
+
+Seeds: ``SeedSequence(seed).spawn(samples)``; sample j draws its random values, in the order
+of the [[random]] axes, from ``numpy.random.default_rng(child j)`` at every grid point (common
+random numbers: the grid points are compared on the same noise and plants). Run index: grid
+points in row-major order of the [[grid]] axes, samples fastest.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import functools
+import hashlib
+import json
+import math
+import os
+import pathlib
+import re
+import shutil
+import threading
+import time
+import tomllib
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from . import _core
+from .scenario import scenario_from_dict
+
+__all__ = [
+    "GridAxis",
+    "RandomAxis",
+    "Study",
+    "STATUSES",
+    "apply_settings",
+    "load_study",
+    "parse_setting",
+    "replay",
+    "replay_command",
+    "run_study",
+    "study_from_dict",
+    "study_table_schema",
+]
+
+# What StudyRun.status can be, in the order of the summary's columns.
+STATUSES = ["completed", "diverged", "conjugate_point", "coupling_violation", "solver_failure",
+            "invalid_input", "failed"]
+METRIC_NAMES = [definition.name for definition in _core.metric_table()]
+FEEDBACK_KEY = "feedback"  # the grid axis that keeps ("output") or drops ("state") [measurement]
+SEED_KEY = "measurement.seed"
+DISTRIBUTIONS = ("seed", "uniform", "normal")
+DEFAULT_CHUNK = 100
+_SEED_LIMIT = 2 ** 63
+
+
+# --------------------------------------------------------------------------------------------
+# Keys: "controller.gamma", "initial.q0[2]", "disturbance.w1.harmonics[0].amplitude"
+
+_PART = re.compile(r"^([A-Za-z0-9_-]+)((?:\[\d+\])*)$")
+
+
+def _parse_key(key: str) -> list[str | int]:
+    """The path of a dotted key: names and array indices, e.g. ["initial", "q0", 2]."""
+    if not isinstance(key, str) or not key:
+        raise ValueError(f"a key must be a non-empty string like 'controller.gamma', got {key!r}")
+    path: list[str | int] = []
+    for part in key.split("."):
+        match = _PART.match(part)
+        if not match:
+            raise ValueError(f"key '{key}': '{part}' is not a name with optional [index] (e.g. 'initial.q0[2]')")
+        path.append(match.group(1))
+        path += [int(i) for i in re.findall(r"\[(\d+)\]", match.group(2))]
+    return path
+
+
+def _get(document: dict, key: str) -> Any:
+    """The value at `key`; KeyError if it is not there."""
+    node: Any = document
+    for part in _parse_key(key):
+        if isinstance(part, int):
+            if not isinstance(node, list) or part >= len(node):
+                raise KeyError(key)
+        elif not isinstance(node, dict) or part not in node:
+            raise KeyError(key)
+        node = node[part]
+    return node
+
+
+def _set(document: dict, key: str, value: Any) -> None:
+    """Sets `key` in the scenario document: tables on the way are made if missing, an array
+    index must exist. "feedback" = "state" drops [measurement], "output" keeps it."""
+    if key == FEEDBACK_KEY:
+        if value == "state":
+            document.pop("measurement", None)
+        elif value == "output":
+            if "measurement" not in document:
+                raise ValueError("feedback = \"output\" needs a scenario with [measurement]")
+        else:
+            raise ValueError(f"feedback must be \"state\" or \"output\", got {value!r}")
+        return
+    path = _parse_key(key)
+    node: Any = document
+    for depth, part in enumerate(path[:-1]):
+        following = path[depth + 1]
+        if isinstance(part, int):
+            if not isinstance(node, list) or part >= len(node):
+                raise ValueError(f"key '{key}': the scenario has no element {part} there")
+            node = node[part]
+            continue
+        if not isinstance(node, dict):
+            raise ValueError(f"key '{key}': '{part}' is not inside a table")
+        if part not in node:
+            if isinstance(following, int):
+                raise ValueError(f"key '{key}': the scenario has no array '{part}' to index")
+            node[part] = {}
+        node = node[part]
+    last = path[-1]
+    if isinstance(last, int):
+        if not isinstance(node, list) or last >= len(node):
+            raise ValueError(f"key '{key}': the scenario has no element {last} there")
+        node[last] = value
+    elif isinstance(node, dict):
+        node[last] = value
+    else:
+        raise ValueError(f"key '{key}': '{last}' is not inside a table")
+
+
+def parse_setting(text: str) -> tuple[str, Any]:
+    """``KEY=VALUE`` of ``hinf-cpp run --set``: VALUE is a TOML value (strings quoted)."""
+    key, sep, value = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ValueError(f"--set '{text}': write it as KEY=VALUE, e.g. controller.gamma=12")
+    try:
+        parsed = tomllib.loads(f"value = {value.strip()}")["value"]
+    except tomllib.TOMLDecodeError:
+        raise ValueError(f"--set '{text}': '{value.strip()}' is not a TOML value "
+                         "(quote strings: controller.law=\"lqr\")") from None
+    _parse_key(key) if key != FEEDBACK_KEY else None
+    return key, parsed
+
+
+def apply_settings(document: dict, settings: Sequence[tuple[str, Any]], seed: int | None = None) -> dict:
+    """A copy of a scenario document with the settings (key, value) applied in order, then
+    [measurement] seed = `seed` if given (ValueError if the scenario has no [measurement])."""
+    document = copy.deepcopy(document)
+    for key, value in settings:
+        _set(document, key, value)
+    if seed is not None:
+        if "measurement" not in document:
+            raise ValueError("--seed sets [measurement] seed, but the scenario has no [measurement] "
+                             "(a state-feedback run has no noise)")
+        document["measurement"]["seed"] = seed
+    return document
+
+
+def _toml_value(value: Any) -> str:
+    """A value as TOML text (floats exactly: repr)."""
+    import tomli_w
+
+    return tomli_w.dumps({"v": value}).strip()[len("v = "):]
+
+
+# --------------------------------------------------------------------------------------------
+# The study file
+
+
+@dataclasses.dataclass(frozen=True)
+class GridAxis:
+    """Grid axis: `keys` (one, or several set together) and one value per point (with several
+    keys, each value is a list with one entry per key)."""
+
+    keys: tuple[str, ...]
+    values: tuple
+
+    def settings(self, point: int) -> list[tuple[str, Any]]:
+        value = self.values[point]
+        if len(self.keys) == 1:
+            return [(self.keys[0], value)]
+        return list(zip(self.keys, value))
+
+
+@dataclasses.dataclass(frozen=True)
+class RandomAxis:
+    """Random axis: "seed" (an integer in [0, 2^63)), "uniform" (low, high) or "normal"
+    (mean, std); with `relative` the draw is a factor on the base value `base`."""
+
+    key: str
+    distribution: str
+    low: float = 0.0
+    high: float = 1.0
+    mean: float = 0.0
+    std: float = 1.0
+    relative: bool = False
+    base: float | None = None
+
+    def draw(self, rng: np.random.Generator) -> Any:
+        if self.distribution == "seed":
+            return int(rng.integers(0, _SEED_LIMIT))
+        x = float(rng.uniform(self.low, self.high) if self.distribution == "uniform"
+                  else rng.normal(self.mean, self.std))
+        return x * self.base if self.relative else x
+
+
+@dataclasses.dataclass(frozen=True)
+class Study:
+    """A study read by :func:`load_study` (or :func:`study_from_dict`). `base` is the base
+    scenario's document (as tomllib reads it), `source` the scenario file (messages, relative
+    paths), `definition` the study's own document."""
+
+    name: str
+    description: str
+    source: str
+    base: dict
+    seed: int
+    samples: int
+    grid: tuple[GridAxis, ...]
+    random: tuple[RandomAxis, ...]
+    chunk: int
+    definition: dict
+    report: dict
+
+    @property
+    def grid_shape(self) -> tuple[int, ...]:
+        return tuple(len(axis.values) for axis in self.grid)
+
+    @property
+    def grid_points(self) -> int:
+        return math.prod(self.grid_shape)
+
+    @property
+    def runs(self) -> int:
+        return self.grid_points * self.samples
+
+    @property
+    def columns(self) -> list[str]:
+        """The axis columns of the table: every grid key, then every random key."""
+        return [key for axis in self.grid for key in axis.keys] + [axis.key for axis in self.random]
+
+    def content_hash(self) -> str:
+        """Changes with anything that changes the table: the study's definition, the base
+        scenario and the library (its version and the compiled core's bytes)."""
+        text = json.dumps([_core.__version__, _core_fingerprint(), self.definition, self.base, self.seed,
+                           self.samples, self.chunk], sort_keys=True, default=repr)
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def point(self, run: int) -> tuple[int, int, tuple[int, ...]]:
+        """(grid point, sample, index along each grid axis) of a run index."""
+        if not 0 <= run < self.runs:
+            raise ValueError(f"run index {run} is outside the study's 0..{self.runs - 1}")
+        grid, sample = divmod(run, self.samples)
+        return grid, sample, tuple(int(i) for i in np.unravel_index(grid, self.grid_shape)) if self.grid else ()
+
+    def settings(self, run: int) -> list[tuple[str, Any]]:
+        """The (key, value) pairs that make run `run` from the base scenario, grid keys first,
+        then the random draws of its sample."""
+        _, sample, indices = self.point(run)
+        settings = [s for axis, i in zip(self.grid, indices) for s in axis.settings(i)]
+        if self.random:
+            rng = np.random.default_rng(np.random.SeedSequence(self.seed, spawn_key=(sample,)))
+            settings += [(axis.key, axis.draw(rng)) for axis in self.random]
+        return settings
+
+    def document(self, run: int) -> dict:
+        """The scenario document of run `run`."""
+        settings = self.settings(run)
+        # "feedback" first: a drawn measurement seed of a state-feedback run is then dropped.
+        feedback = [s for s in settings if s[0] == FEEDBACK_KEY]
+        others = [s for s in settings if s[0] != FEEDBACK_KEY]
+        document = apply_settings(self.base, others)
+        for key, value in feedback:
+            _set(document, key, value)
+        return document
+
+    def scenario(self, run: int) -> _core.Scenario:
+        """The scenario of run `run` (read by the one C++ reader)."""
+        return scenario_from_dict(self.document(run), self.source)
+
+
+@functools.lru_cache(maxsize=1)
+def _core_fingerprint() -> str:
+    """SHA-256 of the compiled core: a rebuilt library may give other rows."""
+    with open(_core.__file__, "rb") as f:
+        return hashlib.file_digest(f, "sha256").hexdigest()
+
+
+def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> float:
+    """The base value of a relative axis: the key in the scenario; for plant.X, else [model]'s X
+    (when [plant] has the same kind), else the model's parameter X (Model.named_parameters(),
+    of the plant for plant.X: the kind's default or the preset's)."""
+    head, _, rest = key.partition(".")
+    candidates = [key]
+    plant = base.get("plant") if isinstance(base.get("plant"), dict) else {}
+    model = base.get("model") if isinstance(base.get("model"), dict) else {}
+    other_kind = "kind" in plant and plant.get("kind") != model.get("kind")
+    if head == "plant" and rest and not other_kind:
+        candidates.append("model." + rest)
+    for candidate in candidates:
+        try:
+            value = _get(base, candidate)
+        except KeyError:
+            continue
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return float(value)
+        raise ValueError(f"relative = true: '{candidate}' is {value!r} in the scenario, not a number")
+    if head in ("plant", "model") and rest and scenario is not None:
+        vehicle = getattr(scenario, "plant", None) if head == "plant" else None
+        vehicle = vehicle if vehicle is not None else scenario.model
+        if hasattr(vehicle, "named_parameters"):
+            parameters = dict(vehicle.named_parameters())
+        else:
+            parameters = vehicle.parameters()
+            if not isinstance(parameters, dict):
+                parameters = {name: getattr(parameters, name) for name in dir(parameters)
+                              if not name.startswith("_") and isinstance(getattr(parameters, name), (int, float))}
+        if rest in parameters:
+            return float(parameters[rest])
+        raise ValueError(f"relative = true: the model has no parameter '{rest}' "
+                         f"(it has {', '.join(sorted(parameters))})")
+    raise ValueError(f"relative = true needs a base value: '{key}' is not in the scenario")
+
+
+def _number(table: dict, name: str, where: str, default: float | None = None) -> float:
+    value = table.get(name, default)
+    if value is None:
+        raise ValueError(f"{where}: '{name}' is required")
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ValueError(f"{where}: '{name}' must be a finite number, got {value!r}")
+    return float(value)
+
+
+def _only(table: dict, allowed: set[str], where: str) -> None:
+    unknown = sorted(set(table) - allowed)
+    if unknown:
+        raise ValueError(f"{where}: unknown key '{unknown[0]}' (allowed: {', '.join(sorted(allowed))})")
+
+
+def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.PathLike | None = None,
+                    base: dict | None = None) -> Study:
+    """A :class:`Study` from the dictionary form of a study file. The scenario is read from
+    [study] scenario (relative to `folder`) unless its document `base` is given."""
+    where = source
+    _only(definition, {"study", "grid", "random", "report"}, where)
+    head = definition.get("study")
+    if not isinstance(head, dict):
+        raise ValueError(f"{where}: a [study] table is required")
+    _only(head, {"name", "description", "scenario", "seed", "samples", "chunk"}, f"{where}: [study]")
+    scenario_source = "<dict>"
+    if base is None:
+        if not isinstance(head.get("scenario"), str):
+            raise ValueError(f"{where}: [study] scenario (the base scenario file) is required")
+        path = pathlib.Path(folder or ".") / head["scenario"]
+        try:
+            with open(path, "rb") as f:
+                base = tomllib.load(f)
+        except OSError as error:
+            raise ValueError(f"{where}: [study] scenario: cannot read '{path}' ({error.strerror})") from None
+        except tomllib.TOMLDecodeError as error:
+            raise ValueError(f"{where}: [study] scenario '{path}': {error}") from None
+        scenario_source = os.fspath(path)
+    seed = head.get("seed", 0)
+    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+        raise ValueError(f"{where}: [study] seed must be an integer >= 0, got {seed!r}")
+    chunk = head.get("chunk", DEFAULT_CHUNK)
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
+        raise ValueError(f"{where}: [study] chunk must be an integer >= 1, got {chunk!r}")
+
+    grid, seen = [], set()
+    for i, table in enumerate(definition.get("grid", [])):
+        at = f"{where}: [[grid]] {i + 1}"
+        if not isinstance(table, dict):
+            raise ValueError(f"{at}: expected a table")
+        _only(table, {"key", "values"}, at)
+        keys = table.get("key")
+        keys = (keys,) if isinstance(keys, str) else tuple(keys) if isinstance(keys, list) else None
+        if not keys or not all(isinstance(k, str) for k in keys):
+            raise ValueError(f"{at}: 'key' must be a key or a list of keys")
+        values = table.get("values")
+        if not isinstance(values, list) or not values:
+            raise ValueError(f"{at}: 'values' must be a non-empty array")
+        if len(keys) > 1 and not all(isinstance(v, list) and len(v) == len(keys) for v in values):
+            raise ValueError(f"{at}: with {len(keys)} keys each value is an array of {len(keys)} values")
+        for j, key in enumerate(keys):
+            if key != FEEDBACK_KEY:
+                _parse_key(key)
+            elif not all((v if len(keys) == 1 else v[j]) in ("state", "output") for v in values):
+                raise ValueError(f"{at}: feedback values are \"state\" and \"output\"")
+            if key in seen:
+                raise ValueError(f"{at}: key '{key}' is varied twice")
+            seen.add(key)
+        grid.append(GridAxis(keys, tuple(values)))
+
+    base_scenario = None
+    random = []
+    for i, table in enumerate(definition.get("random", [])):
+        at = f"{where}: [[random]] {i + 1}"
+        if not isinstance(table, dict):
+            raise ValueError(f"{at}: expected a table")
+        _only(table, {"key", "distribution", "low", "high", "mean", "std", "relative"}, at)
+        key = table.get("key")
+        if not isinstance(key, str):
+            raise ValueError(f"{at}: 'key' must be a key like 'plant.d_u'")
+        _parse_key(key)
+        if key in seen:
+            raise ValueError(f"{at}: key '{key}' is varied twice")
+        seen.add(key)
+        distribution = table.get("distribution")
+        if distribution not in DISTRIBUTIONS:
+            raise ValueError(f"{at}: distribution must be one of {', '.join(DISTRIBUTIONS)}, got {distribution!r}")
+        relative = table.get("relative", False)
+        if not isinstance(relative, bool):
+            raise ValueError(f"{at}: 'relative' must be true or false")
+        axis = RandomAxis(key, distribution, relative=relative)
+        if distribution == "uniform":
+            _only(table, {"key", "distribution", "low", "high", "relative"}, at)
+            low, high = _number(table, "low", at), _number(table, "high", at)
+            if not low <= high:
+                raise ValueError(f"{at}: low must be <= high")
+            axis = dataclasses.replace(axis, low=low, high=high)
+        elif distribution == "normal":
+            _only(table, {"key", "distribution", "mean", "std", "relative"}, at)
+            std = _number(table, "std", at)
+            if std < 0:
+                raise ValueError(f"{at}: std must be >= 0")
+            axis = dataclasses.replace(axis, mean=_number(table, "mean", at), std=std)
+        else:
+            _only(table, {"key", "distribution"}, at)
+        if relative:
+            if base_scenario is None and key.split(".")[0] in ("plant", "model"):
+                base_scenario = scenario_from_dict(base, scenario_source)
+            try:
+                axis = dataclasses.replace(axis, base=_relative_base(base, base_scenario, key))
+            except ValueError as error:
+                raise ValueError(f"{at}: {error}") from None
+        random.append(axis)
+    samples = head.get("samples", 1)
+    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 1:
+        raise ValueError(f"{where}: [study] samples must be an integer >= 1, got {samples!r}")
+    if samples > 1 and not random:
+        raise ValueError(f"{where}: [study] samples = {samples} but no [[random]] axis: every sample would be "
+                         "the same run")
+    report = definition.get("report", {})
+    if not isinstance(report, dict):
+        raise ValueError(f"{where}: [report] must be a table")
+    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric", "group_by"},
+          f"{where}: [report]")
+    group_by = report.get("group_by", [])
+    if not (isinstance(group_by, list) and all(k in seen for k in group_by)):
+        raise ValueError(f"{where}: [report] group_by must list grid or random keys of the study")
+    for name in list(report.get("metrics", [])) + [report.get("distribution"), report.get("gamma_metric")]:
+        if name is not None and name not in METRIC_NAMES:
+            raise ValueError(f"{where}: [report]: no metric '{name}' (metrics: {', '.join(METRIC_NAMES)})")
+    roa = report.get("roa")
+    if roa is not None and not (isinstance(roa, list) and len(roa) == 2 and all(k in seen for k in roa)):
+        raise ValueError(f"{where}: [report] roa must name two grid keys [x, y]")
+
+    study = Study(name=str(head.get("name", pathlib.Path(source).stem)), description=str(head.get("description", "")),
+                  source=scenario_source, base=base, seed=seed, samples=samples, grid=tuple(grid),
+                  random=tuple(random), chunk=chunk, definition=definition, report=report)
+    study.scenario(0)  # a key the reader refuses, or a value it cannot take, is an error here
+    return study
+
+
+def load_study(path: str | os.PathLike) -> Study:
+    """Reads a study file (docs/studies.md); ValueError naming the file and the key for
+    anything wrong with it (and for a base scenario that cannot be read)."""
+    path = pathlib.Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise ValueError(f"cannot read the study '{path}': {error.strerror}") from None
+    try:
+        definition = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        raise ValueError(f"{path}: {error}") from None
+    return study_from_dict(definition, os.fspath(path), path.parent)
+
+
+# --------------------------------------------------------------------------------------------
+# Running
+
+
+def _batch(scenarios: list, threads: int, progress: Callable[[int, int], None] | None = None) -> list[dict]:
+    """Rows of hc.run_study (the C++ batch runner: threads in C++, the GIL released, one design
+    per distinct design input) for a list of scenarios."""
+    runs = _core.run_study(scenarios, _core.StudyOptions(threads=threads, share_designs=True), progress)
+    return [{"status": r.status, "reason": r.reason, "metrics": {name: getattr(r.metrics, name) for name in METRIC_NAMES},
+             "gamma": r.gamma, "law": r.law.name, "output_feedback": bool(r.output_feedback)} for r in runs]
+
+
+def study_table_schema(study: Study):
+    """The Arrow schema of a study's table (one column per axis key, typed from its values)."""
+    import pyarrow as pa
+
+    def grid_type(values) -> pa.DataType:
+        if all(isinstance(v, bool) for v in values):
+            return pa.bool_()
+        if all(isinstance(v, int) and not isinstance(v, bool) for v in values):
+            return pa.int64()
+        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
+            return pa.float64()
+        return pa.string()  # strings; arrays are written as TOML text
+
+    fields = [pa.field("run", pa.int64()), pa.field("grid_point", pa.int64()), pa.field("sample", pa.int64()),
+              pa.field("seed", pa.int64())]
+    for axis in study.grid:
+        for j, key in enumerate(axis.keys):
+            values = [v if len(axis.keys) == 1 else v[j] for v in axis.values]
+            fields.append(pa.field(key, grid_type(values)))
+    for axis in study.random:
+        fields.append(pa.field(axis.key, pa.int64() if axis.distribution == "seed" else pa.float64()))
+    fields += [pa.field("law", pa.string()), pa.field("output_feedback", pa.bool_()), pa.field("gamma", pa.float64()),
+               pa.field("status", pa.string()), pa.field("reason", pa.string())]
+    fields += [pa.field(name, pa.float64()) for name in METRIC_NAMES]
+    return pa.schema(fields)
+
+
+def _cell(value: Any, arrow_type) -> Any:
+    import pyarrow as pa
+
+    if arrow_type == pa.string() and not isinstance(value, str):
+        return _toml_value(value)
+    if arrow_type == pa.float64():
+        return float(value)
+    return value
+
+
+def run_chunk(study: Study, start: int, stop: int, threads: int = 0,
+              progress: Callable[[int, int], None] | None = None):
+    """Runs start..stop-1 of a study (the task of a worker, local or Dask); an Arrow table.
+    A run whose scenario the reader refuses is a row with status "invalid_input".
+    `progress(done, total)` is hc.run_study's (about every 0.1 s, on this thread)."""
+    import pyarrow as pa
+
+    schema = study_table_schema(study)
+    scenarios, settings, failed = [], [], {}
+    for run in range(start, stop):
+        s = study.settings(run)
+        settings.append(s)
+        try:
+            scenarios.append(study.scenario(run))
+        except ValueError as error:
+            failed[run] = str(error)
+    rows = iter(_batch(scenarios, threads, progress))
+    columns: dict[str, list] = {field.name: [] for field in schema}
+    for run, s in zip(range(start, stop), settings):
+        grid, sample, _ = study.point(run)
+        if run in failed:
+            row = {"status": "invalid_input", "reason": failed[run], "metrics": {}, "gamma": math.nan,
+                   "law": "", "output_feedback": False}
+            document = None
+        else:
+            row = next(rows)
+        values = dict(s)
+        document = study.document(run) if run not in failed else None
+        measurement = (document or {}).get("measurement")
+        columns["run"].append(run)
+        columns["grid_point"].append(grid)
+        columns["sample"].append(sample)
+        columns["seed"].append(int(measurement.get("seed", 0)) if isinstance(measurement, dict) else None)
+        for key in study.columns:
+            columns[key].append(_cell(values[key], schema.field(key).type))
+        for name in ("law", "output_feedback", "gamma", "status", "reason"):
+            columns[name].append(row[name])
+        for name in METRIC_NAMES:
+            columns[name].append(float(row["metrics"].get(name, math.nan)))
+    return pa.table(columns, schema=schema)
+
+
+def _to_pandas(table):
+    import pandas as pd
+    import pyarrow as pa
+
+    return table.to_pandas(types_mapper={pa.int64(): pd.Int64Dtype()}.get)
+
+
+class _Partial:
+    """DIR/partial: finished chunks (chunk-NNNNN.parquet) of the study whose content hash is in
+    DIR/partial/study.json. A different hash (the study, its scenario or the library changed)
+    clears the folder: the study starts over."""
+
+    def __init__(self, out: pathlib.Path, study: Study):
+        self.folder = out / "partial"
+        self.study = study
+        self.hash = study.content_hash()
+        self.restarted = False
+        manifest = self.folder / "study.json"
+        if self.folder.exists():
+            try:
+                same = json.loads(manifest.read_text())["hash"] == self.hash
+            except (OSError, ValueError, KeyError, TypeError):
+                same = False
+            if not same:
+                self.restarted = any(self.folder.glob("chunk-*.parquet"))
+                shutil.rmtree(self.folder)
+        self.folder.mkdir(parents=True, exist_ok=True)
+        from .outputs import write_text
+
+        write_text(manifest, json.dumps({"study": study.name, "hash": self.hash, "runs": study.runs,
+                                         "chunk": study.chunk}, indent=2) + "\n")
+
+    def path(self, chunk: int) -> pathlib.Path:
+        return self.folder / f"chunk-{chunk:05d}.parquet"
+
+    def load(self, chunk: int):
+        import pyarrow.parquet as pq
+
+        path = self.path(chunk)
+        if not path.exists():
+            return None
+        try:
+            table = pq.read_table(path)
+        except Exception:  # noqa: BLE001 - an unreadable chunk is run again
+            return None
+        schema = study_table_schema(self.study)
+        return table.cast(schema) if table.schema.equals(schema) else None
+
+    def save(self, chunk: int, table) -> None:
+        import pyarrow.parquet as pq
+
+        from .outputs import atomic_output
+
+        with atomic_output(self.path(chunk)) as f:
+            pq.write_table(table, f)
+
+
+def _worker_threads() -> int:
+    """The threads of the Dask worker running this task (1 outside a worker)."""
+    try:
+        from dask.distributed import get_worker
+
+        return max(1, int(get_worker().state.nthreads))
+    except (ImportError, ValueError, AttributeError):
+        return 1
+
+
+def _dask_chunk(study: Study, start: int, stop: int):
+    return run_chunk(study, start, stop, _worker_threads())
+
+
+def _progress_callback(progress) -> tuple[Callable[[int, int, str], None], Callable[[], None]]:
+    if callable(progress):
+        return progress, lambda: None
+    from .progress import Progress
+
+    display = Progress(quiet=not progress)
+    return display, display.close
+
+
+def _eta(started: float, done: int, new: int, total: int) -> str:
+    elapsed = time.perf_counter() - started
+    if new <= 0 or done >= total:
+        return ""
+    left = elapsed / new * (total - done)
+    return f", {left:.0f} s left" if left < 120 else f", {left / 60:.1f} min left"
+
+
+def run_study(study: Study | str | os.PathLike, workers: int | None = None, client=None,
+              out: str | os.PathLike | None = None, progress: bool | Callable[[int, int, str], None] = True):
+    """Runs every run of a study; a pandas DataFrame with one row per run, in run order.
+
+    Parameters
+    ----------
+    study : Study or path of a study file
+    workers : int, optional
+        Threads of the local C++ batch runner (default: all cores). Not with `client`.
+    client : dask.distributed.Client, optional
+        Runs the chunks on this Dask cluster instead (the same table, bit for bit).
+    out : folder, optional
+        Keeps finished chunks in out/partial/ so that an interrupted study resumes where it
+        stopped (a study that changed starts over).
+    progress : bool or callable(done, total, message)
+        True: a progress line on a terminal; a callable is called after every chunk.
+    """
+    import pyarrow as pa
+
+    if not isinstance(study, Study):
+        study = load_study(study)
+    if client is not None and workers is not None:
+        raise ValueError("workers is for local runs; a Dask client runs on its cluster's workers")
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
+    chunks = [(start, min(start + study.chunk, study.runs)) for start in range(0, study.runs, study.chunk)]
+    partial = _Partial(pathlib.Path(out), study) if out is not None else None
+    tables: dict[int, Any] = {}
+    if partial is not None:
+        for index in range(len(chunks)):
+            table = partial.load(index)
+            if table is not None:
+                tables[index] = table
+    todo = [index for index in range(len(chunks)) if index not in tables]
+    callback, close = _progress_callback(progress)
+    started, resumed = time.perf_counter(), sum(chunks[i][1] - chunks[i][0] for i in tables)
+    lock = threading.Lock()
+
+    def done_runs() -> int:
+        return sum(chunks[i][1] - chunks[i][0] for i in tables)
+
+    def show(done: int) -> None:
+        callback(done, study.runs, f"study {study.name}: runs done" + _eta(started, done, done - resumed, study.runs))
+
+    def finished(index: int, table) -> None:
+        with lock:
+            if partial is not None:
+                partial.save(index, table)
+            tables[index] = table
+            show(done_runs())
+
+    try:
+        if client is None:
+            threads = workers or 0
+            for index in todo:
+                # The terminal line also moves within a chunk; a callable is called per chunk.
+                inner = None
+                if not callable(progress) and progress:
+                    before = done_runs()
+                    inner = lambda done, total, before=before: show(before + done)  # noqa: E731
+                finished(index, run_chunk(study, *chunks[index], threads, inner))
+        else:
+            from dask.distributed import as_completed
+
+            import uuid
+
+            # Keys unique to this call: a second run of the same study on the same client must
+            # not meet the first one's futures while the scheduler releases them.
+            remote = client.scatter(study, broadcast=True, hash=False)
+            key = f"study-{study.content_hash()[:12]}-{uuid.uuid4().hex[:8]}"
+            futures = {client.submit(_dask_chunk, remote, *chunks[index], key=f"{key}-{index}", pure=False): index
+                       for index in todo}
+            try:
+                for future in as_completed(futures):
+                    finished(futures[future], future.result())
+            except BaseException:
+                client.cancel(list(futures))
+                raise
+    finally:
+        close()
+    table = pa.concat_tables([tables[i] for i in range(len(chunks))]) if chunks else \
+        study_table_schema(study).empty_table()
+    frame = _to_pandas(table)
+    frame.attrs["restarted"] = bool(partial is not None and partial.restarted)
+    return frame
+
+
+# --------------------------------------------------------------------------------------------
+# Replaying one run
+
+
+def replay(study: Study | str | os.PathLike, run: int) -> _core.RunResult:
+    """Runs run `run` of a study alone (run_scenario: the same metrics as its row)."""
+    if not isinstance(study, Study):
+        study = load_study(study)
+    return _core.run_scenario(study.scenario(run))
+
+
+def replay_command(study: Study, run: int, scenario: str | None = None) -> str:
+    """The ``hinf-cpp run`` command that runs run `run` alone: ``--set KEY=VALUE`` for each
+    value of its row (floats written exactly), "feedback" last, and ``--seed N`` for a drawn
+    measurement seed (left out for a state-feedback run, which has no noise)."""
+    import shlex
+
+    document = study.document(run)
+    settings = study.settings(run)
+    parts = ["hinf-cpp", "run", shlex.quote(scenario or study.source)]
+    ordered = [s for s in settings if s[0] != FEEDBACK_KEY] + [s for s in settings if s[0] == FEEDBACK_KEY]
+    for key, value in ordered:
+        if key != SEED_KEY:
+            parts += ["--set", shlex.quote(f"{key}={_toml_value(value)}")]
+    if any(key == SEED_KEY for key, _ in settings) and "measurement" in document:
+        parts += ["--seed", str(document["measurement"]["seed"])]
+    return " ".join(parts)

@@ -1,0 +1,420 @@
+"""Studies (hinf_cpp.study, docs/studies.md): expansion and seeds, the same table whatever the
+executor (1 or 2 local threads, a Dask cluster of 2 processes), replay of one row (Python and
+the command line), failures as rows, interrupt and resume, outputs, the CLI's errors."""
+
+from __future__ import annotations
+
+import json
+import pathlib
+import pickle
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pandas as pd
+import pandas.testing as pdt
+import pytest
+
+import hinf_cpp as hc
+from hinf_cpp import study as hs
+from hinf_cpp.study_report import paired_differences, status_counts, summarize, summary_markdown, write_study_outputs
+
+BIN = pathlib.Path(sys.executable).parent
+HINF_CPP = BIN / "hinf-cpp"
+FIG2 = pathlib.Path(hc.scenario_path("paper_fig2"))
+METRICS = [d.name for d in hc.metric_table()]
+
+
+def write_study(folder: pathlib.Path, body: str, name: str = "study.toml") -> pathlib.Path:
+    """A study file over a copy of paper_fig2.toml (short horizon, for speed) in `folder`."""
+    scenario = FIG2.read_text().replace("tf = 40.0", "tf = 8.0")
+    (folder / "fig2.toml").write_text(scenario)
+    path = folder / name
+    path.write_text(textwrap.dedent(body))
+    return path
+
+
+MONTE_CARLO = """\
+[study]
+name = "mc"
+scenario = "fig2.toml"
+seed = 20261124
+samples = 4
+chunk = 5
+
+[[grid]]
+key = "controller.law"
+values = ["hinf", "lqr", "cascade"]
+
+[[random]]
+key = "measurement.seed"
+distribution = "seed"
+
+[[random]]
+key = "disturbance.w1.harmonics[0].amplitude"
+distribution = "uniform"
+low = 0.05
+high = 0.15
+
+[[random]]
+key = "model.d_u"
+distribution = "normal"
+mean = 1.0
+std = 0.1
+relative = true
+"""
+
+
+@pytest.fixture(scope="module")
+def mc_study(tmp_path_factory):
+    return hs.load_study(write_study(tmp_path_factory.mktemp("mc"), MONTE_CARLO))
+
+
+@pytest.fixture(scope="module")
+def mc_table(mc_study):
+    return hs.run_study(mc_study, workers=1, progress=False)
+
+
+# ---- expansion and seeds ----
+
+def test_seeds_are_the_spawned_children_and_common_to_every_grid_point(mc_study):
+    children = np.random.SeedSequence(mc_study.seed).spawn(mc_study.samples)
+    assert mc_study.runs == 12 and mc_study.grid_points == 3
+    for run in range(mc_study.runs):
+        grid, sample, (law,) = mc_study.point(run)
+        assert (grid, sample) == divmod(run, 4) and law == grid
+        rng = np.random.default_rng(children[sample])
+        seed, amplitude, factor = int(rng.integers(0, 2 ** 63)), rng.uniform(0.05, 0.15), rng.normal(1.0, 0.1)
+        settings = dict(mc_study.settings(run))
+        assert settings == {"controller.law": ["hinf", "lqr", "cascade"][grid], "measurement.seed": seed,
+                            "disturbance.w1.harmonics[0].amplitude": amplitude, "model.d_u": factor * 1.0}
+
+
+def test_table_has_a_row_per_run_with_seed_axes_status_and_every_metric(mc_study, mc_table):
+    df = mc_table
+    assert list(df["run"]) == list(range(12))
+    assert list(df.columns[:4]) == ["run", "grid_point", "sample", "seed"]
+    for column in mc_study.columns + ["law", "output_feedback", "gamma", "status", "reason"] + METRICS:
+        assert column in df.columns
+    assert (df["seed"] == df["measurement.seed"]).all()
+    assert list(df["law"]) == [law for law in ["hinf", "lqr", "cascade"] for _ in range(4)]
+    assert (df["status"] == "completed").all() and df["output_feedback"].all()
+    # common random numbers: sample j has the same draws at every grid point
+    for j in range(4):
+        assert df[df["sample"] == j]["measurement.seed"].nunique() == 1
+
+
+def test_the_dict_path_and_a_copied_scenario_agree(mc_study):
+    """The scenario of a run (base document + settings, read by the C++ reader) equals the base
+    scenario with the same values set as attributes."""
+    run = 5
+    settings = dict(mc_study.settings(run))
+    scenario = hc.scenario_from_dict(mc_study.base, mc_study.source).copy()
+    scenario.law = settings["controller.law"]
+    measurement = scenario.measurement
+    measurement.seed = settings["measurement.seed"]
+    scenario.measurement = measurement
+    built = mc_study.scenario(run)
+    assert built.law == scenario.law and built.measurement.seed == measurement.seed
+
+
+# ---- executors ----
+
+def test_one_and_two_local_workers_give_the_same_table(mc_study, mc_table):
+    pdt.assert_frame_equal(hs.run_study(mc_study, workers=2, progress=False), mc_table, check_exact=True)
+
+
+@pytest.fixture(scope="module")
+def dask_client():
+    distributed = pytest.importorskip("dask.distributed")
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None, silence_logs=50)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()
+
+
+@pytest.mark.slow
+def test_a_dask_cluster_of_two_processes_gives_the_same_table(mc_study, mc_table, dask_client):
+    assert len(dask_client.scheduler_info()["workers"]) == 2
+    table = hs.run_study(mc_study, client=dask_client, progress=False)
+    pdt.assert_frame_equal(table, mc_table, check_exact=True)
+    # twice on the same client (fresh task keys), and from the command line with --scheduler
+    pdt.assert_frame_equal(hs.run_study(mc_study, client=dask_client, progress=False), mc_table, check_exact=True)
+    if HINF_CPP.exists():
+        out = pathlib.Path(mc_study.source).parent / "dask-out"
+        study_file = pathlib.Path(mc_study.source).parent / "study.toml"
+        done = cli("study", study_file, "--out", out, "--scheduler", dask_client.scheduler.address, "--quiet")
+        assert done.returncode == 0, done.stderr
+        assert "on Dask scheduler" in done.stdout
+        pdt.assert_frame_equal(pd.read_parquet(out / "runs.parquet"), mc_table.astype({"seed": "Int64"}),
+                               check_exact=True, check_dtype=False)
+
+
+# ---- replay ----
+
+def test_replay_gives_the_row_exactly(mc_study, mc_table):
+    for run in (1, 10):
+        result = hs.replay(mc_study, run)
+        row = mc_table.iloc[run]
+        for name in METRICS:
+            np.testing.assert_array_equal(getattr(result.metrics, name), row[name], err_msg=name)
+
+
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+def test_replay_command_gives_the_row_exactly(mc_study, mc_table, tmp_path):
+    run = 6
+    command = hs.replay_command(mc_study, run)
+    assert "--seed" in command and "--set" in command
+    import shlex
+
+    argv = shlex.split(command)
+    out = tmp_path / "run.json"
+    done = subprocess.run([str(HINF_CPP)] + argv[1:] + ["--json", str(out)], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    metrics = json.loads(out.read_text())["metrics"]
+    row = mc_table.iloc[run]
+    for name in METRICS:
+        value = metrics.get(name)
+        if value is None:
+            assert np.isnan(row[name]), name
+        else:
+            np.testing.assert_array_equal(value, row[name], err_msg=name)
+
+
+# ---- failures are rows ----
+
+FAILURES = """\
+[study]
+name = "failures"
+scenario = "fig2.toml"
+chunk = 2
+
+[[grid]]
+key = ["controller.gamma", "disturbance.w1.harmonics[0].amplitude", "solver.divergence_factor", "feedback"]
+values = [
+    [5.0, 0.1, 1000.0, "output"],   # completes
+    [0.5, 0.1, 1000.0, "state"],    # below gamma* (1.33): conjugate point
+    [3.0, 0.1, 1000.0, "output"],   # above gamma*, below the output-feedback 4.59: coupling fails
+    [5.0, 100.0, 1.01, "state"],    # a surge force of 100: the loop leaves the divergence bound
+    [5.0, 0.1, 0.5, "output"],      # divergence_factor must be > 1: the reader refuses it
+]
+"""
+
+
+def test_failing_runs_are_rows_with_status_and_reason(tmp_path):
+    path = write_study(tmp_path, FAILURES)
+    df = hs.run_study(path, progress=False)
+    assert list(df["status"]) == ["completed", "conjugate_point", "coupling_violation", "diverged", "invalid_input"]
+    assert (df["reason"][1:] != "").all() and df["reason"][0] == ""
+    assert np.isnan(df["rms_position_error_last_half"][1]) and np.isfinite(df["rms_position_error_last_half"][0])
+    assert pd.isna(df["seed"][1]) and df["seed"][0] == 20000601
+    counts = status_counts(df)
+    assert counts["runs"][0] == 5 and counts["completed"][0] == 1
+
+
+# ---- interrupt and resume ----
+
+class Stop(Exception):
+    pass
+
+
+def test_an_interrupted_study_resumes_to_the_same_table(mc_study, mc_table, tmp_path):
+    calls = []
+
+    def stop_after_two(done, total, message):
+        calls.append(done)
+        if len(calls) == 2:
+            raise Stop
+
+    with pytest.raises(Stop):
+        hs.run_study(mc_study, workers=2, out=tmp_path, progress=stop_after_two)
+    chunks = sorted(p.name for p in (tmp_path / "partial").glob("chunk-*.parquet"))
+    assert chunks == ["chunk-00000.parquet", "chunk-00001.parquet"]
+    seen = []
+    resumed = hs.run_study(mc_study, workers=2, out=tmp_path, progress=lambda d, t, m: seen.append(d))
+    assert seen == [12]  # only the last chunk ran
+    pdt.assert_frame_equal(resumed, mc_table, check_exact=True)
+    assert not resumed.attrs["restarted"]
+
+
+def test_a_changed_study_starts_over(mc_study, tmp_path):
+    hs.run_study(mc_study, workers=2, out=tmp_path, progress=False)
+    changed = hs.study_from_dict({**mc_study.definition, "study": {**mc_study.definition["study"], "seed": 1}},
+                                 "changed", pathlib.Path(mc_study.source).parent)
+    seen = []
+    table = hs.run_study(changed, workers=2, out=tmp_path, progress=lambda d, t, m: seen.append(d))
+    assert seen == [5, 10, 12] and table.attrs["restarted"]
+
+
+# ---- round trips ----
+
+def test_a_pickled_and_a_rewritten_scenario_run_to_the_same_result(mc_study):
+    scenario = mc_study.scenario(3)
+    copies = [pickle.loads(pickle.dumps(scenario)), hc.parse_scenario_toml(hc.scenario_toml(scenario), "<toml>")]
+    expected = hc.run_scenario(scenario).metrics
+    for copy in copies:
+        assert hc.run_scenario(copy).metrics == expected
+
+
+# ---- study files: errors ----
+
+@pytest.mark.parametrize("body, message", [
+    ("[study]\nscenario = 'fig2.toml'\n[[grid]]\nkey = 'controller.gamma'\nvalues = []\n", "non-empty"),
+    ("[study]\nscenario = 'fig2.toml'\nsamples = 3\n", "no [[random]] axis"),
+    ("[study]\nscenario = 'fig2.toml'\n[[random]]\nkey = 'x.y'\ndistribution = 'beta'\n", "distribution"),
+    ("[study]\nscenario = 'missing.toml'\n", "cannot read"),
+    ("[study]\nscenario = 'fig2.toml'\n[[grid]]\nkey = 'controller.gamma'\nvalues = ['x']\n", "gamma"),
+    ("[study]\nscenario = 'fig2.toml'\n[[random]]\nkey = 'model.nope'\ndistribution = 'uniform'\n"
+     "low = 0.5\nhigh = 1.5\nrelative = true\n", "no parameter 'nope'"),
+    ("[study]\nscenario = 'fig2.toml'\nseeds = 3\n", "unknown key 'seeds'"),
+])
+def test_bad_study_files_are_refused_naming_the_problem(tmp_path, body, message):
+    with pytest.raises(ValueError, match=message.replace("[", r"\[")):
+        hs.load_study(write_study(tmp_path, body))
+
+
+def test_settings_parse_toml_values():
+    assert hs.parse_setting("controller.gamma=12") == ("controller.gamma", 12)
+    assert hs.parse_setting('controller.law="lqr"') == ("controller.law", "lqr")
+    assert hs.parse_setting("initial.q0[5]=0.5") == ("initial.q0[5]", 0.5)
+    with pytest.raises(ValueError, match="not a TOML value"):
+        hs.parse_setting("controller.law=lqr")
+    with pytest.raises(ValueError, match="KEY=VALUE"):
+        hs.parse_setting("controller.gamma")
+
+
+# ---- the command line ----
+
+def cli(*args, cwd=None):
+    return subprocess.run([str(HINF_CPP), *map(str, args)], capture_output=True, text=True, timeout=300, cwd=cwd)
+
+
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+def test_cli_study_writes_the_table_summary_and_figures(tmp_path):
+    body = MONTE_CARLO.replace("samples = 4", "samples = 2") + textwrap.dedent("""\
+        [report]
+        metrics = ["rms_position_error_last_half"]
+        """)
+    path = write_study(tmp_path, body)
+    done = cli("study", path, "--out", tmp_path / "out", "--workers", "2", "--quiet")
+    assert done.returncode == 0, done.stderr
+    out = tmp_path / "out"
+    for name in ["runs.parquet", "runs.csv", "summary.md", "distribution.png"]:
+        assert (out / name).is_file(), name
+    df = pd.read_parquet(out / "runs.parquet")
+    assert len(df) == 6 and (df["status"] == "completed").all()
+    csv = pd.read_csv(out / "runs.csv")
+    np.testing.assert_array_equal(csv["rms_position_error_last_half"], df["rms_position_error_last_half"])
+    assert "rms_position_error_last_half" in (out / "summary.md").read_text()
+    assert "6 runs (completed 6)" in done.stdout
+
+
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+@pytest.mark.parametrize("args, message", [
+    (["run", FIG2, "--set", "controller.law=lqr"], "not a TOML value"),
+    (["run", FIG2, "--set", "controller.gamma"], "KEY=VALUE"),
+    (["run", FIG2, "--set", "feedback=\"state\"", "--seed", "3"], "no [measurement]"),
+    (["run", FIG2, "--seed", "-1"], "invalid seed"),
+    (["run", FIG2, "--set", "controller.colour=1"], "colour"),
+    (["study", "missing.toml", "--out", "x"], "cannot read the study"),
+    (["study", "missing.toml", "--out", "x", "--workers", "2", "--scheduler", "tcp://x:1"], "exclude each other"),
+])
+def test_cli_errors_are_one_line_and_exit_status_2(tmp_path, args, message):
+    done = cli(*args, cwd=tmp_path)
+    assert done.returncode == 2
+    assert done.stderr.count("\n") == 1 and message in done.stderr, done.stderr
+
+
+def test_summary_statistics(mc_study, mc_table):
+    stats = summarize(mc_table, mc_study, ["final_position_error"])
+    assert list(stats["controller.law"]) == ["hinf", "lqr", "cascade"]
+    hinf = mc_table[mc_table["law"] == "hinf"]["final_position_error"]
+    row = stats.iloc[0]
+    assert row["count"] == 4 and row["mean"] == pytest.approx(hinf.mean()) and row["p50"] == pytest.approx(hinf.median())
+    pairs = paired_differences(mc_table, mc_study, "final_position_error")
+    lqr = mc_table[mc_table["law"] == "lqr"]["final_position_error"].to_numpy()
+    assert list(pairs["controller.law"]) == ["lqr - hinf", "cascade - hinf"]
+    assert pairs["mean"][0] == pytest.approx(np.mean(lqr - hinf.to_numpy()))
+    assert "Paired differences" in summary_markdown(mc_table, mc_study)
+
+
+def test_outputs_with_roa_and_gamma_figures(tmp_path):
+    body = """\
+    [study]
+    name = "roa"
+    scenario = "fig2.toml"
+    [[grid]]
+    key = "controller.gamma"
+    values = [5.0, 10.0]
+    [[grid]]
+    key = "initial.q0[5]"
+    values = [0.0, 1.5]
+    [[grid]]
+    key = "initial.q0[4]"
+    values = [-1.0, 1.0]
+    [report]
+    roa = ["initial.q0[5]", "initial.q0[4]"]
+    """
+    study = hs.load_study(write_study(tmp_path, body))
+    df = hs.run_study(study, progress=False)
+    written = {p.name for p in write_study_outputs(study, df, tmp_path / "out")}
+    assert {"roa.png", "gamma.png", "distribution.png", "summary.md"} <= written
+
+
+def test_a_relative_axis_takes_its_base_from_the_model_when_the_scenario_omits_it(tmp_path):
+    """[model] without d_r: the base value is the model's parameter (the ship's default, 1.0)."""
+    path = write_study(tmp_path, """\
+        [study]
+        scenario = "fig2.toml"
+        samples = 2
+        [[random]]
+        key = "model.d_r"
+        distribution = "uniform"
+        low = 0.7
+        high = 1.3
+        relative = true
+        """)
+    path.parent.joinpath("fig2.toml").write_text(path.parent.joinpath("fig2.toml").read_text().replace("d_r = 1.0\n", ""))
+    study = hs.load_study(path)
+    assert study.random[0].base == 1.0  # ShipParameters().d_r, the paper's
+    rng = np.random.default_rng(np.random.SeedSequence(0).spawn(2)[1])
+    assert dict(study.settings(1))["model.d_r"] == rng.uniform(0.7, 1.3) * 1.0
+
+
+def test_plant_axes_perturb_the_simulated_plant_only(tmp_path):
+    """plant.<name> sets [plant] (the design stays on [model]): base values from [model], rows
+    replay exactly, and the designs are those of the nominal model (same gamma, same Z0)."""
+    path = write_study(tmp_path, """\
+        [study]
+        scenario = "fig2.toml"
+        samples = 3
+        seed = 5
+        [[random]]
+        key = "plant.d_u"
+        distribution = "uniform"
+        low = 0.7
+        high = 1.3
+        relative = true
+        [[random]]
+        key = "plant.m_v"
+        distribution = "normal"
+        mean = 1.0
+        std = 0.1
+        relative = true
+        """)
+    study = hs.load_study(path)
+    assert [axis.base for axis in study.random] == [1.0, -2.0]
+    df = hs.run_study(study, progress=False)
+    assert (df["status"] == "completed").all()
+    assert df["rms_position_error_last_half"].nunique() == 3
+    nominal = hc.run_scenario(hc.scenario_from_dict(study.base, study.source))
+    for run in range(3):
+        result = hs.replay(study, run)
+        assert study.scenario(run).plant is not None
+        np.testing.assert_array_equal(result.Z0, nominal.Z0)  # the design is the nominal model's
+        np.testing.assert_array_equal(result.metrics.rms_position_error_last_half,
+                                      df["rms_position_error_last_half"][run])
