@@ -757,7 +757,8 @@ template <>
 struct Fields<OutputFeedbackOptions> {
   static constexpr auto list =
       std::make_tuple(field("filter_A", &OutputFeedbackOptions::filter_A),
-                      field("on_coupling_violation", &OutputFeedbackOptions::on_coupling_violation));
+                      field("on_coupling_violation", &OutputFeedbackOptions::on_coupling_violation),
+                      field("sigma_eigenvalues", &OutputFeedbackOptions::sigma_eigenvalues));
 };
 template <>
 struct Fields<MeasurementSpec> {

@@ -187,10 +187,10 @@ class OutputFeedbackSystem {
     return rho_of_current();
   }
 
-  // Values on the output grid at (t, x): q_d, u_d, u, w (noise channels included), y, the
-  // extreme eigenvalues of Sigma and rho(Sigma Z).
+  // Values on the output grid at (t, x): q_d, u_d, u, w (noise channels included), y and
+  // rho(Sigma Z); the extreme eigenvalues of Sigma when sigma_extremes, else NaN.
   void outputs(double t, const double* x, double* q_d, double* u_d, double* u, double* w, double* y,
-               double& sigma_min, double& sigma_max, double& rho) {
+               bool sigma_extremes, double& sigma_min, double& sigma_max, double& rho) {
     evaluate_signals(t, x);
     for (int i = 0; i < n_; ++i) q_d[i] = q_d_[i];
     for (int i = 0; i < m_; ++i) u_d[i] = u_d_[i];
@@ -199,8 +199,16 @@ class OutputFeedbackSystem {
     Eigen::Map<const Vec> q(x, n_);
     Eigen::Map<Vec>(y, p_) = (plant_C_.size() > 0 ? plant_C_ : C_) * q + problem_.sigma * noise_;
     if (heading_row_ >= 0) y[heading_row_] = wrap_angle(y[heading_row_]);  // a measured angle
-    detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
+    sigma_min = sigma_max = NAN;
+    if (sigma_extremes) detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
     rho = rho_of_current();
+  }
+
+  // Whether the Sigma of the last outputs() has a Cholesky factor (is positive definite).
+  bool sigma_positive_definite() const { return Eigen::LLT<MatN>(Sigma_).info() == Eigen::Success; }
+  // The extreme eigenvalues of the Sigma of the last outputs().
+  void sigma_extremes(double& sigma_min, double& sigma_max) const {
+    detail::symmetric_eigen_extremes(Sigma_, sigma_min, sigma_max);
   }
 
  private:
@@ -395,13 +403,18 @@ SimulationResult simulate_impl(const OutputFeedbackProblem& problem, Controller&
       est.q_hat(k, i) = x[n + i];
     }
     system.outputs(t, x, r.q_d.row(k).data(), r.u_d.row(k).data(), r.u.row(k).data(), r.w.row(k).data(),
-                   est.y.row(k).data(), est.sigma_min_eig[k], est.sigma_max_eig[k], est.rho_sigma_z[k]);
+                   est.y.row(k).data(), options.sigma_eigenvalues, est.sigma_min_eig[k], est.sigma_max_eig[k],
+                   est.rho_sigma_z[k]);
     const double rho = est.rho_sigma_z[k];
     // Sigma >= 0 may decay to about zero (no process noise); beyond round-off below zero it has
-    // lost definiteness.
-    if (!(est.sigma_min_eig[k] >= -kSemidefiniteTolerance * std::abs(est.sigma_max_eig[k])))
+    // lost definiteness. Without the eigenvalue series, a Cholesky factor settles the common
+    // case (positive definite: the test passes) and the extremes are computed only otherwise.
+    double sigma_min = est.sigma_min_eig[k], sigma_max = est.sigma_max_eig[k];
+    const bool known_definite = !options.sigma_eigenvalues && system.sigma_positive_definite();
+    if (!options.sigma_eigenvalues && !known_definite) system.sigma_extremes(sigma_min, sigma_max);
+    if (!known_definite && !(sigma_min >= -kSemidefiniteTolerance * std::abs(sigma_max)))
       throw SolverError(str_cat("the filter Riccati solution Sigma(t) lost positive definiteness at t = ",
-                                t, " (smallest eigenvalue ", est.sigma_min_eig[k],
+                                t, " (smallest eigenvalue ", sigma_min,
                                 "); tighten the solver tolerances or increase gamma"),
                         t, "SIGMA_NOT_POSITIVE_DEFINITE");
     if (!(rho < gamma2) && std::isnan(est.coupling_violation_t)) {

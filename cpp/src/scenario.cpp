@@ -249,7 +249,8 @@ std::optional<std::string> design_key(const Scenario& s) {
                  exact(s.solver.escape_norm), "\n");
 }
 
-RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise) {
+RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise,
+                            bool sigma_eigenvalues) {
   // The cascade law with state feedback does not use the law's design: there it is only
   // reported, and a gamma at or below gamma* leaves it out instead of failing the run.
   const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
@@ -284,6 +285,7 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
     OutputFeedbackOptions options;
     options.filter_A = ms.filter_A;
     options.on_coupling_violation = ms.on_coupling_violation;
+    options.sigma_eigenvalues = sigma_eigenvalues;
     result.simulation = simulate_output_feedback(problem, *controller, disturbance, s.initial_q0, options,
                                                  s.simulation_options(), s.plant.get());
   } else {

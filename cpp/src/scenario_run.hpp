@@ -41,7 +41,10 @@ ScenarioDesign design_scenario(const Scenario& s);
 // from another scenario with the same design_key): rethrows the design's failure where s needs
 // what failed, then simulates the closed loop and computes the metrics. noise: explicit noise
 // samples, or null for the seeded ones. Fills every field but timing.design and timing.total.
-RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise);
+// sigma_eigenvalues: OutputFeedbackOptions::sigma_eigenvalues (run_study, which keeps only the
+// metrics, leaves that series out).
+RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise,
+                            bool sigma_eigenvalues = true);
 
 // A text equal for two resolved, validated scenarios exactly when design_scenario gives them
 // the same design: the scenario file (scenario_toml) of a copy with everything that is not a

@@ -214,7 +214,7 @@ std::vector<StudyRun> run_study(const std::vector<Scenario>& scenarios, const St
         row.design_seconds = design->seconds;
         const auto start = std::chrono::steady_clock::now();
         try {
-          const RunResult result = detail::simulate_scenario(resolved[i], *design, nullptr);
+          const RunResult result = detail::simulate_scenario(resolved[i], *design, nullptr, /*sigma_eigenvalues=*/false);
           const bool diverged = result.simulation.status == RunStatus::Diverged;
           row.status = diverged ? RunOutcome::Diverged : RunOutcome::Completed;
           row.reason = diverged ? result.simulation.status_message : std::string();

@@ -1566,12 +1566,13 @@ class OutputFeedbackOptions:
     Choices of the output-feedback loop (paper §4)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('filter_A', 'on_coupling_violation')
+    __match_args__: typing.ClassVar[tuple] = ('filter_A', 'on_coupling_violation', 'sigma_eigenvalues')
+    sigma_eigenvalues: bool
     def __eq__(self, arg0: OutputFeedbackOptions) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, filter_A: FilterLinearization | str = FilterLinearization.estimate, on_coupling_violation: CouplingPolicy | str = CouplingPolicy.error) -> None:
+    def __init__(self, filter_A: FilterLinearization | str = FilterLinearization.estimate, on_coupling_violation: CouplingPolicy | str = CouplingPolicy.error, sigma_eigenvalues: bool = True) -> None:
         ...
     def __repr__(self) -> str:
         ...

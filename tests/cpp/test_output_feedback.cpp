@@ -774,6 +774,39 @@ TEST(OutputFeedbackLoop, NoiseIsHeldOverEachPeriodAndOneSampleActsFromItsPeriodO
   EXPECT_GT((other.q.row(k150 + 5) - base.q.row(k150 + 5)).cwiseAbs().maxCoeff(), 1e-6);
 }
 
+// OutputFeedbackOptions::sigma_eigenvalues = false (what run_study uses) leaves out only the
+// series sigma_min_eig and sigma_max_eig: every other output is the same computation, bit for
+// bit; and the series it keeps says Sigma stayed positive definite, which the check without the
+// series (a Cholesky factor) must agree with.
+TEST(OutputFeedbackLoop, WithoutTheSigmaEigenvalueSeriesEverythingElseIsTheSame) {
+  const double tf = 3.0;
+  const auto tr = ship_trajectory(tf);
+  const Mat I = Mat::Identity(6, 6);
+  const auto design = hinf::solve_grde(tr, I, I, 5.0);
+  const hinf::OutputFeedbackProblem problem = paper_problem(design, 0.5, 7);
+  hinf::HinfStateFeedback law(design);
+  hinf::OutputFeedbackOptions without;
+  without.sigma_eigenvalues = false;
+  const hinf::SimulationResult full =
+      hinf::simulate_output_feedback(problem, law, paper_disturbance(), paper_q0(), {}, simulation(0.01, solver(Method::ERK)));
+  const hinf::SimulationResult lean = hinf::simulate_output_feedback(problem, law, paper_disturbance(), paper_q0(),
+                                                                     without, simulation(0.01, solver(Method::ERK)));
+  ASSERT_EQ(full.t.size(), lean.t.size());
+  EXPECT_TRUE((full.q.array() == lean.q.array()).all());
+  EXPECT_TRUE((full.u.array() == lean.u.array()).all());
+  EXPECT_TRUE((full.estimator->q_hat.array() == lean.estimator->q_hat.array()).all());
+  EXPECT_TRUE((full.estimator->y.array() == lean.estimator->y.array()).all());
+  EXPECT_TRUE((full.estimator->rho_sigma_z.array() == lean.estimator->rho_sigma_z.array()).all());
+  EXPECT_TRUE(lean.estimator->sigma_min_eig.array().isNaN().all());
+  EXPECT_TRUE(lean.estimator->sigma_max_eig.array().isNaN().all());
+  EXPECT_GT(full.estimator->sigma_min_eig.minCoeff(), 0.0);
+  const hinf::Metrics a = hinf::compute_metrics(tr->model(), full, I), b = hinf::compute_metrics(tr->model(), lean, I);
+  for (const hinf::MetricDefinition& metric : hinf::metric_table()) {
+    const double x = a.*metric.value, y = b.*metric.value;
+    EXPECT_TRUE(x == y || (std::isnan(x) && std::isnan(y))) << metric.name;
+  }
+}
+
 // Regression: the heading of C (q - q_d - q_hat) was wrapped before sigma v was added, so the
 // innovation's heading left (-pi, pi] (here pi + 0.25) and the estimator turned its heading the
 // long way round (+0.137 after 0.01 s against -0.117).
