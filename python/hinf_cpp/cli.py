@@ -538,7 +538,7 @@ def cmd_planned(args: argparse.Namespace) -> int:
 
 
 def cmd_study(args: argparse.Namespace) -> int:
-    from .study import load_study, run_study
+    from .study import load_study, local_cores, run_study
     from .study_report import status_counts, write_study_outputs
 
     if args.workers is not None and args.scheduler is not None:
@@ -569,7 +569,7 @@ def cmd_study(args: argparse.Namespace) -> int:
     statuses = ", ".join(f"{name} {int(counts[name].sum())}" for name in counts.columns
                          if name != "runs" and counts[name].sum() > 0)
     where = f"Dask scheduler {args.scheduler}" if client is not None else \
-        f"{args.workers or os.cpu_count()} local threads"
+        f"{args.workers or local_cores()} local threads"
     print(f"study {study.name}: {study.runs} runs ({statuses}) in {seconds:.1f} s on {where}")
     print(f"wrote {args.out}/: " + ", ".join(sorted(p.name for p in written)))
     return 0

@@ -15,6 +15,7 @@ points in row-major order of the [[grid]] axes, samples fastest.
 
 from __future__ import annotations
 
+import concurrent.futures
 import copy
 import dataclasses
 import functools
@@ -42,6 +43,7 @@ __all__ = [
     "STATUSES",
     "apply_settings",
     "load_study",
+    "local_cores",
     "parse_setting",
     "replay",
     "replay_command",
@@ -632,6 +634,14 @@ class _Partial:
             pq.write_table(table, f)
 
 
+def local_cores() -> int:
+    """The cores this process may run on."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
 def _worker_threads() -> int:
     """The threads of the Dask worker running this task (1 outside a worker)."""
     try:
@@ -671,7 +681,8 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     ----------
     study : Study or path of a study file
     workers : int, optional
-        Threads of the local C++ batch runner (default: all cores). Not with `client`.
+        Chunks run at once locally, each on one thread of the C++ batch runner (default: all
+        cores). Not with `client`.
     client : dask.distributed.Client, optional
         Runs the chunks on this Dask cluster instead (the same table, bit for bit).
     out : folder, optional
@@ -716,14 +727,37 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
 
     try:
         if client is None:
-            threads = workers or 0
-            for index in todo:
-                # The terminal line also moves within a chunk; a callable is called per chunk.
-                inner = None
-                if not callable(progress) and progress:
-                    before = done_runs()
-                    inner = lambda done, total, before=before: show(before + done)  # noqa: E731
-                finished(index, run_chunk(study, *chunks[index], threads, inner))
+            # The chunks are tasks, as on Dask: each of `workers` threads runs one chunk at a time
+            # through hc.run_study on one C++ thread (which releases the GIL), so that building a
+            # chunk's scenarios in Python overlaps the other threads' runs and no core idles at
+            # the end of a chunk. After an interruption, chunks still running are not saved.
+            running: dict[int, int] = {}  # runs done in the chunks being run (terminal line)
+
+            def inner_progress(index: int):
+                if callable(progress) or not progress:
+                    return None  # a callable is called per chunk
+
+                def inner(done: int, total: int) -> None:
+                    with lock:
+                        running[index] = done
+                        show(done_runs() + sum(running.values()))
+                return inner
+
+            threads = min(workers or local_cores(), max(1, len(todo)))
+            with concurrent.futures.ThreadPoolExecutor(max_workers=threads) as pool:
+                tasks = {pool.submit(run_chunk, study, *chunks[index], 1, inner_progress(index)): index
+                         for index in todo}
+                try:
+                    for task in concurrent.futures.as_completed(tasks):
+                        index = tasks[task]
+                        table = task.result()
+                        with lock:
+                            running.pop(index, None)
+                        finished(index, table)
+                except BaseException:
+                    for task in tasks:
+                        task.cancel()
+                    raise
         else:
             from dask.distributed import as_completed
 
