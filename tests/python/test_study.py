@@ -232,11 +232,13 @@ def test_an_interrupted_study_resumes_to_the_same_table(mc_study, mc_table, tmp_
 
     with pytest.raises(Stop):
         hs.run_study(mc_study, workers=2, out=tmp_path, progress=stop_after_two)
+    # The two chunks that finished first were saved (with 2 workers, which two depends on the
+    # timing); the one still running when the study stopped was not.
     chunks = sorted(p.name for p in (tmp_path / "partial").glob("chunk-*.parquet"))
-    assert chunks == ["chunk-00000.parquet", "chunk-00001.parquet"]
+    assert len(chunks) == 2
     seen = []
     resumed = hs.run_study(mc_study, workers=2, out=tmp_path, progress=lambda d, t, m: seen.append(d))
-    assert seen == [12]  # only the last chunk ran
+    assert seen == [mc_study.runs]  # one call: only the missing chunk ran
     pdt.assert_frame_equal(resumed, mc_table, check_exact=True)
     assert not resumed.attrs["restarted"]
 
@@ -247,7 +249,8 @@ def test_a_changed_study_starts_over(mc_study, tmp_path):
                                  "changed", pathlib.Path(mc_study.source).parent)
     seen = []
     table = hs.run_study(changed, workers=2, out=tmp_path, progress=lambda d, t, m: seen.append(d))
-    assert seen == [5, 10, 12] and table.attrs["restarted"]
+    # Every chunk ran again (called once per chunk, in the order they finish: 5 + 5 + 2 runs).
+    assert len(seen) == 3 and seen[-1] == mc_study.runs and table.attrs["restarted"]
 
 
 # ---- round trips ----
