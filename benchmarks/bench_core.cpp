@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "hinf/controller.hpp"
-#include "hinf/output_feedback.hpp"
-#include "hinf/scenario.hpp"
-#include "hinf/scenario_io.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/control/output_feedback.hpp"
+#include "hinf/scenario/scenario.hpp"
+#include "hinf/io/scenario_io.hpp"
 
 using namespace hinf;
 

@@ -18,9 +18,9 @@
 #include <thread>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/generated_function.hpp"
-#include "hinf/ship.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/numerics/generated_function.hpp"
+#include "hinf/models/ship.hpp"
 
 using namespace hinf;
 

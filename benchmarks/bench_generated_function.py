@@ -44,7 +44,7 @@ import casadi as ca
 import numpy as np
 
 import hinf_cpp as hc
-from hinf_cpp import codegen
+from hinf_cpp.models import codegen
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 DEFAULT_BENCH = ROOT / "build" / "cmake" / "cpp" / "hinf-bench-generated"

@@ -1,4 +1,4 @@
-"""Benchmark: the trajectory planner (hinf_cpp.planner, docs/planning.md) on every shipped planned
+"""Benchmark: the trajectory planner (hinf_cpp.planning.planner, docs/planning.md) on every shipped planned
 scenario (scenarios/planned/*.toml).
 
     .venv/bin/python benchmarks/bench_planner.py                 # 5 plans per scenario
@@ -6,7 +6,7 @@ scenario (scenarios/planned/*.toml).
     .venv/bin/python benchmarks/bench_planner.py --json benchmarks/results/planner.json
 
 Each scenario is planned from scratch (no cache) `--repeat` times in one process: wall-clock
-time of the whole hinf_cpp.planned_scenario.plan_scenario call (reading the scenario, building
+time of the whole hinf_cpp.scenario.planned.plan_scenario call (reading the scenario, building
 the problem, the IPOPT solves, the re-simulation and checks), median [min-max]; IPOPT's
 iterations (summed over the solves of one plan: the coarse solve, the accurate one, any
 refinement); the re-simulation mismatch. The target: the ship's 60 s lane change in at most 2 s.
@@ -28,7 +28,7 @@ import time  # noqa: E402
 import tomllib  # noqa: E402
 
 import hinf_cpp as hc  # noqa: E402
-from hinf_cpp.planned_scenario import plan_scenario  # noqa: E402
+from hinf_cpp.scenario.planned import plan_scenario  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 TARGET = ("ship_lane_change", 2.0)  # scenario, seconds

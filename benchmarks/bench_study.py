@@ -11,7 +11,7 @@ noise. Measured, each as runs per second, median [min - max] over `--repeat` rep
 
 1. a Python loop over hinf_cpp.run_scenario, one seed at a time (the scenarios built first);
 2. hc.run_study (the C++ batch runner, designs shared) on the same scenarios, 1 and 2 threads;
-3. hinf_cpp.study.run_study, the whole study (expansion, scenarios, table), 1 and 2 workers;
+3. hinf_cpp.studies.study.run_study, the whole study (expansion, scenarios, table), 1 and 2 workers;
 4. the same on a Dask LocalCluster of 2 worker processes (1 thread each), started before the
    timing (its start-up is reported apart);
 5. the SciPy twin (run_reference of benchmarks/scipy_output_feedback.py), one seed at a time as a user
@@ -39,7 +39,7 @@ import tomllib  # noqa: E402
 import numpy as np  # noqa: E402
 
 import hinf_cpp as hc  # noqa: E402
-from hinf_cpp import study as hs  # noqa: E402
+from hinf_cpp.studies import study as hs# noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from bench_paper_fig1 import core_fingerprint, cpu_model  # noqa: E402
@@ -116,7 +116,7 @@ def main(argv=None) -> int:
     for workers in (1, 2):
         results[f"study_{workers}"] = rate(lambda: hs.run_study(study, workers=workers, progress=False),
                                            study.runs, args.repeat)
-        lines.append(show(f"hinf_cpp.study.run_study, {workers} worker(s)", results[f"study_{workers}"]))
+        lines.append(show(f"hinf_cpp.studies.study.run_study, {workers} worker(s)", results[f"study_{workers}"]))
     results["speedup_1_to_2"] = results["study_2"]["median"] / results["study_1"]["median"]
     lines.append(f"  speed-up 1 -> 2 workers: {results['speedup_1_to_2']:.2f}x (target >= 1.8)")
 

@@ -7,7 +7,7 @@ and as the built-in ShipModel, on the Figure 1 and Figure 2 runs.
 
 Models, all the same equations (docs/mathematics.md):
 - "built-in": hc.ShipModel (C++, hand-written Jacobian and error split);
-- "casadi": examples/ship_casadi.py compiled by hinf_cpp.symbolic (generated C code in a shared
+- "casadi": examples/ship_casadi.py compiled by hinf_cpp.models.symbolic (generated C code in a shared
   library, called from C++; Jacobian by automatic differentiation, the paper's error split);
 - "python": a subclass of hc.Model in this file (NumPy; every call goes through Python).
 

@@ -15,7 +15,7 @@ macro(hinf_find_dependencies find)
   cmake_language(CALL ${find} tomlplusplus 3.3 ${_hinf_required})
   cmake_language(CALL ${find} nlohmann_json 3.11 ${_hinf_required})
   # LAPACK: the real Schur form (dgees) of the Riccati equations' Newton systems
-  # (cpp/src/lyapunov_newton.cpp).
+  # (cpp/src/numerics/lyapunov_newton.cpp).
   cmake_language(CALL ${find} LAPACK ${_hinf_required})
   unset(_hinf_required)
 endmacro()

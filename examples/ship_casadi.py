@@ -16,7 +16,7 @@ import sys
 
 import casadi as ca
 
-from hinf_cpp.symbolic import SymbolicModel
+from hinf_cpp.models.symbolic import SymbolicModel
 
 PAPER_PARAMETERS = {"m_u": 0.5, "m_v": -2.0, "m_r": 0.5, "d_u": 1.0, "d_v": 2.0, "d_r": 1.0}
 

@@ -44,7 +44,10 @@ core=("$BUILD"/cpp/python/_core.*.so)
 # Rebuilt from scratch every time, so nothing stale of an earlier run is imported.
 rm -rf "$site/hinf_cpp"
 mkdir -p "$site/hinf_cpp"
-cp python/hinf_cpp/*.py python/hinf_cpp/_core.pyi python/hinf_cpp/py.typed "${core[0]}" "$site/hinf_cpp/"
+# The package's tree (its subpackages), without bytecode caches, and the sanitized extension.
+(cd python && find hinf_cpp -name __pycache__ -prune -o -type f -print | while read -r file; do
+  install -D -m 644 "$file" "$site/$file"; done)
+cp "${core[0]}" "$site/hinf_cpp/"
 # The whole tree of scenarios/, as cpp/python/CMakeLists.txt installs it (subfolders included).
 (cd scenarios && find . -name '*.toml' -exec install -D -m 644 {} "$site/hinf_cpp/scenarios/{}" \;)
 cp "$BUILD/cpp/hinf-sim" "$STAGE/bin/hinf-sim"

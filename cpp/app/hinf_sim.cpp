@@ -14,8 +14,8 @@
 #include <optional>
 #include <string>
 
-#include "hinf/errors.hpp"
-#include "hinf/scenario_io.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/io/scenario_io.hpp"
 
 namespace {
 

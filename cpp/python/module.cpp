@@ -30,27 +30,27 @@
 #include <type_traits>
 #include <utility>
 
-#include "hinf/analysis.hpp"
-#include "hinf/angles.hpp"
-#include "hinf/checks.hpp"
-#include "hinf/controller.hpp"
-#include "hinf/enum_names.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/fleet.hpp"
-#include "hinf/generated_function.hpp"
-#include "hinf/generated_model.hpp"
-#include "hinf/metrics.hpp"
-#include "hinf/model.hpp"
-#include "hinf/output_feedback.hpp"
-#include "hinf/piecewise_polynomial.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/scenario.hpp"
-#include "hinf/scenario_io.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/simulation.hpp"
-#include "hinf/study.hpp"
-#include "hinf/trajectory.hpp"
-#include "hinf/vehicles.hpp"
+#include "hinf/control/analysis.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/fleet.hpp"
+#include "hinf/numerics/generated_function.hpp"
+#include "hinf/models/generated_model.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/control/output_feedback.hpp"
+#include "hinf/numerics/piecewise_polynomial.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/scenario/scenario.hpp"
+#include "hinf/io/scenario_io.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/scenario/study.hpp"
+#include "hinf/control/trajectory.hpp"
+#include "hinf/models/vehicles.hpp"
 
 namespace py = pybind11;
 
@@ -2013,9 +2013,24 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
 
   bind_generated_function(m);
 
-  // [model] kind = "python" in scenario files: the model is made by hinf_cpp.scenario.
-  set_python_model_hook([](const std::string& callable, const std::string& source) -> ModelPtr {
-    py::gil_scoped_acquire gil;
-    return py::module_::import("hinf_cpp.scenario").attr("model_from_callable")(callable, source).cast<ModelPtr>();
-  });
+  // [model] kind = "python" in scenario files: the Python package registers the function that
+  // makes the model (hinf_cpp.scenario.documents.model_from_callable) when it is imported.
+  m.def(
+      "set_python_model_hook",
+      [](const py::function& make_model) {
+        // The function is held by a shared pointer whose deleter takes the GIL; the hook is
+        // cleared when the interpreter exits (atexit), before Python objects are torn down.
+        auto held = std::shared_ptr<py::function>(new py::function(make_model), [](py::function* f) {
+          py::gil_scoped_acquire gil;
+          delete f;
+        });
+        set_python_model_hook([held](const std::string& callable, const std::string& source) -> ModelPtr {
+          py::gil_scoped_acquire gil;
+          return (*held)(callable, source).cast<ModelPtr>();
+        });
+      },
+      py::arg("make_model"),
+      "Registers make_model(callable: str, source: str) -> Model, the maker of the models that a scenario file "
+      "names with [model] kind = \"python\" (hinf_cpp.scenario registers it when imported)");
+  py::module_::import("atexit").attr("register")(py::cpp_function([] { set_python_model_hook({}); }));
 }

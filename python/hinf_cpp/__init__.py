@@ -2,16 +2,16 @@
 
 The numerics (models, desired trajectories, the GRDE, the closed loop) live in the C++
 core ``hinf_cpp._core``; this package adds scenario files, plots and the command line:
-``hinf_cpp.compare`` (the H-infinity law against the lqr and cascade baselines),
-``hinf_cpp.recovery`` (poor initial conditions, turning around), ``hinf_cpp.plotting``
-(figures), ``hinf_cpp.report`` (a report folder), ``hinf_cpp.export`` (NPZ, tidy CSV, JSON),
-``hinf_cpp.analysis`` (attenuation against gamma), ``hinf_cpp.gallery`` (the built-in
+``hinf_cpp.analysis.compare`` (the H-infinity law against the lqr and cascade baselines),
+``hinf_cpp.analysis.recovery`` (poor initial conditions, turning around), ``hinf_cpp.output.plotting``
+(figures), ``hinf_cpp.analysis.report`` (a report folder), ``hinf_cpp.output.export`` (NPZ, tidy CSV, JSON),
+``hinf_cpp.analysis`` (attenuation against gamma), ``hinf_cpp.analysis.gallery`` (the built-in
 vehicles' shipped runs: FossenVessel, Hovercraft, PlanarVtol, Auv; docs/vehicles.md),
-``hinf_cpp.symbolic`` (your own vehicle in CasADi symbols, evaluated in C++; docs/models.md),
-``hinf_cpp.codegen`` (CasADi functions compiled for the C++ core; needs casadi) and
-``hinf_cpp.planner`` (feasible desired trajectories from waypoints or a path; needs casadi;
-docs/planning.md) and ``hinf_cpp.study`` (studies: grid and random axes over scenario keys, one
-row per run as a pandas DataFrame, locally or on Dask; ``hinf_cpp.study_report`` summarizes and
+``hinf_cpp.models.symbolic`` (your own vehicle in CasADi symbols, evaluated in C++; docs/models.md),
+``hinf_cpp.models.codegen`` (CasADi functions compiled for the C++ core; needs casadi) and
+``hinf_cpp.planning.planner`` (feasible desired trajectories from waypoints or a path; needs casadi;
+docs/planning.md) and ``hinf_cpp.studies.study`` (studies: grid and random axes over scenario keys, one
+row per run as a pandas DataFrame, locally or on Dask; ``hinf_cpp.studies.report`` summarizes and
 plots them; docs/studies.md).
 
 Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
@@ -24,25 +24,10 @@ a property (``result.metrics.l2_gain``); enums (``Law``, ``Method``, ...) also t
 as strings (``scenario.law = "lqr"``). Scenarios, models, options and results pickle.
 """
 
-from importlib import resources as _resources
-import pathlib as _pathlib
-
-from . import _core
-from ._core import *  # noqa: F403 - the C++ API, typed in _core.pyi
-from ._core import __version__
-from .scenario import load_scenario, scenario_from_dict, signal_from_spec
-
-
-def scenario_path(name: str) -> _pathlib.Path:
-    """Path of a shipped scenario, e.g. ``scenario_path("paper_fig1")`` or
-    ``scenario_path("planned/ship_lane_change")``."""
-    folder = _pathlib.Path(str(_resources.files(__name__) / "scenarios"))
-    path = folder / f"{name}.toml"
-    if not path.exists():
-        shipped = sorted(p.relative_to(folder).with_suffix("").as_posix() for p in folder.glob("**/*.toml"))
-        raise ValueError(f"no shipped scenario '{name}' (shipped: {', '.join(shipped)})")
-    return path
-
+from hinf_cpp import _core
+from hinf_cpp._core import *  # noqa: F403 - the C++ API, typed in _core.pyi
+from hinf_cpp._core import __version__
+from hinf_cpp.scenario import load_scenario, scenario_from_dict, scenario_path, signal_from_spec
 
 __all__ = sorted([name for name in vars(_core) if not name.startswith("_")]
                  + ["__version__", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec"])

@@ -34,12 +34,12 @@ import sys
 import time
 import warnings
 
-from . import _core
-from .outputs import check_output_folder, check_output_path, write_text
-from .compare import Feedback, run_key
-from .progress import Progress
-from .scenario import load_scenario
-from .tables import markdown_table, text_table
+from hinf_cpp import _core
+from hinf_cpp.output.files import check_output_folder, check_output_path, write_text
+from hinf_cpp.analysis.compare import Feedback
+from hinf_cpp.output.progress import Progress
+from hinf_cpp.scenario import load_scenario
+from hinf_cpp.output.tables import markdown_table, run_key, text_table
 
 # Words shared with hinf-sim (cpp/app/hinf_sim.cpp).
 OUT_OF_MEMORY = "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables"
@@ -120,7 +120,7 @@ def _number(x):
 def _load_with_plan(path: str):
     """(scenario, plan or None): a file whose [desired] gives waypoints or a path is planned
     (cached; docs/planning.md)."""
-    from .planned_scenario import load_planned
+    from hinf_cpp.scenario.planned import load_planned
 
     planned = load_planned(path)
     if planned is None:
@@ -131,20 +131,13 @@ def _load_with_plan(path: str):
 
 def _load_with_settings(path: str, settings: list[str], seed: int | None):
     """The scenario file with --set KEY=VALUE applied in order, then --seed N ([measurement]
-    seed), read by the one C++ reader (hinf_cpp.study.apply_settings)."""
-    import tomllib
-
-    from .scenario import scenario_from_dict
-    from .study import apply_settings, parse_setting
+    seed), read by the one C++ reader (hinf_cpp.scenario.settings.apply_settings)."""
+    from hinf_cpp.scenario import scenario_from_dict
+    from hinf_cpp.scenario.documents import read_toml_file
+    from hinf_cpp.scenario.settings import apply_settings, parse_setting
 
     pairs = [parse_setting(text) for text in settings]
-    try:
-        with open(path, "rb") as f:
-            document = tomllib.load(f)
-    except OSError as error:
-        raise ValueError(f"cannot read '{path}': {error.strerror}") from None
-    except tomllib.TOMLDecodeError as error:
-        raise ValueError(f"{path}: {error}") from None
+    document = read_toml_file(path)
     try:
         document = apply_settings(document, pairs, seed)
     except ValueError as error:
@@ -153,7 +146,7 @@ def _load_with_settings(path: str, settings: list[str], seed: int | None):
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from .export import npz_path, save_npz
+    from hinf_cpp.output.export import npz_path, save_npz
 
     _check_outputs(files=[args.json, args.csv, None if args.npz is None else npz_path(args.npz)],
                    figures=[args.plot])
@@ -173,7 +166,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.npz is not None:
         save_npz(result, args.npz)
     if args.plot is not None:
-        from .plotting import save_figure, xy_figure
+        from hinf_cpp.output.plotting import save_figure, xy_figure
 
         save_figure(xy_figure(result, waypoints=planned.waypoints if planned is not None else ()), args.plot)
     print(summary(result))
@@ -205,7 +198,7 @@ def plan_dict(planned) -> dict:
 
 
 def cmd_plan(args: argparse.Namespace) -> int:
-    from .planned_scenario import load_planned
+    from hinf_cpp.scenario.planned import load_planned
 
     _check_outputs(files=[args.output, args.json], figures=[args.plot])
     planned = load_planned(args.scenario, cache=not args.no_cache)
@@ -222,7 +215,7 @@ def cmd_plan(args: argparse.Namespace) -> int:
     if args.json is not None:
         write_text(args.json, json.dumps(plan_dict(planned), indent=2) + "\n")
     if args.plot is not None:
-        from .plotting import plan_figure, save_figure
+        from hinf_cpp.output.plotting import plan_figure, save_figure
 
         save_figure(plan_figure(planned.plan, title=f"{planned.scenario.name}: planned"), args.plot)
     print(f"wrote {args.output}")
@@ -268,7 +261,7 @@ def cmd_gamma_star(args: argparse.Namespace) -> int:
 
 
 def cmd_certify(args: argparse.Namespace) -> int:
-    from .analysis import certificates_dict
+    from hinf_cpp.analysis.gamma_sweep import certificates_dict
 
     _check_outputs(files=[args.json])
     scenario = load_scenario(args.scenario)
@@ -290,8 +283,8 @@ def cmd_certify(args: argparse.Namespace) -> int:
 
 
 def cmd_sweep_gamma(args: argparse.Namespace) -> int:
-    from .analysis import sweep_figure, sweep_gamma
-    from .plotting import save_figure
+    from hinf_cpp.analysis.gamma_sweep import sweep_figure, sweep_gamma
+    from hinf_cpp.output.plotting import save_figure
 
     _check_outputs(files=[args.json], figures=[args.plot])
     scenario = load_scenario(args.scenario)
@@ -343,8 +336,8 @@ def _comparison_notes(comparison) -> list[str]:
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
-    from .compare import compare, parse_controllers
-    from .plotting import paths_figure, save_figure
+    from hinf_cpp.analysis.compare import compare, parse_controllers
+    from hinf_cpp.output.plotting import paths_figure, save_figure
 
     controllers = parse_controllers(args.controllers)
     _check_outputs(files=[args.json], figures=[args.plot])
@@ -371,9 +364,9 @@ def cmd_compare(args: argparse.Namespace) -> int:
 
 
 def cmd_recovery(args: argparse.Namespace) -> int:
-    from .compare import parse_controllers
-    from .plotting import recovery_figure, save_figure
-    from .recovery import recovery_study
+    from hinf_cpp.analysis.compare import parse_controllers
+    from hinf_cpp.output.plotting import recovery_figure, save_figure
+    from hinf_cpp.analysis.recovery import recovery_study
 
     controllers = parse_controllers(args.controllers)
     _check_outputs(files=[args.json], figures=[args.plot])
@@ -404,8 +397,8 @@ def cmd_recovery(args: argparse.Namespace) -> int:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    from .compare import parse_controllers
-    from .report import write_report
+    from hinf_cpp.analysis.compare import parse_controllers
+    from hinf_cpp.analysis.report import write_report
 
     controllers = parse_controllers(args.controllers)
     _check_outputs(folders=[args.out])
@@ -430,12 +423,12 @@ def cmd_report(args: argparse.Namespace) -> int:
 
 def load_symbolic_model(spec: str):
     """The SymbolicModel made by `spec`, "module:callable" or "path/to/file.py:callable"."""
-    from .scenario import resolve_callable
-    from .symbolic import SymbolicModel
+    from hinf_cpp.scenario.documents import resolve_callable
+    from hinf_cpp.models.symbolic import SymbolicModel
 
     model = resolve_callable(spec)()
     if not isinstance(model, SymbolicModel):
-        raise ValueError(f"'{spec}' returned {type(model).__name__}, not a hinf_cpp.symbolic.SymbolicModel")
+        raise ValueError(f"'{spec}' returned {type(model).__name__}, not a hinf_cpp.models.symbolic.SymbolicModel")
     return model
 
 
@@ -451,9 +444,9 @@ def cmd_model_export(args: argparse.Namespace) -> int:
 
 
 def cmd_paper(args: argparse.Namespace) -> int:
-    from . import scenario_path
-    from .compare import compare
-    from .plotting import paths_figure, save_figure, xy_figure
+    from hinf_cpp.scenario import scenario_path
+    from hinf_cpp.analysis.compare import compare
+    from hinf_cpp.output.plotting import paths_figure, save_figure, xy_figure
 
     _check_outputs(folders=[args.out])
     out = pathlib.Path(args.out)
@@ -506,7 +499,7 @@ def cmd_paper(args: argparse.Namespace) -> int:
 
 
 def cmd_vehicles(args: argparse.Namespace) -> int:
-    from .gallery import VEHICLES, gallery_table, run_vehicle, write_gallery
+    from hinf_cpp.analysis.gallery import VEHICLES, gallery_table, run_vehicle, write_gallery
 
     _check_outputs(folders=[args.out])
     runs = []
@@ -522,7 +515,7 @@ def cmd_vehicles(args: argparse.Namespace) -> int:
 
 
 def cmd_planned(args: argparse.Namespace) -> int:
-    from .gallery import PLANNED, planned_table, run_planned, write_planned_gallery
+    from hinf_cpp.analysis.gallery import PLANNED, planned_table, run_planned, write_planned_gallery
 
     _check_outputs(folders=[args.out])
     runs = []
@@ -538,8 +531,8 @@ def cmd_planned(args: argparse.Namespace) -> int:
 
 
 def cmd_study(args: argparse.Namespace) -> int:
-    from .study import load_study, local_cores, run_study
-    from .study_report import status_counts, write_study_outputs
+    from hinf_cpp.studies.study import load_study, local_cores, run_study
+    from hinf_cpp.studies.report import status_counts, write_study_outputs
 
     if args.workers is not None and args.scheduler is not None:
         raise ValueError("--workers and --scheduler exclude each other: --workers sets the local threads, "
@@ -692,7 +685,7 @@ def build_parser() -> argparse.ArgumentParser:
     model_sub = model.add_subparsers(dest="model_command", required=True)
     export = model_sub.add_parser("export", help="generate, compile and write a model's folder (model.json, "
                                                  "the library and its C source) for [model] kind = \"casadi\"")
-    export.add_argument("model", help="MODULE:CALLABLE or FILE.py:CALLABLE returning a hinf_cpp.symbolic.SymbolicModel")
+    export.add_argument("model", help="MODULE:CALLABLE or FILE.py:CALLABLE returning a hinf_cpp.models.symbolic.SymbolicModel")
     export.add_argument("--out", required=True, help="output folder")
     export.set_defaults(handler=cmd_model_export)
 

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include <hinf/controller.hpp>
-#include <hinf/riccati.hpp>
-#include <hinf/simulation.hpp>
-#include <hinf/trajectory.hpp>
+#include <hinf/control/controller.hpp>
+#include <hinf/control/riccati.hpp>
+#include <hinf/control/simulation.hpp>
+#include <hinf/control/trajectory.hpp>
 
 namespace {
 

@@ -11,17 +11,17 @@
 #include <string>
 #include <vector>
 
-#include "hinf/checks.hpp"
-#include "hinf/controller.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/metrics.hpp"
-#include "hinf/model.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/piecewise_polynomial.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/simulation.hpp"
-#include "hinf/trajectory.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/numerics/piecewise_polynomial.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/control/trajectory.hpp"
 
 namespace {
 

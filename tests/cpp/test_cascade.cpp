@@ -20,13 +20,13 @@
 #include <string>
 #include <vector>
 
-#include "hinf/controller.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/simulation.hpp"
-#include "hinf/trajectory.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/control/trajectory.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/generated_function.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/numerics/generated_function.hpp"
 #include "tolerances.hpp"
 
 namespace {

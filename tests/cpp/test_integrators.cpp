@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "hinf/cvode.hpp"
-#include "hinf/dopri5.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/piecewise_polynomial.hpp"
-#include "hinf/types.hpp"
+#include "hinf/numerics/cvode.hpp"
+#include "hinf/numerics/dopri5.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/numerics/piecewise_polynomial.hpp"
+#include "hinf/core/types.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

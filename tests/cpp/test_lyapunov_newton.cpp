@@ -1,5 +1,5 @@
 // The Newton systems of BDF on a matrix Riccati equation solved as Lyapunov equations
-// (cpp/src/lyapunov_newton.hpp) against the dense solve of the packed Jacobian, and full
+// (cpp/src/numerics/lyapunov_newton.hpp) against the dense solve of the packed Jacobian, and full
 // solves through them against tight references.
 #include <gtest/gtest.h>
 
@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <memory>
 
-#include "hinf/model.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/trajectory.hpp"
-#include "lyapunov_newton.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/control/trajectory.hpp"
+#include "numerics/lyapunov_newton.hpp"
 #include "references.hpp"
-#include "riccati_kernel.hpp"
+#include "control/riccati_kernel.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -1,8 +1,8 @@
 // The ship model: analytic Jacobian and error decomposition against independent truth.
 #include <gtest/gtest.h>
 
-#include "hinf/model.hpp"
-#include "hinf/ship.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/models/ship.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

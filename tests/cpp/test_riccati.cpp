@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/model.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/trajectory.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/control/trajectory.hpp"
 #include "references.hpp"
-#include "riccati_kernel.hpp"  // private (cpp/src): the packed right-hand side and Jacobian
+#include "control/riccati_kernel.hpp"  // private (cpp/src): the packed right-hand side and Jacobian
 #include "tolerances.hpp"
 
 namespace {

@@ -21,13 +21,13 @@
 #include <string>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/model.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/scenario.hpp"
-#include "hinf/scenario_io.hpp"
-#include "hinf/simulation.hpp"
-#include "hinf/vehicles.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/scenario/scenario.hpp"
+#include "hinf/io/scenario_io.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/models/vehicles.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -20,8 +20,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/sdirk4.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/numerics/sdirk4.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 #include <limits>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/signal.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/numerics/signal.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

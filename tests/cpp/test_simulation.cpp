@@ -11,15 +11,15 @@
 #include <string>
 #include <vector>
 
-#include "hinf/controller.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/metrics.hpp"
-#include "hinf/model.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/simulation.hpp"
-#include "hinf/trajectory.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/control/trajectory.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -20,13 +20,13 @@
 #include <thread>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/metrics.hpp"
-#include "hinf/scenario.hpp"
-#include "hinf/scenario_io.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/study.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/scenario/scenario.hpp"
+#include "hinf/io/scenario_io.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/scenario/study.hpp"
 
 namespace {
 

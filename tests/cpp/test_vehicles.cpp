@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/model.hpp"
-#include "hinf/scenario_io.hpp"
-#include "hinf/vehicles.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/io/scenario_io.hpp"
+#include "hinf/models/vehicles.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

@@ -36,7 +36,7 @@ from _support import (
     ship_jacobian,
     summation_rtol,
 )
-from hinf_cpp.analysis import cost_L_gamma, sweep_figure, sweep_gamma
+from hinf_cpp.analysis.gamma_sweep import cost_L_gamma, sweep_figure, sweep_gamma
 
 EYE6 = np.eye(6)
 BIN = pathlib.Path(sys.executable).parent
@@ -79,7 +79,7 @@ def ship_L(q_d) -> np.ndarray:
     r_psi = 0 and r_xy = [R(psi_d + e_psi) - R(psi_d) - R'(psi_d) e_psi](u_d, v_d)
     + [R(psi_d + e_psi) - R(psi_d)](e_u, e_v), R the rotation; |e^{ib} - 1 - ib| <= b^2/2,
     |e^{ib} - 1| <= |b| and |e_i e_j| <= |e|^2/2 give |r| <= L |e|^2 for EVERY e with
-    L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2) (cpp/src/model.cpp documents
+    L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2) (cpp/src/models/model.cpp documents
     the same bound; the sampling test below checks that it is one)."""
     p = PAPER_PARAMETERS
     speed = np.hypot(q_d[..., 0], q_d[..., 1])

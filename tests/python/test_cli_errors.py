@@ -82,7 +82,7 @@ def both_front_ends(scenario, status: int, match: str, *options) -> str:
 def warm_python_cli():
     """Import the Python CLI once (matplotlib may build its font cache on a first import and
     say so on stderr; that is not the CLI's output)."""
-    subprocess.run([sys.executable, "-c", "import hinf_cpp.cli, hinf_cpp.plotting"], capture_output=True,
+    subprocess.run([sys.executable, "-c", "import hinf_cpp.cli, hinf_cpp.output.plotting"], capture_output=True,
                    timeout=300)
 
 
@@ -386,7 +386,7 @@ def test_main_shows_the_warnings_of_a_successful_command(monkeypatch, capsys):
 def test_failing_figure_keeps_the_old_file(tmp_path, suffix):
     import matplotlib.pyplot as plt
 
-    from hinf_cpp.plotting import save_figure
+    from hinf_cpp.output.plotting import save_figure
 
     target = write(tmp_path, f"xy.{suffix}", "old contents")
     fig, ax = plt.subplots()
@@ -401,7 +401,7 @@ def test_failing_figure_keeps_the_old_file(tmp_path, suffix):
 
 
 def test_failed_replace_keeps_the_old_file(tmp_path, monkeypatch, paper_run):
-    from hinf_cpp import export
+    from hinf_cpp.output import export
 
     target = write(tmp_path, "run.json", "old contents")
 
@@ -416,7 +416,7 @@ def test_failed_replace_keeps_the_old_file(tmp_path, monkeypatch, paper_run):
 
 
 def test_written_files_have_the_usual_permissions(tmp_path, paper_run):
-    from hinf_cpp import export
+    from hinf_cpp.output import export
 
     umask = os.umask(0o022)
     os.umask(umask)

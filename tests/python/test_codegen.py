@@ -1,4 +1,4 @@
-"""CasADi functions compiled by hinf_cpp.codegen and evaluated in C++ (GeneratedFunction),
+"""CasADi functions compiled by hinf_cpp.models.codegen and evaluated in C++ (GeneratedFunction),
 against CasADi's own evaluation of the same functions; the compile cache; the error messages.
 Every library is compiled into a temporary cache folder, never the user's."""
 
@@ -19,7 +19,7 @@ import pytest
 import hinf_cpp as hc
 
 ca = pytest.importorskip("casadi")
-from hinf_cpp import codegen  # noqa: E402 - after the skip: the module is usable only with casadi
+from hinf_cpp.models import codegen# noqa: E402 - after the skip: the module is usable only with casadi
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -228,7 +228,7 @@ def test_default_cache_folder_is_hinf_cpp_cache(monkeypatch, tmp_path):
 CONCURRENT_SCRIPT = textwrap.dedent("""
     import sys, time
     import casadi as ca
-    from hinf_cpp import codegen
+    from hinf_cpp.models import codegen
     cache, start = sys.argv[1], float(sys.argv[2])
     x = ca.SX.sym("x", 4)
     f = ca.Function("concurrent", [x], [ca.jacobian(ca.sin(x) * ca.sumsqr(x), x)])

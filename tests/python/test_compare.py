@@ -1,6 +1,6 @@
-"""The comparison of the tracking laws (hinf_cpp.compare), the worst-case guarantee of the
+"""The comparison of the tracking laws (hinf_cpp.analysis.compare), the worst-case guarantee of the
 H-infinity design, recovery from poor initial conditions and the turn-around detector
-(hinf_cpp.recovery), and the command lines `compare` and `recovery`.
+(hinf_cpp.analysis.recovery), and the command lines `compare` and `recovery`.
 
 Truth is computed here, independently of the library: the desired trajectory by SciPy from the
 equations of docs/mathematics.md, position and heading errors from the raw time series with math.atan2,
@@ -23,7 +23,7 @@ from scipy.integrate import solve_ivp
 
 import hinf_cpp as hc
 from _support import PAPER_Q_D0, ROUNDOFF, SHIP_B, SHIP_D, paper_u_d, ship_drift
-from hinf_cpp.compare import (
+from hinf_cpp.analysis.compare import (
     METRICS,
     Feedback,
     compare,
@@ -32,7 +32,7 @@ from hinf_cpp.compare import (
     run_law,
     wrap_angles,
 )
-from hinf_cpp.recovery import (
+from hinf_cpp.analysis.recovery import (
     POSITION_TOLERANCE,
     assess_recovery,
     recovery_study,

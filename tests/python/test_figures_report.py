@@ -21,11 +21,12 @@ import numpy as np
 import pytest
 
 import hinf_cpp as hc
-from hinf_cpp import export, plotting
-from hinf_cpp.analysis import sweep_gamma
-from hinf_cpp.compare import compare, run_law
-from hinf_cpp.progress import Progress
-from hinf_cpp.report import write_report
+from hinf_cpp.output import export
+from hinf_cpp.output import plotting
+from hinf_cpp.analysis.gamma_sweep import sweep_gamma
+from hinf_cpp.analysis.compare import compare, run_law
+from hinf_cpp.output.progress import Progress
+from hinf_cpp.analysis.report import write_report
 
 HINF_CPP = pathlib.Path(sys.executable).parent / "hinf-cpp"
 needs_cli = pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
@@ -109,8 +110,8 @@ def test_figures_need_no_display(tmp_path):
     """In a fresh interpreter without DISPLAY or MPLBACKEND: no pyplot, no GUI backend."""
     script = f"""
 import sys, hinf_cpp as hc
-from hinf_cpp import plotting
-from hinf_cpp.compare import compare
+from hinf_cpp.output import plotting
+from hinf_cpp.analysis.compare import compare
 s = hc.load_scenario(hc.scenario_path("paper_fig2")); s.tf = 5.0
 c = compare(s, "hinf,lqr")
 for name, fig in [("p", plotting.paths_figure(c.results())), ("e", plotting.eigenvalues_figure(c.results())),

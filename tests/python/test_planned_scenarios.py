@@ -20,8 +20,8 @@ from _support import numbers_close
 
 pytest.importorskip("casadi")
 
-from hinf_cpp.planned_scenario import load_planned, plan_scenario  # noqa: E402
-from hinf_cpp.planner import UnreachableWaypointError  # noqa: E402
+from hinf_cpp.scenario.planned import load_planned, plan_scenario  # noqa: E402
+from hinf_cpp.planning.planner import UnreachableWaypointError  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PLANNED = sorted((ROOT / "scenarios" / "planned").glob("*.toml"))

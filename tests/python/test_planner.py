@@ -1,4 +1,4 @@
-"""The trajectory planner (hinf_cpp.planner, docs/planning.md): the CasADi statements of the
+"""The trajectory planner (hinf_cpp.planning.planner, docs/planning.md): the CasADi statements of the
 built-in models against the C++ models; round trips (simulate a known u_d, sample waypoints
 from its path, plan through them: every waypoint met, the re-simulation within 1e-6 of the
 planned states, checked again with SciPy's integrator); an unreachable waypoint is a clear
@@ -18,9 +18,9 @@ from _support import ROUNDOFF
 
 ca = pytest.importorskip("casadi")
 
-from hinf_cpp.planner import (PlanOptions, UnreachableWaypointError, Waypoint, plan,  # noqa: E402
+from hinf_cpp.planning.planner import (PlanOptions, UnreachableWaypointError, Waypoint, plan,  # noqa: E402
                               time_grid, waypoints_from_path)
-from hinf_cpp.symbolic_builtin import symbolic_model  # noqa: E402
+from hinf_cpp.models.builtin import symbolic_model  # noqa: E402
 
 BUILT_IN = {
     "ship": hc.ShipModel(hc.ShipParameters(m_u=0.6, m_v=-1.5, m_r=0.4, d_u=1.1, d_v=2.5, d_r=0.9)),

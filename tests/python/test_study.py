@@ -1,4 +1,4 @@
-"""Studies (hinf_cpp.study, docs/studies.md): expansion and seeds, the same table whatever the
+"""Studies (hinf_cpp.studies.study, docs/studies.md): expansion and seeds, the same table whatever the
 executor (1 or 2 local threads, a Dask cluster of 2 processes), replay of one row (Python and
 the command line), failures as rows, interrupt and resume, outputs, the CLI's errors."""
 
@@ -17,8 +17,9 @@ import pandas.testing as pdt
 import pytest
 
 import hinf_cpp as hc
-from hinf_cpp import study as hs
-from hinf_cpp.study_report import paired_differences, status_counts, summarize, summary_markdown, write_study_outputs
+from hinf_cpp.scenario.settings import parse_setting
+from hinf_cpp.studies import study as hs
+from hinf_cpp.studies.report import paired_differences, status_counts, summarize, summary_markdown, write_study_outputs
 
 BIN = pathlib.Path(sys.executable).parent
 HINF_CPP = BIN / "hinf-cpp"
@@ -281,13 +282,13 @@ def test_bad_study_files_are_refused_naming_the_problem(tmp_path, body, message)
 
 
 def test_settings_parse_toml_values():
-    assert hs.parse_setting("controller.gamma=12") == ("controller.gamma", 12)
-    assert hs.parse_setting('controller.law="lqr"') == ("controller.law", "lqr")
-    assert hs.parse_setting("initial.q0[5]=0.5") == ("initial.q0[5]", 0.5)
+    assert parse_setting("controller.gamma=12") == ("controller.gamma", 12)
+    assert parse_setting('controller.law="lqr"') == ("controller.law", "lqr")
+    assert parse_setting("initial.q0[5]=0.5") == ("initial.q0[5]", 0.5)
     with pytest.raises(ValueError, match="not a TOML value"):
-        hs.parse_setting("controller.law=lqr")
+        parse_setting("controller.law=lqr")
     with pytest.raises(ValueError, match="KEY=VALUE"):
-        hs.parse_setting("controller.gamma")
+        parse_setting("controller.gamma")
 
 
 # ---- the command line ----

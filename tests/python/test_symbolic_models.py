@@ -1,4 +1,4 @@
-"""Models written with CasADi symbols (hinf_cpp.symbolic), compiled to C and evaluated in C++.
+"""Models written with CasADi symbols (hinf_cpp.models.symbolic), compiled to C and evaluated in C++.
 
 The paper's ship written symbolically (examples/ship_casadi.py) against the built-in ShipModel
 on the Figure 1 and Figure 2 runs; Jacobians from automatic differentiation against central
@@ -21,7 +21,7 @@ import pytest
 import hinf_cpp as hc
 
 ca = pytest.importorskip("casadi")
-from hinf_cpp.symbolic import SymbolicModel  # noqa: E402
+from hinf_cpp.models.symbolic import SymbolicModel  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 BIN = pathlib.Path(sys.executable).parent
@@ -273,7 +273,7 @@ PYTHON_MODELS = '''
 import casadi as ca
 import numpy as np
 import hinf_cpp as hc
-from hinf_cpp.symbolic import SymbolicModel
+from hinf_cpp.models.symbolic import SymbolicModel
 
 
 class Integrator(hc.Model):

@@ -1,4 +1,4 @@
-"""The built-in vehicles (cpp/include/hinf/vehicles.hpp, docs/vehicles.md) through the Python API.
+"""The built-in vehicles (cpp/include/hinf/models/vehicles.hpp, docs/vehicles.md) through the Python API.
 
 Against independent truth: the vehicles' equations written out here in NumPy (the textbook
 forms of docs/vehicles.md), central differences of them, and the identities the library

@@ -1,4 +1,4 @@
-#include "hinf/analysis.hpp"
+#include "hinf/control/analysis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,11 @@
 #include <system_error>
 #include <thread>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
-#include "extremum.hpp"
-#include "size_dispatch.hpp"
-#include "symmetric_extremes.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
+#include "numerics/extremum.hpp"
+#include "numerics/size_dispatch.hpp"
+#include "numerics/symmetric_extremes.hpp"
 
 namespace hinf {
 

@@ -1,8 +1,8 @@
-#include "hinf/controller.hpp"
+#include "hinf/control/controller.hpp"
 
 #include <cmath>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

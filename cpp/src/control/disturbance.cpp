@@ -1,9 +1,9 @@
-#include "hinf/disturbance.hpp"
+#include "hinf/control/disturbance.hpp"
 
 #include <cmath>
 
-#include "hinf/angles.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,12 +1,12 @@
-#include "hinf/metrics.hpp"
+#include "hinf/control/metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "hinf/angles.hpp"
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,21 +1,21 @@
-#include "hinf/output_feedback.hpp"
+#include "hinf/control/output_feedback.hpp"
 
 #include <cmath>
 #include <memory>
 #include <random>
 
-#include "hinf/angles.hpp"
-#include "hinf/checks.hpp"
-#include "hinf/controller.hpp"
-#include "hinf/cvode.hpp"
-#include "hinf/dopri5.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/resources.hpp"
-#include "hinf/sdirk4.hpp"
-#include "hinf/sparse_matrix.hpp"
-#include "riccati_kernel.hpp"
-#include "size_dispatch.hpp"
-#include "symmetric_extremes.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/numerics/cvode.hpp"
+#include "hinf/numerics/dopri5.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/core/resources.hpp"
+#include "hinf/numerics/sdirk4.hpp"
+#include "hinf/numerics/sparse_matrix.hpp"
+#include "control/riccati_kernel.hpp"
+#include "numerics/size_dispatch.hpp"
+#include "numerics/symmetric_extremes.hpp"
 
 namespace hinf {
 

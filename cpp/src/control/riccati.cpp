@@ -1,20 +1,20 @@
-#include "hinf/riccati.hpp"
+#include "hinf/control/riccati.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "hinf/checks.hpp"
-#include "hinf/cvode.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/resources.hpp"
-#include "hinf/stepper.hpp"
-#include "definiteness.hpp"
-#include "lyapunov_newton.hpp"
-#include "size_dispatch.hpp"
-#include "extremum.hpp"
-#include "riccati_kernel.hpp"
-#include "symmetric_extremes.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/numerics/cvode.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/core/resources.hpp"
+#include "hinf/numerics/stepper.hpp"
+#include "numerics/definiteness.hpp"
+#include "numerics/lyapunov_newton.hpp"
+#include "numerics/size_dispatch.hpp"
+#include "numerics/extremum.hpp"
+#include "control/riccati_kernel.hpp"
+#include "numerics/symmetric_extremes.hpp"
 
 namespace hinf {
 

@@ -5,7 +5,7 @@
 // R = D D', S = C' N^-1 C - gamma^-2 Q.
 #pragma once
 
-#include "hinf/types.hpp"
+#include "hinf/core/types.hpp"
 
 namespace hinf::detail {
 

@@ -1,14 +1,14 @@
-#include "hinf/simulation.hpp"
+#include "hinf/control/simulation.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "hinf/angles.hpp"
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/resources.hpp"
-#include "hinf/sparse_matrix.hpp"
-#include "hinf/stepper.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/core/resources.hpp"
+#include "hinf/numerics/sparse_matrix.hpp"
+#include "hinf/numerics/stepper.hpp"
 
 namespace hinf {
 

@@ -1,9 +1,9 @@
-#include "hinf/trajectory.hpp"
+#include "hinf/control/trajectory.hpp"
 
 #include <algorithm>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,4 +1,4 @@
-#include "hinf/angles.hpp"
+#include "hinf/core/angles.hpp"
 
 #include <cmath>
 

@@ -1,8 +1,8 @@
-#include "hinf/checks.hpp"
+#include "hinf/core/checks.hpp"
 
 #include <cmath>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,8 +1,8 @@
-#include "hinf/resources.hpp"
+#include "hinf/core/resources.hpp"
 
 #include <unistd.h>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

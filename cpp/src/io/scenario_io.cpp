@@ -1,4 +1,4 @@
-#include "hinf/scenario_io.hpp"
+#include "hinf/io/scenario_io.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -17,10 +17,10 @@
 #include <system_error>
 #include <toml++/toml.h>
 
-#include "hinf/errors.hpp"
-#include "hinf/generated_model.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/vehicles.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/generated_model.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/models/vehicles.hpp"
 
 namespace hinf {
 

@@ -1,9 +1,9 @@
-#include "hinf/fleet.hpp"
+#include "hinf/models/fleet.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "hinf/checks.hpp"
+#include "hinf/core/checks.hpp"
 
 namespace hinf {
 

@@ -1,4 +1,4 @@
-#include "hinf/generated_model.hpp"
+#include "hinf/models/generated_model.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,9 +1,9 @@
-#include "hinf/model.hpp"
+#include "hinf/models/model.hpp"
 
 #include <cmath>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

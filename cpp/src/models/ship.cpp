@@ -1,10 +1,10 @@
-#include "hinf/ship.hpp"
+#include "hinf/models/ship.hpp"
 
 #include <cmath>
 
-#include "hinf/angles.hpp"
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

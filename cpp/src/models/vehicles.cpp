@@ -1,9 +1,9 @@
-#include "hinf/vehicles.hpp"
+#include "hinf/models/vehicles.hpp"
 
 #include <cmath>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,4 +1,4 @@
-#include "hinf/cvode.hpp"
+#include "hinf/numerics/cvode.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

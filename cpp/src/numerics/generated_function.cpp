@@ -1,4 +1,4 @@
-#include "hinf/generated_function.hpp"
+#include "hinf/numerics/generated_function.hpp"
 
 #include <dlfcn.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <utility>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 
@@ -169,7 +169,7 @@ GeneratedFunction::Port GeneratedFunction::read_port(bool is_input, CasadiInt i)
   const auto invalid = [&](const std::string& reason) {
     return InputError(str_cat(subject, " is not valid compressed column storage (", reason,
                               "): the code was generated with another casadi_int than long long int "
-                              "(hinf/generated_function.hpp), or is not CasADi generated code"));
+                              "(hinf/numerics/generated_function.hpp), or is not CasADi generated code"));
   };
 
   const CasadiInt* sp = sparsity(i);

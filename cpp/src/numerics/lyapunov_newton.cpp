@@ -1,10 +1,10 @@
-#include "lyapunov_newton.hpp"
+#include "numerics/lyapunov_newton.hpp"
 
 #include <cmath>
 #include <cstddef>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 // LAPACK (Fortran calling convention; the hidden lengths of character arguments are passed).
 extern "C" {

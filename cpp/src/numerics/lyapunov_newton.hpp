@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "hinf/types.hpp"
+#include "hinf/core/types.hpp"
 
 namespace hinf::detail {
 

@@ -1,9 +1,9 @@
-#include "hinf/piecewise_polynomial.hpp"
+#include "hinf/numerics/piecewise_polynomial.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

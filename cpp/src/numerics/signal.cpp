@@ -1,11 +1,11 @@
-#include "hinf/signal.hpp"
+#include "hinf/numerics/signal.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "hinf/checks.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,8 +1,8 @@
-#include "hinf/solver_options.hpp"
+#include "hinf/numerics/solver_options.hpp"
 
 #include <cmath>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -1,4 +1,4 @@
-#include "hinf/scenario.hpp"
+#include "hinf/scenario/scenario.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -6,13 +6,13 @@
 #include <limits>
 #include <memory>
 
-#include "hinf/checks.hpp"
-#include "hinf/controller.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/output_feedback.hpp"
-#include "hinf/scenario_io.hpp"
-#include "hinf/ship.hpp"
-#include "scenario_run.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/control/output_feedback.hpp"
+#include "hinf/io/scenario_io.hpp"
+#include "hinf/models/ship.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace hinf {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "hinf/scenario.hpp"
+#include "hinf/scenario/scenario.hpp"
 
 namespace hinf::detail {
 

@@ -1,4 +1,4 @@
-#include "hinf/study.hpp"
+#include "hinf/scenario/study.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -13,8 +13,8 @@
 #include <system_error>
 #include <thread>
 
-#include "hinf/errors.hpp"
-#include "scenario_run.hpp"
+#include "hinf/core/errors.hpp"
+#include "scenario/scenario_run.hpp"
 
 namespace hinf {
 

@@ -28,8 +28,9 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-from . import _core
-from .progress import ProgressCallback
+from hinf_cpp import _core
+from hinf_cpp.output.progress import ProgressCallback
+from hinf_cpp.output.tables import run_key
 
 __all__ = [
     "METRICS",
@@ -42,7 +43,6 @@ __all__ = [
     "heading_error",
     "parse_controllers",
     "parse_feedback",
-    "run_key",
     "run_law",
     "wrap_angles",
 ]
@@ -133,11 +133,6 @@ def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str | Feedback
     if Feedback.output.name in names and not has_measurement:
         raise ValueError(f"output feedback needs a scenario with [measurement]; '{scenario.name}' has none")
     return [mode for mode in Feedback if mode.name in names]
-
-
-def run_key(law: _core.Law, output_feedback: bool) -> str:
-    """The label of a run: the law's name, with ``/output-feedback`` for output feedback."""
-    return f"{law.name}/output-feedback" if output_feedback else law.name
 
 
 def wrap_angles(angle: np.ndarray | float) -> np.ndarray:
@@ -359,7 +354,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
         Overrides ``[disturbance] worst_case`` (add w* of eq. 16 of the H-infinity design).
     progress : callable, optional
         Called as ``progress(index, total, message)`` before each run (e.g. a
-        :class:`~hinf_cpp.progress.Progress`).
+        :class:`~hinf_cpp.output.progress.Progress`).
 
     Returns
     -------

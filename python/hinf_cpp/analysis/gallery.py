@@ -12,9 +12,9 @@ import pathlib
 import numpy as np
 from matplotlib.figure import Figure
 
-from . import _core
-from .outputs import write_text
-from .tables import markdown_table
+from hinf_cpp import _core
+from hinf_cpp.output.files import write_text
+from hinf_cpp.output.tables import markdown_table
 
 __all__ = ["PLANNED", "VEHICLES", "PlannedRun", "VehicleRun", "gallery_figure", "gallery_table", "planned_table",
            "run_planned", "run_vehicle", "write_gallery", "write_planned_gallery"]
@@ -52,8 +52,8 @@ class VehicleRun:
 
 def run_vehicle(vehicle: Vehicle) -> VehicleRun:
     """Runs the vehicle's shipped scenario and computes gamma* of its design (eq. 14)."""
-    from . import scenario_path
-    from .scenario import load_scenario
+    from hinf_cpp.scenario import scenario_path
+    from hinf_cpp.scenario import load_scenario
 
     scenario = load_scenario(scenario_path(vehicle.scenario))
     result = _core.run_scenario(scenario)
@@ -78,7 +78,7 @@ def gallery_table(runs: list[VehicleRun]) -> tuple[list[str], list[list[str]]]:
 
 def gallery_figure(runs: list[VehicleRun]) -> Figure:
     """The x-y paths of every vehicle, one panel each (desired solid, actual dashed)."""
-    from .plotting import paths_figure
+    from hinf_cpp.output.plotting import paths_figure
 
     columns = 2
     rows = math.ceil(len(runs) / columns)
@@ -96,7 +96,7 @@ def write_gallery(out: str | pathlib.Path, runs: list[VehicleRun]) -> list[pathl
     """Writes <scenario>.json (results file, gamma* included), <scenario>.csv (time series) and
     <scenario>_xy.png per vehicle, vehicles_xy.png (all paths) and metrics.md (the table) into
     `out`; returns the paths written."""
-    from .plotting import save_figure, xy_figure
+    from hinf_cpp.output.plotting import save_figure, xy_figure
 
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -136,14 +136,14 @@ PLANNED = [PlannedCase(f"{vehicle}: {pattern.replace('_', ' ')}", f"planned/{ste
 @dataclasses.dataclass
 class PlannedRun:
     case: PlannedCase
-    planned: object  # hinf_cpp.planned_scenario.PlannedScenario
+    planned: object  # hinf_cpp.scenario.planned.PlannedScenario
     result: _core.RunResult
 
 
 def run_planned(case: PlannedCase, cache: bool = True) -> PlannedRun:
     """Plans the case's shipped scenario (from the cache when it can) and runs it."""
-    from . import scenario_path
-    from .planned_scenario import load_planned
+    from hinf_cpp.scenario import scenario_path
+    from hinf_cpp.scenario.planned import load_planned
 
     planned = load_planned(scenario_path(case.scenario), cache=cache)
     return PlannedRun(case, planned, _core.run_scenario(planned.scenario))
@@ -169,7 +169,7 @@ def planned_table(runs: list[PlannedRun]) -> tuple[list[str], list[list[str]]]:
 def write_planned_gallery(out: str | pathlib.Path, runs: list[PlannedRun]) -> list[pathlib.Path]:
     """Writes <name>.json (results file) and <name>_xy.png (waypoints, planned path, tracked
     path) per scenario, planned_xy.png (all of them) and planned.md (the table) into `out`."""
-    from .plotting import save_figure, xy_figure
+    from hinf_cpp.output.plotting import save_figure, xy_figure
 
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)

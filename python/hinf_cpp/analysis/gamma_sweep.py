@@ -11,8 +11,8 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from . import _core
-from .progress import ProgressCallback
+from hinf_cpp import _core
+from hinf_cpp.output.progress import ProgressCallback
 
 __all__ = ["GammaSweep", "cost_L_gamma", "sweep_gamma"]
 

@@ -37,10 +37,10 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from . import _core
-from .compare import Feedback, heading_error, parse_controllers, run_law, wrap_angles
-from .progress import ProgressCallback
-from .scenario import load_scenario
+from hinf_cpp import _core
+from hinf_cpp.analysis.compare import Feedback, heading_error, parse_controllers, run_law, wrap_angles
+from hinf_cpp.output.progress import ProgressCallback
+from hinf_cpp.scenario import load_scenario
 
 __all__ = [
     "BACKWARDS_FRACTION",

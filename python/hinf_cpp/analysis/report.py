@@ -1,6 +1,6 @@
 """A report folder for one scenario: the comparison of the laws, its figures, tables and results files.
 
-``write_report(scenario, out)`` runs :func:`~hinf_cpp.compare.compare` and writes into ``out``:
+``write_report(scenario, out)`` runs :func:`~hinf_cpp.analysis.compare.compare` and writes into ``out``:
 
     report.md            everything below in one page (tables, definitions, figures)
     metrics.md           the comparison table (Markdown), one column per run
@@ -12,7 +12,7 @@
     eigenvalues.png      eigenvalue bounds of Z(t) (and of Sigma(t) with [measurement])
     coupling.png         rho(Sigma Z)(t) against gamma^2 (only with [measurement])
     <run>.json           the results file of each run (results_json(result))
-    <run>.npz, <run>.csv every time series of each run (hinf_cpp.export: NPZ, tidy CSV)
+    <run>.npz, <run>.csv every time series of each run (hinf_cpp.output.export: NPZ, tidy CSV)
 
 ``<run>`` is the run's key with ``/`` replaced by ``-`` (``hinf``, ``lqr-output-feedback``).
 With ``pdf=True`` every figure is also written as a vector PDF next to its PNG.
@@ -24,14 +24,14 @@ import dataclasses
 import pathlib
 from typing import Callable, Sequence
 
-from . import _core
-from .compare import METRICS, Comparison, Feedback, compare
-from .export import save_csv, save_json, save_npz
-from .outputs import check_output_folder, write_text
-from .plotting import (controls_figure, coupling_figure, eigenvalues_figure, errors_figure, paths_figure,
+from hinf_cpp import _core
+from hinf_cpp.analysis.compare import METRICS, Comparison, Feedback, compare
+from hinf_cpp.output.export import save_csv, save_json, save_npz
+from hinf_cpp.output.files import check_output_folder, write_text
+from hinf_cpp.output.plotting import (controls_figure, coupling_figure, eigenvalues_figure, errors_figure, paths_figure,
                        save_figure)
-from .progress import ProgressCallback
-from .tables import csv_table, markdown_table
+from hinf_cpp.output.progress import ProgressCallback
+from hinf_cpp.output.tables import csv_table, markdown_table
 
 __all__ = ["Report", "run_file_stem", "write_report"]
 
@@ -114,7 +114,7 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
         The folder (created if needed; files of the same names are overwritten, each written
         whole or not at all). A path that cannot be a folder is a ValueError before the runs.
     controllers, feedback, worst_case
-        As in :func:`~hinf_cpp.compare.compare`.
+        As in :func:`~hinf_cpp.analysis.compare.compare`.
     pdf : bool
         Also write each figure as a vector PDF (``paths.pdf``, ...).
     progress : callable, optional

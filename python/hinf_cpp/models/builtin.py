@@ -1,12 +1,12 @@
 """The built-in C++ models as symbolic models (CasADi expressions), for the trajectory planner.
 
-The planner (``hinf_cpp.planner``, docs/planning.md) optimizes over the model's dynamics with
+The planner (``hinf_cpp.planning.planner``, docs/planning.md) optimizes over the model's dynamics with
 IPOPT, which needs the dynamics as CasADi expressions: exact first and second derivatives by
 automatic differentiation. A model written by the user in CasADi (a
-:class:`~hinf_cpp.symbolic.SymbolicModel`) has them; the built-in models are C++ code with
+:class:`~hinf_cpp.models.symbolic.SymbolicModel`) has them; the built-in models are C++ code with
 analytic first derivatives only. :func:`symbolic_model` states each built-in model again in
 CasADi, with the parameters of the given C++ object, as the equations of
-``cpp/include/hinf/ship.hpp``, ``vehicles.hpp`` and ``model.hpp`` write them; the tests
+``cpp/include/hinf/models/ship.hpp``, ``vehicles.hpp`` and ``model.hpp`` write them; the tests
 (tests/python/test_planner.py) check f, G, D, C and df/dq of every one against the C++ model to
 round-off, so the two statements cannot drift apart unnoticed.
 """
@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import _core
-from .symbolic import SymbolicModel, _casadi
+from hinf_cpp import _core
+from hinf_cpp.models.symbolic import SymbolicModel, _casadi
 
 __all__ = ["symbolic_model"]
 
@@ -35,7 +35,7 @@ def symbolic_model(model) -> SymbolicModel:
     name = model.name() if isinstance(model, _core.Model) else type(model).__name__
     raise ValueError(f"the model '{name}' has no CasADi form: planning needs the model's equations as CasADi "
                      "expressions. Use a built-in model (ship, fossen_vessel, hovercraft, pvtol, auv, linear) or "
-                     "state the model as a hinf_cpp.symbolic.SymbolicModel (docs/models.md) and pass that")
+                     "state the model as a hinf_cpp.models.symbolic.SymbolicModel (docs/models.md) and pass that")
 
 
 def _common(model) -> dict:

@@ -3,10 +3,10 @@
 A model written with CasADi symbols is evaluated in C++ without Python: its functions
 (``casadi.Function``) are written out as C by CasADi's code generator, compiled once with the
 system C compiler into a shared library, and loaded by ``hinf_cpp.GeneratedFunction`` (C++:
-``hinf/generated_function.hpp``)::
+``hinf/numerics/generated_function.hpp``)::
 
     import casadi as ca
-    from hinf_cpp.codegen import compile_casadi_functions
+    from hinf_cpp.models.codegen import compile_casadi_functions
 
     q = ca.SX.sym("q", 3)
     f = ca.Function("f", [q], [ca.sin(q)])
@@ -45,13 +45,13 @@ from typing import TYPE_CHECKING, Sequence
 if TYPE_CHECKING:  # casadi is optional (the extra "symbolic"); imported when used
     import casadi
 
-    from ._core import GeneratedFunction
+    from hinf_cpp._core import GeneratedFunction
 
-# What the C++ loader reads (hinf/generated_function.hpp).
+# What the C++ loader reads (hinf/numerics/generated_function.hpp).
 GENERATOR_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_header": False}
 # Reported by the library so that the loader can check the ABI it was compiled with.
 ABI_FUNCTIONS = """
-/* Added by hinf_cpp.codegen: the sizes of this file's types, checked by the loader. */
+/* Added by hinf_cpp.models.codegen: the sizes of this file's types, checked by the loader. */
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -68,7 +68,7 @@ CASADI_SYMBOL_EXPORT int hinf_casadi_real_size(void) { return (int) sizeof(casad
 COMPILE_FLAGS = ("-O2", "-fPIC", "-shared")
 LINK_LIBRARIES = ("-lm",)  # sin, exp, sqrt, ... of the generated code
 # Part of every cache key: a change to how libraries are made changes every file name.
-CACHE_FORMAT = "hinf_cpp.codegen 1"
+CACHE_FORMAT = "hinf_cpp.models.codegen 1"
 C_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 
@@ -93,7 +93,7 @@ class CompiledLibrary:
 
     def function(self, name: str) -> GeneratedFunction:
         """The function ``name`` of the library, loaded (``hinf_cpp.GeneratedFunction``)."""
-        from ._core import GeneratedFunction
+        from hinf_cpp._core import GeneratedFunction
 
         return GeneratedFunction(str(self.path), name)
 
@@ -110,7 +110,7 @@ def _import_casadi():
     try:
         import casadi
     except ImportError as error:
-        raise ImportError("hinf_cpp.codegen needs CasADi: pip install casadi "
+        raise ImportError("hinf_cpp.models.codegen needs CasADi: pip install casadi "
                           "(or pip install 'hinf_cpp[symbolic]')") from error
     return casadi
 

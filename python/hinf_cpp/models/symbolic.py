@@ -8,7 +8,7 @@ with CasADi expressions (SX or MX) of the time ``t``, the state ``q`` and named 
 ``p``, the way models are written for acados or do-mpc. Its Jacobians df/dq and d(G u)/dq come
 from CasADi's automatic differentiation (exact). :meth:`SymbolicModel.compile` generates C code
 for all of its functions, compiles it once with the system's C compiler into a cached shared
-library (``hinf_cpp.codegen``) and returns a ``hinf_cpp.GeneratedModel``: a C++ model that
+library (``hinf_cpp.models.codegen``) and returns a ``hinf_cpp.GeneratedModel``: a C++ model that
 calls that library with no Python in the loop (docs/models.md says why this route and what
 it costs). :meth:`SymbolicModel.export` writes the library and its description
 (``model.json``) to a folder that a scenario file names with ``[model] kind = "casadi"``, so
@@ -41,7 +41,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from . import _core
+from hinf_cpp import _core
 
 METADATA_FORMAT = "hinf_cpp.generated_model/1"
 METADATA_FILE = "model.json"
@@ -210,7 +210,7 @@ class SymbolicModel:
     def build(self, cache_dir: str | os.PathLike | None = None) -> CompiledModel:
         """Generates and compiles the model's C code once (cached by its content: a second build
         of the same model costs nothing but a hash) and writes model.json beside the library."""
-        from .codegen import compile_casadi_functions
+        from hinf_cpp.models.codegen import compile_casadi_functions
 
         library = compile_casadi_functions(self.functions(), _library_stem(self.name), cache_dir=cache_dir)
         directory = pathlib.Path(library.path).parent

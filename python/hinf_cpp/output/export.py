@@ -38,8 +38,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _core
-from .outputs import atomic_output, write_text
+from hinf_cpp import _core
+from hinf_cpp.output.files import atomic_output, write_text
 
 __all__ = ["FORMAT", "RunData", "component_names", "load_csv", "load_json", "load_npz", "npz_path",
            "save_csv", "save_json", "save_npz", "time_series"]

@@ -17,9 +17,9 @@ from typing import Sequence, Union
 import numpy as np
 from matplotlib.figure import Figure
 
-from . import _core
-from .compare import run_key
-from .outputs import atomic_output
+from hinf_cpp import _core
+from hinf_cpp.output.tables import run_key
+from hinf_cpp.output.files import atomic_output
 
 __all__ = [
     "controls_figure",
@@ -133,7 +133,7 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
               length_unit: str = "m", waypoints=(), ax=None) -> Figure:
     """The paper's x-y plot: desired path solid, actual path dashed, start points marked;
     optionally ``heading_arrows`` arrows of the heading along the actual path, and the
-    ``waypoints`` a desired trajectory was planned through (hinf_cpp.planner.Waypoint: crosses,
+    ``waypoints`` a desired trajectory was planned through (hinf_cpp.planning.planner.Waypoint: crosses,
     and a short line for a waypoint's heading). ``length_unit`` labels the axes (the model's
     unit of length). ``ax``: draw into these axes instead of a new figure."""
     ix, iy = _position_indices(result)
@@ -178,7 +178,7 @@ def _waypoint_marks(ax, waypoints, length: float) -> None:
 
 
 def plan_figure(planned_plan, title: str | None = None, length_unit: str = "m") -> Figure:
-    """A plan (hinf_cpp.planner.Plan) before any tracking: the re-simulated desired path, the
+    """A plan (hinf_cpp.planning.planner.Plan) before any tracking: the re-simulated desired path, the
     planned states at the nodes, and the waypoints."""
     model = planned_plan.model
     ix, iy = model.position_indices()
@@ -398,7 +398,7 @@ def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
 
 def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figure:
     """One panel of overlaid x-y paths per scenario of a recovery study
-    (:class:`~hinf_cpp.recovery.RecoveryStudy`).
+    (:class:`~hinf_cpp.analysis.recovery.RecoveryStudy`).
 
     ``t_max``: the time window drawn; default per panel: the latest settling time of its runs
     plus 5 s (the whole horizon when a run does not settle).
@@ -433,7 +433,7 @@ def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figu
 
 
 def save_figure(fig: Figure, path: str | pathlib.Path) -> pathlib.Path:
-    """Saves a figure, whole or not at all (:func:`hinf_cpp.outputs.atomic_output`); the
+    """Saves a figure, whole or not at all (:func:`hinf_cpp.output.files.atomic_output`); the
     format is the suffix: .png (150 dpi), .pdf and .svg (vector), or any other format
     matplotlib writes.
 

@@ -11,7 +11,14 @@ import io
 import math
 from typing import Any, Sequence
 
-__all__ = ["format_cell", "text_table", "markdown_table", "csv_table"]
+from hinf_cpp import _core
+
+__all__ = ["csv_table", "format_cell", "markdown_table", "run_key", "text_table"]
+
+
+def run_key(law: _core.Law, output_feedback: bool) -> str:
+    """The label of a run: the law's name, with ``/output-feedback`` for output feedback."""
+    return f"{law.name}/output-feedback" if output_feedback else law.name
 
 
 def format_cell(value: Any, digits: int = 4) -> str:

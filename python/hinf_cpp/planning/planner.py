@@ -23,8 +23,8 @@ problem always has a solution: a waypoint the inputs cannot reach shows as a mis
 best compromise, reported by :class:`UnreachableWaypointError` with the waypoint's index and
 the distance, instead of a long fruitless search for a feasible point.
 
-The model's dynamics enter as CasADi expressions: a :class:`~hinf_cpp.symbolic.SymbolicModel`,
-or a built-in model through :func:`~hinf_cpp.symbolic_builtin.symbolic_model`.
+The model's dynamics enter as CasADi expressions: a :class:`~hinf_cpp.models.symbolic.SymbolicModel`,
+or a built-in model through :func:`~hinf_cpp.models.builtin.symbolic_model`.
 
 Units are the model's (positions in its unit of length, time in s, angles in rad); times are
 absolute.
@@ -44,9 +44,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from . import _core
-from .symbolic import SymbolicModel, _casadi
-from .symbolic_builtin import symbolic_model
+from hinf_cpp import _core
+from hinf_cpp.models.symbolic import SymbolicModel, _casadi
+from hinf_cpp.models.builtin import symbolic_model
 
 __all__ = ["FeasibilityReport", "Plan", "PlanOptions", "PlanningError", "UnreachableWaypointError", "Waypoint",
            "default_cache_dir", "plan", "waypoints_from_path"]
@@ -479,7 +479,7 @@ class _Iterate:
 
 def _check_waypoint(j: int, w: Waypoint, heading: int) -> None:
     if not isinstance(w, Waypoint):
-        raise ValueError(f"waypoints[{j}] must be a hinf_cpp.planner.Waypoint, got {type(w).__name__}")
+        raise ValueError(f"waypoints[{j}] must be a hinf_cpp.planning.planner.Waypoint, got {type(w).__name__}")
     for name in ("x", "y", "t", "heading", "speed"):
         value = getattr(w, name)
         if value is None and name not in ("x", "y"):

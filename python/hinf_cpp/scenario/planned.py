@@ -1,9 +1,9 @@
 """Scenario files whose [desired] gives waypoints or a path instead of inputs (docs/planning.md).
 
-The planner (``hinf_cpp.planner``) turns the waypoints into inputs u_d, which take the place of
+The planner (``hinf_cpp.planning.planner``) turns the waypoints into inputs u_d, which take the place of
 the planning keys in [desired] as tables with interpolation = "linear"; the scenario then goes
 through the one C++ reader like any other. Plans are cached by the content of what they depend
-on (``hinf_cpp.planner.default_cache_dir``), so running a file again does not optimize again.
+on (``hinf_cpp.planning.planner.default_cache_dir``), so running a file again does not optimize again.
 ``hinf-sim`` does not plan: it refuses these keys and says to run ``hinf-cpp run`` or to write
 the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml``.
 
@@ -27,10 +27,10 @@ import pathlib
 import re
 import tomllib
 
-from . import _core
-from .planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
+from hinf_cpp import _core
+from hinf_cpp.planning.planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
                       waypoints_from_path)
-from .scenario import _toml_text, resolve_callable
+from hinf_cpp.scenario.documents import resolve_callable, toml_text
 
 __all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario"]
 
@@ -88,12 +88,12 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> Pla
     if inputs:
         raise ValueError(f"{source}: [desired] {inputs[0]}: give the inputs or {next(iter(planning))} "
                          "(planned inputs), not both")
-    model = _core.parse_model_toml(_toml_text({key: root[key] for key in ("model",) if key in root}, source), source)
+    model = _core.parse_model_toml(toml_text({key: root[key] for key in ("model",) if key in root}, source), source)
     # Everything but the inputs, checked by the C++ reader first (with zero inputs in their place).
     skeleton = copy.deepcopy(root)
     skeleton["desired"] = {key: value for key, value in desired.items() if key not in PLANNING_KEYS}
     skeleton["desired"].update({f"u{i + 1}": 0.0 for i in range(model.m())})
-    checked = _core.parse_scenario_toml(_toml_text(skeleton, source), source)
+    checked = _core.parse_scenario_toml(toml_text(skeleton, source), source)
     options = _plan_options(planning.get("plan", {}), source, model.m())
     if "waypoints" in planning:
         waypoints = _waypoints(planning["waypoints"], source)
@@ -115,7 +115,7 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> Pla
         raise ValueError(f"{source}: {section} {text}") from None
     document = copy.deepcopy(root)
     document["desired"] = dict(skeleton["desired"], **result.input_tables())
-    scenario = _core.parse_scenario_toml(_toml_text(document, source), source)
+    scenario = _core.parse_scenario_toml(toml_text(document, source), source)
     return PlannedScenario(scenario, result, document, source)
 
 
@@ -129,7 +129,7 @@ def _planner_model(table: dict, model: _core.Model, source: str):
                          "model.json holds only compiled functions; name the SymbolicModel itself with kind = "
                          "\"python\", callable = \"FILE.py:FUNCTION\" to plan (docs/planning.md)")
     if kind == "python":
-        from .symbolic import SymbolicModel
+        from hinf_cpp.models.symbolic import SymbolicModel
 
         base = pathlib.Path(source).parent if source and pathlib.Path(source).is_file() else None
         made = resolve_callable(table["callable"], base)()

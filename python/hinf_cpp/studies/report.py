@@ -1,4 +1,4 @@
-"""Summaries and figures of a study's table (hinf_cpp.study, docs/studies.md).
+"""Summaries and figures of a study's table (hinf_cpp.studies.study, docs/studies.md).
 
 :func:`summarize` gives, per group of runs (a grid point), the count of each status and the
 mean, standard deviation and 5/50/95 percentiles of each metric over the completed runs;
@@ -18,8 +18,8 @@ from typing import Sequence
 import numpy as np
 from matplotlib.figure import Figure
 
-from .outputs import atomic_output, write_text
-from .tables import markdown_table
+from hinf_cpp.output.files import atomic_output, write_text
+from hinf_cpp.output.tables import markdown_table
 
 __all__ = ["DEFAULT_METRICS", "distribution_figure", "gamma_figure", "paired_differences", "recovered", "roa_figure",
            "status_counts", "summarize", "summary_markdown", "write_study_outputs"]
@@ -181,7 +181,7 @@ def distribution_figure(df, metric: str, title: str | None = None) -> Figure:
 
 def recovered(df, position_tol: float = 0.5, heading_tol_deg: float = 10.0) -> np.ndarray:
     """Completed, with a final position error below `position_tol` and a final wrapped heading
-    error below `heading_tol_deg` (the verdict of hinf_cpp.recovery)."""
+    error below `heading_tol_deg` (the verdict of hinf_cpp.analysis.recovery)."""
     position = df["final_position_error"].to_numpy(dtype=float)
     heading = np.abs(df["final_heading_error"].to_numpy(dtype=float))
     with np.errstate(invalid="ignore"):
@@ -278,7 +278,7 @@ def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: st
 
 
 def _save(fig: Figure, path: pathlib.Path) -> pathlib.Path:
-    from .plotting import save_figure
+    from hinf_cpp.output.plotting import save_figure
 
     return save_figure(fig, path)
 

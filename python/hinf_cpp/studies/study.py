@@ -16,7 +16,6 @@ points in row-major order of the [[grid]] axes, samples fastest.
 from __future__ import annotations
 
 import concurrent.futures
-import copy
 import dataclasses
 import functools
 import hashlib
@@ -24,27 +23,25 @@ import json
 import math
 import os
 import pathlib
-import re
 import shutil
 import threading
 import time
-import tomllib
-from typing import Any, Callable, Sequence
+from typing import Any, Callable
 
 import numpy as np
 
-from . import _core
-from .scenario import scenario_from_dict
+from hinf_cpp import _core
+from hinf_cpp.scenario import scenario_from_dict
+from hinf_cpp.scenario.documents import read_toml_file
+from hinf_cpp.scenario.settings import FEEDBACK_KEY, apply_settings, get_key, key_path, set_key, toml_value
 
 __all__ = [
     "GridAxis",
     "RandomAxis",
     "Study",
     "STATUSES",
-    "apply_settings",
     "load_study",
     "local_cores",
-    "parse_setting",
     "replay",
     "replay_command",
     "run_study",
@@ -56,119 +53,10 @@ __all__ = [
 STATUSES = ["completed", "diverged", "conjugate_point", "coupling_violation", "solver_failure",
             "invalid_input", "failed"]
 METRIC_NAMES = [definition.name for definition in _core.metric_table()]
-FEEDBACK_KEY = "feedback"  # the grid axis that keeps ("output") or drops ("state") [measurement]
 SEED_KEY = "measurement.seed"
 DISTRIBUTIONS = ("seed", "uniform", "normal")
 DEFAULT_CHUNK = 100
 _SEED_LIMIT = 2 ** 63
-
-
-# --------------------------------------------------------------------------------------------
-# Keys: "controller.gamma", "initial.q0[2]", "disturbance.w1.harmonics[0].amplitude"
-
-_PART = re.compile(r"^([A-Za-z0-9_-]+)((?:\[\d+\])*)$")
-
-
-def _parse_key(key: str) -> list[str | int]:
-    """The path of a dotted key: names and array indices, e.g. ["initial", "q0", 2]."""
-    if not isinstance(key, str) or not key:
-        raise ValueError(f"a key must be a non-empty string like 'controller.gamma', got {key!r}")
-    path: list[str | int] = []
-    for part in key.split("."):
-        match = _PART.match(part)
-        if not match:
-            raise ValueError(f"key '{key}': '{part}' is not a name with optional [index] (e.g. 'initial.q0[2]')")
-        path.append(match.group(1))
-        path += [int(i) for i in re.findall(r"\[(\d+)\]", match.group(2))]
-    return path
-
-
-def _get(document: dict, key: str) -> Any:
-    """The value at `key`; KeyError if it is not there."""
-    node: Any = document
-    for part in _parse_key(key):
-        if isinstance(part, int):
-            if not isinstance(node, list) or part >= len(node):
-                raise KeyError(key)
-        elif not isinstance(node, dict) or part not in node:
-            raise KeyError(key)
-        node = node[part]
-    return node
-
-
-def _set(document: dict, key: str, value: Any) -> None:
-    """Sets `key` in the scenario document: tables on the way are made if missing, an array
-    index must exist. "feedback" = "state" drops [measurement], "output" keeps it."""
-    if key == FEEDBACK_KEY:
-        if value == "state":
-            document.pop("measurement", None)
-        elif value == "output":
-            if "measurement" not in document:
-                raise ValueError("feedback = \"output\" needs a scenario with [measurement]")
-        else:
-            raise ValueError(f"feedback must be \"state\" or \"output\", got {value!r}")
-        return
-    path = _parse_key(key)
-    node: Any = document
-    for depth, part in enumerate(path[:-1]):
-        following = path[depth + 1]
-        if isinstance(part, int):
-            if not isinstance(node, list) or part >= len(node):
-                raise ValueError(f"key '{key}': the scenario has no element {part} there")
-            node = node[part]
-            continue
-        if not isinstance(node, dict):
-            raise ValueError(f"key '{key}': '{part}' is not inside a table")
-        if part not in node:
-            if isinstance(following, int):
-                raise ValueError(f"key '{key}': the scenario has no array '{part}' to index")
-            node[part] = {}
-        node = node[part]
-    last = path[-1]
-    if isinstance(last, int):
-        if not isinstance(node, list) or last >= len(node):
-            raise ValueError(f"key '{key}': the scenario has no element {last} there")
-        node[last] = value
-    elif isinstance(node, dict):
-        node[last] = value
-    else:
-        raise ValueError(f"key '{key}': '{last}' is not inside a table")
-
-
-def parse_setting(text: str) -> tuple[str, Any]:
-    """``KEY=VALUE`` of ``hinf-cpp run --set``: VALUE is a TOML value (strings quoted)."""
-    key, sep, value = text.partition("=")
-    key = key.strip()
-    if not sep or not key:
-        raise ValueError(f"--set '{text}': write it as KEY=VALUE, e.g. controller.gamma=12")
-    try:
-        parsed = tomllib.loads(f"value = {value.strip()}")["value"]
-    except tomllib.TOMLDecodeError:
-        raise ValueError(f"--set '{text}': '{value.strip()}' is not a TOML value "
-                         "(quote strings: controller.law=\"lqr\")") from None
-    _parse_key(key) if key != FEEDBACK_KEY else None
-    return key, parsed
-
-
-def apply_settings(document: dict, settings: Sequence[tuple[str, Any]], seed: int | None = None) -> dict:
-    """A copy of a scenario document with the settings (key, value) applied in order, then
-    [measurement] seed = `seed` if given (ValueError if the scenario has no [measurement])."""
-    document = copy.deepcopy(document)
-    for key, value in settings:
-        _set(document, key, value)
-    if seed is not None:
-        if "measurement" not in document:
-            raise ValueError("--seed sets [measurement] seed, but the scenario has no [measurement] "
-                             "(a state-feedback run has no noise)")
-        document["measurement"]["seed"] = seed
-    return document
-
-
-def _toml_value(value: Any) -> str:
-    """A value as TOML text (floats exactly: repr)."""
-    import tomli_w
-
-    return tomli_w.dumps({"v": value}).strip()[len("v = "):]
 
 
 # --------------------------------------------------------------------------------------------
@@ -279,7 +167,7 @@ class Study:
         others = [s for s in settings if s[0] != FEEDBACK_KEY]
         document = apply_settings(self.base, others)
         for key, value in feedback:
-            _set(document, key, value)
+            set_key(document, key, value)
         return document
 
     def scenario(self, run: int) -> _core.Scenario:
@@ -307,7 +195,7 @@ def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> flo
         candidates.append("model." + rest)
     for candidate in candidates:
         try:
-            value = _get(base, candidate)
+            value = get_key(base, candidate)
         except KeyError:
             continue
         if isinstance(value, (int, float)) and not isinstance(value, bool):
@@ -361,12 +249,9 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
             raise ValueError(f"{where}: [study] scenario (the base scenario file) is required")
         path = pathlib.Path(folder or ".") / head["scenario"]
         try:
-            with open(path, "rb") as f:
-                base = tomllib.load(f)
-        except OSError as error:
-            raise ValueError(f"{where}: [study] scenario: cannot read '{path}' ({error.strerror})") from None
-        except tomllib.TOMLDecodeError as error:
-            raise ValueError(f"{where}: [study] scenario '{path}': {error}") from None
+            base = read_toml_file(path)
+        except ValueError as error:
+            raise ValueError(f"{where}: [study] scenario: {error}") from None
         scenario_source = os.fspath(path)
     seed = head.get("seed", 0)
     if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
@@ -392,7 +277,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
             raise ValueError(f"{at}: with {len(keys)} keys each value is an array of {len(keys)} values")
         for j, key in enumerate(keys):
             if key != FEEDBACK_KEY:
-                _parse_key(key)
+                key_path(key)
             elif not all((v if len(keys) == 1 else v[j]) in ("state", "output") for v in values):
                 raise ValueError(f"{at}: feedback values are \"state\" and \"output\"")
             if key in seen:
@@ -410,7 +295,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
         key = table.get("key")
         if not isinstance(key, str):
             raise ValueError(f"{at}: 'key' must be a key like 'plant.d_u'")
-        _parse_key(key)
+        key_path(key)
         if key in seen:
             raise ValueError(f"{at}: key '{key}' is varied twice")
         seen.add(key)
@@ -475,15 +360,7 @@ def load_study(path: str | os.PathLike) -> Study:
     """Reads a study file (docs/studies.md); ValueError naming the file and the key for
     anything wrong with it (and for a base scenario that cannot be read)."""
     path = pathlib.Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as error:
-        raise ValueError(f"cannot read the study '{path}': {error.strerror}") from None
-    try:
-        definition = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as error:
-        raise ValueError(f"{path}: {error}") from None
-    return study_from_dict(definition, os.fspath(path), path.parent)
+    return study_from_dict(read_toml_file(path, "the study "), os.fspath(path), path.parent)
 
 
 # --------------------------------------------------------------------------------------------
@@ -529,7 +406,7 @@ def _cell(value: Any, arrow_type) -> Any:
     import pyarrow as pa
 
     if arrow_type == pa.string() and not isinstance(value, str):
-        return _toml_value(value)
+        return toml_value(value)
     if arrow_type == pa.float64():
         return float(value)
     return value
@@ -604,7 +481,7 @@ class _Partial:
                 self.restarted = any(self.folder.glob("chunk-*.parquet"))
                 shutil.rmtree(self.folder)
         self.folder.mkdir(parents=True, exist_ok=True)
-        from .outputs import write_text
+        from hinf_cpp.output.files import write_text
 
         write_text(manifest, json.dumps({"study": study.name, "hash": self.hash, "runs": study.runs,
                                          "chunk": study.chunk}, indent=2) + "\n")
@@ -628,7 +505,7 @@ class _Partial:
     def save(self, chunk: int, table) -> None:
         import pyarrow.parquet as pq
 
-        from .outputs import atomic_output
+        from hinf_cpp.output.files import atomic_output
 
         with atomic_output(self.path(chunk)) as f:
             pq.write_table(table, f)
@@ -659,7 +536,7 @@ def _dask_chunk(study: Study, start: int, stop: int):
 def _progress_callback(progress) -> tuple[Callable[[int, int, str], None], Callable[[], None]]:
     if callable(progress):
         return progress, lambda: None
-    from .progress import Progress
+    from hinf_cpp.output.progress import Progress
 
     display = Progress(quiet=not progress)
     return display, display.close
@@ -807,7 +684,7 @@ def replay_command(study: Study, run: int, scenario: str | None = None) -> str:
     ordered = [s for s in settings if s[0] != FEEDBACK_KEY] + [s for s in settings if s[0] == FEEDBACK_KEY]
     for key, value in ordered:
         if key != SEED_KEY:
-            parts += ["--set", shlex.quote(f"{key}={_toml_value(value)}")]
+            parts += ["--set", shlex.quote(f"{key}={toml_value(value)}")]
     if any(key == SEED_KEY for key, _ in settings) and "measurement" in document:
         parts += ["--seed", str(document["measurement"]["seed"])]
     return " ".join(parts)

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "hinf/enum_names.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
 
 namespace hinf {
 

@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "hinf/angles.hpp"
-#include "hinf/errors.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
 
 namespace hinf {
 

@@ -7,8 +7,8 @@
 
 #include <memory>
 
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
 
 namespace hinf {
 

@@ -10,8 +10,8 @@
 
 #include <array>
 
-#include "hinf/model.hpp"
-#include "hinf/simulation.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/control/simulation.hpp"
 
 namespace hinf {
 

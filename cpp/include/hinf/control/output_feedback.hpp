@@ -32,12 +32,12 @@
 
 #include <cstdint>
 
-#include "hinf/riccati.hpp"
-#include "hinf/controller.hpp"
-#include "hinf/disturbance.hpp"
-#include "hinf/enum_names.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/simulation.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/control/disturbance.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/control/simulation.hpp"
 
 namespace hinf {
 

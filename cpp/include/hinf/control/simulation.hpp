@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "hinf/controller.hpp"
-#include "hinf/disturbance.hpp"
-#include "hinf/enum_names.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/solver_options.hpp"
-#include "hinf/trajectory.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/control/disturbance.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/numerics/solver_options.hpp"
+#include "hinf/control/trajectory.hpp"
 
 namespace hinf {
 

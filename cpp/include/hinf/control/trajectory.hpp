@@ -11,10 +11,10 @@
 #include <memory>
 #include <vector>
 
-#include "hinf/dopri5.hpp"
-#include "hinf/model.hpp"
-#include "hinf/piecewise_polynomial.hpp"
-#include "hinf/signal.hpp"
+#include "hinf/numerics/dopri5.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/numerics/piecewise_polynomial.hpp"
+#include "hinf/numerics/signal.hpp"
 
 namespace hinf {
 

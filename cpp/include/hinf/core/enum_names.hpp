@@ -13,7 +13,7 @@
 #include <string>
 #include <utility>
 
-#include "hinf/errors.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-#include "hinf/scenario.hpp"
+#include "hinf/scenario/scenario.hpp"
 
 namespace hinf {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "hinf/model.hpp"
+#include "hinf/models/model.hpp"
 
 namespace hinf {
 

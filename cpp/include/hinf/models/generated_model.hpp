@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "hinf/generated_function.hpp"
-#include "hinf/model.hpp"
+#include "hinf/numerics/generated_function.hpp"
+#include "hinf/models/model.hpp"
 
 namespace hinf {
 

@@ -23,8 +23,8 @@
 #include <utility>
 #include <vector>
 
-#include "hinf/errors.hpp"
-#include "hinf/types.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/core/types.hpp"
 
 namespace hinf {
 

@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "hinf/controller.hpp"
-#include "hinf/model.hpp"
-#include "hinf/trajectory.hpp"
+#include "hinf/control/controller.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/control/trajectory.hpp"
 
 namespace hinf {
 

@@ -30,7 +30,7 @@
 #include <utility>
 #include <vector>
 
-#include "hinf/model.hpp"
+#include "hinf/models/model.hpp"
 
 namespace hinf {
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "hinf/dense_piece.hpp"
-#include "hinf/solver_options.hpp"
+#include "hinf/numerics/dense_piece.hpp"
+#include "hinf/numerics/solver_options.hpp"
 
 namespace hinf {
 

@@ -21,8 +21,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "hinf/dense_piece.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/numerics/dense_piece.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -47,7 +47,7 @@
 #include <string>
 #include <vector>
 
-#include "hinf/types.hpp"
+#include "hinf/core/types.hpp"
 
 namespace hinf {
 

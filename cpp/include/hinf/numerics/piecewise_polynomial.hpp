@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "hinf/dense_piece.hpp"
+#include "hinf/numerics/dense_piece.hpp"
 
 namespace hinf {
 

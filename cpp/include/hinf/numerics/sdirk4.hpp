@@ -17,8 +17,8 @@
 #include <limits>
 #include <type_traits>
 
-#include "hinf/dopri5.hpp"
-#include "hinf/errors.hpp"
+#include "hinf/numerics/dopri5.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace hinf {
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "hinf/enum_names.hpp"
-#include "hinf/types.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/core/types.hpp"
 
 namespace hinf {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "hinf/enum_names.hpp"
+#include "hinf/core/enum_names.hpp"
 
 namespace hinf {
 

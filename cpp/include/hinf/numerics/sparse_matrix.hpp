@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "hinf/types.hpp"
+#include "hinf/core/types.hpp"
 
 namespace hinf {
 

@@ -7,9 +7,9 @@
 #include <functional>
 #include <type_traits>
 
-#include "hinf/cvode.hpp"
-#include "hinf/dopri5.hpp"
-#include "hinf/solver_options.hpp"
+#include "hinf/numerics/cvode.hpp"
+#include "hinf/numerics/dopri5.hpp"
+#include "hinf/numerics/solver_options.hpp"
 
 namespace hinf {
 

@@ -7,14 +7,14 @@
 #include <optional>
 #include <string>
 
-#include "hinf/analysis.hpp"
-#include "hinf/metrics.hpp"
-#include "hinf/output_feedback.hpp"
-#include "hinf/riccati.hpp"
-#include "hinf/ship.hpp"
-#include "hinf/signal.hpp"
-#include "hinf/simulation.hpp"
-#include "hinf/solver_options.hpp"
+#include "hinf/control/analysis.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/control/output_feedback.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/numerics/signal.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/numerics/solver_options.hpp"
 
 namespace hinf {
 

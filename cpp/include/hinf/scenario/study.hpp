@@ -48,9 +48,9 @@
 #include <string>
 #include <vector>
 
-#include "hinf/enum_names.hpp"
-#include "hinf/metrics.hpp"
-#include "hinf/scenario.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/scenario/scenario.hpp"
 
 namespace hinf {
 

@@ -1,0 +1,12 @@
+"""Analyses across runs: the laws compared (:mod:`~hinf_cpp.analysis.compare`), recovery from
+poor initial conditions (:mod:`~hinf_cpp.analysis.recovery`), attenuation against gamma
+(:mod:`~hinf_cpp.analysis.gamma_sweep`), the vehicle gallery (:mod:`~hinf_cpp.analysis.gallery`)
+and report folders (:mod:`~hinf_cpp.analysis.report`). The last two draw figures (matplotlib)
+and are imported by name.
+"""
+
+from hinf_cpp.analysis.compare import Comparison, Feedback, compare
+from hinf_cpp.analysis.gamma_sweep import GammaSweep, sweep_gamma
+from hinf_cpp.analysis.recovery import RecoveryStudy, recovery_study
+
+__all__ = ["Comparison", "Feedback", "GammaSweep", "RecoveryStudy", "compare", "recovery_study", "sweep_gamma"]
