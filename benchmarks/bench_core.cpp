@@ -12,8 +12,8 @@
 
 #include "hinf/control/controller.hpp"
 #include "hinf/control/output_feedback.hpp"
-#include "hinf/scenario/scenario.hpp"
 #include "hinf/io/scenario_io.hpp"
+#include "hinf/scenario/scenario.hpp"
 
 using namespace hinf;
 

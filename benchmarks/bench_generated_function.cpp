@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "hinf/core/errors.hpp"
-#include "hinf/numerics/generated_function.hpp"
 #include "hinf/models/ship.hpp"
+#include "hinf/numerics/generated_function.hpp"
 
 using namespace hinf;
 

@@ -11,17 +11,18 @@
 #include <string>
 #include <vector>
 
-#include "hinf/core/checks.hpp"
+#include "hinf/control/cascade.hpp"
 #include "hinf/control/controller.hpp"
-#include "hinf/core/errors.hpp"
 #include "hinf/control/metrics.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/control/simulation.hpp"
+#include "hinf/control/trajectory.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
-#include "hinf/control/riccati.hpp"
 #include "hinf/numerics/signal.hpp"
-#include "hinf/control/simulation.hpp"
-#include "hinf/control/trajectory.hpp"
 
 namespace {
 

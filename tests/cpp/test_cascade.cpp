@@ -1,11 +1,11 @@
-// The cascaded baseline law of the ship (ship.hpp, CascadeController), against hand computations
+// The cascaded baseline law of the ship (control/cascade.hpp, CascadeController), against hand computations
 // and closed forms:
 //   * the law at given states, evaluated here from its formulas (paper parameters, where two of
 //     its coefficients vanish, and other parameters, where none does), heading wrapped;
 //   * the yaw loop is an exact feedback linearization: with no disturbance on w3, r_e and psi_e
 //     obey d/dt [psi_e; r_e] = [[0, 1], [-k1, -k2]] [psi_e; r_e] whatever the rest of the state
 //     does, so they follow the matrix exponential of that system;
-//   * on a straight line (r_d = 0) a lateral offset is not corrected (ship.hpp): with psi_e =
+//   * on a straight line (r_d = 0) a lateral offset is not corrected (control/cascade.hpp): with psi_e =
 //     r_e = v = 0 it is an equilibrium of the lateral motion, y stays where it starts, while the
 //     longitudinal error follows a linear second-order law (closed form); the H-infinity law
 //     corrects the same offset;
@@ -20,13 +20,14 @@
 #include <string>
 #include <vector>
 
+#include "hinf/control/cascade.hpp"
 #include "hinf/control/controller.hpp"
-#include "hinf/core/errors.hpp"
 #include "hinf/control/riccati.hpp"
-#include "hinf/models/ship.hpp"
-#include "hinf/numerics/signal.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/numerics/signal.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

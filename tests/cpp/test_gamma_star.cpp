@@ -21,12 +21,12 @@
 #include <vector>
 
 #include "hinf/control/analysis.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/control/trajectory.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/models/model.hpp"
-#include "hinf/control/riccati.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"
-#include "hinf/control/trajectory.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "hinf/core/errors.hpp"
+#include "hinf/core/types.hpp"
 #include "hinf/numerics/cvode.hpp"
 #include "hinf/numerics/dopri5.hpp"
-#include "hinf/core/errors.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
-#include "hinf/core/types.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 

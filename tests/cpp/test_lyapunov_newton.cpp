@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <memory>
 
-#include "hinf/models/model.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/trajectory.hpp"
+#include "hinf/models/model.hpp"
+#include "control/riccati_kernel.hpp"
 #include "numerics/lyapunov_newton.hpp"
 #include "references.hpp"
-#include "control/riccati_kernel.hpp"
 #include "tolerances.hpp"
 
 namespace {

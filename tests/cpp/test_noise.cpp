@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "hinf/core/errors.hpp"
 #include "hinf/control/output_feedback.hpp"
+#include "hinf/core/errors.hpp"
 
 namespace {
 

@@ -15,14 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "hinf/core/errors.hpp"
-#include "hinf/models/model.hpp"
-#include "hinf/scenario/scenario.hpp"
-#include "hinf/io/scenario_io.hpp"
-#include "hinf/models/ship.hpp"
-#include "hinf/scenario/study.hpp"
 #include "hinf/control/trajectory.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/io/scenario_io.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/models/ship.hpp"
 #include "hinf/models/vehicles.hpp"
+#include "hinf/scenario/scenario.hpp"
+#include "hinf/scenario/study.hpp"
 
 namespace {
 

@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
+#include "hinf/control/riccati.hpp"
+#include "hinf/control/trajectory.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
-#include "hinf/control/riccati.hpp"
 #include "hinf/numerics/signal.hpp"
-#include "hinf/control/trajectory.hpp"
-#include "references.hpp"
 #include "control/riccati_kernel.hpp"  // private (cpp/src): the packed right-hand side and Jacobian
+#include "references.hpp"
 #include "tolerances.hpp"
 
 namespace {

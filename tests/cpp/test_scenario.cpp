@@ -21,13 +21,13 @@
 #include <string>
 #include <vector>
 
+#include "hinf/control/simulation.hpp"
 #include "hinf/core/errors.hpp"
+#include "hinf/io/scenario_io.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
-#include "hinf/scenario/scenario.hpp"
-#include "hinf/io/scenario_io.hpp"
-#include "hinf/control/simulation.hpp"
 #include "hinf/models/vehicles.hpp"
+#include "hinf/scenario/scenario.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -12,14 +12,14 @@
 #include <vector>
 
 #include "hinf/control/controller.hpp"
-#include "hinf/core/errors.hpp"
 #include "hinf/control/metrics.hpp"
-#include "hinf/models/model.hpp"
 #include "hinf/control/riccati.hpp"
-#include "hinf/numerics/signal.hpp"
-#include "hinf/models/ship.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/models/model.hpp"
+#include "hinf/models/ship.hpp"
+#include "hinf/numerics/signal.hpp"
 #include "tolerances.hpp"
 
 namespace {

@@ -20,12 +20,12 @@
 #include <thread>
 #include <vector>
 
-#include "hinf/core/errors.hpp"
 #include "hinf/control/metrics.hpp"
-#include "hinf/scenario/scenario.hpp"
+#include "hinf/core/errors.hpp"
 #include "hinf/io/scenario_io.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"
+#include "hinf/scenario/scenario.hpp"
 #include "hinf/scenario/study.hpp"
 
 namespace {
@@ -139,6 +139,58 @@ TEST(Study, RunsWithEqualDesignInputsShareOneDesign) {
   apart.share_designs = false;
   const std::vector<StudyRun> own = hinf::run_study(runs, apart);
   for (std::size_t i = 0; i < own.size(); ++i) EXPECT_EQ(own[i].design, static_cast<int>(i));
+}
+
+// The design inputs are compared as values, whatever the file form: a model without one (a
+// model of the program's own, like one implemented in Python) shares its design with the runs
+// of the same object and with no other; built-in models by their parameters; desired inputs by
+// their definitions, a function of t with nothing.
+class OwnShip final : public hinf::Model {
+ public:
+  std::string name() const override { return "own ship"; }
+  int n() const override { return ship_.n(); }
+  int m() const override { return ship_.m(); }
+  int nw() const override { return ship_.nw(); }
+  void f(double t, const hinf::ConstVecRef& q, hinf::VecRef out) const override { ship_.f(t, q, out); }
+  void dfdq(double t, const hinf::ConstVecRef& q, hinf::MatRef out) const override { ship_.dfdq(t, q, out); }
+  Mat G(double t, const hinf::ConstVecRef& q) const override { return ship_.G(t, q); }
+  Mat D(double t, const hinf::ConstVecRef& q) const override { return ship_.D(t, q); }
+
+ private:
+  hinf::ShipModel ship_;
+};
+
+TEST(Study, DesignInputsAreComparedAsValues) {
+  const auto own = std::make_shared<const OwnShip>();
+  const auto with_model = [](hinf::ModelPtr model) {
+    Scenario s = paper(1);
+    s.model = std::move(model);
+    return s;
+  };
+  hinf::ShipParameters heavier;
+  heavier.d_u = 1.5;
+  Scenario by_function = paper(1);
+  by_function.desired_u = hinf::VectorSignal(2, [](double t) {
+    hinf::Vec u(2);
+    u << 1.0, 0.3 * std::sin(0.2 * t);
+    return u;
+  });
+  Scenario moved = with_model(own);
+  moved.initial_q0[3] = -2.0;
+  const std::vector<Scenario> runs = {
+      with_model(own), moved, with_model(std::make_shared<const OwnShip>()),  // 0-2: own models
+      paper(1), with_model(std::make_shared<const hinf::ShipModel>()),         // 3-4: equal ships
+      with_model(std::make_shared<const hinf::ShipModel>(heavier)),            // 5: another d_u
+      by_function, by_function};                                              // 6-7: u_d a function
+  const std::vector<StudyRun> rows = hinf::run_study(runs);
+  for (const StudyRun& row : rows) EXPECT_EQ(row.status, RunOutcome::Completed) << row.reason;
+  EXPECT_EQ(rows[1].design, rows[0].design);
+  EXPECT_NE(rows[2].design, rows[0].design);
+  EXPECT_EQ(rows[4].design, rows[3].design);
+  EXPECT_NE(rows[3].design, rows[0].design);
+  EXPECT_NE(rows[5].design, rows[3].design);
+  EXPECT_NE(rows[6].design, rows[3].design);
+  EXPECT_NE(rows[7].design, rows[6].design);
 }
 
 TEST(Study, FailuresAreRowsAndTheOtherRunsComplete) {

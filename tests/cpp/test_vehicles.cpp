@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "hinf/core/errors.hpp"
-#include "hinf/models/model.hpp"
 #include "hinf/io/scenario_io.hpp"
+#include "hinf/models/model.hpp"
 #include "hinf/models/vehicles.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"

@@ -4,13 +4,13 @@
 #include <memory>
 #include <random>
 
+#include "hinf/control/controller.hpp"
 #include "hinf/core/angles.hpp"
 #include "hinf/core/checks.hpp"
-#include "hinf/control/controller.hpp"
-#include "hinf/numerics/cvode.hpp"
-#include "hinf/numerics/dopri5.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/core/resources.hpp"
+#include "hinf/numerics/cvode.hpp"
+#include "hinf/numerics/dopri5.hpp"
 #include "hinf/numerics/sdirk4.hpp"
 #include "hinf/numerics/sparse_matrix.hpp"
 #include "control/riccati_kernel.hpp"

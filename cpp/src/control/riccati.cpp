@@ -5,15 +5,15 @@
 #include <limits>
 
 #include "hinf/core/checks.hpp"
-#include "hinf/numerics/cvode.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/core/resources.hpp"
+#include "hinf/numerics/cvode.hpp"
 #include "hinf/numerics/stepper.hpp"
+#include "control/riccati_kernel.hpp"
 #include "numerics/definiteness.hpp"
+#include "numerics/extremum.hpp"
 #include "numerics/lyapunov_newton.hpp"
 #include "numerics/size_dispatch.hpp"
-#include "numerics/extremum.hpp"
-#include "control/riccati_kernel.hpp"
 #include "numerics/symmetric_extremes.hpp"
 
 namespace hinf {

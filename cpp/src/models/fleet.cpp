@@ -103,4 +103,9 @@ std::vector<int> FleetModel::position_indices() const {
   return out;
 }
 
+bool FleetModel::same_as(const Model& other) const {
+  const auto* fleet = dynamic_cast<const FleetModel*>(&other);
+  return fleet != nullptr && fleet->count_ == count_ && member_->same_as(*fleet->member_);
+}
+
 }  // namespace hinf

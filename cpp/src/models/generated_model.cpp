@@ -203,4 +203,10 @@ Mat GeneratedModel::C(double t) const {
   return out;
 }
 
+bool GeneratedModel::same_as(const Model& other) const {
+  const auto* generated = dynamic_cast<const GeneratedModel*>(&other);
+  return generated != nullptr && generated->library_path() == library_path() &&
+         generated->parameter_names_ == parameter_names_ && generated->p_ == p_;
+}
+
 }  // namespace hinf

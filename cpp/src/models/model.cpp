@@ -1,6 +1,7 @@
 #include "hinf/models/model.hpp"
 
 #include <cmath>
+#include <typeinfo>
 
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
@@ -45,6 +46,10 @@ void append_matrix_parameters(std::vector<std::pair<std::string, double>>& param
                               const Mat& M) {
   for (Eigen::Index i = 0; i < M.rows(); ++i)
     for (Eigen::Index j = 0; j < M.cols(); ++j) parameters.emplace_back(str_cat(name, "[", i, "][", j, "]"), M(i, j));
+}
+
+bool same_type_and_parameters(const Model& a, const Model& b) {
+  return &a == &b || (typeid(a) == typeid(b) && a.named_parameters() == b.named_parameters());
 }
 
 std::vector<std::string> Model::numbered_state_names(int n) {

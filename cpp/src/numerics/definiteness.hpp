@@ -18,8 +18,8 @@
 #include <cmath>
 #include <vector>
 
-#include "hinf/numerics/dense_piece.hpp"
 #include "hinf/core/types.hpp"
+#include "hinf/numerics/dense_piece.hpp"
 
 namespace hinf::detail {
 

@@ -295,4 +295,17 @@ Vec VectorSignal::operator()(double t) const {
   return out;
 }
 
+bool operator==(const Harmonic& a, const Harmonic& b) {
+  return a.amplitude == b.amplitude && a.omega == b.omega && a.phase == b.phase && a.cosine == b.cosine;
+}
+
+bool operator==(const Signal& a, const Signal& b) {
+  return a.offset() == b.offset() && a.harmonics() == b.harmonics() && a.table_t() == b.table_t() &&
+         a.table_values() == b.table_values() && (!a.is_table() || a.interpolation() == b.interpolation());
+}
+
+bool VectorSignal::same_signals(const VectorSignal& other) const {
+  return !is_function() && !other.is_function() && dim_ == other.dim_ && channels_ == other.channels_;
+}
+
 }  // namespace hinf

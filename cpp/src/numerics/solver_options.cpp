@@ -17,4 +17,9 @@ void SolverOptions::validate() const {
           escape_norm);
 }
 
+bool operator==(const SolverOptions& a, const SolverOptions& b) {
+  return a.method == b.method && a.rtol == b.rtol && a.atol == b.atol && a.max_steps == b.max_steps &&
+         a.escape_norm == b.escape_norm && a.newton_systems == b.newton_systems;
+}
+
 }  // namespace hinf

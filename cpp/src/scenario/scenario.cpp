@@ -1,16 +1,15 @@
 #include "hinf/scenario/scenario.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 
-#include "hinf/core/checks.hpp"
 #include "hinf/control/controller.hpp"
-#include "hinf/core/errors.hpp"
 #include "hinf/control/output_feedback.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
 #include "hinf/models/ship.hpp"
 #include "scenario/scenario_run.hpp"
 
@@ -193,13 +192,6 @@ double design_gamma(const Scenario& s) {
   return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
 }
 
-// The exact text of a double (for design_key): hexadecimal floating point.
-std::string exact(double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%a", value);
-  return text;
-}
-
 }  // namespace
 
 ScenarioDesign design_scenario(const Scenario& s) {
@@ -223,30 +215,38 @@ ScenarioDesign design_scenario(const Scenario& s) {
   return design;
 }
 
-std::optional<std::string> design_key(const Scenario& s) {
-  Scenario key = s;
-  key.name.clear();
-  key.description.clear();
-  key.gamma = design_gamma(s);
-  key.law = Law::Hinf;
-  key.kappa = Signal(1.0);
-  key.cascade = CascadeGains{};
-  key.disturbance = VectorSignal::zeros(s.model->nw());
-  key.worst_case = false;
-  key.initial_q0 = s.desired_q0;
-  key.measurement.reset();
-  key.output_dt = Scenario{}.output_dt;
-  key.divergence_factor = Scenario{}.divergence_factor;
-  key.plant.reset();
-  std::string text;
-  try {
-    text = scenario_toml(key);
-  } catch (const InputError&) {
-    return std::nullopt;  // no file form
-  }
-  const bool game = s.worst_case && s.law == Law::Lqr;
-  return str_cat(text, "# game gamma ", game ? exact(s.gamma) : std::string("none"), "\n# escape_norm ",
-                 exact(s.solver.escape_norm), "\n");
+namespace {
+
+// The gamma of the game design of [disturbance] worst_case with the lqr law, if there is one.
+std::optional<double> game_gamma(const Scenario& s) {
+  if (s.worst_case && s.law == Law::Lqr) return s.gamma;
+  return std::nullopt;
+}
+
+bool same_matrix(const Mat& a, const Mat& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() && a == b;
+}
+
+void combine(std::size_t& seed, double value) {
+  seed ^= std::hash<double>{}(value) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+}
+
+}  // namespace
+
+bool same_design(const Scenario& a, const Scenario& b) {
+  return a.model->same_as(*b.model) && a.t0 == b.t0 && a.tf == b.tf && same_matrix(a.desired_q0, b.desired_q0) &&
+         a.desired_u.same_signals(b.desired_u) && design_gamma(a) == design_gamma(b) && same_matrix(a.Q, b.Q) &&
+         same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b);
+}
+
+std::size_t design_hash(const Scenario& s) {
+  std::size_t seed = std::hash<std::string>{}(s.model->name());
+  for (const auto& [name, value] : s.model->named_parameters()) combine(seed, value);
+  for (double value : {s.t0, s.tf, design_gamma(s), s.solver.rtol, s.solver.atol}) combine(seed, value);
+  for (Eigen::Index i = 0; i < s.desired_q0.size(); ++i) combine(seed, s.desired_q0[i]);
+  for (const Mat* M : {&s.Q, &s.Qf})
+    for (Eigen::Index i = 0; i < M->size(); ++i) combine(seed, M->data()[i]);
+  return seed;
 }
 
 RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise,

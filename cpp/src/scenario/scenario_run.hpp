@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <exception>
 #include <optional>
 #include <string>
@@ -46,13 +47,15 @@ ScenarioDesign design_scenario(const Scenario& s);
 RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise,
                             bool sigma_eigenvalues = true);
 
-// A text equal for two resolved, validated scenarios exactly when design_scenario gives them
-// the same design: the scenario file (scenario_toml) of a copy with everything that is not a
-// design input set to fixed values (name, description, kappa, cascade gains, disturbance,
-// initial state, measurement, output, divergence factor, plant; the law only through the
-// gamma of its design), followed by what the file does not hold (the gamma of the worst-case
-// game design, solver.escape_norm). nullopt when the scenario has no file form (a model or a signal
-// implemented in Python): such a scenario shares no design.
-std::optional<std::string> design_key(const Scenario& s);
+// Whether design_scenario gives two resolved, validated scenarios the same design: the design
+// inputs are equal as values. They are the model (Model::same_as), t0, tf, desired q0 and u_d
+// (a function of t equals nothing), Q, Qf, the [solver] options and the gamma of the law's
+// design (inf for lqr), and with [disturbance] worst_case under the lqr law also the gamma of
+// the game design. Everything else may differ (initial state, disturbance, kappa, cascade gains,
+// measurement, output, divergence factor, plant).
+bool same_design(const Scenario& a, const Scenario& b);
+// A hash of the design inputs, equal for scenarios with the same design (same_design): for
+// grouping many scenarios without comparing each pair.
+std::size_t design_hash(const Scenario& s);
 
 }  // namespace hinf::detail

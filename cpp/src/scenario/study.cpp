@@ -6,12 +6,11 @@
 #include <condition_variable>
 #include <exception>
 #include <limits>
-#include <map>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <system_error>
 #include <thread>
+#include <unordered_map>
 
 #include "hinf/core/errors.hpp"
 #include "scenario/scenario_run.hpp"
@@ -142,11 +141,11 @@ std::vector<StudyRun> run_study(const std::vector<Scenario>& scenarios, const St
     progress(now, total);
   };
 
-  // 1. Every scenario resolved and validated (an invalid one is a finished row), and its
-  // design key.
+  // 1. Every scenario resolved and validated (an invalid one is a finished row), and the hash
+  // of its design inputs.
   std::vector<Scenario> resolved(total);
   std::vector<char> valid(total, 0);
-  std::vector<std::optional<std::string>> keys(total);
+  std::vector<std::size_t> hashes(total, 0);
   parallel_for(
       total, threads,
       [&](std::size_t i) {
@@ -157,7 +156,7 @@ std::vector<StudyRun> run_study(const std::vector<Scenario>& scenarios, const St
         try {
           resolved[i] = scenarios[i].resolved();
           resolved[i].validate();
-          if (options.share_designs) keys[i] = detail::design_key(resolved[i]);
+          hashes[i] = detail::design_hash(resolved[i]);
           valid[i] = 1;
         } catch (...) {
           record_failure(row, std::current_exception());
@@ -166,23 +165,26 @@ std::vector<StudyRun> run_study(const std::vector<Scenario>& scenarios, const St
       },
       poll);
 
-  // 2. The designs: one per distinct key (in order of first use), one per run without a key.
+  // 2. The designs: one per distinct set of design inputs (detail::same_design; in order of
+  // first use), or one per run when designs are not shared.
   std::vector<int> design_of(total, -1);
   std::vector<std::unique_ptr<DesignSlot>> slots;
   {
-    std::map<std::string, int> by_key;
+    std::unordered_multimap<std::size_t, int> by_hash;  // the slots with each hash
     for (std::size_t i = 0; i < total; ++i) {
       if (!valid[i]) continue;
       int index = -1;
-      if (keys[i]) {
-        const auto found = by_key.find(*keys[i]);
-        if (found != by_key.end()) index = found->second;
-        else by_key.emplace(*keys[i], index = static_cast<int>(slots.size()));
+      if (options.share_designs) {
+        const auto [first, last] = by_hash.equal_range(hashes[i]);
+        for (auto it = first; it != last && index < 0; ++it)
+          if (detail::same_design(resolved[slots[static_cast<std::size_t>(it->second)]->first_run], resolved[i]))
+            index = it->second;
       }
-      if (index < 0) index = static_cast<int>(slots.size());
-      if (index == static_cast<int>(slots.size())) {
+      if (index < 0) {
+        index = static_cast<int>(slots.size());
         slots.push_back(std::make_unique<DesignSlot>());
         slots.back()->first_run = i;
+        if (options.share_designs) by_hash.emplace(hashes[i], index);
       }
       DesignSlot& slot = *slots[static_cast<std::size_t>(index)];
       ++slot.users;

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "hinf/core/enum_names.hpp"
 #include "hinf/control/riccati.hpp"
+#include "hinf/core/enum_names.hpp"
 #include "hinf/numerics/signal.hpp"
 
 namespace hinf {

@@ -5,9 +5,9 @@
 #include <memory>
 #include <string>
 
+#include "hinf/control/riccati.hpp"
 #include "hinf/core/angles.hpp"
 #include "hinf/core/errors.hpp"
-#include "hinf/control/riccati.hpp"
 #include "hinf/numerics/signal.hpp"
 
 namespace hinf {

@@ -10,8 +10,8 @@
 
 #include <array>
 
-#include "hinf/models/model.hpp"
 #include "hinf/control/simulation.hpp"
+#include "hinf/models/model.hpp"
 
 namespace hinf {
 

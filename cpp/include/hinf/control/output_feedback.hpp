@@ -32,12 +32,12 @@
 
 #include <cstdint>
 
-#include "hinf/control/riccati.hpp"
 #include "hinf/control/controller.hpp"
 #include "hinf/control/disturbance.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/control/simulation.hpp"
 #include "hinf/core/enum_names.hpp"
 #include "hinf/numerics/signal.hpp"
-#include "hinf/control/simulation.hpp"
 
 namespace hinf {
 

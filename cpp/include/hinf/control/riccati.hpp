@@ -24,10 +24,10 @@
 #include <string>
 #include <vector>
 
+#include "hinf/control/trajectory.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
 #include "hinf/numerics/solver_options.hpp"
 #include "hinf/numerics/sparse_matrix.hpp"
-#include "hinf/control/trajectory.hpp"
 
 namespace hinf {
 

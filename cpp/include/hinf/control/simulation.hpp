@@ -19,11 +19,11 @@
 
 #include "hinf/control/controller.hpp"
 #include "hinf/control/disturbance.hpp"
-#include "hinf/core/enum_names.hpp"
 #include "hinf/control/riccati.hpp"
+#include "hinf/control/trajectory.hpp"
+#include "hinf/core/enum_names.hpp"
 #include "hinf/numerics/signal.hpp"
 #include "hinf/numerics/solver_options.hpp"
-#include "hinf/control/trajectory.hpp"
 
 namespace hinf {
 

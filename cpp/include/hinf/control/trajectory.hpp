@@ -11,8 +11,8 @@
 #include <memory>
 #include <vector>
 
-#include "hinf/numerics/dopri5.hpp"
 #include "hinf/models/model.hpp"
+#include "hinf/numerics/dopri5.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
 #include "hinf/numerics/signal.hpp"
 

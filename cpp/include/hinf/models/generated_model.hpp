@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "hinf/numerics/generated_function.hpp"
 #include "hinf/models/model.hpp"
+#include "hinf/numerics/generated_function.hpp"
 
 namespace hinf {
 
@@ -65,6 +65,8 @@ class GeneratedModel final : public Model {
   std::vector<std::string> state_names() const override { return structure_.state_names; }
   std::vector<int> position_indices() const override { return structure_.position_indices; }
   int heading_index() const override { return structure_.heading_index; }
+  // The same library (by its path) with the same parameter values.
+  bool same_as(const Model& other) const override;
 
  private:
   // Evaluates `function` with the inputs (each a pointer to its dense values) into `out`

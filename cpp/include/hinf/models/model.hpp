@@ -91,6 +91,12 @@ class Model {
   // records them.
   virtual std::vector<std::pair<std::string, double>> named_parameters() const { return {}; }
 
+  // True when `other` is the same model: the same equations with the same parameters, so that
+  // the designs along one desired trajectory are the same for both (run_study shares designs
+  // by it). The default is the model itself only (a model that cannot tell, such as one
+  // implemented in Python); the built-in models compare their type and named_parameters().
+  virtual bool same_as(const Model& other) const { return this == &other; }
+
   // "q0", "q1", ..., the default state_names().
   static std::vector<std::string> numbered_state_names(int n);
 };
@@ -107,6 +113,10 @@ std::vector<std::pair<std::string, double>> named_parameters_of(
   for (const auto& [key, member] : keys) named.emplace_back(key, p.*member);
   return named;
 }
+
+// Model::same_as of a model that its type and named_parameters() describe completely (the
+// built-in models): the same dynamic type and equal named parameters.
+bool same_type_and_parameters(const Model& a, const Model& b);
 
 using ModelPtr = std::shared_ptr<const Model>;
 
@@ -173,6 +183,7 @@ class LinearModel final : public Model {
   const Mat& measurement_C() const { return C_; }
   // A[i][j], B[i][j], D[i][j] (process D), C[i][j]: the entries of the scenario file's matrices.
   std::vector<std::pair<std::string, double>> named_parameters() const override;
+  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
 
  private:
   Mat A_, B_, D_, C_;

@@ -70,6 +70,7 @@ class FossenVessel final : public Model {
   const FossenVesselParameters& parameters() const { return p_; }
   // M[i][j] and D[i][j], the entries of [model] M and D.
   std::vector<std::pair<std::string, double>> named_parameters() const override;
+  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
 
   std::string name() const override { return "fossen_vessel"; }
   int n() const override { return 6; }
@@ -115,6 +116,7 @@ class Hovercraft final : public Model {
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kHovercraftParameterKeys);
   }
+  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
 
   std::string name() const override { return "hovercraft"; }
   int n() const override { return 6; }
@@ -163,6 +165,7 @@ class PlanarVtol final : public Model {
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kPlanarVtolParameterKeys);
   }
+  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
 
   std::string name() const override { return "pvtol"; }
   int n() const override { return 6; }
@@ -233,6 +236,7 @@ class Auv final : public Model {
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kAuvParameterKeys);
   }
+  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
 
   std::string name() const override { return "auv"; }
   int n() const override { return 6; }

@@ -21,8 +21,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "hinf/numerics/dense_piece.hpp"
 #include "hinf/core/errors.hpp"
+#include "hinf/numerics/dense_piece.hpp"
 
 namespace hinf {
 

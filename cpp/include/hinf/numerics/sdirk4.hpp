@@ -17,8 +17,8 @@
 #include <limits>
 #include <type_traits>
 
-#include "hinf/numerics/dopri5.hpp"
 #include "hinf/core/errors.hpp"
+#include "hinf/numerics/dopri5.hpp"
 
 namespace hinf {
 

@@ -45,6 +45,8 @@ struct Harmonic {
   double phase = 0.0;  // rad
   bool cosine = false; // false: sin(omega t + phase), true: cos(omega t + phase)
 };
+bool operator==(const Harmonic& a, const Harmonic& b);
+inline bool operator!=(const Harmonic& a, const Harmonic& b) { return !(a == b); }
 
 class Signal {
  public:
@@ -91,6 +93,10 @@ class Signal {
   std::vector<std::array<double, 4>> pieces_;
 };
 
+// Equal definitions: the same offset and harmonics, or the same table and interpolation.
+bool operator==(const Signal& a, const Signal& b);
+inline bool operator!=(const Signal& a, const Signal& b) { return !(a == b); }
+
 // A warning when a table's interpolant overshoots the range of its values (see
 // Signal::overshoot), naming the signal `name`; empty otherwise.
 std::string overshoot_warning(const Signal& signal, const std::string& name);
@@ -111,6 +117,9 @@ class VectorSignal {
   const std::vector<Signal>& channels() const { return channels_; }
   void eval(double t, double* out) const;
   Vec operator()(double t) const;
+  // True when both are channels with equal signals. A function of t equals no signal, itself
+  // included: functions cannot be compared.
+  bool same_signals(const VectorSignal& other) const;
 
  private:
   int dim_ = 0;

@@ -56,5 +56,7 @@ struct SolverOptions {
 
   void validate() const;  // InputError naming the option and its admissible range
 };
+bool operator==(const SolverOptions& a, const SolverOptions& b);
+inline bool operator!=(const SolverOptions& a, const SolverOptions& b) { return !(a == b); }
 
 }  // namespace hinf

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "hinf/control/analysis.hpp"
+#include "hinf/control/cascade.hpp"
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/riccati.hpp"
-#include "hinf/models/ship.hpp"
-#include "hinf/numerics/signal.hpp"
 #include "hinf/control/simulation.hpp"
+#include "hinf/numerics/signal.hpp"
 #include "hinf/numerics/solver_options.hpp"
 
 namespace hinf {
@@ -34,7 +34,7 @@ struct MeasurementSpec {
 enum class Law {
   Hinf,    // the paper's H-infinity law (17)/(18), and (34) with measurements
   Lqr,     // the same design at gamma = inf; with [measurement] also the Kalman-Bucy filter
-  Cascade  // the cascaded ship baseline (ship.hpp); with [measurement] on the H-infinity estimate
+  Cascade  // the cascaded ship baseline (control/cascade.hpp); with [measurement] on the H-infinity estimate
 };
 template <>
 struct EnumNames<Law> {

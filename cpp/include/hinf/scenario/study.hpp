@@ -23,8 +23,9 @@
 // disturbance, the plant ([plant]), kappa, the cascade gains, [measurement] (seed, sigma, N,
 // Q0, eta: the filter Riccati equation is integrated with each closed loop), [output], the
 // divergence factor.
-// The comparison is made on the scenario-file text of the design inputs, so a scenario whose
-// model or signals are implemented in Python (no file form) gets a design of its own.
+// The inputs are compared as values: models by Model::same_as (a built-in model by its type
+// and parameters; a model implemented in Python only with itself, the same object), signals by
+// their definitions (a function of t, such as a Python callable, equals no other signal).
 // Distinct designs used by several runs are computed first, in parallel; a design used by a
 // single run is computed by that run's thread, and a shared design is released once its last
 // run is done.
@@ -48,8 +49,8 @@
 #include <string>
 #include <vector>
 
-#include "hinf/core/enum_names.hpp"
 #include "hinf/control/metrics.hpp"
+#include "hinf/core/enum_names.hpp"
 #include "hinf/scenario/scenario.hpp"
 
 namespace hinf {
