@@ -12,7 +12,7 @@
 
 #include "hinf/control/controller.hpp"
 #include "hinf/control/output_feedback.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/scenario/scenario.hpp"
 
 using namespace hinf;

@@ -15,7 +15,9 @@
 #include <string>
 
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/files.hpp"
+#include "hinf/io/results.hpp"
+#include "hinf/io/scenario_file.hpp"
 
 namespace {
 

@@ -42,7 +42,9 @@
 #include "hinf/core/checks.hpp"
 #include "hinf/core/enum_names.hpp"
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/model_kinds.hpp"
+#include "hinf/io/results.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/models/fleet.hpp"
 #include "hinf/models/generated_model.hpp"
 #include "hinf/models/model.hpp"
@@ -1995,7 +1997,7 @@ a scenario whose model or signals are implemented in Python does not pickle (Typ
   m.def("scenario_noise", &scenario_noise, py::arg("scenario"),
         "The seeded standard normal noise samples of a scenario with [measurement]");
 
-  // ---- scenario and results files (scenario_io.hpp) ----
+  // ---- scenario and results files (io/scenario_file.hpp, io/results.hpp) ----
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
         "The one scenario reader (the one hinf-sim uses): same checks, same messages");
   m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), "Reads a scenario file (parse_scenario_toml)");

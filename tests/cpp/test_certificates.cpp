@@ -29,7 +29,7 @@
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"

@@ -30,7 +30,7 @@
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"

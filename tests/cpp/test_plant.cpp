@@ -17,7 +17,8 @@
 
 #include "hinf/control/trajectory.hpp"
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/results.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/models/vehicles.hpp"

@@ -23,7 +23,9 @@
 
 #include "hinf/control/simulation.hpp"
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/files.hpp"
+#include "hinf/io/results.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/models/vehicles.hpp"

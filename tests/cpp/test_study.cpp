@@ -22,7 +22,7 @@
 
 #include "hinf/control/metrics.hpp"
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/scenario_file.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"
 #include "hinf/scenario/scenario.hpp"

@@ -5,12 +5,15 @@
 
 #include <cmath>
 #include <functional>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "hinf/core/errors.hpp"
-#include "hinf/io/scenario_io.hpp"
+#include "hinf/io/model_kinds.hpp"
+#include "hinf/io/scenario_file.hpp"
+#include "hinf/scenario/scenario.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/vehicles.hpp"
 #include "references.hpp"
@@ -466,6 +469,95 @@ TEST(VehicleScenarios, BadModelSectionsNameTheKey) {
       << message;
   message = reader_error("kind = \"hovercraft\"\nd = nan");
   EXPECT_TRUE(contains(message, "[model] d: expected a finite number")) << message;
+}
+
+// ---- a vehicle of one's own: one file (this block) and one registration line ----
+
+// A unicycle whose speed has linear drag, q = [x, y, psi, v], u = [thrust, yaw rate]:
+//     dx/dt = v cos(psi),  dy/dt = v sin(psi),  dpsi/dt = u2,  dv/dt = -d v + u1 + w1.
+struct UnicycleParameters {
+  double d = 0.5;  // drag (1/s), > 0
+};
+inline constexpr std::array<std::pair<const char*, double UnicycleParameters::*>, 1> kUnicycleParameterKeys{
+    {{"d", &UnicycleParameters::d}}};
+
+class Unicycle final : public hinf::Model {
+ public:
+  explicit Unicycle(const UnicycleParameters& p = {}) : p_(p) {
+    hinf::require(p_.d > 0.0, "Unicycle: the drag d must be > 0, got ", p_.d);
+  }
+  std::string name() const override { return "unicycle"; }
+  int n() const override { return 4; }
+  int m() const override { return 2; }
+  int nw() const override { return 1; }
+  void f(double, const hinf::ConstVecRef& q, hinf::VecRef out) const override {
+    out << q[3] * std::cos(q[2]), q[3] * std::sin(q[2]), 0.0, -p_.d * q[3];
+  }
+  void dfdq(double, const hinf::ConstVecRef& q, hinf::MatRef J) const override {
+    J.setZero();
+    J(0, 2) = -q[3] * std::sin(q[2]);
+    J(0, 3) = std::cos(q[2]);
+    J(1, 2) = q[3] * std::cos(q[2]);
+    J(1, 3) = std::sin(q[2]);
+    J(3, 3) = -p_.d;
+  }
+  Mat G(double, const hinf::ConstVecRef&) const override {
+    Mat G = Mat::Zero(4, 2);
+    G(3, 0) = G(2, 1) = 1.0;
+    return G;
+  }
+  Mat D(double, const hinf::ConstVecRef&) const override {
+    Mat D = Mat::Zero(4, 1);
+    D(3, 0) = 1.0;
+    return D;
+  }
+  std::vector<std::string> state_names() const override { return {"x", "y", "psi", "v"}; }
+  std::vector<int> position_indices() const override { return {0, 1}; }
+  int heading_index() const override { return 2; }
+  std::vector<std::pair<std::string, double>> named_parameters() const override {
+    return hinf::named_parameters_of(p_, kUnicycleParameterKeys);
+  }
+  bool same_as(const hinf::Model& other) const override { return hinf::same_type_and_parameters(*this, other); }
+
+ private:
+  UnicycleParameters p_;
+};
+
+TEST(VehicleScenarios, AVehicleOfOnesOwnIsOneFileAndOneRegistrationLine) {
+  hinf::register_model_kind(hinf::parameter_kind<Unicycle, UnicycleParameters>("unicycle", kUnicycleParameterKeys));
+
+  // Along a circle of radius 10 at speed 1 (thrust d v = 0.5 holds v = 1; yaw rate 0.1), from
+  // half a metre aside with a heading error.
+  const std::string text = R"(
+[model]
+kind = "unicycle"
+d = 0.5
+[horizon]
+tf = 30.0
+[desired]
+q0 = [0.0, 0.0, 0.0, 1.0]
+u1 = 0.5
+u2 = 0.1
+[controller]
+gamma = 10.0
+[initial]
+q0 = [0.0, 0.5, 0.3, 1.0]
+)";
+  const hinf::Scenario scenario = hinf::parse_scenario_toml(text, "unicycle.toml");
+  ASSERT_NE(dynamic_cast<const Unicycle*>(scenario.model.get()), nullptr);
+  const hinf::RunResult result = hinf::run_scenario(scenario);
+  EXPECT_EQ(result.simulation.status, hinf::RunStatus::Completed);
+  EXPECT_LT(result.metrics.final_position_error, 0.05 * 0.5);  // the 0.5 m offset decays
+  // Written back as its kind, with its parameter; read back to the same model.
+  const std::string written = hinf::scenario_toml(scenario);
+  EXPECT_TRUE(contains(written, "kind = \"unicycle\"") && contains(written, "d = 0.5")) << written;
+  EXPECT_TRUE(hinf::parse_scenario_toml(written, "written.toml").model->same_as(*scenario.model));
+  // The kind is in the table: its key is named as its own, its checks reach the file.
+  EXPECT_TRUE(contains(reader_error("kind = \"ship\"\nd = 0.5"), "is a key of kind = \"hovercraft\" or kind = \"unicycle\""));
+  EXPECT_TRUE(contains(reader_error("kind = \"unicycle\"\nd = -1.0"), "[model] Unicycle: the drag d must be > 0"));
+  // A name is registered once.
+  EXPECT_THROW(hinf::register_model_kind(hinf::parameter_kind<Unicycle, UnicycleParameters>("unicycle", kUnicycleParameterKeys)),
+               hinf::InputError);
 }
 
 }  // namespace

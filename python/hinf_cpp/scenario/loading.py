@@ -1,7 +1,7 @@
 """Scenario files (TOML, ``docs/scenarios.md``), read by the one C++ reader.
 
 ``hinf-sim`` and this package read scenarios with the same C++ code
-(``cpp/src/io/scenario_io.cpp``), so both accept and reject exactly the same files, with the
+(``cpp/src/io/scenario_reader.cpp``), so both accept and reject exactly the same files, with the
 same messages. A dictionary (the parsed form of a file) is written back to TOML text and read by
 the same reader. A file whose [desired] gives waypoints or a path is planned first
 (:mod:`hinf_cpp.scenario.planned`).

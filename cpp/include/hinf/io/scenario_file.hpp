@@ -1,9 +1,12 @@
-// Scenario files (TOML, docs/scenarios.md) and the results files (JSON, CSV; docs/results.md).
+// Scenario files (TOML; docs/scenarios.md is the reference): the one reader and the writer.
+// Model sections ([model], [plant]) are read and written through the table of model kinds
+// (io/model_kinds.hpp).
 #pragma once
 
-#include <functional>
 #include <string>
 
+#include "hinf/models/model.hpp"
+#include "hinf/numerics/signal.hpp"
 #include "hinf/scenario/scenario.hpp"
 
 namespace hinf {
@@ -26,13 +29,6 @@ Scenario load_scenario_toml(const std::string& path);
 // equal scenario (numbers written exactly). A model or signal that has no file form (a model
 // or a signal implemented in Python) is an InputError naming it.
 std::string scenario_toml(const Scenario& scenario);
-// [model] kind = "python", callable = "module:function" names a model made by Python code
-// (Python-only, docs/scenarios.md). The Python package installs the hook that makes it; without
-// one (hinf-sim) such a scenario is an InputError that says to run it with hinf-cpp. The hook
-// gets the callable's name and the scenario's source (for relative file paths).
-using PythonModelHook = std::function<ModelPtr(const std::string& callable, const std::string& source)>;
-void set_python_model_hook(PythonModelHook hook);
-
 // Whether a scenario document's [desired] gives waypoints, a path or plan options (the planner
 // of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
 // (an InputError for what it refuses).
@@ -44,22 +40,5 @@ ModelPtr parse_model_toml(const std::string& text, const std::string& source);
 // A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 // scenario), e.g. "kappa = { offset = 1.0 }".
 Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source);
-
-// The results file of scenarios.md (one JSON object, matrices as nested row-major lists,
-// non-finite numbers as null).
-std::string results_json(const RunResult& result, int indent = 2);
-// The time series on the output grid, one row per time, with a header line: t, the states,
-// the desired states (suffix _d), u1.., u1_d.., w1..; with output feedback also the estimated
-// errors (suffix _e_hat), the measurements y1.., sigma_min_eig, sigma_max_eig, rho_sigma_z.
-std::string results_csv(const RunResult& result);
-
-// Checks, before any computation, that an output file can be written at path: not empty,
-// not a directory, and the nearest existing folder above it is a writable folder (missing
-// folders are created by write_text_file). InputError naming the path otherwise.
-void check_output_path(const std::string& path);
-// Writes a file whole or not at all: a temporary file in the same folder, renamed over path
-// once complete (an existing device or pipe, such as /dev/stdout, is written in place).
-// Creates missing folders. InputError naming the path on any failure (a full disk included).
-void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace hinf

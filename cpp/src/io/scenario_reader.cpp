@@ -1,0 +1,210 @@
+#include "hinf/io/scenario_file.hpp"
+
+#include <cstdint>
+#include <string>
+
+#include "hinf/core/errors.hpp"
+#include "hinf/io/files.hpp"
+#include "io/model_sections.hpp"
+#include "io/toml_table.hpp"
+
+namespace hinf {
+
+using detail::section;
+using detail::TableReader;
+using detail::type_name;
+
+namespace {
+
+// [plant]: a model section with the keys of [model]. Its kind defaults to [model]'s; with the
+// same kind, a key not given is [model]'s (for kind = "casadi", each name of [plant.parameters]
+// not given is [model.parameters]'), so only what differs need be written; with another kind,
+// a key not given is that kind's default. Messages name [plant].
+ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const std::string& source) {
+  const toml::node* kind = plant.get("kind");
+  const bool same_kind = kind == nullptr || (kind->is_string() && model.get("kind")->is_string() &&
+                                             kind->as_string()->get() == model.get("kind")->as_string()->get());
+  if (!same_kind) return detail::read_model_section(plant, source, "[plant]");
+  toml::table merged = model;
+  for (auto&& [key, value] : plant) {
+    toml::table* base_parameters = merged.get_as<toml::table>("parameters");
+    if (key.str() == "parameters" && value.is_table() && base_parameters != nullptr) {
+      for (auto&& [name, number] : *value.as_table()) base_parameters->insert_or_assign(name, number);
+    } else {
+      merged.insert_or_assign(key, value);
+    }
+  }
+  return detail::read_model_section(merged, source, "[plant]");
+}
+
+std::string file_stem(const std::string& path) {
+  std::string name = path.substr(path.find_last_of('/') + 1);
+  const std::size_t dot = name.find_last_of('.');
+  return dot == std::string::npos ? name : name.substr(0, dot);
+}
+
+}  // namespace
+
+Scenario parse_scenario_toml(const std::string& text, const std::string& source) {
+  const toml::table root = detail::parse_toml(text, source);
+  TableReader top(root, "top level", source,
+                  {"name", "description", "model", "plant", "horizon", "desired", "controller",
+                   "disturbance", "initial", "measurement", "solver", "output"});
+  Scenario s;
+  s.name = top.string_or("name", file_stem(source));
+  s.description = top.string_or("description", "");
+
+  const toml::table& model = *section(root, "model", source, true);
+  s.model = detail::read_model_section(model, source, "[model]");
+  const int n = s.model->n(), m = s.model->m(), nw = s.model->nw();
+  if (const toml::table* plant = section(root, "plant", source, false)) s.plant = parse_plant(*plant, model, source);
+
+  {
+    TableReader r(*section(root, "horizon", source, true), "[horizon]", source, {"t0", "tf"});
+    s.t0 = r.number_or("t0", 0.0);
+    s.tf = r.number("tf");
+  }
+  if (s.plant) {
+    try {
+      check_plant(*s.model, *s.plant, s.t0);
+    } catch (const InputError& e) {
+      throw InputError(str_cat(source, ": ", e.what()));
+    }
+  }
+  {
+    std::vector<std::string> known{"q0"};
+    for (int i = 1; i <= m; ++i) known.push_back(str_cat("u", i));
+    const toml::table& desired = *section(root, "desired", source, true);
+    // Planning (docs/planning.md) is the Python package's: it replaces these keys by the planned
+    // inputs before the scenario reaches this reader.
+    for (const char* key : {"waypoints", "path", "plan"})
+      if (desired.contains(key))
+        throw InputError(str_cat(source, ": [desired] ", key, ": a desired trajectory planned from waypoints or a "
+                                 "path needs the planner of the Python package (docs/planning.md): run this file "
+                                 "with hinf-cpp run, or write the planned scenario with hinf-cpp plan FILE -o "
+                                 "PLANNED.toml and run that"));
+    TableReader r(desired, "[desired]", source, known);
+    s.desired_q0 = r.vector("q0", n);
+    std::vector<Signal> inputs;
+    for (int i = 1; i <= m; ++i) inputs.push_back(r.signal(str_cat("u", i)));
+    s.desired_u = VectorSignal(std::move(inputs));
+  }
+  {
+    TableReader r(*section(root, "controller", source, true), "[controller]", source,
+                  {"gamma", "Q", "Qf", "kappa", "law", "cascade"});
+    const toml::node* gamma = r.get("gamma");
+    if (gamma == nullptr) r.fail("gamma", "is required");
+    s.gamma = r.as_number(*gamma, "gamma", true);  // inf: the LQR limit
+    s.law = r.enum_or("law", s.law);
+    if (const toml::node* node = r.get("cascade")) {
+      const toml::table* table = node->as_table();
+      if (table == nullptr) r.fail("cascade", "expected a table { k = ..., k1 = ..., k2 = ... }, got " + type_name(*node));
+      TableReader g(*table, "[controller]", source, {"k", "k1", "k2"}, "cascade.");
+      s.cascade.k = g.number_or("k", s.cascade.k);
+      s.cascade.k1 = g.number_or("k1", s.cascade.k1);
+      s.cascade.k2 = g.number_or("k2", s.cascade.k2);
+    }
+    if (r.has("Q")) s.Q = r.matrix("Q", n, n, true);
+    if (r.has("Qf")) s.Qf = r.matrix("Qf", n, n, true);
+    if (r.has("kappa")) s.kappa = r.signal("kappa");
+  }
+  {
+    std::vector<Signal> channels(static_cast<std::size_t>(nw));
+    if (const toml::table* table = section(root, "disturbance", source, false)) {
+      std::vector<std::string> known;
+      for (int i = 1; i <= nw; ++i) known.push_back(str_cat("w", i));
+      known.push_back("worst_case");
+      TableReader r(*table, "[disturbance]", source, known);
+      // The noise channels carry the measurement noise of [measurement]: a signal there would
+      // count in the disturbance's energy without moving the vehicle, and output feedback
+      // would overwrite it with the noise.
+      for (int channel : s.model->noise_channels()) {
+        const std::string key = str_cat("w", channel + 1);
+        if (r.has(key))
+          r.fail(key, str_cat("is a measurement-noise channel of the ", s.model->name(),
+                              " model, not a disturbance: the measurement noise is set through"
+                              " [measurement] (sigma, sample_period, seed)"));
+      }
+      s.worst_case = r.boolean_or("worst_case", false);
+      for (int i = 1; i <= nw; ++i)
+        if (r.has(str_cat("w", i))) channels[static_cast<std::size_t>(i - 1)] = r.signal(str_cat("w", i));
+    }
+    s.disturbance = VectorSignal(std::move(channels));
+  }
+  {
+    TableReader r(*section(root, "initial", source, true), "[initial]", source, {"q0"});
+    s.initial_q0 = r.vector("q0", n);
+  }
+  if (const toml::table* table = section(root, "measurement", source, false)) {
+    TableReader r(*table, "[measurement]", source,
+                  {"sigma", "sample_period", "seed", "N", "Q0", "eta", "filter_A",
+                   "on_coupling_violation"});
+    MeasurementSpec ms;
+    ms.sigma = r.number("sigma");
+    ms.sample_period = r.number_or("sample_period", ms.sample_period);
+    const std::int64_t seed = r.integer_or("seed", 0);
+    if (seed < 0) r.fail("seed", str_cat("must be >= 0, got ", seed));
+    ms.seed = static_cast<std::uint64_t>(seed);
+    if (const toml::node* node = r.get("N")) {
+      const toml::array* rows = node->as_array();
+      if (rows == nullptr) {
+        ms.N = Mat::Constant(1, 1, r.number("N"));  // scalar: expanded to N I by resolved()
+      } else {
+        // p x p for p measured outputs (validate() checks p against the model)
+        if (rows->empty()) r.fail("N", "expected a number or a p x p nested list (p measured outputs), got an empty array");
+        const int p = static_cast<int>(rows->size());
+        ms.N = r.matrix("N", p, p, false);
+      }
+    }
+    if (r.has("Q0")) ms.Q0 = r.matrix("Q0", n, n, true);
+    ms.eta = r.number_or("eta", ms.eta);
+    ms.filter_A = r.enum_or("filter_A", ms.filter_A);
+    ms.on_coupling_violation = r.enum_or("on_coupling_violation", ms.on_coupling_violation);
+    s.measurement = ms;
+  }
+  if (const toml::table* table = section(root, "solver", source, false)) {
+    TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});
+    s.solver.method = r.enum_or("method", s.solver.method);
+    s.solver.newton_systems = r.enum_or("newton_systems", s.solver.newton_systems);
+    s.solver.rtol = r.number_or("rtol", s.solver.rtol);
+    s.solver.atol = r.number_or("atol", s.solver.atol);
+    s.solver.max_steps = static_cast<long>(r.integer_or("max_steps", s.solver.max_steps));
+    s.divergence_factor = r.number_or("divergence_factor", s.divergence_factor);
+    try {
+      s.simulation_options().validate();
+    } catch (const InputError& e) {
+      throw InputError(str_cat(source, ": [solver] ", e.what()));
+    }
+  }
+  if (const toml::table* table = section(root, "output", source, false)) {
+    TableReader r(*table, "[output]", source, {"dt"});
+    s.output_dt = r.number_or("dt", s.output_dt);
+  }
+  return s;
+}
+
+bool needs_planning_toml(const std::string& text, const std::string& source) {
+  const toml::table root = detail::parse_toml(text, source);
+  const toml::table* desired = root["desired"].as_table();
+  if (desired == nullptr) return false;
+  for (const char* key : {"waypoints", "path", "plan"})
+    if (desired->contains(key)) return true;
+  return false;
+}
+
+ModelPtr parse_model_toml(const std::string& text, const std::string& source) {
+  const toml::table root = detail::parse_toml(text, source);
+  return detail::read_model_section(*section(root, "model", source, true), source, "[model]");
+}
+
+Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source) {
+  const toml::table root = detail::parse_toml(text, source);
+  TableReader r(root, "signal", source, {key});
+  return r.signal(key);
+}
+
+Scenario load_scenario_toml(const std::string& path) {
+  return parse_scenario_toml(read_text_file(path, "scenario file"), path);
+}
+
+}  // namespace hinf
