@@ -51,6 +51,7 @@
 #include "hinf/models/ship.hpp"
 #include "hinf/models/vehicles.hpp"
 #include "hinf/numerics/generated_function.hpp"
+#include "hinf/numerics/numdiff.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
 #include "hinf/scenario/scenario.hpp"
 #include "hinf/scenario/study.hpp"
@@ -295,7 +296,7 @@ class PyModel : public Model, public py::trampoline_self_life_support {
       return;
     }
     const Vec u_held = u;
-    out = central_differences(Vec(q), s.n, [&](const Vec& x) -> Vec {
+    out = central_difference_jacobian(Vec(q), s.n, [&](const Vec& x) -> Vec {
       return finite_matrix(call("G", t, x), s.n, s.m, "the Python model's G(t, q)", t) * u_held;
     });
   }
@@ -413,10 +414,14 @@ class PyModel : public Model, public py::trampoline_self_life_support {
       return vector_result(call("f", t, point), n, "the Python model's f(t, q)", t);
     };
     JacobianChoice choice = jacobian_choice_.load();
-    if (choice == JacobianChoice::CentralDifferences) return central_differences(x, n, real_f);
+    if (choice == JacobianChoice::CentralDifferences) return central_difference_jacobian(x, n, real_f);
     std::optional<Mat> complex_step;
     try {
-      complex_step = complex_step_jacobian(t, x);
+      complex_step = complex_step_jacobian(x, n, [&](const Eigen::VectorXcd& point) -> Eigen::VectorXcd {
+        const std::optional<Eigen::VectorXcd> out = try_cast<Eigen::VectorXcd>(call("f", t, point));
+        if (!out || out->size() != n) throw InputError("f(t, q) did not return n complex numbers for a complex q");
+        return *out;
+      });
     } catch (const py::error_already_set&) {  // f does not take complex numbers
     } catch (const InputError&) {
     }
@@ -425,48 +430,12 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     // complex step within 1e-6 of the scale of them is taken to be right (a model whose f drops
     // the imaginary part, e.g. through abs() or a real array, fails this and gets central
     // differences).
-    const Mat central = central_differences(x, n, real_f);
+    const Mat central = central_difference_jacobian(x, n, real_f);
     const double scale = 1.0 + central.cwiseAbs().maxCoeff() + real_f(x).cwiseAbs().maxCoeff();
     const bool agrees = complex_step && complex_step->allFinite() &&
                         (*complex_step - central).cwiseAbs().maxCoeff() <= 1e-6 * scale;
     jacobian_choice_.store(agrees ? JacobianChoice::ComplexStep : JacobianChoice::CentralDifferences);
     return agrees ? *complex_step : central;
-  }
-
-  // Im f(q + i h e_j) / h column by column (h = 1e-20: no subtraction, so no cancellation).
-  Mat complex_step_jacobian(double t, const Vec& q) const {
-    const int n = structure().n;
-    constexpr double h = 1e-20;
-    Mat J(n, n);
-    Eigen::VectorXcd point = q.cast<std::complex<double>>();
-    for (int j = 0; j < n; ++j) {
-      point[j] = std::complex<double>(q[j], h);
-      const py::object value = call("f", t, point);
-      point[j] = q[j];
-      const std::optional<Eigen::VectorXcd> out = try_cast<Eigen::VectorXcd>(value);
-      if (!out || out->size() != n) throw InputError("f(t, q) did not return n complex numbers for a complex q");
-      J.col(j) = out->imag() / h;
-    }
-    return J;
-  }
-
-  // Central differences of F: R^n -> R^rows at q, steps h_j = eps^(1/3) max(1, |q_j|) (the
-  // truncation error, O(h^2), and the round-off, O(eps / h), balance there).
-  template <class F>
-  static Mat central_differences(const Vec& q, Eigen::Index rows, const F& fn) {
-    const double base_step = std::cbrt(std::numeric_limits<double>::epsilon());
-    Mat J(rows, q.size());
-    Vec point = q;
-    for (Eigen::Index j = 0; j < q.size(); ++j) {
-      const double h = base_step * std::max(1.0, std::abs(q[j]));
-      point[j] = q[j] + h;
-      const Vec ahead = fn(point);
-      point[j] = q[j] - h;
-      const Vec behind = fn(point);
-      point[j] = q[j];
-      J.col(j) = (ahead - behind) / (2.0 * h);
-    }
-    return J;
   }
 
   enum class JacobianChoice { Undecided, ComplexStep, CentralDifferences };

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "hinf/core/errors.hpp"
+#include "hinf/numerics/numdiff.hpp"
 
 namespace hinf {
 
@@ -10,16 +11,11 @@ void Controller::control_jacobian(double t, const ConstVecRef& q, MatRef dudq) {
   if (dudq.rows() != m() || dudq.cols() != q.size())
     throw InputError(str_cat("control_jacobian: du/dq must be (", m(), ", ", q.size(), "), got (", dudq.rows(),
                              ", ", dudq.cols(), ")"));
-  Vec qp = q, up(m()), um(m());
-  for (Eigen::Index j = 0; j < q.size(); ++j) {
-    const double h = 1e-7 * std::max(1.0, std::abs(q[j]));
-    qp[j] = q[j] + h;
-    control(t, qp, up);
-    qp[j] = q[j] - h;
-    control(t, qp, um);
-    qp[j] = q[j];
-    dudq.col(j) = (up - um) / (2.0 * h);
-  }
+  dudq = central_difference_jacobian(q, m(), [&](const Vec& x) {
+    Vec u(m());
+    control(t, x, u);
+    return u;
+  });
 }
 
 HinfStateFeedback::HinfStateFeedback(RiccatiSolutionPtr solution, Signal kappa)

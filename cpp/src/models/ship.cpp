@@ -4,6 +4,7 @@
 
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
+#include "models/vehicle_parts.hpp"
 
 namespace hinf {
 
@@ -17,19 +18,15 @@ ShipModel::ShipModel(const ShipParameters& parameters) : p_(parameters) {
 }
 
 void ShipModel::f(double, const ConstVecRef& q, VecRef out) const {
-  const double u = q[0], v = q[1], r = q[2], psi = q[5];
-  const double c = std::cos(psi), s = std::sin(psi);
+  const double u = q[0], v = q[1], r = q[2];
   out[0] = p_.m_u * v * r - p_.d_u * u;
   out[1] = p_.m_v * u * r - p_.d_v * v;
   out[2] = p_.m_r * u * v - p_.d_r * r;
-  out[3] = u * c - v * s;
-  out[4] = u * s + v * c;
-  out[5] = r;
+  detail::body_kinematics(q, out);
 }
 
 void ShipModel::dfdq(double, const ConstVecRef& q, MatRef J) const {
-  const double u = q[0], v = q[1], r = q[2], psi = q[5];
-  const double c = std::cos(psi), s = std::sin(psi);
+  const double u = q[0], v = q[1], r = q[2];
   J.setZero();
   J(0, 0) = -p_.d_u;
   J(0, 1) = p_.m_u * r;
@@ -40,13 +37,7 @@ void ShipModel::dfdq(double, const ConstVecRef& q, MatRef J) const {
   J(2, 0) = p_.m_r * v;
   J(2, 1) = p_.m_r * u;
   J(2, 2) = -p_.d_r;
-  J(3, 0) = c;
-  J(3, 1) = -s;
-  J(3, 5) = -u * s - v * c;
-  J(4, 0) = s;
-  J(4, 1) = c;
-  J(4, 5) = u * c - v * s;
-  J(5, 2) = 1.0;
+  detail::body_kinematics_jacobian(q, J);
 }
 
 Mat ShipModel::G(double, const ConstVecRef&) const {

@@ -25,8 +25,8 @@ class Controller {
   // u (m) at time t for the actual state q (n). Controllers may keep lookup cursors: use one
   // controller object per thread.
   virtual void control(double t, const ConstVecRef& q, VecRef u) = 0;
-  // du/dq (m x n), for implicit integrators. The default uses central differences;
-  // analytic overrides are preferred.
+  // du/dq (m x n), for implicit integrators. The default uses central differences
+  // (numerics/numdiff.hpp); analytic overrides are preferred.
   virtual void control_jacobian(double t, const ConstVecRef& q, MatRef dudq);
 
  protected:
