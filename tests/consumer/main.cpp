@@ -46,6 +46,12 @@ class DoubleIntegrator final : public hinf::Model {
 
 int failures = 0;
 
+}  // namespace
+
+int deprecated_paths_work();  // deprecated_paths.cpp
+
+namespace {
+
 // Prints the check; counts a failure unless value <= bound (a NaN fails).
 void check_below(const char* what, double value, double bound) {
   const bool ok = value <= bound;
@@ -121,6 +127,9 @@ int main() {
   const double cost = integral(disturbed.t, cost_rate) + e_final.dot(Qf * e_final);
   const double energy = integral(disturbed.t, disturbed.w.rowwise().squaredNorm());
   check_below("disturbed loop: L2 gain from w to (q_e, u - u_d)", std::sqrt(cost / energy), gamma);
+
+  // The include paths of 0.1 (deprecated_paths.cpp) still build and link.
+  check_below("programs written for the include paths of 0.1 still work", deprecated_paths_work(), 0.0);
 
   std::printf("%s\n", failures == 0 ? "all checks passed" : "some checks FAILED");
   return failures == 0 ? 0 : 1;

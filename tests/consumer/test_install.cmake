@@ -17,8 +17,11 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${
 
 # The public headers are all installed, and every header they include ("hinf/...") is
 # installed as well: none needs a private header of cpp/src.
-file(GLOB public_headers RELATIVE "${SOURCE_DIR}/cpp/include" "${SOURCE_DIR}/cpp/include/hinf/*.hpp")
-file(GLOB installed_headers RELATIVE "${prefix}/${INCLUDEDIR}" "${prefix}/${INCLUDEDIR}/hinf/*.hpp")
+# (cpp/include: one folder per layer; cpp/deprecated: the forwarding headers of the 0.1 paths).
+file(GLOB_RECURSE public_headers RELATIVE "${SOURCE_DIR}/cpp/include" "${SOURCE_DIR}/cpp/include/hinf/*.hpp")
+file(GLOB_RECURSE deprecated_headers RELATIVE "${SOURCE_DIR}/cpp/deprecated" "${SOURCE_DIR}/cpp/deprecated/hinf/*.hpp")
+list(APPEND public_headers ${deprecated_headers})
+file(GLOB_RECURSE installed_headers RELATIVE "${prefix}/${INCLUDEDIR}" "${prefix}/${INCLUDEDIR}/hinf/*.hpp")
 set(not_installed "")
 foreach(header IN LISTS public_headers)
   if(NOT header IN_LIST installed_headers)
