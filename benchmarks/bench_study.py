@@ -10,7 +10,7 @@ seeds (a [[random]] "seed" axis): every run has the same design (trajectory, Z(t
 noise. Measured, each as runs per second, median [min - max] over `--repeat` repetitions:
 
 1. a Python loop over hinf_cpp.run_scenario, one seed at a time (the scenarios built first);
-2. hc.run_study (the C++ batch runner, designs shared) on the same scenarios, 1 and 2 threads;
+2. hc.run_scenarios (the C++ batch runner, designs shared) on the same scenarios, 1 and 2 threads;
 3. hinf_cpp.studies.study.run_study, the whole study (expansion, scenarios, table), 1 and 2 workers;
 4. the same on a Dask LocalCluster of 2 worker processes (1 thread each), started before the
    timing (its start-up is reported apart);
@@ -102,7 +102,7 @@ def main(argv=None) -> int:
         args.seeds, args.repeat, args.scipy_repeat = 40, 1, 1
     study = make_study(args.seeds, args.chunk)
     scenarios = [study.scenario(i) for i in range(study.runs)]
-    batch = "hc.run_study (C++ batch runner)"
+    batch = "hc.run_scenarios (C++ batch runner)"
     results: dict = {"seeds": args.seeds, "repeat": args.repeat, "chunk": args.chunk, "batch_runner": batch}
     lines = _Lines([f"Figure-2 Monte Carlo: {args.seeds} noise seeds in chunks of {args.chunk}, hinf, output feedback "
                     "(design shared)",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_study', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     Base class of the numerical failures of hinf_cpp.
@@ -53,230 +53,6 @@ class Method:
     def __int__(self: Method | str) -> int:
         ...
     def __ne__(self: Method | str, other: typing.Any) -> bool:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    def __str__(self) -> str:
-        ...
-    @property
-    def name(self) -> str:
-        ...
-    @property
-    def value(self) -> int:
-        ...
-class RunStatus:
-    """
-    How a closed-loop run ended (simulation.hpp)
-    
-    Members:
-    
-      completed
-    
-      diverged
-    """
-    __members__: typing.ClassVar[dict[str, RunStatus]]
-    completed: typing.ClassVar[RunStatus]
-    diverged: typing.ClassVar[RunStatus]
-    def __eq__(self: RunStatus | str, other: typing.Any) -> bool:
-        ...
-    def __getstate__(self) -> int:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __index__(self: RunStatus | str) -> int:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, name: str) -> None:
-        ...
-    def __int__(self: RunStatus | str) -> int:
-        ...
-    def __ne__(self: RunStatus | str, other: typing.Any) -> bool:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    def __str__(self) -> str:
-        ...
-    @property
-    def name(self) -> str:
-        ...
-    @property
-    def value(self) -> int:
-        ...
-class Law:
-    """
-    The tracking law of a scenario (scenario.hpp)
-    
-    Members:
-    
-      hinf
-    
-      lqr
-    
-      cascade
-    """
-    __members__: typing.ClassVar[dict[str, Law]]
-    cascade: typing.ClassVar[Law]
-    hinf: typing.ClassVar[Law]
-    lqr: typing.ClassVar[Law]
-    def __eq__(self: Law | str, other: typing.Any) -> bool:
-        ...
-    def __getstate__(self) -> int:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __index__(self: Law | str) -> int:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, name: str) -> None:
-        ...
-    def __int__(self: Law | str) -> int:
-        ...
-    def __ne__(self: Law | str, other: typing.Any) -> bool:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    def __str__(self) -> str:
-        ...
-    @property
-    def name(self) -> str:
-        ...
-    @property
-    def value(self) -> int:
-        ...
-class FilterLinearization:
-    """
-    Which A the filter Riccati equation (36) uses (output_feedback.hpp)
-    
-    Members:
-    
-      estimate
-    
-      desired
-    """
-    __members__: typing.ClassVar[dict[str, FilterLinearization]]
-    desired: typing.ClassVar[FilterLinearization]
-    estimate: typing.ClassVar[FilterLinearization]
-    def __eq__(self: FilterLinearization | str, other: typing.Any) -> bool:
-        ...
-    def __getstate__(self) -> int:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __index__(self: FilterLinearization | str) -> int:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, name: str) -> None:
-        ...
-    def __int__(self: FilterLinearization | str) -> int:
-        ...
-    def __ne__(self: FilterLinearization | str, other: typing.Any) -> bool:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    def __str__(self) -> str:
-        ...
-    @property
-    def name(self) -> str:
-        ...
-    @property
-    def value(self) -> int:
-        ...
-class CouplingPolicy:
-    """
-    What a violation of rho(Sigma Z) < gamma^2 does (output_feedback.hpp)
-    
-    Members:
-    
-      error
-    
-      flag
-    """
-    __members__: typing.ClassVar[dict[str, CouplingPolicy]]
-    error: typing.ClassVar[CouplingPolicy]
-    flag: typing.ClassVar[CouplingPolicy]
-    def __eq__(self: CouplingPolicy | str, other: typing.Any) -> bool:
-        ...
-    def __getstate__(self) -> int:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __index__(self: CouplingPolicy | str) -> int:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, name: str) -> None:
-        ...
-    def __int__(self: CouplingPolicy | str) -> int:
-        ...
-    def __ne__(self: CouplingPolicy | str, other: typing.Any) -> bool:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    def __str__(self) -> str:
-        ...
-    @property
-    def name(self) -> str:
-        ...
-    @property
-    def value(self) -> int:
-        ...
-class GammaCondition:
-    """
-    The condition a gamma fails (analysis.hpp)
-    
-    Members:
-    
-      none
-    
-      grde
-    
-      filter
-    
-      coupling
-    """
-    __members__: typing.ClassVar[dict[str, GammaCondition]]
-    coupling: typing.ClassVar[GammaCondition]
-    filter: typing.ClassVar[GammaCondition]
-    grde: typing.ClassVar[GammaCondition]
-    none: typing.ClassVar[GammaCondition]
-    def __eq__(self: GammaCondition | str, other: typing.Any) -> bool:
-        ...
-    def __getstate__(self) -> int:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __index__(self: GammaCondition | str) -> int:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, name: str) -> None:
-        ...
-    def __int__(self: GammaCondition | str) -> int:
-        ...
-    def __ne__(self: GammaCondition | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
@@ -372,64 +148,6 @@ class Interpolation:
     def __int__(self: Interpolation | str) -> int:
         ...
     def __ne__(self: Interpolation | str, other: typing.Any) -> bool:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    def __str__(self) -> str:
-        ...
-    @property
-    def name(self) -> str:
-        ...
-    @property
-    def value(self) -> int:
-        ...
-class RunOutcome:
-    """
-    How a run of a study ended (study.hpp)
-    
-    Members:
-    
-      completed
-    
-      diverged
-    
-      conjugate_point
-    
-      coupling_violation
-    
-      solver_failure
-    
-      invalid_input
-    
-      failed
-    """
-    __members__: typing.ClassVar[dict[str, RunOutcome]]
-    completed: typing.ClassVar[RunOutcome]
-    conjugate_point: typing.ClassVar[RunOutcome]
-    coupling_violation: typing.ClassVar[RunOutcome]
-    diverged: typing.ClassVar[RunOutcome]
-    failed: typing.ClassVar[RunOutcome]
-    invalid_input: typing.ClassVar[RunOutcome]
-    solver_failure: typing.ClassVar[RunOutcome]
-    def __eq__(self: RunOutcome | str, other: typing.Any) -> bool:
-        ...
-    def __getstate__(self) -> int:
-        ...
-    def __hash__(self) -> int:
-        ...
-    def __index__(self: RunOutcome | str) -> int:
-        ...
-    @typing.overload
-    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
-        ...
-    @typing.overload
-    def __init__(self, name: str) -> None:
-        ...
-    def __int__(self: RunOutcome | str) -> int:
-        ...
-    def __ne__(self: RunOutcome | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
@@ -556,6 +274,140 @@ class VectorSignal:
     def dim(self) -> int:
         ...
     def is_function(self) -> bool:
+        ...
+class SolverOptions:
+    """
+    Integrator and tolerances ([solver] of a scenario)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('method', 'rtol', 'atol', 'max_steps', 'escape_norm', 'newton_systems')
+    def __eq__(self, arg0: SolverOptions) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, method: Method | str = Method.auto, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-10, max_steps: typing.SupportsInt | typing.SupportsIndex = 500000, escape_norm: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, newton_systems: NewtonSystems | str = NewtonSystems.auto) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def atol(self) -> float:
+        ...
+    @atol.setter
+    def atol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def escape_norm(self) -> float:
+        ...
+    @escape_norm.setter
+    def escape_norm(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_steps(self) -> int:
+        ...
+    @max_steps.setter
+    def max_steps(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def method(self) -> Method:
+        ...
+    @method.setter
+    def method(self, arg1: Method | str) -> None:
+        ...
+    @property
+    def newton_systems(self) -> NewtonSystems:
+        ...
+    @newton_systems.setter
+    def newton_systems(self, arg1: NewtonSystems | str) -> None:
+        ...
+    @property
+    def rtol(self) -> float:
+        ...
+    @rtol.setter
+    def rtol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class PiecewisePolynomial:
+    """
+    Dense output of an ODE solve: one polynomial per step
+    """
+    def __getstate__(self) -> tuple:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def breakpoints(self) -> list[float]:
+        """
+        the ends of the pieces, increasing
+        """
+    def dim(self) -> int:
+        ...
+    def empty(self) -> bool:
+        ...
+    def eval(self, t: typing.Any) -> typing.Any:
+        ...
+    def eval_derivative(self, t: typing.Any) -> typing.Any:
+        ...
+    def memory_bytes(self) -> int:
+        ...
+    def num_pieces(self) -> int:
+        ...
+    def t_max(self) -> float:
+        ...
+    def t_min(self) -> float:
+        ...
+class StepStats:
+    """
+    Counts of an integration
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('steps', 'rejected', 'rhs_evals', 'jac_evals')
+    def __eq__(self, arg0: StepStats) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def jac_evals(self) -> int:
+        ...
+    @property
+    def rejected(self) -> int:
+        ...
+    @property
+    def rhs_evals(self) -> int:
+        ...
+    @property
+    def steps(self) -> int:
+        ...
+class GeneratedFunction:
+    """
+    A function of a shared library compiled from CasADi generated C code (hinf_cpp.codegen.compile_casadi_functions), evaluated in C++
+    """
+    def __call__(self, *args) -> list[numpy.typing.NDArray[numpy.float64]]:
+        """
+        Evaluates in C++ (the GIL released): one input per argument (a number, a 1-D array for a vector, or an array of the input's shape); one 2-D array per output
+        """
+    def __init__(self, path: str, name: str) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def input_name(self, i: typing.SupportsInt | typing.SupportsIndex) -> str:
+        ...
+    def input_shape(self, i: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int]:
+        ...
+    def n_in(self) -> int:
+        ...
+    def n_out(self) -> int:
+        ...
+    def name(self) -> str:
+        ...
+    def output_name(self, i: typing.SupportsInt | typing.SupportsIndex) -> str:
+        ...
+    def output_shape(self, i: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int]:
+        ...
+    def path(self) -> str:
         ...
 class Model:
     """
@@ -1017,57 +869,183 @@ class ModelStructure:
     @state_names.setter
     def state_names(self, arg0: collections.abc.Sequence[str]) -> None:
         ...
-class SolverOptions:
+class RunStatus:
     """
-    Integrator and tolerances ([solver] of a scenario)
+    How a closed-loop run ended (simulation.hpp)
+    
+    Members:
+    
+      completed
+    
+      diverged
     """
-    __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('method', 'rtol', 'atol', 'max_steps', 'escape_norm', 'newton_systems')
-    def __eq__(self, arg0: SolverOptions) -> bool:
+    __members__: typing.ClassVar[dict[str, RunStatus]]
+    completed: typing.ClassVar[RunStatus]
+    diverged: typing.ClassVar[RunStatus]
+    def __eq__(self: RunStatus | str, other: typing.Any) -> bool:
         ...
-    def __getstate__(self) -> tuple:
+    def __getstate__(self) -> int:
         ...
-    def __init__(self, method: Method | str = Method.auto, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-10, max_steps: typing.SupportsInt | typing.SupportsIndex = 500000, escape_norm: typing.SupportsFloat | typing.SupportsIndex = 1000000.0, newton_systems: NewtonSystems | str = NewtonSystems.auto) -> None:
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: RunStatus | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: RunStatus | str) -> int:
+        ...
+    def __ne__(self: RunStatus | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
-    def __setstate__(self, arg0: tuple) -> None:
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
         ...
     @property
-    def atol(self) -> float:
-        ...
-    @atol.setter
-    def atol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def name(self) -> str:
         ...
     @property
-    def escape_norm(self) -> float:
+    def value(self) -> int:
         ...
-    @escape_norm.setter
-    def escape_norm(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+class FilterLinearization:
+    """
+    Which A the filter Riccati equation (36) uses (output_feedback.hpp)
+    
+    Members:
+    
+      estimate
+    
+      desired
+    """
+    __members__: typing.ClassVar[dict[str, FilterLinearization]]
+    desired: typing.ClassVar[FilterLinearization]
+    estimate: typing.ClassVar[FilterLinearization]
+    def __eq__(self: FilterLinearization | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: FilterLinearization | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: FilterLinearization | str) -> int:
+        ...
+    def __ne__(self: FilterLinearization | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
         ...
     @property
-    def max_steps(self) -> int:
-        ...
-    @max_steps.setter
-    def max_steps(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+    def name(self) -> str:
         ...
     @property
-    def method(self) -> Method:
+    def value(self) -> int:
         ...
-    @method.setter
-    def method(self, arg1: Method | str) -> None:
+class CouplingPolicy:
+    """
+    What a violation of rho(Sigma Z) < gamma^2 does (output_feedback.hpp)
+    
+    Members:
+    
+      error
+    
+      flag
+    """
+    __members__: typing.ClassVar[dict[str, CouplingPolicy]]
+    error: typing.ClassVar[CouplingPolicy]
+    flag: typing.ClassVar[CouplingPolicy]
+    def __eq__(self: CouplingPolicy | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: CouplingPolicy | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: CouplingPolicy | str) -> int:
+        ...
+    def __ne__(self: CouplingPolicy | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
         ...
     @property
-    def newton_systems(self) -> NewtonSystems:
-        ...
-    @newton_systems.setter
-    def newton_systems(self, arg1: NewtonSystems | str) -> None:
+    def name(self) -> str:
         ...
     @property
-    def rtol(self) -> float:
+    def value(self) -> int:
         ...
-    @rtol.setter
-    def rtol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+class GammaCondition:
+    """
+    The condition a gamma fails (analysis.hpp)
+    
+    Members:
+    
+      none
+    
+      grde
+    
+      filter
+    
+      coupling
+    """
+    __members__: typing.ClassVar[dict[str, GammaCondition]]
+    coupling: typing.ClassVar[GammaCondition]
+    filter: typing.ClassVar[GammaCondition]
+    grde: typing.ClassVar[GammaCondition]
+    none: typing.ClassVar[GammaCondition]
+    def __eq__(self: GammaCondition | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: GammaCondition | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: GammaCondition | str) -> int:
+        ...
+    def __ne__(self: GammaCondition | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
         ...
 class SimulationOptions:
     """
@@ -1131,60 +1109,6 @@ class TrajectoryOptions:
         ...
     @rtol.setter
     def rtol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
-        ...
-class PiecewisePolynomial:
-    """
-    Dense output of an ODE solve: one polynomial per step
-    """
-    def __getstate__(self) -> tuple:
-        ...
-    def __setstate__(self, arg0: tuple) -> None:
-        ...
-    def breakpoints(self) -> list[float]:
-        """
-        the ends of the pieces, increasing
-        """
-    def dim(self) -> int:
-        ...
-    def empty(self) -> bool:
-        ...
-    def eval(self, t: typing.Any) -> typing.Any:
-        ...
-    def eval_derivative(self, t: typing.Any) -> typing.Any:
-        ...
-    def memory_bytes(self) -> int:
-        ...
-    def num_pieces(self) -> int:
-        ...
-    def t_max(self) -> float:
-        ...
-    def t_min(self) -> float:
-        ...
-class StepStats:
-    """
-    Counts of an integration
-    """
-    __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('steps', 'rejected', 'rhs_evals', 'jac_evals')
-    def __eq__(self, arg0: StepStats) -> bool:
-        ...
-    def __getstate__(self) -> tuple:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def __setstate__(self, arg0: tuple) -> None:
-        ...
-    @property
-    def jac_evals(self) -> int:
-        ...
-    @property
-    def rejected(self) -> int:
-        ...
-    @property
-    def rhs_evals(self) -> int:
-        ...
-    @property
-    def steps(self) -> int:
         ...
 class Trajectory:
     """
@@ -1836,6 +1760,110 @@ class Certificates:
     @property
     def remainder_method(self) -> str:
         ...
+class Law:
+    """
+    The tracking law of a scenario (scenario.hpp)
+    
+    Members:
+    
+      hinf
+    
+      lqr
+    
+      cascade
+    """
+    __members__: typing.ClassVar[dict[str, Law]]
+    cascade: typing.ClassVar[Law]
+    hinf: typing.ClassVar[Law]
+    lqr: typing.ClassVar[Law]
+    def __eq__(self: Law | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: Law | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: Law | str) -> int:
+        ...
+    def __ne__(self: Law | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class RunOutcome:
+    """
+    How a run of a study ended (study.hpp)
+    
+    Members:
+    
+      completed
+    
+      diverged
+    
+      conjugate_point
+    
+      coupling_violation
+    
+      solver_failure
+    
+      invalid_input
+    
+      failed
+    """
+    __members__: typing.ClassVar[dict[str, RunOutcome]]
+    completed: typing.ClassVar[RunOutcome]
+    conjugate_point: typing.ClassVar[RunOutcome]
+    coupling_violation: typing.ClassVar[RunOutcome]
+    diverged: typing.ClassVar[RunOutcome]
+    failed: typing.ClassVar[RunOutcome]
+    invalid_input: typing.ClassVar[RunOutcome]
+    solver_failure: typing.ClassVar[RunOutcome]
+    def __eq__(self: RunOutcome | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: RunOutcome | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        ...
+    def __int__(self: RunOutcome | str) -> int:
+        ...
+    def __ne__(self: RunOutcome | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
 class MeasurementSpec:
     """
     [measurement] of a scenario (paper §4)
@@ -2052,6 +2080,14 @@ class RunResult:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
+    def to_csv(self) -> str:
+        """
+        The time series on the output grid (results_csv)
+        """
+    def to_json(self, indent: typing.SupportsInt | typing.SupportsIndex = 2) -> str:
+        """
+        The results file (results_json)
+        """
     @property
     def Z0(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         ...
@@ -2101,7 +2137,7 @@ class RunResult:
         ...
 class StudyOptions:
     """
-    Options of run_study. threads: worker threads (0: the hardware's; never more than runs; one when a model or signal is implemented in Python); share_designs: compute each distinct design (trajectory and Riccati solutions) once
+    Options of run_scenarios. threads: worker threads (0: the hardware's; never more than runs; one when a model or signal is implemented in Python); share_designs: compute each distinct design (trajectory and Riccati solutions) once
     """
     __hash__: typing.ClassVar[None] = None
     __match_args__: typing.ClassVar[tuple] = ('threads', 'share_designs')
@@ -2124,7 +2160,7 @@ class StudyOptions:
         ...
 class StudyRun:
     """
-    One row of run_study: status (its name: 'completed', 'diverged', 'conjugate_point', 'coupling_violation', 'solver_failure', 'invalid_input', 'failed'; outcome is the RunOutcome), reason (empty when completed), metrics (as RunResult.metrics; NaN when the run failed), gamma, law, output_feedback, design_seconds, simulate_seconds, design (runs with the same number shared one design; -1: none was made)
+    One row of run_scenarios: status (its name: 'completed', 'diverged', 'conjugate_point', 'coupling_violation', 'solver_failure', 'invalid_input', 'failed'; outcome is the RunOutcome), reason (empty when completed), metrics (as RunResult.metrics; NaN when the run failed), gamma, law, output_feedback, design_seconds, simulate_seconds, design (runs with the same number shared one design; -1: none was made)
     """
     __hash__: typing.ClassVar[None] = None
     __match_args__: typing.ClassVar[tuple] = ('status', 'reason', 'metrics', 'gamma', 'law', 'output_feedback', 'design_seconds', 'simulate_seconds', 'design')
@@ -2170,34 +2206,6 @@ class StudyRun:
         """
         how the run ended, by name (outcome: the RunOutcome)
         """
-class GeneratedFunction:
-    """
-    A function of a shared library compiled from CasADi generated C code (hinf_cpp.codegen.compile_casadi_functions), evaluated in C++
-    """
-    def __call__(self, *args) -> list[numpy.typing.NDArray[numpy.float64]]:
-        """
-        Evaluates in C++ (the GIL released): one input per argument (a number, a 1-D array for a vector, or an array of the input's shape); one 2-D array per output
-        """
-    def __init__(self, path: str, name: str) -> None:
-        ...
-    def __repr__(self) -> str:
-        ...
-    def input_name(self, i: typing.SupportsInt | typing.SupportsIndex) -> str:
-        ...
-    def input_shape(self, i: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int]:
-        ...
-    def n_in(self) -> int:
-        ...
-    def n_out(self) -> int:
-        ...
-    def name(self) -> str:
-        ...
-    def output_name(self, i: typing.SupportsInt | typing.SupportsIndex) -> str:
-        ...
-    def output_shape(self, i: typing.SupportsInt | typing.SupportsIndex) -> tuple[int, int]:
-        ...
-    def path(self) -> str:
-        ...
 def certify(Z: RiccatiSolution, kappa: typing.Any, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> Certificates:
     """
     The certificates of paper §3 for a design Z (its gamma), the gain scaling kappa(t) and the weight Q
@@ -2282,7 +2290,7 @@ def run_scenario_with_noise(scenario: Scenario, noise: typing.Annotated[numpy.ty
     """
     Run a scenario with [measurement] on the given noise samples (one row per hold interval, one column per measured output) instead of the seeded ones, so that a run can be replayed exactly
     """
-def run_study(scenarios: collections.abc.Sequence[Scenario], options: StudyOptions = ..., progress: collections.abc.Callable[[int, int], None] | None = None) -> list[StudyRun]:
+def run_scenarios(scenarios: collections.abc.Sequence[Scenario], options: StudyOptions = ..., progress: collections.abc.Callable[[int, int], None] | None = None) -> list[StudyRun]:
     """
     Runs every scenario (in parallel, designs shared; study.hpp) and returns one StudyRun per scenario, in order: each row is what run_scenario gives for that scenario alone, and a run that fails is a row with its status and reason. progress(done, total), if given, is called on this thread about every 0.1 s and at the end; an exception it raises (or Ctrl-C) stops the study and is raised here
     """
@@ -2338,4 +2346,4 @@ def wrap_angle(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
     the angle wrapped to (-pi, pi]
     """
-__version__: str = '0.1.0'
+__version__: str = '0.2.0'

@@ -774,7 +774,7 @@ TEST(OutputFeedbackLoop, NoiseIsHeldOverEachPeriodAndOneSampleActsFromItsPeriodO
   EXPECT_GT((other.q.row(k150 + 5) - base.q.row(k150 + 5)).cwiseAbs().maxCoeff(), 1e-6);
 }
 
-// OutputFeedbackOptions::sigma_eigenvalues = false (what run_study uses) leaves out only the
+// OutputFeedbackOptions::sigma_eigenvalues = false (what run_scenarios uses) leaves out only the
 // series sigma_min_eig and sigma_max_eig: every other output is the same computation, bit for
 // bit; and the series it keeps says Sigma stayed positive definite, which the check without the
 // series (a Cholesky factor) must agree with.

@@ -303,7 +303,7 @@ TEST(Plant, StudyRunsWithOtherPlantsShareOneDesign) {
     s.plant = damped_ship(factor);
     runs.push_back(s);
   }
-  const std::vector<hinf::StudyRun> rows = hinf::run_study(runs);
+  const std::vector<hinf::StudyRun> rows = hinf::run_scenarios(runs);
   for (std::size_t i = 0; i < runs.size(); ++i) {
     EXPECT_EQ(rows[i].status, hinf::RunOutcome::Completed) << rows[i].reason;
     EXPECT_EQ(rows[i].design, rows[0].design) << i;

@@ -1,4 +1,4 @@
-// run_study (study.hpp): every row is run_scenario's result for that scenario alone, exactly
+// run_scenarios (study.hpp): every row is run_scenario's result for that scenario alone, exactly
 // (the same code on the same input), with one or two threads and with or without shared
 // designs, for state and output feedback and the three laws; runs that share design inputs
 // share one design and the others do not; failures of every kind are rows while the other runs
@@ -100,7 +100,7 @@ TEST(Study, RowsAreRunScenarioExactlyForAnyThreadsAndSharing) {
       StudyOptions options;
       options.threads = threads;
       options.share_designs = share;
-      const std::vector<StudyRun> rows = hinf::run_study(runs, options);
+      const std::vector<StudyRun> rows = hinf::run_scenarios(runs, options);
       ASSERT_EQ(rows.size(), runs.size());
       for (std::size_t i = 0; i < runs.size(); ++i) {
         const std::string where = hinf::str_cat("run ", i, " threads ", threads, " share ", share);
@@ -119,7 +119,7 @@ TEST(Study, RowsAreRunScenarioExactlyForAnyThreadsAndSharing) {
 
 TEST(Study, RunsWithEqualDesignInputsShareOneDesign) {
   const std::vector<Scenario> runs = mixed_batch();
-  const std::vector<StudyRun> rows = hinf::run_study(runs);
+  const std::vector<StudyRun> rows = hinf::run_scenarios(runs);
   // 0-2: Figure 1 hinf, lqr, cascade; 3-5: Figure 2 hinf, lqr, cascade; 6: Figure 1 from
   // another start; 7: Figure 2 with another seed; 8: Figure 1 without disturbance, kappa 2;
   // 9: Figure 1 at gamma 8; 10: Figure 1 lqr at "gamma" 3.
@@ -137,7 +137,7 @@ TEST(Study, RunsWithEqualDesignInputsShareOneDesign) {
 
   StudyOptions apart;
   apart.share_designs = false;
-  const std::vector<StudyRun> own = hinf::run_study(runs, apart);
+  const std::vector<StudyRun> own = hinf::run_scenarios(runs, apart);
   for (std::size_t i = 0; i < own.size(); ++i) EXPECT_EQ(own[i].design, static_cast<int>(i));
 }
 
@@ -182,7 +182,7 @@ TEST(Study, DesignInputsAreComparedAsValues) {
       paper(1), with_model(std::make_shared<const hinf::ShipModel>()),         // 3-4: equal ships
       with_model(std::make_shared<const hinf::ShipModel>(heavier)),            // 5: another d_u
       by_function, by_function};                                              // 6-7: u_d a function
-  const std::vector<StudyRun> rows = hinf::run_study(runs);
+  const std::vector<StudyRun> rows = hinf::run_scenarios(runs);
   for (const StudyRun& row : rows) EXPECT_EQ(row.status, RunOutcome::Completed) << row.reason;
   EXPECT_EQ(rows[1].design, rows[0].design);
   EXPECT_NE(rows[2].design, rows[0].design);
@@ -220,7 +220,7 @@ TEST(Study, FailuresAreRowsAndTheOtherRunsComplete) {
   for (int threads : {1, 2}) {
     StudyOptions options;
     options.threads = threads;
-    const std::vector<StudyRun> rows = hinf::run_study(runs, options);
+    const std::vector<StudyRun> rows = hinf::run_scenarios(runs, options);
     const std::string where = hinf::str_cat("threads ", threads);
     ASSERT_EQ(rows.size(), runs.size());
     EXPECT_EQ(rows[0].status, RunOutcome::Completed) << where;
@@ -267,7 +267,7 @@ TEST(Study, ProgressIsCalledOnTheCallingThreadAndEndsWithTheTotal) {
   bool elsewhere = false;
   StudyOptions options;
   options.threads = 2;
-  hinf::run_study(runs, options, [&](std::size_t done, std::size_t total) {
+  hinf::run_scenarios(runs, options, [&](std::size_t done, std::size_t total) {
     elsewhere = elsewhere || std::this_thread::get_id() != caller;
     calls.emplace_back(done, total);
   });
@@ -278,7 +278,7 @@ TEST(Study, ProgressIsCalledOnTheCallingThreadAndEndsWithTheTotal) {
 
   // An empty study: one call, (0, 0).
   calls.clear();
-  EXPECT_TRUE(hinf::run_study({}, options, [&](std::size_t d, std::size_t t) { calls.emplace_back(d, t); }).empty());
+  EXPECT_TRUE(hinf::run_scenarios({}, options, [&](std::size_t d, std::size_t t) { calls.emplace_back(d, t); }).empty());
   EXPECT_EQ(calls, (std::vector<std::pair<std::size_t, std::size_t>>{{0, 0}}));
 }
 
@@ -334,7 +334,7 @@ TEST(Study, AnExceptionFromProgressStopsTheStudy) {
   StudyOptions options;
   options.threads = 2;
   std::size_t done_at_throw = 0;
-  EXPECT_THROW(hinf::run_study(runs, options,
+  EXPECT_THROW(hinf::run_scenarios(runs, options,
                                [&](std::size_t done, std::size_t) {
                                  if (done == 0) return;
                                  done_at_throw = done;
@@ -350,10 +350,10 @@ TEST(Study, AnExceptionFromProgressStopsTheStudy) {
 TEST(Study, OptionsAreChecked) {
   StudyOptions options;
   options.threads = -1;
-  EXPECT_THROW(hinf::run_study({paper(1)}, options), hinf::InputError);
+  EXPECT_THROW(hinf::run_scenarios({paper(1)}, options), hinf::InputError);
   // More threads than runs: as many as runs.
   options.threads = 64;
-  const std::vector<StudyRun> rows = hinf::run_study({paper(1, 2.0)}, options);
+  const std::vector<StudyRun> rows = hinf::run_scenarios({paper(1, 2.0)}, options);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].status, RunOutcome::Completed);
 }

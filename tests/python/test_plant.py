@@ -109,7 +109,7 @@ def test_a_study_over_plants_shares_one_design():
         scenario = base.copy()
         scenario.plant = perturbed(base.model, factor)
         runs.append(scenario)
-    rows = hc.run_study(runs, hc.StudyOptions(threads=2))
+    rows = hc.run_scenarios(runs, hc.StudyOptions(threads=2))
     assert [r.status for r in rows] == ["completed"] * 3
     assert len({r.design for r in rows}) == 1
     for row, scenario in zip(rows, runs):

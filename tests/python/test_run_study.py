@@ -56,7 +56,7 @@ def batch():
 @pytest.mark.parametrize("share", [True, False])
 def test_rows_are_run_scenario_exactly(batch, threads, share):
     runs, alone = batch
-    rows = hc.run_study(runs, hc.StudyOptions(threads=threads, share_designs=share))
+    rows = hc.run_scenarios(runs, hc.StudyOptions(threads=threads, share_designs=share))
     assert len(rows) == len(runs)
     for i, (row, result) in enumerate(zip(rows, alone)):
         assert row.status == "completed" and row.outcome == hc.RunOutcome.completed and row.reason == ""
@@ -86,7 +86,7 @@ def test_failures_are_rows_and_the_others_complete():
         storm,                                     # diverges
         paper(2),                                  # completes
     ]
-    rows = hc.run_study(runs, hc.StudyOptions(threads=2))
+    rows = hc.run_scenarios(runs, hc.StudyOptions(threads=2))
     assert [r.status for r in rows] == ["completed", "conjugate_point", "completed", "coupling_violation",
                                         "invalid_input", "diverged", "completed"]
     with pytest.raises(hc.ConjugatePointError):
@@ -115,11 +115,11 @@ def test_progress_runs_on_the_calling_thread_and_ends_with_the_total():
         calls.append((done, total))
         threads.add(threading.get_ident())
 
-    rows = hc.run_study(runs, hc.StudyOptions(threads=2), progress)
+    rows = hc.run_scenarios(runs, hc.StudyOptions(threads=2), progress)
     assert len(rows) == 4 and calls[-1] == (4, 4)
     assert [d for d, _ in calls] == sorted(set(d for d, _ in calls))
     assert threads == {threading.get_ident()}
-    assert hc.run_study([], progress=progress) == [] and calls[-1] == (0, 0)
+    assert hc.run_scenarios([], progress=progress) == [] and calls[-1] == (0, 0)
 
 
 class Interrupted(Exception):
@@ -134,7 +134,7 @@ def test_an_exception_in_progress_stops_the_study():
             raise Interrupted(f"stop at {done}/{total}")
 
     with pytest.raises(Interrupted, match=r"stop at \d+/30"):
-        hc.run_study(runs, hc.StudyOptions(threads=2), progress)
+        hc.run_scenarios(runs, hc.StudyOptions(threads=2), progress)
 
 
 class DelegatingShip(hc.Model):
@@ -166,7 +166,7 @@ def test_a_model_implemented_in_python_runs_without_deadlock():
         s.model = model
         runs.append(s)
     calls = []
-    rows = hc.run_study(runs, hc.StudyOptions(threads=2), lambda d, t: calls.append(d))
+    rows = hc.run_scenarios(runs, hc.StudyOptions(threads=2), lambda d, t: calls.append(d))
     assert [r.status for r in rows] == ["completed", "completed"] and calls[-1] == 2
     # No file form: each run has a design of its own.
     assert rows[0].design != rows[1].design
@@ -175,7 +175,7 @@ def test_a_model_implemented_in_python_runs_without_deadlock():
 
 
 def test_rows_and_options_pickle_and_print():
-    rows = hc.run_study([paper(1, tf=2.0), paper(1, gamma=-1.0)])
+    rows = hc.run_scenarios([paper(1, tf=2.0), paper(1, gamma=-1.0)])
     for row in rows:
         copy = pickle.loads(pickle.dumps(row))
         assert copy == row and copy.status == row.status and copy.reason == row.reason

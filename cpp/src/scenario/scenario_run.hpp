@@ -1,4 +1,4 @@
-// run_scenario in two parts, the design and the closed loop, so that run_study (study.cpp) can
+// run_scenario in two parts, the design and the closed loop, so that run_scenarios (study.cpp) can
 // compute a design once and run every scenario that shares it (private to the library).
 #pragma once
 
@@ -42,7 +42,7 @@ ScenarioDesign design_scenario(const Scenario& s);
 // from another scenario with the same design_key): rethrows the design's failure where s needs
 // what failed, then simulates the closed loop and computes the metrics. noise: explicit noise
 // samples, or null for the seeded ones. Fills every field but timing.design and timing.total.
-// sigma_eigenvalues: OutputFeedbackOptions::sigma_eigenvalues (run_study, which keeps only the
+// sigma_eigenvalues: OutputFeedbackOptions::sigma_eigenvalues (run_scenarios, which keeps only the
 // metrics, leaves that series out).
 RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise,
                             bool sigma_eigenvalues = true);

@@ -125,7 +125,7 @@ struct DesignSlot {
 
 }  // namespace
 
-std::vector<StudyRun> run_study(const std::vector<Scenario>& scenarios, const StudyOptions& options,
+std::vector<StudyRun> run_scenarios(const std::vector<Scenario>& scenarios, const StudyOptions& options,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
   options.validate();
   const std::size_t total = scenarios.size();

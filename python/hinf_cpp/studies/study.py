@@ -368,9 +368,9 @@ def load_study(path: str | os.PathLike) -> Study:
 
 
 def _batch(scenarios: list, threads: int, progress: Callable[[int, int], None] | None = None) -> list[dict]:
-    """Rows of hc.run_study (the C++ batch runner: threads in C++, the GIL released, one design
+    """Rows of hc.run_scenarios (the C++ batch runner: threads in C++, the GIL released, one design
     per distinct design input) for a list of scenarios."""
-    runs = _core.run_study(scenarios, _core.StudyOptions(threads=threads, share_designs=True), progress)
+    runs = _core.run_scenarios(scenarios, _core.StudyOptions(threads=threads, share_designs=True), progress)
     return [{"status": r.status, "reason": r.reason, "metrics": {name: getattr(r.metrics, name) for name in METRIC_NAMES},
              "gamma": r.gamma, "law": r.law.name, "output_feedback": bool(r.output_feedback)} for r in runs]
 
@@ -416,7 +416,7 @@ def run_chunk(study: Study, start: int, stop: int, threads: int = 0,
               progress: Callable[[int, int], None] | None = None):
     """Runs start..stop-1 of a study (the task of a worker, local or Dask); an Arrow table.
     A run whose scenario the reader refuses is a row with status "invalid_input".
-    `progress(done, total)` is hc.run_study's (about every 0.1 s, on this thread)."""
+    `progress(done, total)` is hc.run_scenarios's (about every 0.1 s, on this thread)."""
     import pyarrow as pa
 
     schema = study_table_schema(study)
@@ -605,7 +605,7 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     try:
         if client is None:
             # The chunks are tasks, as on Dask: each of `workers` threads runs one chunk at a time
-            # through hc.run_study on one C++ thread (which releases the GIL), so that building a
+            # through hc.run_scenarios on one C++ thread (which releases the GIL), so that building a
             # chunk's scenarios in Python overlaps the other threads' runs and no core idles at
             # the end of a chunk. After an interruption, chunks still running are not saved.
             running: dict[int, int] = {}  # runs done in the chunks being run (terminal line)

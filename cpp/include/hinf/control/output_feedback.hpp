@@ -89,7 +89,7 @@ struct OutputFeedbackOptions {
   CouplingPolicy on_coupling_violation = CouplingPolicy::Error;
   // The series EstimatorSeries::sigma_min_eig and sigma_max_eig (false: NaN). Every other
   // output, the metrics and the check that Sigma stays positive semidefinite are the same
-  // either way; run_study, which keeps only the metrics, turns it off (a third of a Figure 2
+  // either way; run_scenarios, which keeps only the metrics, turns it off (a third of a Figure 2
   // run's time goes to eigenvalues on the output grid).
   bool sigma_eigenvalues = true;
 };

@@ -16,7 +16,7 @@
 // they are available at any t in [t0, tf] with the integrator's accuracy. A finite escape
 // (a conjugate point: gamma <= gamma*, eq. 14) raises ConjugatePointError with the
 // estimated escape time. A solution is immutable once solved (no caches; lookups take
-// caller-owned cursors): several threads may evaluate one at once (run_study shares one
+// caller-owned cursors): several threads may evaluate one at once (run_scenarios shares one
 // between runs, study.hpp).
 #pragma once
 

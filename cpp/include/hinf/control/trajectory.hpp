@@ -5,7 +5,7 @@
 //     A_e(t) = d/dq [f + G u_d](t, q_d(t)),  B_e(t) = G(t, q_d(t)),  D_e(t) = D(t, q_d(t))
 // are available at any t in [t0, tf]. A Trajectory is immutable once made: its const functions
 // keep no state (lookups take caller-owned cursors), so one trajectory may be read from several
-// threads at once (run_study shares one between runs, study.hpp).
+// threads at once (run_scenarios shares one between runs, study.hpp).
 #pragma once
 
 #include <memory>

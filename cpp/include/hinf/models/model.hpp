@@ -92,7 +92,7 @@ class Model {
   virtual std::vector<std::pair<std::string, double>> named_parameters() const { return {}; }
 
   // True when `other` is the same model: the same equations with the same parameters, so that
-  // the designs along one desired trajectory are the same for both (run_study shares designs
+  // the designs along one desired trajectory are the same for both (run_scenarios shares designs
   // by it). The default is the model itself only (a model that cannot tell, such as one
   // implemented in Python); the built-in models compare their type and named_parameters().
   virtual bool same_as(const Model& other) const { return this == &other; }

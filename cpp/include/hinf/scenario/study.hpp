@@ -1,7 +1,8 @@
 // Studies: many scenarios run as one batch (a Monte Carlo over noise seeds, initial states,
 // disturbances or plants; a sweep over gamma or weights), in parallel, one row per run.
 //
-//   run_study(scenarios, options, progress) -> one StudyRun per scenario, in the order given.
+//   run_scenarios(scenarios, options, progress) -> one StudyRun per scenario, in the order given.
+// (The Python package's hinf_cpp.studies.run_study runs a study file on top of it.)
 //
 // Independence. Every row is what run_scenario gives for that scenario alone, bit for bit,
 // whatever the number of threads and whether designs are shared: each run is computed by one
@@ -40,7 +41,7 @@
 // workers run and calls progress about every 0.1 s when the number of finished runs changed,
 // and once at the end with done == total. An exception thrown by progress stops the study:
 // the workers take no new run, finish the ones they are in, are joined, and the exception is
-// rethrown to the caller of run_study.
+// rethrown to the caller of run_scenarios.
 #pragma once
 
 #include <cmath>
@@ -101,7 +102,13 @@ struct StudyOptions {
   void validate() const;  // InputError unless threads >= 0
 };
 
-std::vector<StudyRun> run_study(const std::vector<Scenario>& scenarios, const StudyOptions& options = {},
+std::vector<StudyRun> run_scenarios(const std::vector<Scenario>& scenarios, const StudyOptions& options = {},
                                 const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+// The name of run_scenarios in 0.1, deprecated: removed in 0.3.
+[[deprecated("run_study is renamed run_scenarios (hinf_cpp 0.2)")]] inline std::vector<StudyRun> run_study(
+    const std::vector<Scenario>& scenarios, const StudyOptions& options = {},
+    const std::function<void(std::size_t done, std::size_t total)>& progress = {}) {
+  return run_scenarios(scenarios, options, progress);
+}
 
 }  // namespace hinf
