@@ -21,6 +21,8 @@ from __future__ import annotations
 import json
 import math
 import pathlib
+import resource
+import signal
 import subprocess
 import sys
 import textwrap
@@ -62,17 +64,28 @@ NOTES_PAPER_GAMMA_STAR = 1.33502
 NOTES_PAPER_T_ESCAPE = 15.2
 
 
-def run_isolated(*code: str, timeout: float = 8.0) -> dict:
+# What the calls run in a fresh interpreter may spend: they take a fraction of a second of CPU;
+# a hang (a loop inside the C++ core) spins one core and is stopped by the CPU-time limit, which
+# does not depend on the machine's load. The wall-clock timeout is only a last resort.
+CPU_SECONDS = 60
+WALL_SECONDS = 1800
+
+
+def run_isolated(*code: str) -> dict:
     """Runs the pieces of `code` (each dedented) in a fresh interpreter (this one's executable,
-    tests/python on the path) and returns the JSON object printed last. For calls that may
-    never return: a loop inside the C++ core runs with the GIL released and cannot be
-    interrupted in-process."""
+    tests/python on the path) under a CPU-time limit, and returns the JSON object printed last.
+    For calls that may never return: a loop inside the C++ core runs with the GIL released and
+    cannot be interrupted in-process."""
     script = (f"import json, math, sys\nsys.path.insert(0, {str(TESTS)!r})\n"
               + "\n".join(textwrap.dedent(piece) for piece in code))
-    try:
-        done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"did not return within {timeout:g} s: the call hangs")
+
+    def limit_cpu():
+        resource.setrlimit(resource.RLIMIT_CPU, (CPU_SECONDS, CPU_SECONDS))
+
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=WALL_SECONDS,
+                          preexec_fn=limit_cpu)
+    if done.returncode in (-signal.SIGXCPU, -signal.SIGKILL):
+        pytest.fail(f"used up its {CPU_SECONDS} s of CPU time: the call hangs")
     assert done.returncode == 0, done.stderr[-2000:]
     return json.loads(done.stdout.strip().splitlines()[-1])
 
@@ -376,7 +389,7 @@ def test_design_at_the_returned_gamma_star_returns(case):
             print(json.dumps({"outcome": "solved"}))
         except Exception as e:
             print(json.dumps({"outcome": type(e).__name__, "message": str(e)}))
-    """, timeout=6.0)
+    """)
     assert result["outcome"] in ("solved", "SolverError"), result
     if result["outcome"] == "SolverError":
         assert "increase it" in result["message"]
@@ -694,7 +707,7 @@ def test_output_feedback_gamma_star_when_the_grde_binds_at_a_tight_tolerance():
                               "converged": r.converged}}))
         except Exception as e:
             print(json.dumps({{"state": state.gamma_star, "error": type(e).__name__ + ": " + str(e)}}))
-    """, timeout=6.0)
+    """)
     assert abs(result["state"] - g_grde) / g_grde < 1e-6  # measured 5.9e-7
     assert "error" not in result, result["error"]
     assert result["converged"] and result["binding"] == "grde"

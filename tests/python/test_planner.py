@@ -7,7 +7,6 @@ error, fast; bad arguments."""
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 import pytest
@@ -150,13 +149,15 @@ def test_round_trip_through_sampled_waypoints(name, model, q0, u_d, bounds):
 @pytest.mark.ipopt
 def test_unreachable_waypoint_is_a_clear_error_fast():
     ship = hc.ShipModel()
-    options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5))
-    started = time.perf_counter()
+    # Fast means few iterations, not seconds: the exact penalty meets or misses the waypoints in
+    # one bounded solve (measured: 106 IPOPT iterations, then 14, 9 and 5 to confirm the miss),
+    # so 400 per solve holds it to a few times that; a search for a feasible point would run out
+    # of them and end in a PlanningError instead.
+    options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), max_iterations=400)
     # At most 2 m/s (u1 <= 2 against the surge damping 1): 180 m in the 20 s after the first
     # waypoint is out of reach; the first waypoint alone is not.
     with pytest.raises(UnreachableWaypointError) as caught:
         plan(ship, [Waypoint(20.0, 0.0, t=20.0), Waypoint(200.0, 3.5, t=40.0)], q0=[1, 0, 0, 0, 0, 0], options=options)
-    elapsed = time.perf_counter() - started
     assert caught.value.index == 1
     message = str(caught.value)
     assert message.startswith("waypoints[1] (x = 200, y = 3.5, t = 40) cannot be reached with the input bounds "
@@ -164,7 +165,6 @@ def test_unreachable_waypoint_is_a_clear_error_fast():
     # The closest a ship at full speed gets: at least 200 - 2 * 40 = 120 m short.
     assert caught.value.miss * options.tolerance > 100.0
     assert isinstance(caught.value, ValueError)
-    assert elapsed < 10.0, elapsed  # about a second on this machine; a limit far from a search's minutes
 
 
 def test_path_with_a_speed_profile_and_grid():

@@ -35,10 +35,15 @@ long output_count(double t0, double tf, double dt) {
   return std::max(1L, static_cast<long>(std::ceil(intervals - 1e-6))) + 1;
 }
 
-std::vector<double> output_grid(double t0, double tf, double dt) {
+long check_output_grid(double t0, double tf, double dt) {
   const long count = output_count(t0, tf, dt);
   check_memory(8.0 * static_cast<double>(count), str_cat("the output grid of ", count, " points"),
                "use a larger [output] dt");
+  return count;
+}
+
+std::vector<double> output_grid(double t0, double tf, double dt) {
+  const long count = check_output_grid(t0, tf, dt);
   std::vector<double> grid;
   grid.reserve(static_cast<std::size_t>(count));
   for (long k = 0; k + 1 < count; ++k) grid.push_back(t0 + static_cast<double>(k) * dt);

@@ -121,7 +121,7 @@ void Scenario::validate() const {
   const auto [kappa_min, kappa_min_t] = kappa.minimum(t0, tf);
   require(std::isfinite(kappa_min) && kappa_min > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(",
           kappa_min_t, ") = ", kappa_min);
-  output_grid(t0, tf, output_dt);  // checks dt
+  check_output_grid(t0, tf, output_dt);  // dt, without allocating the grid
   if (law == Law::Cascade) {
     require(dynamic_cast<const ShipModel*>(model.get()) != nullptr,
             "[controller] law = \"cascade\" is written for the ship model; the model is '", model->name(), "'");

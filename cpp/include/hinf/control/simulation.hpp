@@ -41,6 +41,9 @@ struct SimulationOptions {
 std::vector<double> output_grid(double t0, double tf, double dt);
 // The number of points of output_grid(t0, tf, dt), without building it.
 long output_count(double t0, double tf, double dt);
+// output_count, and an InputError when the grid would not fit in memory (resources.hpp): the
+// checks of output_grid without building it (Scenario::validate).
+long check_output_grid(double t0, double tf, double dt);
 
 // How a closed-loop run ended.
 enum class RunStatus {
