@@ -200,7 +200,7 @@ def main() -> None:
     chunks = [ca.DM(states[k:k + chunk].T) for k in range(0, args.calls - chunk + 1, chunk)]
     casadi_vm = per_call(time_loop(lambda: [J_map(c) for c in chunks], args.calls, args.python_repeat),
                          chunk * len(chunks))
-    g = hc.GeneratedFunction(str(library), "ship_dfdq")
+    g = hc._core.GeneratedFunction(str(library), "ship_dfdq")
     binding = per_call(time_loop(lambda: [g(x) for x in states[:loop_calls]], loop_calls, args.python_repeat),
                        loop_calls)
     # The results agree before the timings mean anything.

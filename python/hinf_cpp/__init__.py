@@ -1,33 +1,156 @@
 """hinf_cpp: H-infinity tracking control of nonlinear underactuated vehicles.
 
-The numerics (models, desired trajectories, the GRDE, the closed loop) live in the C++
-core ``hinf_cpp._core``; this package adds scenario files, plots and the command line:
-``hinf_cpp.analysis.compare`` (the H-infinity law against the lqr and cascade baselines),
-``hinf_cpp.analysis.recovery`` (poor initial conditions, turning around), ``hinf_cpp.output.plotting``
-(figures), ``hinf_cpp.analysis.report`` (a report folder), ``hinf_cpp.output.export`` (NPZ, tidy CSV, JSON),
-``hinf_cpp.analysis`` (attenuation against gamma), ``hinf_cpp.analysis.gallery`` (the built-in
-vehicles' shipped runs: FossenVessel, Hovercraft, PlanarVtol, Auv; docs/vehicles.md),
-``hinf_cpp.models.symbolic`` (your own vehicle in CasADi symbols, evaluated in C++; docs/models.md),
-``hinf_cpp.models.codegen`` (CasADi functions compiled for the C++ core; needs casadi) and
-``hinf_cpp.planning.planner`` (feasible desired trajectories from waypoints or a path; needs casadi;
-docs/planning.md) and ``hinf_cpp.studies.study`` (studies: grid and random axes over scenario keys, one
-row per run as a pandas DataFrame, locally or on Dask; ``hinf_cpp.studies.report`` summarizes and
-plots them; docs/studies.md).
+The numerics (models, desired trajectories, the Riccati equations, the closed loops) are the C++
+core; this namespace is its API as a user needs it, plus scenario files:
 
-Conventions (docs/mathematics.md): state order of the ship q = [u, v, r, x, y, psi];
-errors q_e = q - q_d; Z(t) > 0 is the cost-to-go matrix of paper eq. (13), solved
-backward in time from Z(tf) = Qf; the control is u = u_d - kappa B' Z q_e.
+* scenarios: :func:`load_scenario`, :func:`scenario_from_dict`, :func:`scenario_path`,
+  :class:`Scenario`, :func:`run_scenario` -> :class:`RunResult`, :func:`run_scenarios` (many
+  scenarios in parallel);
+* models: :class:`Model` (subclass it in Python), :class:`ShipModel` (the paper's ship),
+  :class:`LinearModel`, the vehicles :class:`FossenVessel`, :class:`Hovercraft`,
+  :class:`PlanarVtol`, :class:`Auv`, :class:`FleetModel`, :class:`GeneratedModel`;
+* the design: :class:`Trajectory` (q_d, u_d, A_e), :func:`solve_grde` (Z of paper eq. 13),
+  :func:`gamma_star` (eq. 14), :func:`certify` (eqs. 22-24), :func:`solve_filter_riccati`
+  (eq. 36);
+* laws and closed loops: :class:`HinfStateFeedback` (eqs. 17/18), :class:`CascadeController`,
+  :func:`simulate_state_feedback`, :func:`simulate_output_feedback` (eqs. 34-36),
+  :class:`Metrics`;
+* errors: ValueError for bad input; :class:`HinfError` and its subclasses
+  :class:`SolverError`, :class:`ConjugatePointError`, :class:`CouplingConditionError`.
 
-The C++ API (``cpp/include/hinf/*.hpp``) is exported as it is: the same names, argument order
-and defaults; a C++ member function is a method (``trajectory.tf()``), a field of a C++ struct
-a property (``result.metrics.l2_gain``); enums (``Law``, ``Method``, ...) also take their names
-as strings (``scenario.law = "lqr"``). Scenarios, models, options and results pickle.
+The subpackages add the rest, each imported by name: :mod:`hinf_cpp.models` (your own vehicle in
+CasADi symbols), :mod:`hinf_cpp.planning` (desired trajectories from waypoints),
+:mod:`hinf_cpp.scenario` (files, keys set by name), :mod:`hinf_cpp.studies` (grid and random
+studies as DataFrames), :mod:`hinf_cpp.analysis` (laws compared, recovery, attenuation against
+gamma), :mod:`hinf_cpp.output` (figures, exports, tables). Plumbing (the TOML parser entry
+points, output grids, the noise generator) stays in :mod:`hinf_cpp._core`.
+
+Conventions (docs/mathematics.md): time in seconds; errors q_e = q - q_d (actual minus desired),
+the heading wrapped to (-pi, pi]; Z(t) > 0 is the cost-to-go of paper eq. (13), solved backward
+from Z(tf) = Qf; the control is u = u_d - kappa B' Z q_e. The C++ API (cpp/include/hinf) is
+exported as it is: the same names, argument order and defaults; a C++ member function is a
+method (``trajectory.tf()``), a field of a C++ struct a property (``result.metrics.l2_gain``);
+enums also take their names as strings (``scenario.law = "lqr"``). Scenarios, models, options
+and results pickle.
+
+Example
+-------
+>>> import hinf_cpp as hc
+>>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+>>> round(result.metrics.rms_position_error_last_half, 3)
+0.048
 """
 
-from hinf_cpp import _core
-from hinf_cpp._core import *  # noqa: F403 - the C++ API, typed in _core.pyi
-from hinf_cpp._core import __version__
+from hinf_cpp._core import (
+    Auv,
+    AuvParameters,
+    CascadeController,
+    CascadeGains,
+    Certificates,
+    ConjugatePointError,
+    Controller,
+    CouplingConditionError,
+    CouplingPolicy,
+    Disturbance,
+    EstimatorSeries,
+    FilterLinearization,
+    FilterRiccatiSolution,
+    FleetModel,
+    FossenVessel,
+    FossenVesselParameters,
+    GammaCondition,
+    GammaStarOptions,
+    GammaStarResult,
+    GammaTrial,
+    GeneratedModel,
+    Harmonic,
+    HinfError,
+    HinfStateFeedback,
+    Hovercraft,
+    HovercraftParameters,
+    Interpolation,
+    Law,
+    LinearModel,
+    MeasurementSpec,
+    Method,
+    MetricDefinition,
+    Metrics,
+    Model,
+    NewtonSystems,
+    OutputFeedbackOptions,
+    OutputFeedbackProblem,
+    PiecewisePolynomial,
+    PlanarVtol,
+    PlanarVtolParameters,
+    RiccatiSolution,
+    RunOutcome,
+    RunResult,
+    RunStatus,
+    Scenario,
+    ShipModel,
+    ShipParameters,
+    Signal,
+    SimulationOptions,
+    SimulationResult,
+    SolverError,
+    SolverOptions,
+    SolveStats,
+    StepStats,
+    StudyOptions,
+    StudyRun,
+    SymmetricSolution,
+    Timing,
+    Trajectory,
+    TrajectoryOptions,
+    VectorSignal,
+    __version__,
+    certify,
+    compute_metrics,
+    filter_escape_time,
+    gamma_star,
+    gamma_star_output_feedback,
+    grde_escape_time,
+    max_rho_sigma_z,
+    metric_table,
+    run_scenario,
+    run_scenario_with_noise,
+    run_scenarios,
+    scenario_certificates,
+    scenario_gamma_star,
+    scenario_gamma_star_output_feedback,
+    scenario_noise,
+    simulate_output_feedback,
+    simulate_state_feedback,
+    solve_filter_riccati,
+    solve_grde,
+    wrap_angle,
+)
 from hinf_cpp.scenario import load_scenario, scenario_from_dict, scenario_path, signal_from_spec
 
-__all__ = sorted([name for name in vars(_core) if not name.startswith("_")]
-                 + ["__version__", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec"])
+__all__ = [
+    # scenarios
+    "Scenario", "MeasurementSpec", "Law", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec",
+    "run_scenario", "run_scenario_with_noise", "RunResult", "Timing", "scenario_gamma_star",
+    "scenario_gamma_star_output_feedback", "scenario_certificates", "scenario_noise", "run_scenarios",
+    "StudyOptions", "StudyRun", "RunOutcome",
+    # signals
+    "Signal", "VectorSignal", "Harmonic", "Interpolation",
+    # models
+    "Model", "LinearModel", "ShipModel", "ShipParameters", "FossenVessel", "FossenVesselParameters", "Hovercraft",
+    "HovercraftParameters", "PlanarVtol", "PlanarVtolParameters", "Auv", "AuvParameters", "FleetModel",
+    "GeneratedModel",
+    # the design
+    "Trajectory", "TrajectoryOptions", "SolverOptions", "Method", "NewtonSystems", "StepStats", "PiecewisePolynomial",
+    "solve_grde", "SymmetricSolution", "RiccatiSolution", "SolveStats", "solve_filter_riccati",
+    "FilterRiccatiSolution", "grde_escape_time", "filter_escape_time", "gamma_star", "gamma_star_output_feedback",
+    "GammaStarOptions", "GammaStarResult", "GammaTrial", "GammaCondition", "max_rho_sigma_z", "certify",
+    "Certificates",
+    # laws and closed loops
+    "Controller", "HinfStateFeedback", "CascadeController", "CascadeGains", "Disturbance", "wrap_angle",
+    "simulate_state_feedback", "SimulationOptions", "SimulationResult", "RunStatus", "simulate_output_feedback",
+    "OutputFeedbackProblem", "OutputFeedbackOptions", "FilterLinearization", "CouplingPolicy", "EstimatorSeries",
+    "Metrics", "MetricDefinition", "metric_table", "compute_metrics",
+    # errors
+    "HinfError", "SolverError", "ConjugatePointError", "CouplingConditionError",
+    "__version__",
+]

@@ -522,12 +522,12 @@ def test_output_feedback_arguments(lti_design):
 
 def test_standard_normal_samples_refuses_absurd_counts():
     with pytest.raises(ValueError, match=r"count x channels = 1000000000000 x 3 is more than the 1000000000 numbers"):
-        hc.standard_normal_samples(1, 10**12, 3)
+        hc._core.standard_normal_samples(1, 10**12, 3)
     with pytest.raises(ValueError, match="count must be >= 0, got -5"):
-        hc.standard_normal_samples(1, -5, 3)
+        hc._core.standard_normal_samples(1, -5, 3)
     with pytest.raises(ValueError, match=r"channels must be in \[0, 10000\], got -1"):
-        hc.standard_normal_samples(1, 5, -1)
-    assert hc.standard_normal_samples(1, 4, 3).shape == (4, 3)
+        hc._core.standard_normal_samples(1, 5, -1)
+    assert hc._core.standard_normal_samples(1, 4, 3).shape == (4, 3)
 
 
 # ---- metrics ----

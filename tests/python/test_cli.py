@@ -84,7 +84,7 @@ def test_csv_time_series(paper_outputs):
     header = (["t"] + names + [n + "_d" for n in names] + ["u1", "u2", "u1_d", "u2_d"]
               + [f"w{i}" for i in range(1, 7)])
     assert rows[0] == header
-    grid = hc.output_grid(0.0, 40.0, 0.01)
+    grid = hc._core.output_grid(0.0, 40.0, 0.01)
     assert len(grid) == 4001
     data = np.array(rows[1:], dtype=float)
     assert data.shape == (len(grid), len(header))

@@ -163,7 +163,7 @@ w2 = 0.1
 [initial]
 q0 = [0.0]
 """
-    assert hc.parse_scenario_toml(text, "linear.toml").disturbance(0.5)[1] == 0.1
+    assert hc._core.parse_scenario_toml(text, "linear.toml").disturbance(0.5)[1] == 0.1
     assert hc.ShipModel(hc.ShipParameters()).noise_channels() == [3, 4, 5]
 
 

@@ -32,7 +32,7 @@ def test_results_file_has_every_metric_of_the_table():
     scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
     scenario.tf = 2.0
     result = hc.run_scenario(scenario)
-    data = json.loads(hc.results_json(result))
+    data = json.loads(hc._core.results_json(result))
     assert sorted(data["metrics"]) == sorted(d.name for d in hc.metric_table())  # JSON keys are sorted
     # The file's solver is bdf: the method the GRDE solve reports is written as is.
     assert data["solver"]["grde_method"] == result.solution.stats().method

@@ -196,7 +196,7 @@ def test_npz_round_trip_is_exact(tmp_path, output_run):
     np.testing.assert_array_equal(data["q_hat"], sim.estimator.q_hat)
     np.testing.assert_array_equal(data["rho_sigma_z"], sim.estimator.rho_sigma_z)
     np.testing.assert_array_equal(data["Z"], output_run.solution.Z(sim.t))
-    assert data.meta["results"] == json.loads(hc.results_json(output_run))
+    assert data.meta["results"] == json.loads(hc._core.results_json(output_run))
     assert data.meta["components"]["y"] == ["x", "y", "psi"]
     assert data.meta["state_names"] == ["u", "v", "r", "x", "y", "psi"]
     # Plain NumPy reads it without pickle.
@@ -236,7 +236,7 @@ def test_tidy_csv_round_trip(tmp_path, output_run, state_run):
 def test_json_results_file_round_trip(tmp_path, state_run):
     path = export.save_json(state_run, tmp_path / "run.json")
     data = export.load_json(path)
-    assert data == json.loads(hc.results_json(state_run))
+    assert data == json.loads(hc._core.results_json(state_run))
     assert data["metrics"]["final_position_error"] == pytest.approx(state_run.metrics.final_position_error,
                                                                     rel=1e-15)
 

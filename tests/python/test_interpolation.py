@@ -167,7 +167,7 @@ def test_scenario_key_file_and_dict(tmp_path, interpolation):
     else:
         assert messages == []
     # Written with its interpolation; reads back to the same signal.
-    text = hc.scenario_toml(from_file)
+    text = hc._core.scenario_toml(from_file)
     assert f'interpolation = "{expected}"' in text
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

@@ -79,7 +79,7 @@ def series(run: hc.SimulationResult, name: str):
 
 
 def paper_noise(seed=PAPER_SEED, t0=0.0, tf=40.0, period=0.01):
-    return hc.standard_normal_samples(seed, hc.noise_sample_count(t0, tf, period), 3)
+    return hc._core.standard_normal_samples(seed, hc._core.noise_sample_count(t0, tf, period), 3)
 
 
 def position_error(run) -> np.ndarray:
@@ -406,7 +406,7 @@ def test_ship_closed_loop_matches_an_independent_integration(filter_A):
     grde = hc.solve_grde(tr, EYE6, EYE6, gamma, hc.SolverOptions(method="erk", **TIGHT))
     N = np.array([[0.25, 0.02, 0.0], [0.02, 0.3, 0.0], [0.0, 0.0, 0.2]])
     Sigma0 = 0.8 * EYE6 + 0.1 * np.ones((6, 6))
-    noise = hc.standard_normal_samples(3, hc.noise_sample_count(t0, tf, T), 3)
+    noise = hc._core.standard_normal_samples(3, hc._core.noise_sample_count(t0, tf, T), 3)
     problem = hc.OutputFeedbackProblem(grde, sigma, T, noise, N, Sigma0, EYE6)
     run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(grde, kappa), paper_disturbance_signals(),
                                       PAPER_Q0, hc.OutputFeedbackOptions(filter_A=filter_A),
@@ -465,7 +465,7 @@ def test_linear_closed_loop_matches_an_independent_integration(gamma):
     u_d = [hc.Signal(0.3, [hc.Harmonic(0.5, 1.1)])]
     tr = hc.Trajectory(model, np.array([0.2, -0.1, 0.4]), u_d, t0, tf)
     grde = hc.solve_grde(tr, np.eye(n), np.eye(n), gamma, hc.SolverOptions(method="erk", **TIGHT))
-    noise = hc.standard_normal_samples(17, hc.noise_sample_count(t0, tf, T), 2)
+    noise = hc._core.standard_normal_samples(17, hc._core.noise_sample_count(t0, tf, T), 2)
     w1 = hc.Signal(0.0, [hc.Harmonic(0.4, 2.0)])
     problem = hc.OutputFeedbackProblem(grde, sigma, T, noise, N, Sigma0, np.eye(n))
     q0 = np.array([1.0, -0.5, 0.3])
@@ -543,15 +543,15 @@ def test_no_noise_estimation_error_vanishes(paper_trajectory, paper_solutions, m
 
 def test_noise_sample_count():
     """ceil((tf - t0) / T) samples, the last one possibly partial."""
-    assert hc.noise_sample_count(0.0, 40.0, 0.01) == 4000
-    assert hc.noise_sample_count(0.0, 1.0, 0.3) == 4
-    assert hc.noise_sample_count(0.0, 1.0, 0.25) == 4
-    assert hc.noise_sample_count(2.0, 3.0, 0.1) == 10
-    assert hc.noise_sample_count(0.0, 0.7, 0.1) == 7
-    assert hc.noise_sample_count(0.0, 1.0, 5.0) == 1
+    assert hc._core.noise_sample_count(0.0, 40.0, 0.01) == 4000
+    assert hc._core.noise_sample_count(0.0, 1.0, 0.3) == 4
+    assert hc._core.noise_sample_count(0.0, 1.0, 0.25) == 4
+    assert hc._core.noise_sample_count(2.0, 3.0, 0.1) == 10
+    assert hc._core.noise_sample_count(0.0, 0.7, 0.1) == 7
+    assert hc._core.noise_sample_count(0.0, 1.0, 5.0) == 1
     for bad in (0.0, -0.01, math.nan):
         with pytest.raises(ValueError, match="period"):
-            hc.noise_sample_count(0.0, 1.0, bad)
+            hc._core.noise_sample_count(0.0, 1.0, bad)
 
 
 @pytest.mark.parametrize("seed", [0, 1, PAPER_SEED, 2**63 + 12345])
@@ -559,7 +559,7 @@ def test_standard_normal_samples_statistics(seed):
     """4000 x 3 samples: each channel has mean 0 and variance 1 (5-sigma bounds of the sample
     statistics), a normal distribution (Kolmogorov-Smirnov), and no correlation across
     channels or between consecutive samples (|r| < 5 / sqrt(4000))."""
-    x = hc.standard_normal_samples(seed, 4000, 3)
+    x = hc._core.standard_normal_samples(seed, 4000, 3)
     assert x.shape == (4000, 3) and np.all(np.isfinite(x))
     limit = 5.0 / math.sqrt(4000)
     assert np.all(np.abs(x.mean(axis=0)) < limit)
@@ -571,10 +571,10 @@ def test_standard_normal_samples_statistics(seed):
     corr = np.corrcoef(x.T)
     assert np.max(np.abs(corr - np.eye(3))) < limit
     # The same seed gives the same numbers; another seed other numbers.
-    np.testing.assert_array_equal(hc.standard_normal_samples(seed, 4000, 3), x)
-    other = hc.standard_normal_samples(seed + 1, 4000, 3)
+    np.testing.assert_array_equal(hc._core.standard_normal_samples(seed, 4000, 3), x)
+    other = hc._core.standard_normal_samples(seed + 1, 4000, 3)
     assert abs(np.corrcoef(other.ravel(), x.ravel())[0, 1]) < limit
-    assert hc.standard_normal_samples(seed, 0, 3).shape == (0, 3)
+    assert hc._core.standard_normal_samples(seed, 0, 3).shape == (0, 3)
 
 
 @pytest.fixture(scope="module")
@@ -597,7 +597,7 @@ def test_same_seed_same_run_bit_for_bit(fig2_scenario, fig2_run):
     assert again.metrics == fig2_run.metrics
     # scenario_noise is the seeded standard normal sequence, one row per 0.01 s.
     noise = hc.scenario_noise(fig2_scenario)
-    np.testing.assert_array_equal(noise, hc.standard_normal_samples(PAPER_SEED, 4000, 3))
+    np.testing.assert_array_equal(noise, hc._core.standard_normal_samples(PAPER_SEED, 4000, 3))
     # Passing it explicitly replays the run exactly.
     replay = hc.run_scenario_with_noise(fig2_scenario, noise)
     for field in ("q", "q_hat", "y", "u", "w", "rho_sigma_z"):
@@ -647,9 +647,9 @@ def test_noise_is_held_over_each_period(paper_trajectory, paper_solutions):
     sample floor(k / 3), the disturbance channels hold the paper's w, and
     y = [x, y, psi] + sigma * sample, the measured heading wrapped to (-pi, pi]."""
     T, sigma = 0.03, 0.5
-    count = hc.noise_sample_count(0.0, 40.0, T)
+    count = hc._core.noise_sample_count(0.0, 40.0, T)
     assert count == 1334  # 1333 whole periods and a partial one
-    noise = hc.standard_normal_samples(99, count, 3)
+    noise = hc._core.standard_normal_samples(99, count, 3)
     design = paper_solutions["erk"]
     run = hc.simulate_output_feedback(paper_problem(design, noise, sample_period=T), hc.HinfStateFeedback(design),
                                       paper_disturbance_signals(), PAPER_Q0,
@@ -743,7 +743,7 @@ def scalar_coupling_case():
     model = hc.LinearModel(np.array([[a]]), np.array([[b]]), np.array([[d]]), np.array([[c]]))
     tr = hc.Trajectory(model, [0.0], [0.0], t0, tf)
     grde = hc.solve_grde(tr, np.array([[q]]), np.array([[qf]]), gamma)
-    noise = np.zeros((hc.noise_sample_count(t0, tf, dt), 1))
+    noise = np.zeros((hc._core.noise_sample_count(t0, tf, dt), 1))
     problem = hc.OutputFeedbackProblem(design=grde, sigma=0.0, sample_period=dt, noise=noise, N=np.array([[nn]]),
                                        Sigma0=np.array([[s0]]), Q=np.array([[q]]))
     return grde, problem, rho, grid, grid[first], t_cross, gamma
@@ -887,7 +887,7 @@ def test_coupling_violation_from_a_scenario_file(tmp_path, reader, ship_coupling
     _, t_first, _, t_cross = ship_coupling_reference(SHIP_COUPLING_GAMMA)
     path = tmp_path / "coupling.toml"
     path.write_text(COUPLING_TEXT)
-    load = hc.load_scenario if reader == "python" else (lambda p: hc.parse_scenario_toml(p.read_text(), str(p)))
+    load = hc.load_scenario if reader == "python" else (lambda p: hc._core.parse_scenario_toml(p.read_text(), str(p)))
     scenario = load(path)
     assert scenario.measurement.on_coupling_violation == hc.CouplingPolicy.error
     with pytest.raises(hc.CouplingConditionError) as info:
@@ -939,7 +939,7 @@ def stiff_problem(tf=2.0):
     model = hc.LinearModel(A, B, D, C)
     tr = hc.Trajectory(model, np.zeros(3), [hc.Signal(0.0, [hc.Harmonic(1.0, 2.0)])], 0.0, tf)
     grde = hc.solve_grde(tr, np.eye(3), np.eye(3), 5.0, hc.SolverOptions(method="bdf", **TIGHT))
-    noise = hc.standard_normal_samples(7, hc.noise_sample_count(0.0, tf, 0.01), 2)
+    noise = hc._core.standard_normal_samples(7, hc._core.noise_sample_count(0.0, tf, 0.01), 2)
     problem = hc.OutputFeedbackProblem(grde, 0.1, 0.01, noise, 0.01 * np.eye(2), np.eye(3), np.eye(3))
     w = [hc.Signal(0.0, [hc.Harmonic(0.5, 3.0)]), 0.0, 0.0, 0.0]
     return grde, problem, w, np.array([0.3, -0.5, 0.2])
@@ -997,7 +997,7 @@ def python_reader(path):
 
 
 def cpp_reader(path):
-    return hc.parse_scenario_toml(path.read_text(), str(path))
+    return hc._core.parse_scenario_toml(path.read_text(), str(path))
 
 
 READERS = {"python": python_reader, "c++": cpp_reader}
@@ -1118,7 +1118,7 @@ def test_paper_fig2_file_is_fig1_with_a_measurement_section(fig2_scenario):
     np.testing.assert_array_equal(m.N, PAPER_N)
     np.testing.assert_array_equal(m.Q0, 2.0 * EYE6)
     # The default N is sigma^2 I: dropping N from the file gives the same run.
-    implicit = hc.parse_scenario_toml(mutate(FIG2_TEXT, "N = 0.25\n", ""), "implicit-N")
+    implicit = hc._core.parse_scenario_toml(mutate(FIG2_TEXT, "N = 0.25\n", ""), "implicit-N")
     np.testing.assert_array_equal(implicit.resolved().measurement.N, PAPER_N)
 
 
@@ -1141,7 +1141,7 @@ def test_scenario_filter_initialization(tmp_path, reader):
     text = mutate(text, "tf = 40.0", "tf = 2.0")
     path = tmp_path / "init.toml"
     path.write_text(text)
-    load = hc.load_scenario if reader == "python" else (lambda p: hc.parse_scenario_toml(p.read_text(), str(p)))
+    load = hc.load_scenario if reader == "python" else (lambda p: hc._core.parse_scenario_toml(p.read_text(), str(p)))
     run = hc.run_scenario(load(path)).simulation
     # (2.5 I)^-1 and its eigenvalues, in the library: round-off.
     assert run.estimator.sigma_min_eig[0] == pytest.approx(0.4, rel=ROUNDOFF)

@@ -79,7 +79,7 @@ def test_nested_options_are_copied_not_shared():
 
 
 def test_output_feedback_problem_pickles_with_its_design(paper_solutions):
-    noise = hc.standard_normal_samples(3, 4000, 3)
+    noise = hc._core.standard_normal_samples(3, 4000, 3)
     problem = hc.OutputFeedbackProblem(paper_solutions["erk"], 0.5, 0.01, noise, 0.25 * np.eye(3), np.eye(6),
                                        np.eye(6))
     copy = round_trip(problem)
@@ -172,7 +172,7 @@ def test_shipped_scenarios_pickle_as_their_file(name):
     scenario = hc.load_scenario(hc.scenario_path(name))
     scenario.solver.escape_norm = 1e8  # not in the file form: carried beside it
     copy = round_trip(scenario)
-    assert hc.scenario_toml(copy) == hc.scenario_toml(scenario)
+    assert hc._core.scenario_toml(copy) == hc._core.scenario_toml(scenario)
     assert copy.solver == scenario.solver and copy.name == scenario.name and copy.law == scenario.law
     assert (copy.measurement is None) == (scenario.measurement is None)
     if copy.measurement is not None:
@@ -232,8 +232,8 @@ def assert_same_result(copy: hc.RunResult, result: hc.RunResult):
     assert (copy.simulation.estimator is None) == (result.simulation.estimator is None)
     np.testing.assert_array_equal(copy.Z0, result.Z0)
     np.testing.assert_array_equal([copy.Z_min_eig, copy.Z_max_eig], [result.Z_min_eig, result.Z_max_eig])
-    assert hc.results_json(copy) == hc.results_json(result)
-    assert hc.results_csv(copy) == hc.results_csv(result)
+    assert hc._core.results_json(copy) == hc._core.results_json(result)
+    assert hc._core.results_csv(copy) == hc._core.results_csv(result)
     # The dense outputs: the same pieces, so the same values at any t (steps' ends, midpoints,
     # arbitrary times), derivatives included.
     tr, tr0 = copy.trajectory, result.trajectory

@@ -59,14 +59,14 @@ def test_a_perturbed_plant_runs_and_is_reported():
     result = hc.run_scenario(scenario)
     assert result.plant.named_parameters()["d_u"] == pytest.approx(1.3)
     assert np.abs(result.simulation.q - nominal.simulation.q).max() > 1e-2
-    document = json.loads(hc.results_json(result))
+    document = json.loads(hc._core.results_json(result))
     assert document["model"]["parameters"]["d_u"] == 1.0
     assert document["plant"] == {"name": "ship", "parameters": result.plant.named_parameters()}
-    assert "plant" not in json.loads(hc.results_json(nominal))
+    assert "plant" not in json.loads(hc._core.results_json(nominal))
     # The Scenario (its file form) and the result keep the plant through pickling.
     copy = pickle.loads(pickle.dumps(scenario))
     assert copy.plant.named_parameters() == scenario.plant.named_parameters()
-    assert "[plant]" in hc.scenario_toml(copy)
+    assert "[plant]" in hc._core.scenario_toml(copy)
     assert pickle.loads(pickle.dumps(result)).plant.named_parameters() == result.plant.named_parameters()
 
 

@@ -605,7 +605,7 @@ def check_run_result(result, scenario) -> None:
     def refuse(constant):
         raise AssertionError(f"the results file holds {constant}")
 
-    document = json.loads(hc.results_json(result), parse_constant=refuse)
+    document = json.loads(hc._core.results_json(result), parse_constant=refuse)
     assert document["status"] == result.simulation.status.name
     for name in METRICS:  # the metrics written as numbers that read back exactly, or null
         value = getattr(result.metrics, name)
@@ -629,7 +629,7 @@ def scenario_property_body(mutation: dict, workdir: pathlib.Path) -> None:
         text = duplicated(text, line)
     path = workdir / f"{mutation['scenario']}.toml"
     path.write_text(text)
-    _, text_error = attempt("parse_scenario_toml", hc.parse_scenario_toml, text, source)
+    _, text_error = attempt("parse_scenario_toml", hc._core.parse_scenario_toml, text, source)
     from_file, file_error = attempt("load_scenario", hc.load_scenario, path)
     for error, where in ((text_error, source), (file_error, str(path))):
         if error is not None:
@@ -647,8 +647,8 @@ def scenario_property_body(mutation: dict, workdir: pathlib.Path) -> None:
     if from_file is None:
         return
     # Round trip: the scenario written as a file reads back to the same scenario (file).
-    written = hc.scenario_toml(from_file)
-    assert hc.scenario_toml(hc.parse_scenario_toml(written, "written")) == written
+    written = hc._core.scenario_toml(from_file)
+    assert hc._core.scenario_toml(hc._core.parse_scenario_toml(written, "written")) == written
 
     result, error = attempt("run_scenario", hc.run_scenario, from_file)
     if error is None:
@@ -1481,7 +1481,7 @@ def lti_output_feedback_body(case: dict) -> None:
         check_rho(solution, Sigma, x)
 
     period = case["T"] / case["noise_intervals"]
-    samples = hc.noise_sample_count(x["t0"], x["tf"], period)
+    samples = hc._core.noise_sample_count(x["t0"], x["tf"], period)
     assert samples == math.ceil(case["noise_intervals"] * (1.0 - 1e-9))  # T / period intervals
     noise = np.random.default_rng(case["noise_seed"]).standard_normal((samples, case["p"]))
     problem, error = attempt("OutputFeedbackProblem", hc.OutputFeedbackProblem, solution, case["sigma"], period,

@@ -159,7 +159,7 @@ def test_a_diverging_run_is_a_status_in_the_results_file(tmp_path, program):
 
 def test_a_completed_run_has_status_completed(paper_run):
     assert paper_run.simulation.status == hc.RunStatus.completed and paper_run.simulation.status_message == ""
-    assert json.loads(hc.results_json(paper_run))["status"] == "completed"
+    assert json.loads(hc._core.results_json(paper_run))["status"] == "completed"
 
 
 def test_an_unstable_uncontrolled_plant_diverges_in_output_feedback():
@@ -171,7 +171,7 @@ def test_an_unstable_uncontrolled_plant_diverges_in_output_feedback():
     # Barely weighted, the unstable mode keeps Z moderate (z11 = 1e-6 e^20 ~ 500 at t0), so the
     # coupling condition rho(Sigma Z) < gamma^2 = 2500 holds and the run is stopped by divergence.
     design = hc.solve_grde(trajectory, np.diag([0.0, 1.0]), np.diag([1e-6, 1.0]), 50.0)
-    noise = hc.standard_normal_samples(1, hc.noise_sample_count(0.0, 10.0, 0.1), 2)
+    noise = hc._core.standard_normal_samples(1, hc._core.noise_sample_count(0.0, 10.0, 0.1), 2)
     problem = hc.OutputFeedbackProblem(design=design, sigma=0.1, sample_period=0.1, noise=noise,
                                        N=0.01 * np.eye(2), Sigma0=np.eye(2), Q=np.eye(2))
     sim = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(design), None, np.array([1.0, 0.0]),
@@ -197,7 +197,7 @@ def test_an_output_grid_too_large_for_the_machine_is_refused_before_allocating()
 
 def test_too_many_noise_samples_are_refused_before_allocating():
     with pytest.raises(ValueError, match=r"more than"):
-        hc.standard_normal_samples(1, 10**11, 3)
+        hc._core.standard_normal_samples(1, 10**11, 3)
     # A scenario whose sample period would need that many samples: refused by the memory limit.
     scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
     measurement = scenario.measurement

@@ -258,7 +258,7 @@ def test_a_changed_study_starts_over(mc_study, tmp_path):
 
 def test_a_pickled_and_a_rewritten_scenario_run_to_the_same_result(mc_study):
     scenario = mc_study.scenario(3)
-    copies = [pickle.loads(pickle.dumps(scenario)), hc.parse_scenario_toml(hc.scenario_toml(scenario), "<toml>")]
+    copies = [pickle.loads(pickle.dumps(scenario)), hc._core.parse_scenario_toml(hc._core.scenario_toml(scenario), "<toml>")]
     expected = hc.run_scenario(scenario).metrics
     for copy in copies:
         assert hc.run_scenario(copy).metrics == expected

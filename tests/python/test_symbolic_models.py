@@ -103,7 +103,7 @@ def test_symbolic_ship_reproduces_the_built_in_ship(name, ship_generated):
     scenario = hc.load_scenario(hc.scenario_path(name))
     reference = hc.run_scenario(scenario)
     result = hc.run_scenario(with_model(scenario, ship_generated))
-    a, b = json.loads(hc.results_json(reference)), json.loads(hc.results_json(result))
+    a, b = json.loads(hc._core.results_json(reference)), json.loads(hc._core.results_json(result))
     # The symbolic ship's parameters have the built-in ship's names and values.
     assert b["model"] == {"name": "ship-casadi", "jacobian": "automatic differentiation",
                           "parameters": a["model"]["parameters"]}
@@ -159,7 +159,7 @@ def test_scenario_parameters_and_round_trip(exported_ship, tmp_path):
     assert scenario.model.parameters()["d_u"] == 1.5 and scenario.model.parameters()["m_v"] == -2.0
     q = np.array([1.0, 0.2, 0.1, 0.0, 0.0, 0.3])
     assert scenario.model.f(0.0, q)[0] == pytest.approx(0.5 * 0.2 * 0.1 - 1.5 * 1.0, rel=1e-15)
-    again = hc.parse_scenario_toml(hc.scenario_toml(scenario), "round trip")
+    again = hc._core.parse_scenario_toml(hc._core.scenario_toml(scenario), "round trip")
     assert again.model.parameters() == scenario.model.parameters()
     copy = pickle.loads(pickle.dumps(scenario.model))
     np.testing.assert_array_equal(copy.f(0.0, q), scenario.model.f(0.0, q))
