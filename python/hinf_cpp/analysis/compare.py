@@ -49,7 +49,19 @@ __all__ = [
 
 
 class Feedback(enum.Enum):
-    """What a run's law acts on: the true state, or the estimate from the measurements."""
+    """What a run's law acts on: the true state, or the estimate from the measurements.
+
+    ``Feedback.state``: perfect state feedback (the scenario's [measurement] removed);
+    ``Feedback.output``: output feedback (paper §4: the filter of paper eq. (36), the
+    estimator, the law on the estimate), for a scenario with [measurement]. The members'
+    values are their names, as written in tables and JSON.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import Feedback
+    >>> Feedback("output"), [mode.name for mode in Feedback]
+    (<Feedback.output: 'output'>, ['state', 'output'])
+    """
 
     state = "state"    # perfect state feedback ([measurement] removed)
     output = "output"  # output feedback (paper §4): filter, estimator, law on the estimate
@@ -57,8 +69,29 @@ class Feedback(enum.Enum):
 
 @dataclasses.dataclass(frozen=True)
 class MetricInfo:
-    """A metric of the comparison table that the library does not compute (the attributes of
-    :class:`hinf_cpp.MetricDefinition`)."""
+    """A metric of the comparison table that the library does not compute.
+
+    It has the attributes of :class:`hinf_cpp.MetricDefinition`, so that :data:`METRICS`
+    lists both kinds alike: ``l2_gain_from_desired`` is one.
+
+    Parameters
+    ----------
+    name : str
+        The key (tables, JSON).
+    label : str
+        The name in a table for reading.
+    unit : str
+        The unit (``"-"`` for none).
+    definition : str
+        What it measures, in one sentence.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import METRICS, MetricInfo
+    >>> info = next(m for m in METRICS if isinstance(m, MetricInfo))
+    >>> info.name, info.label, info.unit
+    ('l2_gain_from_desired', 'L2 gain (from the desired start)', '-')
+    """
 
     name: str
     label: str
@@ -92,12 +125,35 @@ def _names(spec: str | Iterable[Any]) -> tuple[list[str], str]:
 
 
 def parse_controllers(spec: str | Iterable[str | _core.Law] | None) -> list[_core.Law]:
-    """The laws to compare, from ``"hinf,lqr"`` or a list of names or laws; None means all three.
+    """The laws to compare, from ``"hinf,lqr"`` or a list of names or laws.
+
+    Parameters
+    ----------
+    spec : str or iterable of (str or hinf_cpp.Law) or None
+        A comma-separated list of names among ``hinf``, ``lqr``, ``cascade``, or a sequence of
+        names or :class:`hinf_cpp.Law` values; None means all three.
+
+    Returns
+    -------
+    list of hinf_cpp.Law
+        The laws, in the order given.
 
     Raises
     ------
     ValueError
         For an empty list, an empty or unknown name, or a name given twice.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import parse_controllers
+    >>> parse_controllers("hinf,lqr")
+    [<Law.hinf: 0>, <Law.lqr: 1>]
+    >>> len(parse_controllers(None))
+    3
+    >>> parse_controllers("hinf,mpc")
+    Traceback (most recent call last):
+        ...
+    ValueError: unknown controller 'mpc': choose from hinf, lqr, cascade
     """
     laws = _core.Law.__members__
     if spec is None:
@@ -122,7 +178,34 @@ def parse_controllers(spec: str | Iterable[str | _core.Law] | None) -> list[_cor
 def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str | Feedback] | None) -> list[Feedback]:
     """The feedback modes to run, from ``"state,output"`` or a list of names or modes.
 
-    None: both for a scenario with ``[measurement]``, state feedback otherwise.
+    Parameters
+    ----------
+    scenario : hinf_cpp.Scenario
+        The scenario (whether it has ``[measurement]``).
+    spec : str or iterable of (str or Feedback) or None
+        ``"state"`` and/or ``"output"`` (comma-separated, or a sequence of names or modes).
+        None: both for a scenario with ``[measurement]``, state feedback otherwise.
+
+    Returns
+    -------
+    list of Feedback
+        The modes, state feedback first.
+
+    Raises
+    ------
+    ValueError
+        An unknown or repeated mode, or output feedback for a scenario without
+        ``[measurement]``.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import parse_feedback
+    >>> parse_feedback(hc.load_scenario(hc.scenario_path("paper_fig2")), None)
+    [<Feedback.state: 'state'>, <Feedback.output: 'output'>]
+    >>> parse_feedback(hc.load_scenario(hc.scenario_path("paper_fig1")), "output")
+    Traceback (most recent call last):
+        ...
+    ValueError: output feedback needs a scenario with [measurement]; 'paper-fig1' has none
     """
     has_measurement = scenario.measurement is not None
     if spec is None:
@@ -136,15 +219,52 @@ def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str | Feedback
 
 
 def wrap_angles(angle: np.ndarray | float) -> np.ndarray:
-    """Angles wrapped to (-pi, pi], elementwise (as ``hinf_cpp.wrap_angle``)."""
+    """Angles wrapped to (-pi, pi], elementwise (as :func:`hinf_cpp.wrap_angle`).
+
+    Parameters
+    ----------
+    angle : float or array_like
+        Angles (rad), any shape.
+
+    Returns
+    -------
+    numpy.ndarray
+        The wrapped angles (rad), of the same shape; +-pi becomes pi.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import wrap_angles
+    >>> wrap_angles([np.pi, -np.pi, 1.5 * np.pi, 0.5]).round(4)
+    array([ 3.1416,  3.1416, -1.5708,  0.5   ])
+    """
     a = np.asarray(angle, dtype=float)
     return np.pi - np.mod(np.pi - a, 2.0 * np.pi)
 
 
 def heading_error(result: _core.RunResult) -> np.ndarray | None:
-    """psi - psi_d on the output grid as a continuous function of time: it starts at the
-    wrapped initial error (in (-pi, pi]) and follows the rotation from there (a full turn adds
-    2 pi); None when the model has no heading."""
+    """The heading error psi - psi_d of a run on its output grid, continuous in time.
+
+    It starts at the wrapped initial error (in (-pi, pi]) and follows the rotation from there
+    (a full turn adds 2 pi): ``numpy.unwrap`` of the wrapped error q_e = q - q_d.
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+
+    Returns
+    -------
+    numpy.ndarray, shape (k,), or None
+        The error (rad) at the k output times; None when the model has no heading.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import heading_error
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> e = heading_error(result)
+    >>> e.shape, round(float(e[0]), 4)  # starts 45 degrees off
+    ((4001,), 0.7854)
+    """
     index = result.trajectory.model().heading_index()
     if index < 0:
         return None
@@ -172,6 +292,10 @@ def _gamma_text(gamma: float) -> str:
 def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None = None) -> dict:
     """Which disturbance a run of ``scenario`` sees.
 
+    The signals of [disturbance] (the non-zero channels; with output feedback the
+    measurement-noise channels are left out), the worst case w* = gamma^-2 D' Z q_e of paper
+    eq. (16) when ``worst_case`` is set, and with output feedback the measurement noise.
+
     Parameters
     ----------
     scenario : Scenario
@@ -186,6 +310,21 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
         (bool), ``worst_case_gamma`` (the gamma of the H-infinity design whose w* is applied,
         or None), ``measurement_noise`` (sigma, sample period, seed, channels; or None) and
         ``description`` (one sentence).
+
+    Raises
+    ------
+    ValueError
+        A scenario without a model.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import describe_disturbance
+    >>> disturbance = describe_disturbance(hc.load_scenario(hc.scenario_path("paper_fig2")))
+    >>> disturbance["signals"]["w1"], disturbance["measurement_noise"]["channels"]
+    ('0.1 cos(1.25664 t)', ['w4', 'w5', 'w6'])
+    >>> print(disturbance["description"])
+    the scenario's signals (w1 = 0.1 cos(1.25664 t); ...), plus measurement noise sigma = 0.5
+    held over 0.01 s (seed 20000601) on w4, w5, w6
     """
     model = scenario.model
     if model is None:
@@ -229,9 +368,43 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
 
 def run_law(scenario: _core.Scenario, law: _core.Law | str, feedback: Feedback | str = Feedback.state, *,
             from_desired: bool = False) -> _core.RunResult:
-    """One run of ``scenario`` with the law ``law`` and the feedback mode ``feedback``
-    (state feedback removes ``[measurement]``), optionally started on the desired trajectory.
-    Laws and modes may be given by name."""
+    """One run of a scenario with a given law and feedback mode.
+
+    The scenario is copied: its law replaced, ``[measurement]`` removed for state feedback,
+    and with `from_desired` its initial state set to the desired one.
+
+    Parameters
+    ----------
+    scenario : hinf_cpp.Scenario
+        The scenario (not changed).
+    law : hinf_cpp.Law or str
+        ``"hinf"``, ``"lqr"`` or ``"cascade"``.
+    feedback : Feedback or str, optional
+        ``"state"`` (default) or ``"output"`` (needs ``[measurement]``).
+    from_desired : bool, optional
+        Start on the desired trajectory, q(t0) = q_d(t0) (default False).
+
+    Returns
+    -------
+    hinf_cpp.RunResult
+        The run (:func:`hinf_cpp.run_scenario`).
+
+    Raises
+    ------
+    ValueError
+        An unknown law or mode, output feedback without ``[measurement]``, an invalid
+        scenario.
+    hinf_cpp.HinfError
+        The run failed numerically (a conjugate point, a coupling violation, a solver
+        failure).
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.compare import run_law
+    >>> result = run_law(hc.load_scenario(hc.scenario_path("paper_fig2")), "lqr", "output")
+    >>> result.law, result.gamma, result.output_feedback
+    (<Law.lqr: 1>, inf, True)
+    """
     (law,) = parse_controllers([law])
     if not isinstance(feedback, Feedback):
         if feedback not in Feedback.__members__:
@@ -250,7 +423,40 @@ def run_law(scenario: _core.Scenario, law: _core.Law | str, feedback: Feedback |
 
 @dataclasses.dataclass
 class ComparisonRun:
-    """One law in one feedback mode."""
+    """One run of a comparison: one law in one feedback mode.
+
+    ``ok`` is True when the run succeeded; ``to_dict()`` gives its entry of the comparison
+    JSON (NaN as None).
+
+    Parameters
+    ----------
+    key : str
+        The run's key, :func:`hinf_cpp.output.tables.run_key`: ``"hinf"``, ``"lqr"``,
+        ``"cascade"``, ``"hinf/output-feedback"``, ...
+    law : hinf_cpp.Law
+        The law.
+    feedback : Feedback
+        The feedback mode.
+    design_gamma : float
+        The gamma of the law's Riccati design (inf for lqr).
+    disturbance : dict
+        :func:`describe_disturbance` of this run.
+    metrics : dict of str to float
+        Every key of :data:`METRICS` (NaN where it does not apply, or the run failed).
+    result : hinf_cpp.RunResult, optional
+        The run, when it succeeded.
+    error : str, optional
+        The numerical failure, when the run failed.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import compare
+    >>> run = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "lqr")["lqr"]
+    >>> run.ok, run.design_gamma, run.feedback
+    (True, inf, <Feedback.state: 'state'>)
+    >>> round(run.metrics["rms_position_error_last_half"], 3)
+    0.048
+    """
 
     key: str                     # run_key(): "hinf", "lqr", "cascade", "hinf/output-feedback", ...
     law: _core.Law
@@ -281,7 +487,36 @@ class ComparisonRun:
 
 @dataclasses.dataclass
 class Comparison:
-    """The runs of :func:`compare` on one scenario."""
+    """The runs of :func:`compare` on one scenario.
+
+    ``comparison[key]`` is the run of that key (KeyError naming the keys otherwise);
+    ``keys`` lists them; ``results(feedback)`` gives (key, RunResult) of the runs that
+    succeeded; ``table(keys)`` a header and rows (one per metric that applies to some run);
+    ``to_dict()`` and ``to_json()`` the comparison JSON.
+
+    Parameters
+    ----------
+    scenario : str
+        The scenario's name.
+    gamma : float
+        The scenario's gamma (of the hinf and cascade designs).
+    disturbance : dict
+        :func:`describe_disturbance` of the scenario (state feedback).
+    runs : list of ComparisonRun
+        The runs, state feedback first, laws in the order given.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import compare
+    >>> comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "hinf,lqr")
+    >>> comparison.keys
+    ['hinf', 'lqr']
+    >>> header, rows = comparison.table(keys=True)
+    >>> header, rows[0][:2]
+    (['metric', 'unit', 'hinf', 'lqr'], ['rms_position_error_last_half', 'm'])
+    >>> sorted(comparison.to_dict())
+    ['controllers', 'disturbance', 'gamma', 'metric_definitions', 'scenario']
+    """
 
     scenario: str
     gamma: float
@@ -340,7 +575,13 @@ def _json_number(x: float | None) -> float | None:
 def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = None, *,
             feedback: str | Sequence[str] | None = None, worst_case: bool | None = None,
             progress: ProgressCallback | None = None) -> Comparison:
-    """Runs ``scenario`` with each law and returns the runs and their metrics.
+    """Run a scenario with each law and return the runs and their metrics.
+
+    ``"hinf"`` is the paper's law at the scenario's gamma, ``"lqr"`` the same design at
+    gamma = inf (with ``[measurement]`` the Kalman-Bucy filter), ``"cascade"`` the cascaded
+    ship baseline. The metrics are those of :data:`METRICS`: the library's and
+    ``l2_gain_from_desired``, the ``l2_gain`` of the same run started on the desired
+    trajectory.
 
     Parameters
     ----------
@@ -367,6 +608,15 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
     ------
     ValueError
         Bad controller names or feedback modes, or an invalid scenario.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import compare
+    >>> comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr")
+    >>> comparison.keys
+    ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
+    >>> round(comparison["hinf"].metrics["rms_position_error_last_half"], 3)
+    0.048
     """
     laws = parse_controllers(controllers)
     modes = parse_feedback(scenario, feedback)

@@ -38,6 +38,33 @@ VEHICLES = [
 
 @dataclasses.dataclass
 class VehicleRun:
+    """A built-in vehicle's shipped scenario, run with state feedback.
+
+    What :func:`run_vehicle` returns. ``ratio`` is the final over the initial position error.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (an entry of :data:`VEHICLES`: label, scenario, unit of length).
+    result : hinf_cpp.RunResult
+        The run; its ``gamma_star`` is set (written to the results file).
+    gamma_star : float
+        gamma* of the scenario's design (paper eq. 14).
+    initial_position_error : float
+        |p(t0) - p_d(t0)|, in the model's unit of length.
+    final_position_error : float
+        |p(tf) - p_d(tf)|, in the model's unit of length.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import VEHICLES, run_vehicle
+    >>> run = run_vehicle(VEHICLES[2])  # the planar VTOL
+    >>> run.vehicle.label, round(run.gamma_star, 3), round(run.initial_position_error, 3)
+    ('planar VTOL', 2.734, 0.707)
+    >>> run.ratio < 0.05
+    True
+    """
+
     vehicle: Vehicle
     result: _core.RunResult
     gamma_star: float
@@ -51,7 +78,30 @@ class VehicleRun:
 
 
 def run_vehicle(vehicle: Vehicle) -> VehicleRun:
-    """Runs the vehicle's shipped scenario and computes gamma* of its design (eq. 14)."""
+    """Run a vehicle's shipped scenario and compute gamma* of its design (paper eq. 14).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        An entry of :data:`VEHICLES`.
+
+    Returns
+    -------
+    VehicleRun
+        The run, gamma* and the initial and final position errors.
+
+    Raises
+    ------
+    hinf_cpp.HinfError
+        The run or the gamma* search failed numerically.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import VEHICLES, run_vehicle
+    >>> run = run_vehicle(VEHICLES[2])  # the planar VTOL
+    >>> run.result.scenario_name, run.result.gamma
+    ('pvtol-climb', 6.0)
+    """
     from hinf_cpp.scenario import scenario_path
     from hinf_cpp.scenario import load_scenario
 
@@ -66,7 +116,30 @@ def run_vehicle(vehicle: Vehicle) -> VehicleRun:
 
 
 def gallery_table(runs: list[VehicleRun]) -> tuple[list[str], list[list[str]]]:
-    """(header, rows): one row per vehicle."""
+    """The gallery's table: one row per vehicle, every cell a formatted string.
+
+    Columns: vehicle, scenario, gamma*, gamma, initial and final position error, their
+    ratio, the RMS position error over the last half, the unit of length.
+
+    Parameters
+    ----------
+    runs : list of VehicleRun
+        The runs (:func:`run_vehicle`).
+
+    Returns
+    -------
+    tuple of (list of str, list of list of str)
+        The header and the rows (for :func:`hinf_cpp.output.tables.markdown_table`).
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import gallery_table
+    >>> from hinf_cpp.analysis.gallery import VEHICLES, run_vehicle
+    >>> run = run_vehicle(VEHICLES[2])  # the planar VTOL
+    >>> header, rows = gallery_table([run])
+    >>> header[:3], rows[0][:3]
+    (['vehicle', 'scenario', 'gamma*'], ['planar VTOL', 'pvtol-climb', '2.734'])
+    """
     header = ["vehicle", "scenario", "gamma*", "gamma", "initial position error", "final position error",
               "final / initial", "RMS position error, last half", "unit of length"]
     rows = [[run.vehicle.label, run.result.scenario_name, f"{run.gamma_star:.4g}", f"{run.result.gamma:g}",
@@ -77,7 +150,29 @@ def gallery_table(runs: list[VehicleRun]) -> tuple[list[str], list[list[str]]]:
 
 
 def gallery_figure(runs: list[VehicleRun]) -> Figure:
-    """The x-y paths of every vehicle, one panel each (desired solid, actual dashed)."""
+    """The x-y paths of every vehicle, one panel each (desired solid, actual dashed).
+
+    Two panels a row, with heading arrows, axes in each vehicle's unit of length.
+
+    Parameters
+    ----------
+    runs : list of VehicleRun
+        The runs (:func:`run_vehicle`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import gallery_figure
+    >>> from hinf_cpp.analysis.gallery import VEHICLES, run_vehicle
+    >>> run = run_vehicle(VEHICLES[2])  # the planar VTOL
+    >>> figure = gallery_figure([run])
+    >>> figure.axes[0].get_title()
+    'planar VTOL: pvtol-climb'
+    """
     from hinf_cpp.output.plotting import paths_figure
 
     columns = 2
@@ -93,9 +188,40 @@ def gallery_figure(runs: list[VehicleRun]) -> Figure:
 
 
 def write_gallery(out: str | pathlib.Path, runs: list[VehicleRun]) -> list[pathlib.Path]:
-    """Writes <scenario>.json (results file, gamma* included), <scenario>.csv (time series) and
-    <scenario>_xy.png per vehicle, vehicles_xy.png (all paths) and metrics.md (the table) into
-    `out`; returns the paths written."""
+    """Write the vehicle gallery into a folder (``hinf-cpp vehicles --out DIR``).
+
+    Per vehicle ``<scenario>.json`` (the results file, gamma* included), ``<scenario>.csv``
+    (the time series) and ``<scenario>_xy.png``; ``vehicles_xy.png`` (all paths,
+    :func:`gallery_figure`) and ``metrics.md`` (:func:`gallery_table`). Each file is written
+    whole or not at all.
+
+    Parameters
+    ----------
+    out : str or pathlib.Path
+        The folder (created if needed).
+    runs : list of VehicleRun
+        The runs (:func:`run_vehicle`).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be written.
+    OSError
+        A file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import write_gallery
+    >>> from hinf_cpp.analysis.gallery import VEHICLES, run_vehicle
+    >>> run = run_vehicle(VEHICLES[2])  # the planar VTOL
+    >>> [path.name for path in write_gallery("vehicles", [run])]
+    ['pvtol_climb.json', 'pvtol_climb.csv', 'pvtol_climb_xy.png', 'vehicles_xy.png', 'metrics.md']
+    """
     from hinf_cpp.output.plotting import save_figure, xy_figure
 
     out = pathlib.Path(out)
@@ -135,13 +261,62 @@ PLANNED = [PlannedCase(f"{vehicle}: {pattern.replace('_', ' ')}", f"planned/{ste
 
 @dataclasses.dataclass
 class PlannedRun:
+    """A shipped planned scenario, planned and run: what :func:`run_planned` returns.
+
+    Parameters
+    ----------
+    case : PlannedCase
+        The case (an entry of :data:`PLANNED`: label, scenario, unit of length).
+    planned : hinf_cpp.scenario.planned.PlannedScenario
+        The planned scenario: its plan and feasibility report.
+    result : hinf_cpp.RunResult
+        The run of the planned scenario.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import PLANNED, run_planned
+    >>> run = run_planned(PLANNED[4], cache=False)  # the hovercraft's lane change
+    >>> run.case.label, len(run.planned.plan.waypoints)
+    ('hovercraft: lane change', 3)
+    >>> run.result.metrics.final_position_error < 0.5
+    True
+    """
+
     case: PlannedCase
     planned: object  # hinf_cpp.scenario.planned.PlannedScenario
     result: _core.RunResult
 
 
 def run_planned(case: PlannedCase, cache: bool = True) -> PlannedRun:
-    """Plans the case's shipped scenario (from the cache when it can) and runs it."""
+    """Plan a case's shipped scenario (from the cache when it can) and run it.
+
+    Parameters
+    ----------
+    case : PlannedCase
+        An entry of :data:`PLANNED`.
+    cache : bool, optional
+        Read and keep the plan in :func:`hinf_cpp.planning.default_cache_dir` (default
+        True); False plans anew and writes nothing.
+
+    Returns
+    -------
+    PlannedRun
+        The planned scenario and its run.
+
+    Raises
+    ------
+    hinf_cpp.planning.PlanningError
+        The planner failed.
+    hinf_cpp.HinfError
+        The run failed numerically.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import PLANNED, run_planned
+    >>> run = run_planned(PLANNED[4], cache=False)  # the hovercraft's lane change
+    >>> run.result.scenario_name, run.planned.plan.report.cache_hit
+    ('planned-hovercraft-lane-change', False)
+    """
     from hinf_cpp.scenario import scenario_path
     from hinf_cpp.scenario.planned import load_planned
 
@@ -150,7 +325,31 @@ def run_planned(case: PlannedCase, cache: bool = True) -> PlannedRun:
 
 
 def planned_table(runs: list[PlannedRun]) -> tuple[list[str], list[list[str]]]:
-    """(header, rows): the plan's cost and feasibility and the tracking, one row per scenario."""
+    """The planned gallery's table: one row per scenario, every cell a formatted string.
+
+    The plan's cost and feasibility and the tracking. Columns: scenario, waypoints, intervals x RK4
+    steps, IPOPT iterations, planning time ("cached" for a plan from the cache), re-simulation
+    mismatch, largest waypoint error, final position error, RMS position error over the last half.
+
+    Parameters
+    ----------
+    runs : list of PlannedRun
+        The runs (:func:`run_planned`).
+
+    Returns
+    -------
+    tuple of (list of str, list of list of str)
+        The header and the rows.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import planned_table
+    >>> from hinf_cpp.analysis.gallery import PLANNED, run_planned
+    >>> run = run_planned(PLANNED[4], cache=False)  # the hovercraft's lane change
+    >>> header, rows = planned_table([run])
+    >>> header[:3], rows[0][:2]
+    (['scenario', 'waypoints', 'intervals x RK4 steps'], ['planned-hovercraft-lane-change', '3'])
+    """
     header = ["scenario", "waypoints", "intervals x RK4 steps", "IPOPT iterations", "planning time",
               "re-simulation mismatch", "largest waypoint error", "final position error",
               "RMS position error, last half"]
@@ -167,8 +366,39 @@ def planned_table(runs: list[PlannedRun]) -> tuple[list[str], list[list[str]]]:
 
 
 def write_planned_gallery(out: str | pathlib.Path, runs: list[PlannedRun]) -> list[pathlib.Path]:
-    """Writes <name>.json (results file) and <name>_xy.png (waypoints, planned path, tracked
-    path) per scenario, planned_xy.png (all of them) and planned.md (the table) into `out`."""
+    """Write the planned gallery into a folder (``hinf-cpp planned --out DIR``).
+
+    Per scenario ``<name>.json`` (the results file) and ``<name>_xy.png`` (waypoints, planned
+    path, tracked path); ``planned_xy.png`` (all of them, four a row) and ``planned.md``
+    (:func:`planned_table`). Each file is written whole or not at all.
+
+    Parameters
+    ----------
+    out : str or pathlib.Path
+        The folder (created if needed).
+    runs : list of PlannedRun
+        The runs (:func:`run_planned`), at least one.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be written.
+    OSError
+        A file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gallery import write_planned_gallery
+    >>> from hinf_cpp.analysis.gallery import PLANNED, run_planned
+    >>> run = run_planned(PLANNED[4], cache=False)  # the hovercraft's lane change
+    >>> [path.name for path in write_planned_gallery("planned", [run])]
+    ['hovercraft_lane_change.json', 'hovercraft_lane_change_xy.png', 'planned_xy.png', 'planned.md']
+    """
     from hinf_cpp.output.plotting import save_figure, xy_figure
 
     out = pathlib.Path(out)

@@ -18,8 +18,36 @@ __all__ = ["GammaSweep", "cost_L_gamma", "sweep_gamma"]
 
 
 def cost_L_gamma(result: _core.RunResult, Q: np.ndarray, Qf: np.ndarray) -> float:
-    """L_gamma of paper eq. (12) on the run's output grid (trapezoid rule):
-    int (|q_e|_Q^2 + |u_e|^2 - gamma^2 |w|^2) dt + |q_e(tf)|_Qf^2, w every applied channel."""
+    """The cost L_gamma of paper eq. (12) of a run, on its output grid (trapezoid rule).
+
+    L_gamma = int (|q_e|_Q^2 + |u_e|^2 - gamma^2 |w|^2) dt + |q_e(tf)|_Qf^2, with
+    q_e = q - q_d, u_e = u - u_d, gamma the run's design gamma and w every applied
+    disturbance channel. It is <= 0 for every w when the run starts on the desired trajectory
+    and the design attenuates to level gamma (for the linearized error system).
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+    Q : array_like, shape (n, n)
+        The state weight (the scenario's resolved ``Q``).
+    Qf : array_like, shape (n, n)
+        The terminal weight (the scenario's resolved ``Qf``).
+
+    Returns
+    -------
+    float
+        L_gamma.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.gamma_sweep import cost_L_gamma
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.initial_q0 = scenario.desired_q0  # start on the desired trajectory
+    >>> resolved = scenario.resolved()
+    >>> cost_L_gamma(hc.run_scenario(scenario), resolved.Q, resolved.Qf) < 0
+    True
+    """
     sim = result.simulation
     q_e = sim.q_e()
     u_e = sim.u - sim.u_d
@@ -30,7 +58,37 @@ def cost_L_gamma(result: _core.RunResult, Q: np.ndarray, Qf: np.ndarray) -> floa
 
 @dataclasses.dataclass
 class GammaSweep:
-    """Closed-loop runs of one scenario over a range of gammas."""
+    """Attenuation against gamma: closed-loop runs of one scenario over a range of gammas.
+
+    What :func:`sweep_gamma` returns; ``to_dict()`` gives it as a JSON-ready dictionary.
+
+    Parameters
+    ----------
+    scenario : str
+        The scenario's name.
+    gamma_star : float
+        gamma* of the state-feedback design (paper eq. 14).
+    gamma_star_output_feedback : float or None
+        The smallest gamma of the output-feedback design, for a scenario with [measurement].
+    gammas : numpy.ndarray, shape (count,)
+        The gammas run, increasing.
+    l2_gain : numpy.ndarray, shape (count,)
+        The measured L2 gain of each run, sqrt(int |q_e|_Q^2 + |u_e|^2 dt) /
+        sqrt(int |w|^2 dt).
+    cost : numpy.ndarray, shape (count,)
+        L_gamma of paper eq. (12) of each run (:func:`cost_L_gamma`).
+    zero_initial_error : bool
+        True: q(t0) = q_d(t0), so the gain is the disturbance's alone.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import sweep_gamma
+    >>> sweep = sweep_gamma(hc.load_scenario(hc.scenario_path("paper_fig1")), count=3)
+    >>> round(sweep.gamma_star, 3), sweep.gammas.shape
+    (1.335, (3,))
+    >>> bool(np.all(sweep.l2_gain < sweep.gammas)), bool(np.all(sweep.cost < 0))
+    (True, True)
+    """
 
     scenario: str
     gamma_star: float
@@ -56,15 +114,54 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
                 zero_initial_error: bool = True, threads: int = 2,
                 gamma_star_options: _core.GammaStarOptions | None = None,
                 progress: ProgressCallback | None = None) -> GammaSweep:
-    """Runs the scenario at `count` gammas spaced geometrically from just above the smallest
-    admissible gamma (gamma*, or the output-feedback one with [measurement]) to `upper`
-    (default: the larger of 4 times the scenario's gamma and 10 gamma*).
+    """Run a scenario over a range of gammas: the measured L2 gain and the cost L_gamma.
 
-    With zero_initial_error the runs start on the desired trajectory, so the measured gain is
-    the disturbance-to-error gain that the design bounds by gamma for the linearized error
-    system (the worst case over all disturbances; the scenario's disturbance gains less).
+    The gammas are `count` values spaced geometrically from just above the smallest
+    admissible gamma (gamma* of paper eq. 14, or the output-feedback one with [measurement],
+    times 1.001) to `upper`. With `zero_initial_error` the runs start on the desired
+    trajectory, so the measured gain is the disturbance-to-error gain that the design bounds
+    by gamma for the linearized error system (the worst case over all disturbances; the
+    scenario's disturbance gains less).
 
-    ``progress(index, total, message)`` is called as each run starts (from the worker threads)."""
+    Parameters
+    ----------
+    scenario : hinf_cpp.Scenario
+        The scenario (not changed).
+    count : int, optional
+        The number of gammas (>= 2; default 12).
+    upper : float, optional
+        The largest gamma (default: the larger of 4 times the scenario's gamma and 10 gamma*).
+    zero_initial_error : bool, optional
+        Start every run on the desired trajectory (default True).
+    threads : int, optional
+        Runs at once (default 2; 1 for a model implemented in Python).
+    gamma_star_options : hinf_cpp.GammaStarOptions, optional
+        The options of the gamma* searches.
+    progress : callable, optional
+        ``progress(index, total, message)``, called as each run starts (from the worker
+        threads).
+
+    Returns
+    -------
+    GammaSweep
+        The gammas, gains and costs.
+
+    Raises
+    ------
+    ValueError
+        `count` < 2, or `upper` not above the smallest admissible gamma.
+    hinf_cpp.HinfError
+        A gamma* search or a run failed numerically.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import sweep_gamma
+    >>> sweep = sweep_gamma(hc.load_scenario(hc.scenario_path("paper_fig1")), count=3, upper=20.0)
+    >>> sweep.gammas.round(2)
+    array([ 1.34,  5.17, 20.  ])
+    >>> sweep.l2_gain.round(2)
+    array([1.15, 1.04, 1.02])
+    """
     if count < 2:
         raise ValueError(f"sweep_gamma needs count >= 2, got {count}")
     options = gamma_star_options or _core.GammaStarOptions()

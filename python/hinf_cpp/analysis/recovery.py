@@ -64,7 +64,28 @@ BACKWARDS_FRACTION = 0.5
 
 @dataclasses.dataclass
 class TurnAround:
-    """The verdict of :func:`turn_around`."""
+    """The verdict of :func:`turn_around`: whether the vehicle turned around, and why.
+
+    Parameters
+    ----------
+    turned : bool
+        True when the vehicle turned around (the module's definition).
+    reason : str
+        Why, in one sentence ("" when not turned).
+    t_turn : float or None
+        The first time (s) |e| exceeds the limit (None if never).
+    limit : float
+        max(pi, |e(t0)|) + margin (rad).
+    backwards_fraction : float
+        The share of the last half with |wrap(e)| > pi/2.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.recovery import turn_around
+    >>> verdict = turn_around([0.0, 1.0, 2.0], [3.0, 4.5, 6.2])
+    >>> verdict.turned, verdict.t_turn, round(verdict.limit, 4)
+    (True, 1.0, 3.2416)
+    """
 
     turned: bool
     reason: str                   # "" when not turned
@@ -76,6 +97,10 @@ class TurnAround:
 def turn_around(t: Sequence[float], heading_error: Sequence[float], margin: float = TURN_MARGIN,
                 backwards_fraction: float = BACKWARDS_FRACTION) -> TurnAround:
     """Whether a heading-error history turns the vehicle around (see the module docstring).
+
+    It turns around when |e| exceeds max(pi, |e(t0)|) + margin at some t (the error passes
+    through +-pi and winds towards +-2 pi), or when |wrap(e)| > pi/2 on more than
+    `backwards_fraction` of the last half (t >= (t0 + tf)/2: it tracks backwards).
 
     Parameters
     ----------
@@ -89,10 +114,25 @@ def turn_around(t: Sequence[float], heading_error: Sequence[float], margin: floa
         Share of the last half in (0, 1] above which ``|wrap(e)| > pi/2`` counts as tracking
         backwards.
 
+    Returns
+    -------
+    TurnAround
+        The verdict, its reason and the numbers it rests on.
+
     Raises
     ------
     ValueError
         Mismatched, too short or non-finite inputs, or options out of range.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.recovery import turn_around
+    >>> t = np.linspace(0.0, 10.0, 11)
+    >>> turn_around(t, np.linspace(3.0, 0.0, 11)).turned  # unwinds from 172 degrees to 0
+    False
+    >>> print(turn_around(t, np.linspace(3.0, 2 * np.pi, 11)).reason)  # winds to a full turn
+    the heading error passes through +-pi: |e| exceeds max(pi, |e(t0)|) + margin = 3.2416 rad
+    at t = 1 s (max |e| = 6.2832 rad)
     """
     t = np.asarray(t, dtype=float)
     e = np.asarray(heading_error, dtype=float)
@@ -124,7 +164,52 @@ def turn_around(t: Sequence[float], heading_error: Sequence[float], margin: floa
 
 @dataclasses.dataclass
 class RecoveryVerdict:
-    """Recovery of one law on one scenario."""
+    """Recovery of one law on one scenario: the verdict of :func:`assess_recovery`.
+
+    The definitions are those of the module docstring. ``to_dict()`` gives it as a
+    JSON-ready dictionary (without the run).
+
+    Parameters
+    ----------
+    scenario : str
+        The scenario's name.
+    controller : hinf_cpp.Law
+        The law.
+    recovers : bool
+        Final position error below the position tolerance and final wrapped heading error
+        below the heading tolerance.
+    turns_around : bool
+        :func:`turn_around`'s verdict.
+    initial_position_error : float
+        |p(t0) - p_d(t0)| (m, the model's unit of length).
+    initial_heading_error : float
+        e(t0), in (-pi, pi] (rad).
+    final_position_error : float
+        |p(tf) - p_d(tf)| (m).
+    final_heading_error : float
+        |wrap(e(tf))| (rad).
+    settling_time : float or None
+        Time after t0 (s) from which the position error stays below the tolerance; None when
+        the final error is not below it.
+    max_abs_heading_error : float
+        max |e(t)| of the continuous error (rad).
+    turn : TurnAround or None
+        The turn-around verdict (None when the run failed).
+    result : hinf_cpp.RunResult, optional
+        The run.
+    error : str, optional
+        The numerical failure, when the run failed (the numbers are then NaN).
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.recovery import assess_recovery
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("poor_heading_180")))
+    >>> verdict = assess_recovery(result)
+    >>> verdict.controller, verdict.recovers, verdict.turns_around
+    (<Law.hinf: 0>, True, False)
+    >>> round(verdict.initial_heading_error, 4), verdict.settling_time
+    (3.1416, 5.48)
+    """
 
     scenario: str
     controller: _core.Law
@@ -175,16 +260,45 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
                     backwards_fraction: float = BACKWARDS_FRACTION) -> RecoveryVerdict:
     """Whether a run recovers and whether it turns the ship around (module docstring).
 
+    Recovers: the final position error is below `position_tolerance` and the final wrapped
+    heading error below `heading_tolerance`. Turns around: :func:`turn_around` of the
+    continuous heading error (:func:`hinf_cpp.analysis.compare.heading_error`).
+
     Parameters
     ----------
     result : RunResult
         A closed-loop run of a model with a planar position and a heading (the ship).
     controller : Law or str, optional
         The law (default ``result.law``).
-    position_tolerance, heading_tolerance : float
-        Thresholds on the final position error (m) and final wrapped heading error (rad).
-    margin, backwards_fraction : float
-        Options of :func:`turn_around`.
+    position_tolerance : float, optional
+        Threshold on the final position error (m; default 0.5).
+    heading_tolerance : float, optional
+        Threshold on the final wrapped heading error (rad; default 10 degrees).
+    margin : float, optional
+        The margin of :func:`turn_around` (rad; default 0.1).
+    backwards_fraction : float, optional
+        The backwards fraction of :func:`turn_around` (default 0.5).
+
+    Returns
+    -------
+    RecoveryVerdict
+        The verdict, with the run.
+
+    Raises
+    ------
+    ValueError
+        Tolerances not > 0, a model without a heading or a planar position, options of
+        :func:`turn_around` out of range.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.recovery import assess_recovery
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("poor_heading_180")))
+    >>> verdict = assess_recovery(result)
+    >>> verdict.recovers, round(verdict.final_position_error, 3)
+    (True, 0.071)
+    >>> assess_recovery(result, position_tolerance=0.05).recovers
+    False
     """
     if not (position_tolerance > 0.0 and heading_tolerance > 0.0):
         raise ValueError(f"the tolerances must be > 0, got position {position_tolerance} m and heading "
@@ -220,14 +334,58 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
 
 
 def shipped_poor_scenarios() -> list[pathlib.Path]:
-    """The shipped ``poor_*.toml`` scenarios (poor initial conditions), sorted by name."""
+    """The shipped ``poor_*.toml`` scenarios (poor initial conditions), sorted by name.
+
+    The ship of the paper started 2 m off the path or with a heading 90 to 180 degrees off.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The scenario files.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.recovery import shipped_poor_scenarios
+    >>> [path.stem for path in shipped_poor_scenarios()][:3]
+    ['poor_heading_090', 'poor_heading_135', 'poor_heading_180']
+    """
     folder = pathlib.Path(str(resources.files("hinf_cpp") / "scenarios"))
     return sorted(folder.glob("poor_*.toml"))
 
 
 @dataclasses.dataclass
 class RecoveryStudy:
-    """Verdicts of :func:`recovery_study`: scenario x controller."""
+    """Verdicts of :func:`recovery_study`: scenario x controller.
+
+    ``scenarios`` and ``controllers`` list them in order; ``verdict(scenario, controller)``
+    gives one (KeyError otherwise); ``table()`` a header and one row per verdict (angles in
+    degrees); ``to_dict()`` the definitions, tolerances and verdicts, JSON-ready.
+
+    Parameters
+    ----------
+    verdicts : list of RecoveryVerdict
+        One per scenario and law, scenarios in the order given.
+    position_tolerance : float
+        The position tolerance used (m).
+    heading_tolerance : float
+        The heading tolerance used (rad).
+    margin : float
+        The turn-around margin used (rad).
+    backwards_fraction : float
+        The backwards fraction used.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import recovery_study
+    >>> study = recovery_study([hc.scenario_path("poor_heading_180")], "hinf,cascade")
+    >>> study.scenarios, study.controllers
+    (['poor-heading-180'], [<Law.hinf: 0>, <Law.cascade: 2>])
+    >>> study.verdict("poor-heading-180", "cascade").recovers
+    True
+    >>> header, rows = study.table()
+    >>> header[:4], rows[0][:4]
+    (['scenario', 'controller', 'recovers', 'turns around'], ['poor-heading-180', 'hinf', True, False])
+    """
 
     verdicts: list[RecoveryVerdict]
     position_tolerance: float
@@ -290,7 +448,7 @@ def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | No
                    heading_tolerance: float = HEADING_TOLERANCE, margin: float = TURN_MARGIN,
                    backwards_fraction: float = BACKWARDS_FRACTION,
                    progress: ProgressCallback | None = None) -> RecoveryStudy:
-    """Runs every scenario with every law and assesses recovery and turning around.
+    """Run every scenario with every law and assess recovery and turning around.
 
     Parameters
     ----------
@@ -299,8 +457,14 @@ def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | No
         has ``[measurement]``) with its law replaced.
     controllers : str or sequence of str, optional
         Laws among ``"hinf"``, ``"lqr"``, ``"cascade"``; default all three.
-    position_tolerance, heading_tolerance, margin, backwards_fraction
-        As in :func:`assess_recovery`.
+    position_tolerance : float, optional
+        As in :func:`assess_recovery` (m; default 0.5).
+    heading_tolerance : float, optional
+        As in :func:`assess_recovery` (rad; default 10 degrees).
+    margin : float, optional
+        As in :func:`assess_recovery` (rad; default 0.1).
+    backwards_fraction : float, optional
+        As in :func:`assess_recovery` (default 0.5).
     progress : callable, optional
         ``progress(index, total, message)`` before each run.
 
@@ -308,6 +472,19 @@ def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | No
     -------
     RecoveryStudy
         A run that fails numerically is kept with ``error`` set.
+
+    Raises
+    ------
+    ValueError
+        Bad controller names, no scenario, a scenario file that cannot be read, a model
+        without a heading or planar position, tolerances not > 0.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import recovery_study
+    >>> study = recovery_study([hc.scenario_path("poor_heading_180")], "hinf")
+    >>> [(v.controller.name, v.recovers, v.turns_around) for v in study.verdicts]
+    [('hinf', True, False)]
     """
     laws = parse_controllers(controllers)
     if scenarios is None:

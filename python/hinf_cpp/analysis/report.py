@@ -37,13 +37,47 @@ __all__ = ["Report", "run_file_stem", "write_report"]
 
 
 def run_file_stem(key: str) -> str:
-    """The file stem of a run: its key with '/' replaced by '-'."""
+    """The file stem of a run in a report folder: its key with '/' replaced by '-'.
+
+    Parameters
+    ----------
+    key : str
+        The run's key (:func:`hinf_cpp.output.tables.run_key`).
+
+    Returns
+    -------
+    str
+        The stem of ``<run>.json``, ``<run>.npz`` and ``<run>.csv``.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.report import run_file_stem
+    >>> run_file_stem("lqr/output-feedback")
+    'lqr-output-feedback'
+    """
     return key.replace("/", "-")
 
 
 @dataclasses.dataclass
 class Report:
-    """What :func:`write_report` wrote."""
+    """What :func:`write_report` wrote.
+
+    Parameters
+    ----------
+    folder : pathlib.Path
+        The report folder.
+    files : list of pathlib.Path
+        The files written, in order (tables, report.md, figures, results files).
+    comparison : hinf_cpp.analysis.Comparison
+        The comparison the report shows.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.report import write_report
+    >>> report = write_report(hc.load_scenario(hc.scenario_path("paper_fig1")), "report", "hinf")
+    >>> report.folder.name, report.comparison.keys
+    ('report', ['hinf'])
+    """
 
     folder: pathlib.Path
     files: list[pathlib.Path]
@@ -104,7 +138,12 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
                  controllers: str | Sequence[str] | None = None, *,
                  feedback: str | Sequence[str] | None = None, worst_case: bool | None = None,
                  pdf: bool = False, progress: ProgressCallback | None = None) -> Report:
-    """Runs the comparison and writes the report folder (module docstring).
+    """Run the comparison of the laws on a scenario and write the report folder.
+
+    Runs :func:`~hinf_cpp.analysis.compare.compare` and writes into `out` the files of the
+    module docstring: report.md, metrics.md, metrics.csv, comparison.json, the figures
+    (paths, errors, controls, eigenvalues; coupling with output feedback) and per run
+    ``<run>.json``, ``<run>.npz`` and ``<run>.csv``.
 
     Parameters
     ----------
@@ -113,12 +152,39 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
     out : path
         The folder (created if needed; files of the same names are overwritten, each written
         whole or not at all). A path that cannot be a folder is a ValueError before the runs.
-    controllers, feedback, worst_case
-        As in :func:`~hinf_cpp.analysis.compare.compare`.
+    controllers : str or sequence of str, optional
+        Laws among ``"hinf"``, ``"lqr"``, ``"cascade"``; default all three (as in
+        :func:`~hinf_cpp.analysis.compare.compare`).
+    feedback : str or sequence of str, optional
+        ``"state"`` and/or ``"output"``; default both with ``[measurement]``, else state.
+    worst_case : bool, optional
+        Overrides ``[disturbance] worst_case`` (add w* of paper eq. (16)).
     pdf : bool
         Also write each figure as a vector PDF (``paths.pdf``, ...).
     progress : callable, optional
         ``progress(index, total, message)``: the runs, then each file group written.
+
+    Returns
+    -------
+    Report
+        The folder, the files written and the comparison.
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be a folder (before the runs); bad controller names or feedback
+        modes, an invalid scenario.
+    OSError
+        A file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.report import write_report
+    >>> report = write_report(hc.load_scenario(hc.scenario_path("paper_fig1")), "report", "hinf")
+    >>> [path.name for path in report.files]
+    ['metrics.md', 'metrics.csv', 'comparison.json', 'report.md',
+     'paths.png', 'errors.png', 'controls.png', 'eigenvalues.png',
+     'hinf.json', 'hinf.npz', 'hinf.csv']
     """
     folder = pathlib.Path(out)
     check_output_folder(folder)

@@ -22,11 +22,38 @@ __all__ = ["symbolic_model"]
 
 
 def symbolic_model(model) -> SymbolicModel:
-    """The model as a :class:`SymbolicModel`: a SymbolicModel is returned as it is; a built-in
-    model (``ShipModel``, ``LinearModel``, ``FossenVessel``, ``Hovercraft``, ``PlanarVtol``,
-    ``Auv``) becomes its CasADi statement with the object's parameters (as constants). Any
-    other model (a Python subclass of ``hc.Model``, a ``GeneratedModel`` loaded from a file, a
-    ``FleetModel``) is a ValueError: its equations are not available as expressions."""
+    """The model as a :class:`SymbolicModel` (CasADi expressions), for the planner.
+
+    A SymbolicModel is returned as it is; a built-in model (``ShipModel``, ``LinearModel``,
+    ``FossenVessel``, ``Hovercraft``, ``PlanarVtol``, ``Auv``) becomes its CasADi statement
+    with the object's parameters (as constants), with the same state names, position indices,
+    heading index and measurement.
+
+    Parameters
+    ----------
+    model : hinf_cpp.Model or SymbolicModel
+        The model.
+
+    Returns
+    -------
+    SymbolicModel
+        The model's f, G and D (and C with a measurement) as CasADi expressions.
+
+    Raises
+    ------
+    ValueError
+        Any other model (a Python subclass of ``hc.Model``, a ``GeneratedModel`` loaded from
+        a file, a ``FleetModel``): its equations are not available as expressions.
+
+    Examples
+    --------
+    >>> from hinf_cpp.models import symbolic_model
+    >>> ship = symbolic_model(hc.ShipModel())
+    >>> ship.name, ship.n, ship.m, ship.nw
+    ('ship', 6, 2, 6)
+    >>> ship.state_names, ship.position_indices, ship.heading_index
+    (['u', 'v', 'r', 'x', 'y', 'psi'], [3, 4], 5)
+    """
     if isinstance(model, SymbolicModel):
         return model
     for kind, build in _BUILDERS:

@@ -194,13 +194,60 @@ def _write_atomically(path: pathlib.Path, write) -> None:
 def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
                              cache_dir: str | os.PathLike | None = None,
                              compiler: str | None = None) -> CompiledLibrary:
-    """Generates one C file with every function and compiles it into a shared library in the
-    cache folder (see the module's documentation), or finds it there.
+    """Compile CasADi functions into one shared library for the C++ core, or find it cached.
 
-    name: the library's name (a C identifier), the start of its file name. compiler: the C
-    compiler command (default $CC, else cc); arguments in it come after COMPILE_FLAGS. Raises CompilationError when the compiler is
-    missing or fails (with the end of its error output), CacheDirectoryError when the cache
-    folder cannot be written, ValueError for bad arguments."""
+    Generates one C file with every function (``casadi_real = double``,
+    ``casadi_int = long long int``, plus the ABI functions the loader checks) and compiles it
+    with ``-O2 -fPIC -shared`` into the cache folder. The file name carries a SHA-256 of the
+    C source, the compiler's identity and the flags: the same functions compile once per
+    machine and compiler. Files are written under a temporary name and renamed into place.
+
+    Parameters
+    ----------
+    functions : sequence of casadi.Function
+        The functions, with distinct names (the library's symbols).
+    name : str
+        The library's name (a C identifier), the start of its file name.
+    cache_dir : str or os.PathLike, optional
+        The folder of the libraries (default ``$HINF_CPP_CACHE``, else
+        ``$XDG_CACHE_HOME/hinf_cpp/casadi`` or ``~/.cache/hinf_cpp/casadi``).
+    compiler : str, optional
+        The C compiler command (default ``$CC``, else ``cc``); arguments in it come after
+        the flags (``"cc -O1"`` overrides ``-O2``).
+
+    Returns
+    -------
+    CompiledLibrary
+        ``path`` (the ``.so``; its C source is beside it), ``cache_hit``, ``generate_seconds``
+        and ``compile_seconds`` (0 on a cache hit); ``function(name)`` loads one function as a
+        ``hinf_cpp.GeneratedFunction``.
+
+    Raises
+    ------
+    ValueError
+        Bad arguments: a name that is not a C identifier, no functions, objects that are not
+        ``casadi.Function``, two functions of the same name.
+    hinf_cpp.models.codegen.CompilationError
+        The compiler is missing or fails (with the end of its error output).
+    hinf_cpp.models.codegen.CacheDirectoryError
+        The cache folder cannot be created or written (an OSError).
+
+    Examples
+    --------
+    >>> import casadi as ca
+    >>> from hinf_cpp.models import compile_casadi_functions
+    >>> x = ca.SX.sym("x", 3)
+    >>> library = compile_casadi_functions(
+    ...     [ca.Function("f", [x], [ca.sin(x)]), ca.Function("J", [x], [ca.jacobian(ca.sin(x), x)])],
+    ...     "demo", cache_dir="cache")
+    >>> library.path.suffix, library.cache_hit
+    ('.so', False)
+    >>> J = library.function("J")  # hinf_cpp.GeneratedFunction
+    >>> J([0.0, 0.0, 0.0])[0]      # one array per output
+    array([[1., 0., 0.],
+           [0., 1., 0.],
+           [0., 0., 1.]])
+    """
     started = time.perf_counter()
     source = generate_c_source(functions, name)
     generate_seconds = time.perf_counter() - started

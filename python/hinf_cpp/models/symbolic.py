@@ -64,7 +64,40 @@ def _casadi():
 
 @dataclasses.dataclass
 class CompiledModel:
-    """Where a compiled model lives and what compiling it cost."""
+    """Where a compiled model lives and what compiling it cost.
+
+    What :meth:`SymbolicModel.build` returns.
+
+    Parameters
+    ----------
+    metadata_path : pathlib.Path
+        The model's description (JSON, the content of a ``model.json``) in the cache folder;
+        the shared library and its C source are beside it. ``hinf_cpp.GeneratedModel(path)``
+        loads it.
+    cache_hit : bool
+        True: an identical model had been compiled before (same C source, compiler and flags).
+    generate_seconds : float
+        Seconds of CasADi's code generation (also spent on a cache hit: the cache key is the
+        hash of the generated source).
+    compile_seconds : float
+        Seconds of the C compiler (0 on a cache hit).
+
+    Examples
+    --------
+    >>> import casadi as ca
+    >>> from hinf_cpp.models import SymbolicModel
+    >>> q = ca.SX.sym("q", 2)  # [position x (m), velocity v (m/s)]
+    >>> d = ca.SX.sym("d")     # damping, 1/s
+    >>> cart = SymbolicModel("cart", state=q, inputs=1, f=ca.vertcat(q[1], -d * q[1]),
+    ...                      G=[[0.0], [1.0]], D=[[0.0], [1.0]], parameters=d,
+    ...                      parameter_values={"d": 0.5}, state_names=["x", "v"])
+    >>> built = cart.build(cache_dir="cache")  # compiled once, into ./cache
+    >>> built.metadata_path.suffix, built.compile_seconds > 0
+    ('.json', True)
+    >>> again = cart.build(cache_dir="cache")
+    >>> again.cache_hit, again.compile_seconds
+    (True, 0.0)
+    """
 
     metadata_path: pathlib.Path  # model.json; the shared library is beside it
     cache_hit: bool          # True: an identical model had been compiled before
@@ -75,30 +108,91 @@ class CompiledModel:
 class SymbolicModel:
     """A control-affine model dq/dt = f(t, q) + G(t, q) u + D(t, q) w in CasADi expressions.
 
-    Arguments:
-        name: the model's name (results files, tables).
-        state: the state q, a column of n CasADi symbols.
-        inputs: the number of inputs m.
-        f: the drift, n x 1, an expression of t, q and the parameters (not of u: the model is
-            control-affine, the inputs enter through G).
-        G: the input matrix, n x m; D: the disturbance matrix, n x nw (nw may be 0: pass a
-            n x 0 matrix). Either may depend on t, q and the parameters.
-        time: the time symbol t, if f, G, D or C depend on it.
-        parameters: a column of named scalar symbols (``ca.SX.sym("m_u")``), or None.
-        parameter_values: a value for every parameter, by name (the defaults; a scenario file
-            or :meth:`compile` may set others).
-        C: the measurement matrix (p_y x n) of y = C q + noise, an expression of t and the
-            parameters; with it, noise_channels names the p_y channels of w that carry the
-            measurement noise (their columns of D should be zero: the noise enters through E).
-        state_names, position_indices, heading_index: as ``hc.Model`` (names of the states,
-            the inertial position components, the heading angle or -1).
-        error_split: optionally a callable (q_d, u_d, q_e) -> (A, alpha) of CasADi expressions
-            with A(q_e) q_e + alpha(q_e) = f_e(q_e) and A(0) = A_e (paper eqs. 26-31); it is
-            checked at random points when the model is compiled. Without it the always-valid
-            split A = A_e, alpha = f_e - A_e q_e is used.
-        nominal_state: a state where the model is defined (default zeros): the expressions are
-            evaluated there at construction, and an expression that is not finite there is an
-            error.
+    The model is stated with CasADi expressions (SX or MX) of the time t (s), the state q and
+    named parameters p; y = C(t) q + noise is its optional measurement. The Jacobians df/dq
+    and d(G u)/dq are CasADi's automatic differentiation (exact). :meth:`compile` turns it
+    into a ``hinf_cpp.GeneratedModel`` (C code generated, compiled once with the system C
+    compiler, cached; docs/models.md), :meth:`export` writes a folder for a scenario file's
+    ``[model] kind = "casadi"``, and the planner (:func:`hinf_cpp.planning.plan`) uses its
+    expressions. Every argument is checked at construction.
+
+    Parameters
+    ----------
+    name : str
+        The model's name (results files, tables).
+    state : casadi.SX or casadi.MX, shape (n, 1)
+        The state q, a column of n CasADi symbols.
+    inputs : int
+        The number of inputs m (>= 1).
+    f : CasADi expression or array_like, shape (n, 1)
+        The drift, an expression of t, q and the parameters (not of u: the model is
+        control-affine, the inputs enter through G).
+    G : CasADi expression or array_like, shape (n, m)
+        The input matrix, one column per input; may depend on t, q and the parameters.
+    D : CasADi expression or array_like, shape (n, nw)
+        The disturbance matrix (nw may be 0: pass an n x 0 matrix); may depend on t, q and
+        the parameters.
+    time : casadi.SX or casadi.MX, optional
+        The time symbol t (s), if f, G, D or C depend on it.
+    parameters : casadi.SX or casadi.MX, shape (k, 1), optional
+        A column of named scalar symbols (``ca.SX.sym("m_u")``), or None.
+    parameter_values : mapping of str to float, optional
+        A value for every parameter, by name (the defaults; a scenario file or
+        :meth:`compile` may set others).
+    C : CasADi expression or array_like, shape (p_y, n), optional
+        The measurement matrix of y = C q + noise, an expression of t and the parameters.
+    noise_channels : sequence of int, optional
+        With C: the p_y channels of w (0-based) that carry the measurement noise (their
+        columns of D should be zero: the noise enters through E).
+    state_names : sequence of str, optional
+        One name per state (default ``q0``, ``q1``, ...), as ``hc.Model.state_names()``.
+    position_indices : sequence of int, optional
+        The inertial position components (two for a planar vehicle), as
+        ``hc.Model.position_indices()``.
+    heading_index : int, optional
+        The heading angle's state (rad), or -1 for none.
+    error_split : callable, optional
+        ``(q_d, u_d, q_e) -> (A, alpha)`` of CasADi expressions with
+        A(q_e) q_e + alpha(q_e) = f_e(q_e) and A(0) = A_e (paper eqs. 26-31); it is checked at
+        random points when the model is compiled. Without it the always-valid split A = A_e,
+        alpha = f_e - A_e q_e is used.
+    nominal_state : array_like, shape (n,), optional
+        A state where the model is defined (default zeros): the expressions are evaluated
+        there at construction, and an expression that is not finite there is an error.
+
+    Attributes
+    ----------
+    n, m, nw : int
+        The sizes of q, u and w.
+    f, G, D, C, dfdq, dGudq : CasADi expressions
+        The model's expressions and their exact Jacobians.
+    parameter_names : list of str
+        The parameters, in order; ``parameter_values`` their defaults by name.
+
+    Raises
+    ------
+    ValueError
+        Naming the model and the problem: shapes of f, G, D and C, one noise channel per
+        measured output, indices out of range, expressions that depend on other symbols
+        (f, G, D on u), a missing or unknown parameter value, f, G, D or df/dq not finite at
+        `nominal_state`.
+
+    Examples
+    --------
+    >>> import casadi as ca
+    >>> from hinf_cpp.models import SymbolicModel
+    >>> q = ca.SX.sym("q", 2)  # [position x (m), velocity v (m/s)]
+    >>> d = ca.SX.sym("d")     # damping, 1/s
+    >>> cart = SymbolicModel("cart", state=q, inputs=1, f=ca.vertcat(q[1], -d * q[1]),
+    ...                      G=[[0.0], [1.0]], D=[[0.0], [1.0]], parameters=d,
+    ...                      parameter_values={"d": 0.5}, state_names=["x", "v"])
+    >>> cart.n, cart.m, cart.nw, cart.parameter_names
+    (2, 1, 1, ['d'])
+    >>> model = cart.compile(cache_dir="cache")  # an hc.GeneratedModel, compiled into ./cache
+    >>> model.f(0.0, [0.0, 2.0])                 # f at x = 0 m, v = 2 m/s
+    array([ 2., -1.])
+    >>> cart.compile({"d": 1.0}, cache_dir="cache").f(0.0, [0.0, 2.0])
+    array([ 2., -2.])
     """
 
     def __init__(self, name: str, *, state, inputs: int, f, G, D, time=None, parameters=None,

@@ -49,7 +49,29 @@ FORMAT = "hinf_cpp-run/1"
 
 @dataclasses.dataclass
 class RunData:
-    """Arrays and metadata read back from an export."""
+    """Arrays and metadata read back from an export (:func:`load_npz`, :func:`load_csv`).
+
+    ``data[name]`` is the array of that name, ``name in data`` whether there is one.
+
+    Parameters
+    ----------
+    arrays : dict of str to numpy.ndarray
+        The time series by name (module docstring): ``t`` (k,), ``q`` (k, n), ...; from an
+        NPZ also ``Z`` (k, n, n).
+    meta : dict
+        The metadata: from an NPZ ``format``, ``results`` (the results file), ``components``,
+        ``state_names``, ``position_indices``, ``heading_index``; from a CSV ``components``.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import load_npz, save_npz
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> data = load_npz(save_npz(result, "run.npz"))
+    >>> data["q"].shape, data["Z"].shape, "q_hat" in data
+    ((4001, 6), (4001, 6, 6), False)
+    >>> data.meta["state_names"], data.meta["results"]["gamma"]
+    (['u', 'v', 'r', 'x', 'y', 'psi'], 5.0)
+    """
 
     arrays: dict[str, np.ndarray]
     meta: dict[str, Any]
@@ -79,7 +101,29 @@ def _output_names(model: _core.Model, t0: float, p: int) -> list[str]:
 
 
 def component_names(result: _core.RunResult) -> dict[str, list[str]]:
-    """Column names of the 2-D series of :func:`time_series` (state names, u1.., w1.., outputs)."""
+    """Column names of the 2-D series of :func:`time_series`.
+
+    The model's state names for ``q``, ``q_d``, ``q_e`` (and ``q_hat``), ``u1``, ``u2``, ...
+    for ``u`` and ``u_d``, ``w1``, ... for ``w``, and for ``y`` the state a row of C picks
+    (``y1``, ... otherwise).
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+
+    Returns
+    -------
+    dict of str to list of str
+        The names by series.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import component_names
+    >>> names = component_names(hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig2"))))
+    >>> names["q"], names["u"], names["y"]
+    (['u', 'v', 'r', 'x', 'y', 'psi'], ['u1', 'u2'], ['x', 'y', 'psi'])
+    """
     model = result.trajectory.model()
     sim = result.simulation
     states = list(model.state_names())
@@ -94,7 +138,32 @@ def component_names(result: _core.RunResult) -> dict[str, list[str]]:
 
 
 def time_series(result: _core.RunResult) -> dict[str, np.ndarray]:
-    """Every time series of a run (module docstring), as NumPy arrays."""
+    """Every time series of a run (module docstring), as NumPy arrays.
+
+    On the output grid of k times: ``t`` (s), ``q``, ``q_d``, ``q_e`` = q - q_d, ``u``,
+    ``u_d``, ``w``, ``z_min_eig`` and ``z_max_eig`` (NaN without a design); for output
+    feedback also ``q_hat``, ``y``, ``sigma_min_eig``, ``sigma_max_eig``, ``rho_sigma_z``.
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The series by name, shape (k,) or (k, columns).
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import time_series
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> series = time_series(result)
+    >>> list(series)
+    ['t', 'q', 'q_d', 'q_e', 'u', 'u_d', 'w', 'z_min_eig', 'z_max_eig']
+    >>> series["t"].shape, series["q"].shape, series["u"].shape
+    ((4001,), (4001, 6), (4001, 2))
+    """
     sim = result.simulation
     t = np.asarray(sim.t, dtype=float)
     series = {"t": t, "q": np.asarray(sim.q), "q_d": np.asarray(sim.q_d), "q_e": sim.q_e(),
@@ -130,8 +199,32 @@ def _meta(result: _core.RunResult) -> dict[str, Any]:
 
 
 def npz_path(path: str | pathlib.Path) -> pathlib.Path:
-    """The file :func:`save_npz` writes for `path`: `path` itself, with ``.npz`` appended when
-    it has another suffix (as ``numpy.savez_compressed`` names files)."""
+    """The file :func:`save_npz` writes for `path`.
+
+    `path` itself, with ``.npz`` appended when it has another suffix (as
+    ``numpy.savez_compressed`` names files).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The path asked for.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    ValueError
+        An empty path.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import npz_path
+    >>> str(npz_path("run")), str(npz_path("run.npz")), str(npz_path("run.v1"))
+    ('run.npz', 'run.npz', 'run.v1.npz')
+    """
     if os.fspath(path) == "":
         raise ValueError("an output file name is empty")
     path = pathlib.Path(path)
@@ -139,10 +232,41 @@ def npz_path(path: str | pathlib.Path) -> pathlib.Path:
 
 
 def save_npz(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
-    """Writes every time series, Z(t) on the grid and the metadata (JSON) to a compressed NPZ,
-    whole or not at all.
+    """Write every time series, Z(t) on the grid and the metadata to a compressed NPZ.
 
-    ``.npz`` is appended to a name without it (:func:`npz_path`); the path written is returned.
+    The metadata is JSON; the file is written whole or not at all. ``.npz`` is appended to a name
+    without it (:func:`npz_path`). The file reads with ``numpy.load(path, allow_pickle=False)``;
+    :func:`load_npz` reads it back exactly.
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+    path : str or pathlib.Path
+        The file.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be written (empty, a directory, below a plain file).
+    OSError
+        The file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import save_npz
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> path = save_npz(result, "run")
+    >>> str(path)
+    'run.npz'
+    >>> with np.load(path, allow_pickle=False) as data:
+    ...     data["Z"].shape
+    (4001, 6, 6)
     """
     path = npz_path(path)
     arrays = time_series(result)
@@ -155,7 +279,34 @@ def save_npz(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
 
 
 def load_npz(path: str | pathlib.Path) -> RunData:
-    """Reads a file of :func:`save_npz`: the arrays (exactly as written) and the metadata."""
+    """Read a file of :func:`save_npz`: the arrays (exactly as written) and the metadata.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The NPZ file.
+
+    Returns
+    -------
+    RunData
+        The arrays and the metadata (``meta``: format, results file, components, state names,
+        position and heading indices).
+
+    Raises
+    ------
+    ValueError
+        A file without the metadata, or of another format.
+    OSError
+        A file that cannot be read.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import load_npz, save_npz
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> data = load_npz(save_npz(result, "run.npz"))
+    >>> bool(np.array_equal(data["q"], result.simulation.q)), data.meta["format"]
+    (True, 'hinf_cpp-run/1')
+    """
     with np.load(pathlib.Path(path), allow_pickle=False) as data:
         if "meta" not in data.files:
             raise ValueError(f"{path}: not a hinf_cpp run export (no 'meta' entry)")
@@ -171,12 +322,45 @@ def _text(x: float, digits: int | None) -> str:
 
 
 def save_csv(result: _core.RunResult, path: str | pathlib.Path, digits: int | None = None) -> pathlib.Path:
-    """Writes the time series as a tidy (long) CSV: ``t,variable,value`` (module docstring).
+    """Write the time series as a tidy (long) CSV: ``t,variable,value`` (module docstring).
+
+    One row per time and series component, grouped by variable (``q.x``, ``u.u1``,
+    ``z_min_eig``, ...), in time order within each; ``Z`` is left out. Written whole or not
+    at all.
 
     Parameters
     ----------
+    result : hinf_cpp.RunResult
+        The run.
+    path : str or pathlib.Path
+        The file.
     digits : int, optional
-        Significant digits of every number; None (default) writes the shortest exact text.
+        Significant digits of every number (1 to 17); None (default) writes the shortest
+        exact text (``repr``: the round trip is exact).
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    ValueError
+        `digits` out of range, or a path that cannot be written.
+    OSError
+        The file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import save_csv
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> path = save_csv(result, "run.csv", digits=6)
+    >>> for line in path.read_text().splitlines()[:4]:
+    ...     print(line)
+    t,variable,value
+    0,q.u,1
+    0.01,q.u,1.01125
+    0.02,q.u,1.02231
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 17):
         raise ValueError(f"digits must be an integer in [1, 17] or None, got {digits!r}")
@@ -196,14 +380,34 @@ def save_csv(result: _core.RunResult, path: str | pathlib.Path, digits: int | No
 
 
 def load_csv(path: str | pathlib.Path) -> RunData:
-    """Reads a file of :func:`save_csv` back into the arrays of :func:`time_series`.
+    """Read a file of :func:`save_csv` back into the arrays of :func:`time_series`.
 
     ``meta`` holds ``components`` (the column names found for every 2-D series).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The CSV file.
+
+    Returns
+    -------
+    RunData
+        The arrays (``t`` and every series) and ``meta["components"]``.
 
     Raises
     ------
     ValueError
         A file that is not a tidy export (header, times that differ between variables).
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import load_csv, save_csv
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> data = load_csv(save_csv(result, "run.csv"))
+    >>> data["q"].shape, data.meta["components"]["u"]
+    ((4001, 6), ['u1', 'u2'])
+    >>> bool(np.array_equal(data["q"], result.simulation.q))  # exact round trip
+    True
     """
     path = pathlib.Path(path)
     with path.open(newline="") as handle:
@@ -242,12 +446,67 @@ def load_csv(path: str | pathlib.Path) -> RunData:
 
 
 def save_json(result: _core.RunResult, path: str | pathlib.Path) -> pathlib.Path:
-    """Writes the results file (``results_json(result)``, docs/results.md)."""
+    """Write the results file of a run (JSON, docs/results.md), whole or not at all.
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+    path : str or pathlib.Path
+        The file.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be written.
+    OSError
+        The file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import save_json
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> save_json(result, "run.json").name
+    'run.json'
+    """
     return write_text(path, _core.results_json(result) + "\n")
 
 
 def load_json(path: str | pathlib.Path) -> dict:
-    """Reads a results file (non-finite numbers are ``null`` there, None here)."""
+    """Read a results file (JSON, docs/results.md).
+
+    Non-finite numbers are ``null`` in the file, None here.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The results file.
+
+    Returns
+    -------
+    dict
+        Its content: scenario, gamma, Z0, metrics, timing, ...
+
+    Raises
+    ------
+    ValueError
+        A file that is not JSON.
+    OSError
+        A file that cannot be read.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.export import load_json, save_json
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> results = load_json(save_json(result, "run.json"))
+    >>> results["gamma"], round(results["metrics"]["rms_position_error_last_half"], 3)
+    (5.0, 0.048)
+    """
     text = pathlib.Path(path).read_text()
     try:
         return json.loads(text)

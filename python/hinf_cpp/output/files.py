@@ -45,8 +45,38 @@ def _check_folder_above(folder: str, cannot: str) -> None:
 
 
 def check_output_path(path: str | os.PathLike, figure: bool = False) -> None:
-    """Raises ValueError unless a file can be written at `path`; with `figure`, its suffix must
-    also be .png, .pdf or .svg."""
+    """Check, before a computation, that a file can be written at a path.
+
+    Raises ValueError unless a file can be written at `path` (not empty, not a directory, not
+    below a plain file, in a folder with write permission or one that can be made); with
+    `figure`, its suffix must also be .png, .pdf or .svg. The words are those of the C++
+    ``check_output_path`` that ``hinf-sim`` uses.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file.
+    figure : bool, optional
+        The file is a figure (default False).
+
+    Raises
+    ------
+    ValueError
+        Naming the path and what is wrong.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.files import check_output_path
+    >>> check_output_path("out/run.json")  # the folder out/ would be made
+    >>> check_output_path("paths.txt", figure=True)
+    Traceback (most recent call last):
+        ...
+    ValueError: cannot write the figure 'paths.txt': its name must end in .png, .pdf or .svg
+    >>> check_output_path(".")
+    Traceback (most recent call last):
+        ...
+    ValueError: cannot write '.': it is a directory
+    """
     path = os.fspath(path)
     if path == "":
         raise ValueError("an output file name is empty")
@@ -59,7 +89,31 @@ def check_output_path(path: str | os.PathLike, figure: bool = False) -> None:
 
 
 def check_output_folder(path: str | os.PathLike) -> None:
-    """Raises ValueError unless `path` is a folder files can be written into, or can be made one."""
+    """Check, before a computation, that files can be written into a folder.
+
+    Raises ValueError unless `path` is a folder files can be written into, or can be made
+    one.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The folder.
+
+    Raises
+    ------
+    ValueError
+        An empty name, a path that is not a directory, a folder without write permission.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.files import check_output_folder, write_text
+    >>> check_output_folder("report")  # made when written into
+    >>> _ = write_text("notes.txt", "a file\\n")
+    >>> check_output_folder("notes.txt")
+    Traceback (most recent call last):
+        ...
+    ValueError: cannot write into 'notes.txt': it is not a directory
+    """
     path = os.fspath(path)
     if path == "":
         raise ValueError("an output folder name is empty")
@@ -81,8 +135,45 @@ def _open_temporary(folder: str, name: str) -> tuple[int, str]:
 
 @contextlib.contextmanager
 def atomic_output(path: str | os.PathLike) -> Iterator[BinaryIO]:
-    """``with atomic_output(path) as f: f.write(...)``: the file appears at `path` only when the
-    block completes; on any exception the target is left as it was. Creates missing folders."""
+    """A binary file to write that appears at `path` only when the block completes.
+
+    ``with atomic_output(path) as f: f.write(...)`` writes into a temporary file in the
+    target's folder and renames it over the target once complete; on any exception the
+    target is left as it was. Missing folders are created. An existing device or pipe
+    (``/dev/stdout``) is written in place.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file.
+
+    Yields
+    ------
+    BinaryIO
+        The file to write (bytes).
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be written (:func:`check_output_path`).
+    OSError
+        A write failure (a full disk), naming the path.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.files import atomic_output
+    >>> with atomic_output("data.bin") as f:
+    ...     _ = f.write(b"complete")
+    >>> try:
+    ...     with atomic_output("data.bin") as f:
+    ...         _ = f.write(b"part")
+    ...         raise KeyboardInterrupt
+    ... except KeyboardInterrupt:
+    ...     pass
+    >>> import pathlib
+    >>> pathlib.Path("data.bin").read_bytes()  # the previous file, whole
+    b'complete'
+    """
     path = os.fspath(path)
     check_output_path(path)
     cannot = f"cannot write '{path}': "
@@ -109,7 +200,34 @@ def atomic_output(path: str | os.PathLike) -> Iterator[BinaryIO]:
 
 
 def write_text(path: str | os.PathLike, text: str) -> pathlib.Path:
-    """Writes a text file (UTF-8) whole or not at all; returns the path."""
+    """Write a text file (UTF-8) whole or not at all (:func:`atomic_output`).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file (missing folders are created).
+    text : str
+        The content.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    ValueError
+        A path that cannot be written.
+    OSError
+        The file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.files import write_text
+    >>> path = write_text("notes/summary.md", "# Summary\\n")
+    >>> path.read_text()
+    '# Summary\\n'
+    """
     with atomic_output(path) as handle:
         handle.write(text.encode("utf-8"))
     return pathlib.Path(path)

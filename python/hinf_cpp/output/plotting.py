@@ -85,7 +85,33 @@ def _position_indices(result: _core.RunResult) -> tuple[int, int]:
 
 
 def position_error(result: _core.RunResult) -> np.ndarray:
-    """|p - p_d| on the output grid."""
+    """The position error |p - p_d| of a run on its output grid.
+
+    p is the model's planar position (its two ``position_indices()`` states).
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+
+    Returns
+    -------
+    numpy.ndarray, shape (k,)
+        The error at the k output times, in the model's unit of length.
+
+    Raises
+    ------
+    ValueError
+        A model without a planar position.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import position_error
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> error = position_error(result)
+    >>> error.shape, round(float(error[0]), 4)  # starts 1 m behind and 1 m aside
+    ((4001,), 1.4142)
+    """
     ix, iy = _position_indices(result)
     q_e = result.simulation.q_e()
     return np.hypot(q_e[:, ix], q_e[:, iy])
@@ -131,11 +157,47 @@ def _span(paths: list[np.ndarray]) -> float:
 
 def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows: int = 0,
               length_unit: str = "m", waypoints=(), ax=None) -> Figure:
-    """The paper's x-y plot: desired path solid, actual path dashed, start points marked;
-    optionally ``heading_arrows`` arrows of the heading along the actual path, and the
-    ``waypoints`` a desired trajectory was planned through (hinf_cpp.planning.planner.Waypoint: crosses,
-    and a short line for a waypoint's heading). ``length_unit`` labels the axes (the model's
-    unit of length). ``ax``: draw into these axes instead of a new figure."""
+    """The paper's x-y plot of one run: desired path solid, actual path dashed, starts marked.
+
+    Optionally arrows of the heading along the actual path, and the waypoints a desired
+    trajectory was planned through (crosses, numbered, and a short line for a waypoint's
+    heading).
+
+    Parameters
+    ----------
+    result : hinf_cpp.RunResult
+        The run.
+    title : str, optional
+        The title (default: scenario, law and gamma).
+    heading_arrows : int, optional
+        Arrows of the heading along the actual path (default 0: none).
+    length_unit : str, optional
+        The unit in the axis labels (the model's unit of length; default ``"m"``).
+    waypoints : sequence of hinf_cpp.planning.Waypoint, optional
+        The waypoints to mark.
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (their figure is returned) instead of a new figure.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Raises
+    ------
+    ValueError
+        A model without a planar position.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import save_figure, xy_figure
+    >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    >>> figure = xy_figure(result, heading_arrows=6)
+    >>> figure.axes[0].get_title(), figure.axes[0].get_xlabel()
+    ('paper-fig1: hinf, gamma = 5', 'x [m]')
+    >>> save_figure(figure, "paper_fig1_xy.png").name
+    'paper_fig1_xy.png'
+    """
     ix, iy = _position_indices(result)
     sim = result.simulation
     if ax is None:
@@ -200,14 +262,16 @@ def plan_figure(planned_plan, title: str | None = None, length_unit: str = "m") 
 
 def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | None = None, ax=None,
                  t_max: float | None = None, legend: bool = True, length_unit: str = "m") -> Figure:
-    """Overlaid x-y paths: the desired path (solid black, its start heading arrowed) and each
-    run's actual path (dashed; dash-dotted for output feedback) with its start marked (square)
-    and ``heading_arrows`` arrows of the heading along it (the first at the start).
+    """Overlaid x-y paths of runs of the same desired path.
+
+    The desired path (solid black, its start heading arrowed) and each run's actual path
+    (coloured by law; dashed, dash-dotted for output feedback) with its start marked
+    (square) and ``heading_arrows`` arrows of the heading along it (the first at the start).
 
     Parameters
     ----------
-    runs : RunResult or list of (label, RunResult)
-        The runs (of the same desired path).
+    runs : RunResult or list of (str, RunResult)
+        The runs (of the same desired path), labelled.
     title : str, optional
         Default: the scenario name.
     heading_arrows : int, optional
@@ -220,6 +284,28 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
         Draw the legend in the axes.
     length_unit : str
         The unit of x and y in the axis labels (the model's unit of length).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Raises
+    ------
+    ValueError
+        No run, runs not given as (label, RunResult) pairs, a model without a planar
+        position.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import paths_figure
+    >>> from hinf_cpp.analysis import compare
+    >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
+    >>> [label for label, _ in runs]
+    ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
+    >>> figure = paths_figure(runs[:2], t_max=20.0)
+    >>> figure.axes[0].get_title()
+    'paper-fig2: x-y paths (arrows: heading, t <= 20 s)'
     """
     runs = _runs(runs)
     first = runs[0][1]
@@ -258,7 +344,38 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
 
 
 def errors_figure(runs: Runs, title: str | None = None) -> Figure:
-    """Position error |p - p_d| (log scale) and wrapped heading error against time."""
+    """Position error |p - p_d| (log scale) and wrapped heading error against time.
+
+    Two panels sharing the time axis (s); the heading error wrap(psi - psi_d) in degrees.
+
+    Parameters
+    ----------
+    runs : RunResult or list of (str, RunResult)
+        One run, or labelled runs of the same scenario (overlaid).
+    title : str, optional
+        The title (default: the scenario's name and what is shown).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Raises
+    ------
+    ValueError
+        No run, or a model without a planar position.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import errors_figure
+    >>> from hinf_cpp.analysis import compare
+    >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
+    >>> [label for label, _ in runs]
+    ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
+    >>> figure = errors_figure(runs)
+    >>> [axes.get_ylabel() for axes in figure.axes]
+    ['position error |p - p_d| [m]', 'heading error wrap(psi - psi_d) [deg]']
+    """
     runs = _runs(runs)
     fig = Figure(figsize=(7.6, 6.0), layout="constrained")
     ax_p, ax_h = fig.subplots(2, 1, sharex=True)
@@ -292,7 +409,39 @@ def errors_figure(runs: Runs, title: str | None = None) -> Figure:
 
 
 def controls_figure(runs: Runs, title: str | None = None) -> Figure:
-    """Each input against time: the desired input u_d (solid black) and the applied ones."""
+    """Each input against time: the desired input u_d (solid black) and the applied ones.
+
+    One panel per input, sharing the time axis (s); the ship's inputs labelled in m/s^2 and
+    rad/s^2.
+
+    Parameters
+    ----------
+    runs : RunResult or list of (str, RunResult)
+        One run, or labelled runs of the same scenario (overlaid).
+    title : str, optional
+        The title (default: the scenario's name and what is shown).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Raises
+    ------
+    ValueError
+        No run.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import controls_figure
+    >>> from hinf_cpp.analysis import compare
+    >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
+    >>> [label for label, _ in runs]
+    ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
+    >>> figure = controls_figure(runs)
+    >>> [axes.get_ylabel() for axes in figure.axes]
+    ['u1 [m/s^2]', 'u2 [rad/s^2]']
+    """
     runs = _runs(runs)
     first = runs[0][1]
     m = first.simulation.u.shape[1]
@@ -324,8 +473,40 @@ def _has_output_feedback(result: _core.RunResult) -> bool:
 
 
 def eigenvalues_figure(runs: Runs, title: str | None = None) -> Figure:
-    """Smallest and largest eigenvalue of Z(t) of each design (one per distinct gamma) and,
-    for output-feedback runs, of the filter's Sigma(t)."""
+    """Smallest and largest eigenvalue of Z(t) of each design, and of Sigma(t), against time.
+
+    One design per distinct gamma; Sigma(t), the filter's, for output-feedback runs. Z(t) is the
+    solution of paper eq. (13), Sigma(t) that of the filter equation (36); log scale, against time
+    (s).
+
+    Parameters
+    ----------
+    runs : RunResult or list of (str, RunResult)
+        One run, or labelled runs of the same scenario (overlaid).
+    title : str, optional
+        The title (default: the scenario's name and what is shown).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure: one panel, two with output-feedback runs.
+
+    Raises
+    ------
+    ValueError
+        No run.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import eigenvalues_figure
+    >>> from hinf_cpp.analysis import compare
+    >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
+    >>> [label for label, _ in runs]
+    ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
+    >>> figure = eigenvalues_figure(runs)
+    >>> [axes.get_ylabel() for axes in figure.axes]
+    ['eigenvalue of Z(t) [-]', 'eigenvalue of Sigma(t) [-]']
+    """
     runs = _runs(runs)
     designs, seen = [], set()
     for label, result in runs:
@@ -368,10 +549,37 @@ def eigenvalues_figure(runs: Runs, title: str | None = None) -> Figure:
 def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
     """The coupling condition of the output-feedback design: rho(Sigma Z)(t) against gamma^2.
 
+    The spectral radius of Sigma(t) Z(t) of each output-feedback run, against time (s), and
+    gamma^2 of each finite design gamma (the condition is rho < gamma^2). State-feedback runs
+    are left out.
+
+    Parameters
+    ----------
+    runs : RunResult or list of (str, RunResult)
+        One run, or labelled runs of the same scenario (overlaid).
+    title : str, optional
+        The title (default: the scenario's name and what is shown).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
     Raises
     ------
     ValueError
         When no run has output feedback (a scenario without [measurement]).
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import coupling_figure
+    >>> from hinf_cpp.analysis import compare
+    >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
+    >>> [label for label, _ in runs]
+    ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
+    >>> figure = coupling_figure(runs)
+    >>> [line.get_label() for line in figure.axes[0].get_lines()]
+    ['hinf/output-feedback', 'lqr/output-feedback', 'gamma^2 = 25 (coupling condition rho < gamma^2)']
     """
     runs = [(label, r) for label, r in _runs(runs) if _has_output_feedback(r)]
     if not runs:
@@ -397,11 +605,40 @@ def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
 
 
 def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figure:
-    """One panel of overlaid x-y paths per scenario of a recovery study
-    (:class:`~hinf_cpp.analysis.recovery.RecoveryStudy`).
+    """One panel of overlaid x-y paths per scenario of a recovery study.
 
-    ``t_max``: the time window drawn; default per panel: the latest settling time of its runs
-    plus 5 s (the whole horizon when a run does not settle).
+    Each panel is :func:`paths_figure` of the scenario's runs (failed runs left out), labelled
+    by law, with one legend for the figure.
+
+    Parameters
+    ----------
+    study : hinf_cpp.analysis.RecoveryStudy
+        The study (:func:`hinf_cpp.analysis.recovery_study`).
+    columns : int, optional
+        Panels per row (default 3).
+    t_max : float, optional
+        The time window drawn (s, absolute); default per panel: the latest settling time of
+        its runs plus 5 s (the whole horizon when a run does not settle).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Raises
+    ------
+    ValueError
+        A study without scenarios.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import recovery_study
+    >>> from hinf_cpp.output.plotting import recovery_figure
+    >>> study = recovery_study([hc.scenario_path("poor_heading_180"), hc.scenario_path("poor_position_ahead")],
+    ...                        "hinf,cascade")
+    >>> figure = recovery_figure(study, columns=2)
+    >>> [axes.get_title() for axes in figure.axes]
+    ['poor-heading-180 (t <= 54 s)', 'poor-position-ahead (t <= 25 s)']
     """
     scenarios = study.scenarios
     if not scenarios:
@@ -433,9 +670,22 @@ def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figu
 
 
 def save_figure(fig: Figure, path: str | pathlib.Path) -> pathlib.Path:
-    """Saves a figure, whole or not at all (:func:`hinf_cpp.output.files.atomic_output`); the
-    format is the suffix: .png (150 dpi), .pdf and .svg (vector), or any other format
+    """Save a figure, whole or not at all (:func:`hinf_cpp.output.files.atomic_output`).
+
+    The format is the suffix: .png (150 dpi), .pdf and .svg (vector), or any other format
     matplotlib writes.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    path : str or pathlib.Path
+        The file.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
 
     Raises
     ------
@@ -444,6 +694,18 @@ def save_figure(fig: Figure, path: str | pathlib.Path) -> pathlib.Path:
         cannot be written (a directory, below a plain file).
     OSError
         The file could not be written (a full disk); the message names the path.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.plotting import errors_figure, save_figure
+    >>> figure = errors_figure(hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1"))))
+    >>> save_figure(figure, "errors.pdf").name
+    'errors.pdf'
+    >>> save_figure(figure, "errors.txt")
+    Traceback (most recent call last):
+        ...
+    ValueError: figure file 'errors.txt': the suffix must name an image format
+    (.png, .pdf, .svg, ...; supported: ...)
     """
     path = pathlib.Path(path)
     formats = fig.canvas.get_supported_filetypes()

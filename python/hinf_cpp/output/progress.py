@@ -29,18 +29,34 @@ def _is_terminal(stream: TextIO) -> bool:
 class Progress:
     """Live progress line, used as the ``progress`` callback of the data functions.
 
+    ``progress(index, total, message)`` shows ``[index/total] message ...`` in place of the
+    previous line (carriage return); ``close()`` (or the end of a ``with`` block) erases it.
+    Nothing is written unless the stream is a terminal and `quiet` is false.
+
     Parameters
     ----------
-    quiet : bool
-        True turns the display off.
+    quiet : bool, optional
+        True turns the display off (default False).
     stream : file-like, optional
         Where to write (default ``sys.stderr``); nothing is written unless
         ``stream.isatty()`` is true.
 
     Examples
     --------
-    >>> with Progress() as progress:                      # doctest: +SKIP
-    ...     comparison = compare(scenario, progress=progress)
+    >>> from hinf_cpp.analysis import compare
+    >>> from hinf_cpp.output.progress import Progress
+    >>> with Progress() as progress:  # shown on a terminal only
+    ...     comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "hinf,lqr",
+    ...                          progress=progress)
+    >>> import io
+    >>> class Terminal(io.StringIO):
+    ...     def isatty(self):
+    ...         return True
+    >>> stream = Terminal()
+    >>> with Progress(stream=stream) as progress:
+    ...     progress(1, 2, "running hinf")
+    >>> stream.getvalue()
+    '\\r[1/2] running hinf ...\\r                      \\r'
     """
 
     def __init__(self, quiet: bool = False, stream: TextIO | None = None):

@@ -17,12 +17,55 @@ __all__ = ["csv_table", "format_cell", "markdown_table", "run_key", "text_table"
 
 
 def run_key(law: _core.Law, output_feedback: bool) -> str:
-    """The label of a run: the law's name, with ``/output-feedback`` for output feedback."""
+    """The label of a run: the law's name, with ``/output-feedback`` for output feedback.
+
+    The key of a run in comparisons, tables and figure legends.
+
+    Parameters
+    ----------
+    law : hinf_cpp.Law
+        The law.
+    output_feedback : bool
+        Whether the run is output feedback.
+
+    Returns
+    -------
+    str
+        ``"hinf"``, ``"lqr/output-feedback"``, ...
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.tables import run_key
+    >>> run_key(hc.Law.lqr, True), run_key(hc.Law.hinf, False)
+    ('lqr/output-feedback', 'hinf')
+    """
     return f"{law.name}/output-feedback" if output_feedback else law.name
 
 
 def format_cell(value: Any, digits: int = 4) -> str:
-    """A cell as text: numbers with ``digits`` significant digits, non-finite as ``-``."""
+    """A cell of a text or Markdown table as text.
+
+    Numbers with `digits` significant digits, non-finite numbers and None as ``-``, booleans
+    as ``yes`` / ``no``, anything else as ``str``.
+
+    Parameters
+    ----------
+    value : object
+        The cell.
+    digits : int, optional
+        Significant digits of numbers (default 4).
+
+    Returns
+    -------
+    str
+        The text.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.tables import format_cell
+    >>> format_cell(0.047907816), format_cell(float("nan")), format_cell(True), format_cell(None)
+    ('0.04791', '-', 'yes', '-')
+    """
     if value is None:
         return "-"
     if isinstance(value, bool):
@@ -43,7 +86,38 @@ def _cells(header: Sequence[Any], rows: Sequence[Sequence[Any]], digits: int) ->
 
 
 def text_table(header: Sequence[Any], rows: Sequence[Sequence[Any]], digits: int = 4) -> str:
-    """Columns aligned with spaces: the first left-aligned, the others right-aligned."""
+    """A plain-text table: columns aligned with spaces, a rule under the header.
+
+    The first column is left-aligned, the others right-aligned.
+
+    Parameters
+    ----------
+    header : sequence
+        The column names.
+    rows : sequence of sequence
+        The rows, each with one cell per column (:func:`format_cell`).
+    digits : int, optional
+        Significant digits of numbers (default 4).
+
+    Returns
+    -------
+    str
+        The table, ending in a newline.
+
+    Raises
+    ------
+    ValueError
+        A row whose length differs from the header's.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.tables import text_table
+    >>> print(text_table(["law", "RMS [m]"], [["hinf", 0.047907], ["lqr", float("nan")]]), end="")
+    law   RMS [m]
+    ----  -------
+    hinf  0.04791
+    lqr         -
+    """
     cells = _cells(header, rows, digits)
     widths = [max(len(row[j]) for row in cells) for j in range(len(header))]
 
@@ -55,7 +129,36 @@ def text_table(header: Sequence[Any], rows: Sequence[Sequence[Any]], digits: int
 
 
 def markdown_table(header: Sequence[Any], rows: Sequence[Sequence[Any]], digits: int = 4) -> str:
-    """A GitHub-flavoured Markdown table (``|`` in cells escaped)."""
+    """A GitHub-flavoured Markdown table (``|`` in cells escaped).
+
+    Parameters
+    ----------
+    header : sequence
+        The column names.
+    rows : sequence of sequence
+        The rows, each with one cell per column (:func:`format_cell`).
+    digits : int, optional
+        Significant digits of numbers (default 4).
+
+    Returns
+    -------
+    str
+        The table, ending in a newline.
+
+    Raises
+    ------
+    ValueError
+        A row whose length differs from the header's.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.tables import markdown_table
+    >>> print(markdown_table(["law", "recovers"], [["hinf", True], ["lqr|kf", False]]), end="")
+    | law | recovers |
+    |---|---|
+    | hinf | yes |
+    | lqr\\|kf | no |
+    """
     cells = [[c.replace("|", "\\|") for c in row] for row in _cells(header, rows, digits)]
     lines = ["| " + " | ".join(cells[0]) + " |", "|" + "|".join("---" for _ in header) + "|"]
     lines += ["| " + " | ".join(row) + " |" for row in cells[1:]]
@@ -63,7 +166,36 @@ def markdown_table(header: Sequence[Any], rows: Sequence[Sequence[Any]], digits:
 
 
 def csv_table(header: Sequence[Any], rows: Sequence[Sequence[Any]]) -> str:
-    """CSV with numbers at full precision (``repr``), non-finite numbers and None empty."""
+    """A CSV table with numbers at full precision (``repr``).
+
+    Non-finite numbers and None are empty cells, booleans ``true`` / ``false``.
+
+    Parameters
+    ----------
+    header : sequence
+        The column names.
+    rows : sequence of sequence
+        The rows, each with one cell per column.
+
+    Returns
+    -------
+    str
+        The CSV text, one line per row after the header.
+
+    Raises
+    ------
+    ValueError
+        A row whose length differs from the header's.
+
+    Examples
+    --------
+    >>> from hinf_cpp.output.tables import csv_table
+    >>> rows = [["hinf", 0.1, True], ["lqr", float("nan"), None]]
+    >>> print(csv_table(["law", "rms", "recovers"], rows), end="")
+    law,rms,recovers
+    hinf,0.1,true
+    lqr,,
+    """
 
     def cell(value: Any) -> str:
         if value is None:

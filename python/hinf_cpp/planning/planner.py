@@ -61,13 +61,56 @@ PENALTIES = (1e2, 1e4, 1e6)
 
 
 class PlanningError(_core.HinfError):
-    """The optimizer failed (IPOPT's status in the message), or the plan could not be made
-    accurate enough (its re-simulation mismatch stayed above max_mismatch)."""
+    """The planner failed: no plan to give.
+
+    Raised by :func:`plan` when the optimizer failed (IPOPT's return status and iterations in
+    the message), or when the plan could not be made accurate enough (its re-simulation
+    mismatch stayed above ``max_mismatch``, or the re-simulated trajectory misses a
+    waypoint's tolerance). A :class:`hinf_cpp.HinfError`.
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import PlanOptions, PlanningError, Waypoint, plan
+    >>> try:
+    ...     plan(hc.ShipModel(), [Waypoint(10.0, 0.0, t=10.0)], q0=[1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...          options=PlanOptions(interval=1.0, max_iterations=2))
+    ... except PlanningError as error:
+    ...     print(error)
+    the planner's optimizer (IPOPT) stopped without a solution: Maximum_Iterations_Exceeded
+    after 2 iterations. ...
+    >>> issubclass(PlanningError, hc.HinfError)
+    True
+    """
 
 
 class UnreachableWaypointError(ValueError):
-    """A waypoint cannot be reached within its tolerance with the input bounds and the time
-    given. ``index`` (0-based) names it, ``miss`` is how far the best plan stays from it."""
+    """A waypoint cannot be reached within its tolerance with the input bounds and time given.
+
+    A ValueError. The message names the waypoint, the bounds and how far the best plan comes. When several
+    waypoints are missed, the first one the plan cannot reach after meeting the ones before it
+    is named.
+
+    Parameters
+    ----------
+    message : str
+        The message.
+    index : int
+        The waypoint's index (0-based) in the list given to :func:`plan`.
+    miss : float
+        How far the best plan stays from the waypoint, in units of the condition's tolerance
+        (position: distance / ``tolerance``; heading and speed likewise).
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import PlanOptions, UnreachableWaypointError, Waypoint, plan
+    >>> try:  # 20 m in 10 s from 1 m/s: beyond the surge force u1 <= 2
+    ...     plan(hc.ShipModel(), [Waypoint(20.0, 0.0, t=10.0)], q0=[1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...          options=PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), interval=1.0))
+    ... except UnreachableWaypointError as error:
+    ...     print(error.index, error)
+    0 waypoints[0] (x = 20, y = 0, t = 10) cannot be reached with the input bounds
+    u1 in [0, 2], u2 in [-0.5, 0.5] by t = 10: the best plan comes ... away (tolerance 0.05). ...
+    """
 
     def __init__(self, message: str, index: int, miss: float):
         super().__init__(message)
@@ -77,9 +120,33 @@ class UnreachableWaypointError(ValueError):
 
 @dataclasses.dataclass(frozen=True)
 class Waypoint:
-    """Where the vehicle should be: position (x, y) in the model's unit of length; optionally
-    the arrival time t (absolute, s), the heading (rad, the model's heading state, compared
-    modulo 2 pi) and the speed |d(x, y)/dt| on arrival."""
+    """Where the vehicle should be, and optionally when, heading where and how fast.
+
+    Parameters
+    ----------
+    x : float
+        The position's first component, in the model's unit of length (the first of its
+        ``position_indices()`` states).
+    y : float
+        The position's second component.
+    t : float, optional
+        The arrival time (absolute, s). Without it :func:`plan` times the waypoint: at
+        ``PlanOptions.speed`` from the one before, else the last waypoint at tf and the others
+        at constant speed along the polyline between the timed ones.
+    heading : float, optional
+        The heading on arrival (rad, the model's heading state, compared modulo 2 pi).
+    speed : float, optional
+        The speed ``|d(x, y)/dt|`` on arrival (unit of length per s, >= 0).
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import Waypoint
+    >>> waypoint = Waypoint(20.0, 3.5, t=40.0, heading=0.0)
+    >>> waypoint
+    Waypoint(x=20.0, y=3.5, t=40.0, heading=0.0, speed=None)
+    >>> waypoint.describe()
+    '(x = 20, y = 3.5, t = 40, heading = 0)'
+    """
 
     x: float
     y: float
@@ -96,7 +163,55 @@ class Waypoint:
 
 @dataclasses.dataclass(frozen=True)
 class PlanOptions:
-    """The planner's settings; each is also a key of a scenario file's [desired.plan]."""
+    """The planner's settings; each is also a key of a scenario file's [desired.plan].
+
+    The options are checked by :meth:`checked` (which :func:`plan` calls), not at
+    construction. Units are the model's: length, s, rad.
+
+    Parameters
+    ----------
+    tolerance : float, optional
+        How close to each waypoint's position (unit of length, > 10 ``max_mismatch``;
+        default 0.05).
+    heading_tolerance : float, optional
+        How close to a waypoint's heading (rad; default 0.01).
+    speed_tolerance : float, optional
+        How close to a waypoint's speed (unit of length per s; default 0.01).
+    speed : float, optional
+        Nominal speed that times the waypoints given without t (unit of length per s).
+    u_min : float or tuple of float, optional
+        Lower input bounds, one number for every input or one per input (-inf: unbounded;
+        default unbounded).
+    u_max : float or tuple of float, optional
+        Upper input bounds, likewise (inf: unbounded; default unbounded).
+    input_scale : float or tuple of float, optional
+        The scale s of each input in the cost; default max(|u_min|, |u_max|) of its finite
+        bounds, else 1.
+    effort_weight : float, optional
+        Weight of int |u / s|^2 dt (>= 0; default 1).
+    rate_weight : float, optional
+        Weight of int |du/dt / s|^2 dt (>= 0; default 1; not both 0).
+    interval : float, optional
+        Largest spacing of the input's nodes (s); default the horizon / 60.
+    substeps : int, optional
+        Runge-Kutta steps per interval (doubled until the mismatch is met; default 8).
+    max_mismatch : float, optional
+        Largest distance of the re-simulated from the planned positions (unit of length;
+        default 1e-6).
+    max_iterations : int, optional
+        IPOPT's iteration limit per solve (default 1000).
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import PlanOptions
+    >>> options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5)).checked(2)
+    >>> options.input_scale
+    (2.0, 0.5)
+    >>> PlanOptions(tolerance=0.0).checked(2)
+    Traceback (most recent call last):
+        ...
+    ValueError: tolerance must be a finite number > 0, got 0.0
+    """
 
     tolerance: float = 0.05  # how close to each waypoint's position (unit of length)
     heading_tolerance: float = 0.01  # rad
@@ -168,7 +283,57 @@ def _per_input(values, m: int, name: str, fallback) -> tuple[float, ...]:
 
 @dataclasses.dataclass
 class FeasibilityReport:
-    """How well the plan is feasible for the model, checked by re-simulating it."""
+    """How well the plan is feasible for the model, checked by re-simulating it.
+
+    The report of a :class:`Plan`: the planned inputs are integrated again by the project's
+    integrator (``hc.Trajectory``) and compared with the planned states; the waypoint errors
+    are those of the re-simulated trajectory (what is tracked). ``summary()`` gives it in one
+    line, ``to_dict()`` as a dictionary.
+
+    Parameters
+    ----------
+    position_mismatch : float
+        Max over the nodes of |p_planned - p_re-simulated| (unit of length).
+    position_mismatch_t : float
+        The time where it is largest (s).
+    state_mismatch : float
+        Max over the nodes and states of |q_planned - q_re-simulated|.
+    waypoint_errors : list of float
+        |p(t_j) - (x_j, y_j)| of the re-simulated trajectory, per waypoint.
+    heading_errors : list of float or None
+        |wrap(psi(t_j) - heading_j)| (rad) where a heading is given, else None.
+    speed_errors : list of float or None
+        ||dp/dt(t_j)| - speed_j| where a speed is given, else None.
+    iterations : int
+        IPOPT iterations, summed over the refinements.
+    solve_seconds : float
+        IPOPT's wall time, summed (s).
+    seconds : float
+        All of :func:`plan`: formulation, solves, re-simulation (s).
+    substeps : int
+        Runge-Kutta steps per interval of the final solve.
+    intervals : int
+        Intervals of the input's time grid.
+    status : str
+        IPOPT's return status of the final solve.
+    cache_hit : bool, optional
+        True: read back from the plan cache (default False).
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import PlanOptions, Waypoint, plan
+    >>> result = plan(hc.ShipModel(), [Waypoint(10.0, 0.0, t=10.0), Waypoint(20.0, 2.0, t=20.0)],
+    ...               q0=[1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...               options=PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), interval=1.0))
+    >>> report = result.report
+    >>> report.intervals, report.status, report.cache_hit
+    (20, 'Solve_Succeeded', False)
+    >>> report.position_mismatch <= 1e-6, max(report.waypoint_errors) <= 0.05
+    (True, True)
+    >>> print(report.summary())
+    20 intervals x ... RK4 steps, ... IPOPT iterations, ... s; re-simulation mismatch ...
+    (max over the nodes), waypoints met within 0.05
+    """
 
     position_mismatch: float  # max over the nodes of |p_planned - p_re-simulated| (unit of length)
     position_mismatch_t: float  # where it is largest (s)
@@ -196,8 +361,50 @@ class FeasibilityReport:
 
 @dataclasses.dataclass
 class Plan:
-    """A desired trajectory planned for a model: the inputs u_d (as signals and at the nodes),
-    the planned states at the nodes, and q_d re-simulated from u_d by the project's integrator."""
+    """A desired trajectory planned for a model: what :func:`plan` returns.
+
+    The inputs u_d (as signals and at the nodes; linear in between), the planned states at the
+    nodes, and q_d re-simulated from u_d by the project's integrator. ``inputs()`` gives u_d
+    as an ``hc.VectorSignal`` (one "linear" table per input), ``input_tables()`` in the form of
+    a scenario file's [desired] (``{"u1": {"table": {...}}, ...}``); ``t0``, ``tf`` and ``q0``
+    are the first and last node and the planned state at t0.
+
+    Parameters
+    ----------
+    model : hinf_cpp.Model
+        The C++ model that re-simulated it (a SymbolicModel is compiled).
+    waypoints : list of Waypoint
+        The waypoints, with their times resolved.
+    waypoint_nodes : list of int
+        The node of each waypoint's time.
+    t : numpy.ndarray, shape (N + 1,)
+        The nodes (s), containing every waypoint's time.
+    q : numpy.ndarray, shape (N + 1, n)
+        The planned states at the nodes.
+    u : numpy.ndarray, shape (N + 1, m)
+        The inputs at the nodes; linear in between.
+    trajectory : hinf_cpp.Trajectory
+        q_d re-simulated from u_d (Dormand-Prince at rtol 1e-10): the desired trajectory to
+        design for (``hc.solve_grde``) and track.
+    report : FeasibilityReport
+        The feasibility check.
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import PlanOptions, Waypoint, plan
+    >>> result = plan(hc.ShipModel(), [Waypoint(10.0, 0.0, t=10.0), Waypoint(20.0, 2.0, t=20.0)],
+    ...               q0=[1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...               options=PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), interval=1.0))
+    >>> result.t.shape, result.q.shape, result.u.shape
+    ((21,), (21, 6), (21, 2))
+    >>> result.t0, result.tf, result.waypoint_nodes
+    (0.0, 20.0, [10, 20])
+    >>> sorted(result.input_tables())
+    ['u1', 'u2']
+    >>> q_d = result.trajectory.q_d(20.0)  # [u, v, r, x, y, psi] at the last waypoint
+    >>> bool(np.hypot(q_d[3] - 20.0, q_d[4] - 2.0) <= 0.05)
+    True
+    """
 
     model: _core.Model  # the C++ model that re-simulated it
     waypoints: list[Waypoint]  # with their times resolved
@@ -237,12 +444,47 @@ def _input_signal(t: np.ndarray, u: np.ndarray) -> _core.VectorSignal:
 
 def waypoints_from_path(x: Sequence[float], y: Sequence[float], speed, start: Sequence[float], t0: float = 0.0,
                         tolerance: float = 0.0) -> list[Waypoint]:
-    """The samples (x_i, y_i) of a path as waypoints, timed by a speed profile: `speed` is one
-    number or one per sample (> 0; linear in between along the path), and the vehicle starts
-    at the position `start` at t0. The time to cover a piece of length L whose speeds at its
-    ends are a and b is 2 L / (a + b) (constant acceleration along the path); from `start` to
-    the first sample, the first sample's speed. A first sample within `tolerance` of the start
-    is the start itself and is left out."""
+    """The samples (x_i, y_i) of a path as waypoints, timed by a speed profile.
+
+    The vehicle starts at the position `start` at t0. The time to cover a piece of length L
+    whose speeds at its ends are a and b is 2 L / (a + b) (constant acceleration along the
+    path); from `start` to the first sample, at the first sample's speed. A first sample
+    within `tolerance` of the start is the start itself and is left out.
+
+    Parameters
+    ----------
+    x : array_like, shape (k,)
+        The samples' first position component (unit of length), k >= 1, finite.
+    y : array_like, shape (k,)
+        The samples' second position component.
+    speed : float or array_like, shape (k,)
+        One speed for every sample or one per sample (> 0, unit of length per s; linear in
+        between along the path).
+    start : array_like, shape (2,)
+        The position at t0.
+    t0 : float, optional
+        The start time (s; default 0).
+    tolerance : float, optional
+        A first sample this close to `start` is left out (default 0).
+
+    Returns
+    -------
+    list of Waypoint
+        One per sample (but a first one at the start), with its time t.
+
+    Raises
+    ------
+    ValueError
+        x and y of different shapes or empty, non-finite samples, speeds that are not one or
+        one per sample or not > 0, a sample repeated.
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import waypoints_from_path
+    >>> waypoints = waypoints_from_path([10.0, 20.0], [0.0, 0.0], [1.0, 2.0], start=(0.0, 0.0))
+    >>> [(w.x, round(w.t, 2)) for w in waypoints]  # 10 m at 1 m/s, then 10 m from 1 to 2 m/s
+    [(10.0, 10.0), (20.0, 16.67)]
+    """
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     if x.ndim != 1 or x.shape != y.shape or len(x) < 1:
         raise ValueError(f"a path needs x and y of the same length >= 1, got {x.shape} and {y.shape}")
@@ -316,18 +558,65 @@ def time_grid(t0: float, tf: float, key_times: Sequence[float], interval: float)
 
 def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 0.0, tf: float | None = None,
          options: PlanOptions | None = None, cache_dir: str | os.PathLike | None = None) -> Plan:
-    """Plans a desired trajectory through the waypoints, from the state q0 at t0 to tf (default:
-    the last waypoint's time), for the model (a built-in model or a SymbolicModel).
+    """Plan a feasible desired trajectory (q_d, u_d) through the waypoints.
 
-    Returns a :class:`Plan`: the inputs, the planned and re-simulated states, the report.
-    Raises ValueError for bad arguments, :class:`UnreachableWaypointError` (a ValueError) when a
-    waypoint cannot be met with the input bounds and the time given, and
-    :class:`PlanningError` when IPOPT fails or the plan cannot be made accurate enough.
+    Solves the problem of the module's documentation (docs/planning.md): the least input
+    effort and rate from the state q0 at t0 to tf subject to the model's dynamics, the input
+    bounds and the waypoint conditions, by direct multiple shooting with CasADi and IPOPT.
+    The planned inputs are re-simulated by the project's integrator and checked against the
+    planned states and the waypoints. Units are the model's; times are absolute (s).
 
-    cache_dir: a folder (e.g. :func:`default_cache_dir`) where plans are kept by the content of
-    what they depend on (the model's equations, q0, the horizon, the waypoints, the options,
-    the planner's version): the same request again is read back, re-simulated and checked
-    instead of optimized. None: no cache."""
+    Parameters
+    ----------
+    model : hinf_cpp.Model or hinf_cpp.models.SymbolicModel
+        A built-in model (its CasADi statement: :func:`hinf_cpp.models.symbolic_model`) or a
+        SymbolicModel; it needs two position components.
+    waypoints : sequence of Waypoint
+        At least one; their times, given or resolved, must increase after t0.
+    q0 : array_like, shape (n,)
+        The desired state at t0.
+    t0 : float, optional
+        The start time (s; default 0).
+    tf : float, optional
+        The end time (s; default the last waypoint's time).
+    options : PlanOptions, optional
+        The planner's settings (default ``PlanOptions()``).
+    cache_dir : str or os.PathLike, optional
+        A folder (e.g. :func:`default_cache_dir`) where plans are kept by the content of
+        what they depend on (the model's equations, q0, the horizon, the waypoints, the
+        options, the planner's version): the same request again is read back, re-simulated
+        and checked instead of optimized. None (default): no cache.
+
+    Returns
+    -------
+    Plan
+        The inputs, the planned and re-simulated states, the report.
+
+    Raises
+    ------
+    ValueError
+        Bad arguments (q0 not n finite numbers, a model without two position components or
+        without a CasADi form, bad waypoints or options, times that do not increase).
+    UnreachableWaypointError
+        A ValueError: a waypoint cannot be met with the input bounds and the time given.
+    PlanningError
+        IPOPT fails, or the plan cannot be made accurate enough.
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import PlanOptions, Waypoint, plan
+    >>> waypoints = [Waypoint(10.0, 0.0, t=10.0), Waypoint(20.0, 2.0, t=20.0)]
+    >>> options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), interval=1.0)
+    >>> result = plan(hc.ShipModel(), waypoints, q0=[1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...               options=options, cache_dir="plans")
+    >>> result.u.shape, max(result.report.waypoint_errors) <= options.tolerance
+    ((21, 2), True)
+    >>> again = plan(hc.ShipModel(), waypoints, q0=[1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...              options=options, cache_dir="plans")
+    >>> again.report.cache_hit
+    True
+    >>> design = hc.solve_grde(result.trajectory, np.eye(6), np.eye(6), gamma=5.0)
+    """
     started = time.perf_counter()
     ca = _casadi()
     symbolic = symbolic_model(model)
@@ -404,7 +693,22 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
 
 
 def default_cache_dir() -> pathlib.Path:
-    """``$HINF_CPP_CACHE/plans``, else ``$XDG_CACHE_HOME/hinf_cpp/plans`` or ``~/.cache/hinf_cpp/plans``."""
+    """The folder where scenario files' plans are cached.
+
+    ``$HINF_CPP_CACHE/plans``, else ``$XDG_CACHE_HOME/hinf_cpp/plans`` or
+    ``~/.cache/hinf_cpp/plans``; it is created when a plan is written.
+
+    Returns
+    -------
+    pathlib.Path
+        The folder.
+
+    Examples
+    --------
+    >>> from hinf_cpp.planning import default_cache_dir
+    >>> default_cache_dir().name
+    'plans'
+    """
     if os.environ.get("HINF_CPP_CACHE"):
         return pathlib.Path(os.environ["HINF_CPP_CACHE"]) / "plans"
     base = os.environ.get("XDG_CACHE_HOME") or pathlib.Path.home() / ".cache"

@@ -24,8 +24,39 @@ __all__ = ["model_from_callable", "read_toml_file", "resolve_callable", "toml_te
 
 
 def read_toml_file(path: str | os.PathLike, what: str = "") -> dict:
-    """The dictionary of a TOML file. ValueError "cannot read <what>'<path>': <reason>" for a
-    file that cannot be read, "<path>: <problem>" for one that is not TOML."""
+    """The dictionary of a TOML file.
+
+    Reads the file as :func:`tomllib.load` does (a scenario or study document).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The TOML file.
+    what : str, optional
+        Words that name the file in the message, with a trailing space (e.g. ``"the study "``);
+        default none.
+
+    Returns
+    -------
+    dict
+        The document: tables as dictionaries, arrays as lists.
+
+    Raises
+    ------
+    ValueError
+        ``cannot read <what>'<path>': <reason>`` for a file that cannot be read,
+        ``<path>: <problem>`` for one that is not TOML.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.documents import read_toml_file
+    >>> read_toml_file(hc.scenario_path("paper_fig1"))["controller"]
+    {'gamma': 5.0, 'Q': 1.0, 'Qf': 1.0, 'kappa': 1.0}
+    >>> read_toml_file("missing.toml", "the study ")
+    Traceback (most recent call last):
+        ...
+    ValueError: cannot read the study 'missing.toml': No such file or directory
+    """
     try:
         with open(path, "rb") as f:
             return tomllib.load(f)
@@ -36,7 +67,41 @@ def read_toml_file(path: str | os.PathLike, what: str = "") -> dict:
 
 
 def toml_text(document: Any, source: str) -> str:
-    """The TOML text of a dictionary; ValueError naming `source` for what TOML cannot hold."""
+    """The TOML text of a dictionary.
+
+    A scenario document edited in Python is handed to the C++ reader as this text.
+
+    Parameters
+    ----------
+    document : dict
+        The document: tables as dictionaries, arrays as lists, values str, int, float, bool
+        (or dates).
+    source : str
+        What the document is called in messages (a file name, ``"<dict>"``).
+
+    Returns
+    -------
+    str
+        The TOML text (``tomli_w.dumps``), ending in a newline.
+
+    Raises
+    ------
+    ValueError
+        ``<source>: ...`` for anything but a dictionary, a value TOML cannot hold (None, an
+        object) or a dictionary nested too deeply.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.documents import toml_text
+    >>> print(toml_text({"controller": {"gamma": 5.0, "law": "lqr"}}, "<dict>"), end="")
+    [controller]
+    gamma = 5.0
+    law = "lqr"
+    >>> toml_text({"gamma": None}, "<dict>")
+    Traceback (most recent call last):
+        ...
+    ValueError: <dict>: not a TOML document: Object of type 'NoneType' is not TOML serializable
+    """
     if not isinstance(document, dict):
         raise ValueError(f"{source}: expected a dictionary of TOML values, got {type(document).__name__}")
     try:
@@ -48,8 +113,39 @@ def toml_text(document: Any, source: str) -> str:
 
 
 def resolve_callable(spec: str, base: str | os.PathLike | None = None):
-    """The callable named by `spec`: "package.module:name", or "path/to/file.py:name" (a relative
-    path is taken from the folder `base`, else the current one). ValueError naming what is wrong."""
+    """The callable named by `spec`: ``"package.module:name"`` or ``"path/to/file.py:name"``.
+
+    A module is imported; a Python file is executed as a module of its own (it need not be on
+    ``sys.path``).
+
+    Parameters
+    ----------
+    spec : str
+        ``MODULE:CALLABLE`` or ``FILE.py:CALLABLE``.
+    base : str or os.PathLike, optional
+        The folder a relative file path is taken from (default: the current folder).
+
+    Returns
+    -------
+    callable
+        The object named, checked to be callable (not called).
+
+    Raises
+    ------
+    ValueError
+        Naming `spec` and what is wrong: no ``:``, no such Python file, a module that cannot
+        be imported, no callable of that name.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.documents import resolve_callable
+    >>> resolve_callable("math:hypot")(3.0, 4.0)
+    5.0
+    >>> resolve_callable("math")
+    Traceback (most recent call last):
+        ...
+    ValueError: 'math': name it as MODULE:CALLABLE or FILE.py:CALLABLE
+    """
     where, sep, name = str(spec).rpartition(":")
     if not sep or not where or not name:
         raise ValueError(f"'{spec}': name it as MODULE:CALLABLE or FILE.py:CALLABLE")
@@ -74,11 +170,45 @@ def resolve_callable(spec: str, base: str | os.PathLike | None = None):
 
 
 def model_from_callable(spec: str, source: str = "") -> _core.Model:
-    """The model of [model] kind = "python" (Python-only: hinf-sim cannot run it): the callable
-    `spec` is called with no arguments and returns an hc.Model (a subclass written in Python,
-    or a built-in one) or a hinf_cpp.models.SymbolicModel (compiled, cached). A relative file
-    path is taken from the scenario file's folder. The scenario reader of the C++ core calls it
-    through the hook that :mod:`hinf_cpp.scenario` installs (``_core.set_python_model_hook``)."""
+    """The model of ``[model] kind = "python"``: what the callable `spec` makes.
+
+    Python-only: ``hinf-sim`` cannot run such a scenario. The callable `spec` is called with no
+    arguments and returns an ``hc.Model`` (a subclass written in Python, or a built-in one) or
+    a :class:`hinf_cpp.models.SymbolicModel` (compiled, cached). The scenario reader of the C++
+    core calls this function through the hook that :mod:`hinf_cpp.scenario` installs
+    (``_core.set_python_model_hook``).
+
+    Parameters
+    ----------
+    spec : str
+        ``MODULE:CALLABLE`` or ``FILE.py:CALLABLE`` (:func:`resolve_callable`), the value of
+        ``[model] callable``.
+    source : str, optional
+        The scenario file: a relative file path in `spec` is taken from its folder (default:
+        the current folder).
+
+    Returns
+    -------
+    hinf_cpp.Model
+        The model, a SymbolicModel compiled to a ``hinf_cpp.GeneratedModel``.
+
+    Raises
+    ------
+    ValueError
+        As :func:`resolve_callable`, and for a callable that returns anything else.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.documents import model_from_callable
+    >>> with open("my_model.py", "w") as f:
+    ...     _ = f.write("import hinf_cpp as hc\\n\\ndef make():\\n    return hc.ShipModel()\\n")
+    >>> model_from_callable("my_model.py:make").name()
+    'ship'
+    >>> model_from_callable("builtins:list")
+    Traceback (most recent call last):
+        ...
+    ValueError: 'builtins:list' returned list, not an hc.Model or a SymbolicModel
+    """
     base = pathlib.Path(source).parent if source and pathlib.Path(source).is_file() else None
     model = resolve_callable(spec, base)()
     if isinstance(model, _core.Model):

@@ -43,9 +43,40 @@ INTEGERS = ("substeps", "max_iterations")
 
 @dataclasses.dataclass
 class PlannedScenario:
-    """A scenario with planned inputs: the scenario (as the C++ reader built it), the plan, and
-    the scenario file's dictionary with the planned inputs in [desired] in place of the
-    planning keys."""
+    """A scenario whose desired inputs were planned from waypoints or a path.
+
+    What :func:`plan_scenario` and :func:`load_planned` return.
+
+    Parameters
+    ----------
+    scenario : hinf_cpp.Scenario
+        The scenario with the planned inputs, as the C++ reader built it.
+    plan : hinf_cpp.planning.Plan
+        The plan: inputs, planned and re-simulated states, feasibility report.
+    document : dict
+        The scenario file's dictionary with the planned inputs in [desired] (``u1``, ``u2``,
+        ...: tables with interpolation = "linear") in place of the planning keys; written as
+        TOML it is a scenario ``hinf-sim`` runs (``hinf-cpp plan FILE -o PLANNED.toml``).
+    source : str
+        The scenario file (or the name given to a dictionary), for messages.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.planned import plan_scenario
+    >>> from hinf_cpp.scenario.documents import read_toml_file
+    >>> root = read_toml_file(hc.scenario_path("paper_fig1"))
+    >>> root["desired"] = {
+    ...     "q0": [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...     "waypoints": [{"x": 20.0, "y": 0.0, "t": 20.0}, {"x": 40.0, "y": 3.5, "t": 40.0}],
+    ...     "plan": {"u_min": [0.0, -0.5], "u_max": [2.0, 0.5], "interval": 1.0}}
+    >>> planned = plan_scenario(root, "lane_change", cache=False)
+    >>> sorted(planned.document["desired"])
+    ['q0', 'u1', 'u2']
+    >>> planned.document["desired"]["u1"]["table"]["interpolation"]
+    'linear'
+    >>> planned.plan.u.shape  # 40 intervals of 1 s: 41 nodes, 2 inputs
+    (41, 2)
+    """
 
     scenario: _core.Scenario
     plan: Plan
@@ -54,14 +85,66 @@ class PlannedScenario:
 
 
 def needs_planning(root) -> bool:
-    """Whether a scenario's dictionary asks for planning ([desired] has waypoints, path or plan)."""
+    """Whether a scenario's dictionary asks for planning.
+
+    Parameters
+    ----------
+    root : dict
+        The scenario document (any other object: False).
+
+    Returns
+    -------
+    bool
+        True when its [desired] has one of the keys ``waypoints``, ``path`` or ``plan``
+        (:data:`PLANNING_KEYS`).
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.planned import needs_planning
+    >>> needs_planning({"desired": {"waypoints": [{"x": 20.0, "y": 0.0}]}})
+    True
+    >>> needs_planning({"desired": {"u1": 1.0, "u2": 0.0}})
+    False
+    """
     desired = root.get("desired") if isinstance(root, dict) else None
     return isinstance(desired, dict) and any(key in desired for key in PLANNING_KEYS)
 
 
 def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario | None:
-    """The planned scenario of a file whose [desired] asks for planning; None for any other file
-    (also one that cannot be read or parsed: the C++ reader reports that)."""
+    """The planned scenario of a file whose [desired] asks for planning, else None.
+
+    :func:`hinf_cpp.load_scenario` calls it first for every file.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The scenario file.
+    cache : bool, optional
+        Keep plans in :func:`hinf_cpp.planning.default_cache_dir` and read them back from
+        there (default True); False plans anew and writes nothing.
+
+    Returns
+    -------
+    PlannedScenario or None
+        None for a file that does not ask for planning, and for one that cannot be read or
+        parsed (the C++ reader reports that when the file is loaded).
+
+    Raises
+    ------
+    ValueError
+        As :func:`plan_scenario`.
+    hinf_cpp.planning.PlanningError
+        The planner failed.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.planned import load_planned
+    >>> load_planned(hc.scenario_path("paper_fig1")) is None
+    True
+    >>> planned = load_planned(hc.scenario_path("planned/ship_lane_change"), cache=False)
+    >>> len(planned.plan.waypoints), planned.scenario.tf
+    (3, 60.0)
+    """
     path = os.fspath(path)
     try:
         text = pathlib.Path(path).read_text(encoding="utf-8-sig")
@@ -76,9 +159,59 @@ def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario
 
 
 def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> PlannedScenario:
-    """Plans the inputs of a scenario's dictionary whose [desired] gives waypoints or a path, and
-    reads the planned scenario. ValueError naming the source and the key for anything wrong
-    (an UnreachableWaypointError for a waypoint out of reach)."""
+    """Plan the inputs of a scenario's dictionary and read the planned scenario.
+
+    The [desired] table gives ``waypoints`` (or a ``path``, timed by
+    :func:`hinf_cpp.planning.waypoints_from_path` from the desired start position) and
+    optionally ``plan`` (the :class:`hinf_cpp.planning.PlanOptions`) instead of the inputs.
+    The rest of the document is checked by the C++ reader first; the planner
+    (:func:`hinf_cpp.planning.plan`) then finds the inputs u_d from [desired] q0 at t0 to tf,
+    and they take the place of the planning keys as tables with interpolation = "linear".
+
+    Parameters
+    ----------
+    root : dict
+        The scenario document; its [desired] gives waypoints or a path (not both, and not
+        the inputs).
+    source : str, optional
+        The scenario file or a name for the dictionary, for messages (default ``"<dict>"``);
+        a relative ``[model] callable`` file is taken from the folder of an existing file.
+    cache : bool, optional
+        Keep plans in :func:`hinf_cpp.planning.default_cache_dir` and read them back from
+        there (default True); False plans anew and writes nothing.
+
+    Returns
+    -------
+    PlannedScenario
+        The scenario, the plan and the document with the planned inputs.
+
+    Raises
+    ------
+    ValueError
+        Anything wrong with the document, naming the source and the key (waypoints and path
+        both or neither, inputs given too, an unknown planning key, a model without a CasADi
+        form such as ``kind = "casadi"``).
+    hinf_cpp.planning.UnreachableWaypointError
+        A ValueError: a waypoint out of reach with the input bounds and the time given.
+    hinf_cpp.planning.PlanningError
+        The optimizer failed, or the plan could not be made accurate enough.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.planned import plan_scenario
+    >>> from hinf_cpp.scenario.documents import read_toml_file
+    >>> root = read_toml_file(hc.scenario_path("paper_fig1"))
+    >>> root["desired"] = {
+    ...     "q0": [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    ...     "waypoints": [{"x": 20.0, "y": 0.0, "t": 20.0}, {"x": 40.0, "y": 3.5, "t": 40.0}],
+    ...     "plan": {"u_min": [0.0, -0.5], "u_max": [2.0, 0.5], "interval": 1.0}}
+    >>> planned = plan_scenario(root, "lane_change", cache=False)
+    >>> max(planned.plan.report.waypoint_errors) <= 0.05  # the default tolerance, m
+    True
+    >>> result = hc.run_scenario(planned.scenario)
+    >>> result.metrics.final_position_error < 0.1
+    True
+    """
     desired = root["desired"]
     planning = {key: desired[key] for key in PLANNING_KEYS if key in desired}
     if ("waypoints" in planning) == ("path" in planning):

@@ -22,7 +22,34 @@ _PART = re.compile(r"^([A-Za-z0-9_-]+)((?:\[\d+\])*)$")
 
 
 def key_path(key: str) -> list[str | int]:
-    """The path of a dotted key: names and array indices, e.g. ["initial", "q0", 2]."""
+    """The path of a dotted key: its names and array indices, in order.
+
+    Parameters
+    ----------
+    key : str
+        A dotted key with optional 0-based array indices, e.g. ``"initial.q0[2]"``; each name
+        is letters, digits, ``_`` and ``-``.
+
+    Returns
+    -------
+    list of str and int
+        The names (str) and indices (int), e.g. ``["initial", "q0", 2]``.
+
+    Raises
+    ------
+    ValueError
+        An empty key or a part that is not a name with optional ``[index]``.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.settings import key_path
+    >>> key_path("disturbance.w1.harmonics[0].amplitude")
+    ['disturbance', 'w1', 'harmonics', 0, 'amplitude']
+    >>> key_path("initial.q0[x]")
+    Traceback (most recent call last):
+        ...
+    ValueError: key 'initial.q0[x]': 'q0[x]' is not a name with optional [index] (e.g. 'initial.q0[2]')
+    """
     if not isinstance(key, str) or not key:
         raise ValueError(f"a key must be a non-empty string like 'controller.gamma', got {key!r}")
     path: list[str | int] = []
@@ -36,7 +63,38 @@ def key_path(key: str) -> list[str | int]:
 
 
 def get_key(document: dict, key: str) -> Any:
-    """The value at `key`; KeyError if it is not there."""
+    """The value at a dotted key of a document.
+
+    Parameters
+    ----------
+    document : dict
+        A scenario (or study) document, as :func:`tomllib.load` gives it.
+    key : str
+        A dotted key (:func:`key_path`), e.g. ``"initial.q0[2]"``.
+
+    Returns
+    -------
+    object
+        The value: a number, string, bool, list or dictionary (a table).
+
+    Raises
+    ------
+    KeyError
+        The key is not in the document.
+    ValueError
+        A key that is not well formed (:func:`key_path`).
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.settings import get_key
+    >>> document = {"initial": {"q0": [1.0, 0.0, 0.5]}}
+    >>> get_key(document, "initial.q0[2]")
+    0.5
+    >>> get_key(document, "controller.gamma")
+    Traceback (most recent call last):
+        ...
+    KeyError: 'controller.gamma'
+    """
     node: Any = document
     for part in key_path(key):
         if isinstance(part, int):
@@ -49,8 +107,40 @@ def get_key(document: dict, key: str) -> Any:
 
 
 def set_key(document: dict, key: str, value: Any) -> None:
-    """Sets `key` in the scenario document: tables on the way are made if missing, an array
-    index must exist. "feedback" = "state" drops [measurement], "output" keeps it."""
+    """Set a dotted key of a scenario document, in place.
+
+    Tables on the way are made if missing; an array index must exist. The key ``"feedback"``
+    is special: ``"state"`` drops [measurement], ``"output"`` keeps it.
+
+    Parameters
+    ----------
+    document : dict
+        The scenario document, changed in place.
+    key : str
+        A dotted key (:func:`key_path`), or ``"feedback"``.
+    value : object
+        The TOML value (number, str, bool, list, dictionary).
+
+    Raises
+    ------
+    ValueError
+        A key that is not well formed, an array index that does not exist, a part that is not
+        inside a table; ``"feedback"`` with a value other than ``"state"`` and ``"output"``,
+        or ``"output"`` for a document without [measurement].
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.settings import set_key
+    >>> document = {"initial": {"q0": [1.0, 0.0]}, "measurement": {"sigma": 0.5}}
+    >>> set_key(document, "controller.gamma", 12.0)
+    >>> set_key(document, "feedback", "state")
+    >>> document
+    {'initial': {'q0': [1.0, 0.0]}, 'controller': {'gamma': 12.0}}
+    >>> set_key(document, "initial.q0[5]", 1.0)
+    Traceback (most recent call last):
+        ...
+    ValueError: key 'initial.q0[5]': the scenario has no element 5 there
+    """
     if key == FEEDBACK_KEY:
         if value == "state":
             document.pop("measurement", None)
@@ -88,7 +178,36 @@ def set_key(document: dict, key: str, value: Any) -> None:
 
 
 def parse_setting(text: str) -> tuple[str, Any]:
-    """``KEY=VALUE`` of ``hinf-cpp run --set``: VALUE is a TOML value (strings quoted)."""
+    """The key and value of a ``KEY=VALUE`` setting of ``hinf-cpp run --set``.
+
+    Parameters
+    ----------
+    text : str
+        ``KEY=VALUE``: a dotted key (:func:`key_path`) or ``feedback``, and a TOML value
+        (strings quoted: ``controller.law="lqr"``). Spaces around either are ignored.
+
+    Returns
+    -------
+    tuple of (str, object)
+        The key and the parsed value.
+
+    Raises
+    ------
+    ValueError
+        No ``=`` or no key, a value that is not TOML, a key that is not well formed.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.settings import parse_setting
+    >>> parse_setting('controller.law="lqr"')
+    ('controller.law', 'lqr')
+    >>> parse_setting("initial.q0[2] = 0.5")
+    ('initial.q0[2]', 0.5)
+    >>> parse_setting("controller.law=lqr")
+    Traceback (most recent call last):
+        ...
+    ValueError: --set 'controller.law=lqr': 'lqr' is not a TOML value (quote strings: controller.law="lqr")
+    """
     key, sep, value = text.partition("=")
     key = key.strip()
     if not sep or not key:
@@ -103,8 +222,39 @@ def parse_setting(text: str) -> tuple[str, Any]:
 
 
 def apply_settings(document: dict, settings: Sequence[tuple[str, Any]], seed: int | None = None) -> dict:
-    """A copy of a scenario document with the settings (key, value) applied in order, then
-    [measurement] seed = `seed` if given (ValueError if the scenario has no [measurement])."""
+    """A copy of a scenario document with settings applied.
+
+    The settings are applied in order with :func:`set_key`, then [measurement] seed = `seed`
+    if given. The document passed in is not changed.
+
+    Parameters
+    ----------
+    document : dict
+        The scenario document.
+    settings : sequence of (str, object)
+        (key, value) pairs, as :func:`parse_setting` gives them.
+    seed : int, optional
+        The measurement noise seed (``hinf-cpp run --seed``).
+
+    Returns
+    -------
+    dict
+        The new document (a deep copy).
+
+    Raises
+    ------
+    ValueError
+        As :func:`set_key`; a `seed` for a document without [measurement].
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.settings import apply_settings
+    >>> document = {"controller": {"gamma": 5.0}, "measurement": {"sigma": 0.5}}
+    >>> apply_settings(document, [("controller.gamma", 10.0)], seed=7)
+    {'controller': {'gamma': 10.0}, 'measurement': {'sigma': 0.5, 'seed': 7}}
+    >>> document["controller"]["gamma"]
+    5.0
+    """
     document = copy.deepcopy(document)
     for key, value in settings:
         set_key(document, key, value)
@@ -117,7 +267,26 @@ def apply_settings(document: dict, settings: Sequence[tuple[str, Any]], seed: in
 
 
 def toml_value(value: Any) -> str:
-    """A value as TOML text (floats exactly: repr)."""
+    """A value as TOML text, as it is written after ``KEY=`` in ``--set``.
+
+    Floats are written exactly (their ``repr``): the text reads back to the same double.
+
+    Parameters
+    ----------
+    value : object
+        A TOML value: number, str, bool, list or dictionary.
+
+    Returns
+    -------
+    str
+        Its TOML text (strings quoted).
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.settings import toml_value
+    >>> toml_value(0.1), toml_value("lqr"), toml_value(True)
+    ('0.1', '"lqr"', 'true')
+    """
     import tomli_w
 
     return tomli_w.dumps({"v": value}).strip()[len("v = "):]

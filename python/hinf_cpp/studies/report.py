@@ -50,7 +50,38 @@ def _groups(df, columns):
 
 
 def status_counts(df, study=None):
-    """Runs per status for each group (grid point): one row per group."""
+    """Runs per status for each group of a study's table.
+
+    The groups are [report] group_by, else the grid points (every grid key but the two of a
+    region-of-attraction map); without a study, the whole table is one group.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study`.
+    study : hinf_cpp.studies.Study, optional
+        Its study (the groups).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per group: its keys, ``runs`` and one column per status (:data:`STATUSES
+        <hinf_cpp.studies.STATUSES>`: completed, diverged, conjugate_point,
+        coupling_violation, solver_failure, invalid_input, failed).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import status_counts
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> table = run_study(study, progress=False)
+    >>> status_counts(table, study)[["controller.gamma", "runs", "completed", "diverged"]]
+       controller.gamma  runs  completed  diverged
+    0               5.0     1          1         0
+    1              10.0     1          1         0
+    """
     import pandas as pd
 
     columns = _group_columns(df, study)
@@ -64,8 +95,41 @@ def status_counts(df, study=None):
 
 
 def summarize(df, study=None, metrics: Sequence[str] | None = None):
-    """One row per (group, metric): count, mean, std, p5, p50, p95 of the metric over the
-    group's completed runs (finite values). Groups are the grid points."""
+    """Statistics of metrics over the completed runs, per group of a study's table.
+
+    One row per (group, metric): count, mean, std (ddof 1), p5, p50, p95 of the metric over
+    the group's completed runs (finite values; NaN where there are none). Groups are those of
+    :func:`status_counts` (the grid points).
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study`.
+    study : hinf_cpp.studies.Study, optional
+        Its study (the groups); without it the whole table is one group.
+    metrics : sequence of str, optional
+        Metric columns (default: those of :data:`DEFAULT_METRICS` in the table).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns: the group keys, ``metric``, ``count``, ``mean``, ``std``, ``p5``, ``p50``,
+        ``p95``.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import summarize
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> table = run_study(study, progress=False)
+    >>> stats = summarize(table, study, ["final_position_error"])
+    >>> stats[["controller.gamma", "metric", "count", "mean"]].round(3)
+       controller.gamma                metric  count   mean
+    0               5.0  final_position_error      1  0.058
+    1              10.0  final_position_error      1  0.057
+    """
     import pandas as pd
 
     columns = _group_columns(df, study)
@@ -87,10 +151,50 @@ def summarize(df, study=None, metrics: Sequence[str] | None = None):
 
 
 def paired_differences(df, study, metric: str, key: str = "controller.law"):
-    """Per sample (the same noise and plant: common random numbers), the metric of each value
-    of the grid axis `key` minus that of its first value, over the samples where both runs
+    """Paired differences of a metric between the values of a grid axis, sample by sample.
+
+    Per sample (the same noise and plant: common random numbers), the metric of each value of
+    the grid axis `key` minus that of its first value, over the samples where both runs
     completed: mean, standard deviation, standard error and the share of samples where it is
-    lower. One row per value (after the first) and group of the other grid keys."""
+    lower.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study`.
+    study : hinf_cpp.studies.Study
+        Its study.
+    metric : str
+        The metric column.
+    key : str, optional
+        A grid axis of one key (default ``"controller.law"``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per value (after the first) and group of the other grid keys: the group
+        keys, `key` (``"<value> - <first value>"``), ``n``, ``mean``, ``std``, ``stderr``,
+        ``lower``.
+
+    Raises
+    ------
+    StopIteration
+        `key` is not a grid axis of one key of the study.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import paired_differences
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "noise", "scenario": str(hc.scenario_path("paper_fig2")), "samples": 3},
+    ...     "grid": [{"key": "controller.law", "values": ["hinf", "lqr"]}],
+    ...     "random": [{"key": "measurement.seed", "distribution": "seed"}]})
+    >>> table = run_study(study, progress=False)
+    >>> pairs = paired_differences(table, study, "rms_position_error_last_half")
+    >>> pairs[["controller.law", "n"]]
+      controller.law  n
+    0     lqr - hinf  3
+    """
     import pandas as pd
 
     others = [k for k in _group_columns(df, study) if k != key]
@@ -113,8 +217,41 @@ def paired_differences(df, study, metric: str, key: str = "controller.law"):
 
 
 def summary_markdown(df, study, seconds: float | None = None) -> str:
-    """summary.md: what the study is, the status counts per group and the statistics of the
-    report's metrics per group."""
+    """The text of a study's ``summary.md`` (Markdown).
+
+    What the study is, the status counts per group (:func:`status_counts`; with [report] roa
+    the runs that recovered), the statistics of the report's metrics per group
+    (:func:`summarize`) and, with several samples and a law axis, the paired differences
+    between the laws (:func:`paired_differences`).
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study`.
+    study : hinf_cpp.studies.Study
+        Its study.
+    seconds : float, optional
+        The study's wall time (s), stated with the runs per second when given.
+
+    Returns
+    -------
+    str
+        The Markdown text.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import summary_markdown
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> table = run_study(study, progress=False)
+    >>> for line in summary_markdown(table, study).splitlines()[:3]:
+    ...     print(line)
+    # Study gammas
+    <BLANKLINE>
+    2 runs: 2 grid points x 1 samples; master seed 0; base scenario `paper_fig1.toml`.
+    """
     metrics = study.report.get("metrics", DEFAULT_METRICS)
     lines = [f"# Study {study.name}", ""]
     if study.description:
@@ -158,7 +295,38 @@ def _label(law: str, output_feedback: bool) -> str:
 
 
 def distribution_figure(df, metric: str, title: str | None = None) -> Figure:
-    """Box plots of a metric over the completed runs, one per law and feedback mode."""
+    """Box plots of a metric over the completed runs, one per law and feedback mode.
+
+    Whiskers at the 5th and 95th percentiles; the runs beyond them drawn as points.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study`.
+    metric : str
+        The metric column.
+    title : str, optional
+        The title (default names the metric).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (one axes).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import distribution_figure
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "noise", "scenario": str(hc.scenario_path("paper_fig2")), "samples": 3},
+    ...     "grid": [{"key": "controller.law", "values": ["hinf", "lqr"]}],
+    ...     "random": [{"key": "measurement.seed", "distribution": "seed"}]})
+    >>> table = run_study(study, progress=False)
+    >>> figure = distribution_figure(table, "rms_position_error_last_half")
+    >>> [label.get_text() for label in figure.axes[0].get_xticklabels()]
+    ['hinf/output', 'lqr/output']
+    >>> figure.savefig("distribution.png")
+    """
     done = df[(df["status"] == "completed") & np.isfinite(df[metric].to_numpy(dtype=float))]
     keys = sorted({(law, bool(of)) for law, of in zip(done["law"], done["output_feedback"])},
                   key=lambda k: (k[1], list(_LAW_COLOURS).index(k[0]) if k[0] in _LAW_COLOURS else 9))
@@ -180,8 +348,37 @@ def distribution_figure(df, metric: str, title: str | None = None) -> Figure:
 
 
 def recovered(df, position_tol: float = 0.5, heading_tol_deg: float = 10.0) -> np.ndarray:
-    """Completed, with a final position error below `position_tol` and a final wrapped heading
-    error below `heading_tol_deg` (the verdict of hinf_cpp.analysis.recovery)."""
+    """Which runs of a table recovered: the verdict of :mod:`hinf_cpp.analysis.recovery`.
+
+    A run recovered when it completed with a final position error below `position_tol` and a
+    final wrapped heading error below `heading_tol_deg` (a NaN heading error, a model without
+    heading, does not count against it).
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table with the columns ``status``, ``final_position_error`` and
+        ``final_heading_error`` (rad).
+    position_tol : float, optional
+        The position tolerance, in the model's unit of length (default 0.5).
+    heading_tol_deg : float, optional
+        The heading tolerance, degrees (default 10).
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (len(df),)
+        True for the runs that recovered.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from hinf_cpp.studies.report import recovered
+    >>> table = pd.DataFrame({"status": ["completed", "completed", "diverged"],
+    ...                       "final_position_error": [0.1, 0.9, 0.1],
+    ...                       "final_heading_error": [0.05, 0.0, 0.0]})
+    >>> recovered(table)
+    array([ True, False, False])
+    """
     position = df["final_position_error"].to_numpy(dtype=float)
     heading = np.abs(df["final_heading_error"].to_numpy(dtype=float))
     with np.errstate(invalid="ignore"):
@@ -201,8 +398,48 @@ def axis_label(key: str, state_names: Sequence[str] = ()) -> str:
 
 def roa_figure(df, x: str, y: str, position_tol: float = 0.5, heading_tol_deg: float = 10.0,
                title: str | None = None, state_names: Sequence[str] = ()) -> Figure:
-    """Region of attraction: over the grid of initial conditions (x, y), the fraction of runs
-    that recovered, one panel per law and feedback mode."""
+    """Region of attraction: the fraction of runs that recovered over a 2-D grid of initial states.
+
+    One panel per law and feedback mode. Recovered as :func:`recovered`; each cell of the grid
+    (x, y) is coloured by the fraction of its runs that recovered (red 0 to green 1).
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study` with x and y as grid keys.
+    x : str
+        The key on the horizontal axis (e.g. ``"initial.q0[3]"``).
+    y : str
+        The key on the vertical axis.
+    position_tol : float, optional
+        The position tolerance of :func:`recovered` (default 0.5).
+    heading_tol_deg : float, optional
+        The heading tolerance of :func:`recovered`, degrees (default 10).
+    title : str, optional
+        The title (default states the tolerances).
+    state_names : sequence of str, optional
+        The model's state names, to label ``initial.q0[i]`` axes with the state's name.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure: one panel per law and feedback mode, and a colour bar.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import roa_figure
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "roa", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "initial.q0[3]", "values": [-2.0, 2.0]},
+    ...              {"key": "initial.q0[5]", "values": [0.0, 1.5]}],
+    ...     "report": {"roa": ["initial.q0[3]", "initial.q0[5]"]}})
+    >>> table = run_study(study, progress=False)
+    >>> figure = roa_figure(table, "initial.q0[3]", "initial.q0[5]",
+    ...                     state_names=["u", "v", "r", "x", "y", "psi"])
+    >>> figure.axes[0].get_title(), figure.axes[0].get_xlabel()
+    ('hinf/state', 'x(t0)  (initial.q0[3])')
+    """
     frame = df.assign(_ok=recovered(df, position_tol, heading_tol_deg))
     keys = sorted({(law, bool(of)) for law, of in zip(frame["law"], frame["output_feedback"]) if law},
                   key=lambda k: (k[1], list(_LAW_COLOURS).index(k[0]) if k[0] in _LAW_COLOURS else 9))
@@ -241,8 +478,40 @@ def _edges(values: np.ndarray) -> np.ndarray:
 
 
 def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: str | None = None) -> Figure:
-    """A metric against gamma over the completed runs: the median and the 5-95 % band per law
-    and feedback mode (failed runs, e.g. below gamma*, leave gaps)."""
+    """A metric against gamma: the median and the 5-95 % band of the completed runs.
+
+    One line and band per law and feedback mode. Failed runs (e.g. below gamma*) leave gaps, their
+    gammas marked by dotted red lines; the gamma axis is logarithmic when it spans more than a
+    factor 20.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        A table of :func:`hinf_cpp.studies.run_study` with a gamma grid axis.
+    metric : str
+        The metric column.
+    gamma_key : str, optional
+        The gamma column (default ``"controller.gamma"``).
+    title : str, optional
+        The title (default names the metric).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (one axes).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import gamma_figure
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> table = run_study(study, progress=False)
+    >>> figure = gamma_figure(table, "final_position_error")
+    >>> figure.axes[0].get_xlabel(), len(figure.axes[0].lines)
+    ('gamma', 1)
+    """
     fig = Figure(figsize=(5.6, 3.4), layout="constrained")
     ax = fig.add_subplot()
     done = df[df["status"] == "completed"]
@@ -284,9 +553,48 @@ def _save(fig: Figure, path: pathlib.Path) -> pathlib.Path:
 
 
 def write_study_outputs(study, df, out, seconds: float | None = None) -> list[pathlib.Path]:
-    """DIR/runs.parquet, runs.csv, summary.md and the figures the study asks for (a metric's
-    distribution per law; with [report] roa the region-of-attraction map; with a
-    controller.gamma grid axis the metric against gamma)."""
+    """Write a study's table, summary and figures into a folder.
+
+    ``runs.parquet``, ``runs.csv`` (numbers at full precision), ``summary.md``
+    (:func:`summary_markdown`) and the figures the study asks for: ``distribution.png`` (a
+    metric's distribution per law, when a run completed), with [report] roa ``roa.png`` (the
+    region-of-attraction map), with a controller.gamma grid axis ``gamma.png`` (the metric
+    against gamma). Each file is written whole or not at all.
+
+    Parameters
+    ----------
+    study : hinf_cpp.studies.Study
+        The study.
+    df : pandas.DataFrame
+        Its table (:func:`hinf_cpp.studies.run_study`).
+    out : str or os.PathLike
+        The folder (created if needed).
+    seconds : float, optional
+        The study's wall time (s), for the summary.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    ValueError
+        A folder that cannot be written.
+    OSError
+        A file could not be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.report import write_study_outputs
+    >>> from hinf_cpp.studies import run_study, study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> table = run_study(study, progress=False)
+    >>> [path.name for path in write_study_outputs(study, table, "gammas")]
+    ['runs.parquet', 'runs.csv', 'summary.md', 'distribution.png', 'gamma.png']
+    """
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     written = []

@@ -65,8 +65,25 @@ _SEED_LIMIT = 2 ** 63
 
 @dataclasses.dataclass(frozen=True)
 class GridAxis:
-    """Grid axis: `keys` (one, or several set together) and one value per point (with several
-    keys, each value is a list with one entry per key)."""
+    """A grid axis of a study ([[grid]] of a study file): keys and their values, point by point.
+
+    ``settings(point)`` gives the (key, value) pairs of one point of the axis.
+
+    Parameters
+    ----------
+    keys : tuple of str
+        The scenario keys set (:mod:`hinf_cpp.scenario.settings`): one, or several set
+        together.
+    values : tuple
+        One value per point; with several keys, each value is a list with one entry per key.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import GridAxis
+    >>> axis = GridAxis(("controller.law", "feedback"), (["hinf", "state"], ["lqr", "output"]))
+    >>> axis.settings(1)
+    [('controller.law', 'lqr'), ('feedback', 'output')]
+    """
 
     keys: tuple[str, ...]
     values: tuple
@@ -80,8 +97,40 @@ class GridAxis:
 
 @dataclasses.dataclass(frozen=True)
 class RandomAxis:
-    """Random axis: "seed" (an integer in [0, 2^63)), "uniform" (low, high) or "normal"
-    (mean, std); with `relative` the draw is a factor on the base value `base`."""
+    """A random axis of a study ([[random]] of a study file): a key and its distribution.
+
+    ``draw(rng)`` draws one value with a ``numpy.random.Generator``: "seed" an integer in
+    [0, 2^63), "uniform" a number in [low, high), "normal" a number of mean `mean` and
+    standard deviation `std`; with `relative` the number drawn is a factor on `base`.
+
+    Parameters
+    ----------
+    key : str
+        The scenario key set (e.g. ``"plant.d_u"``, ``"measurement.seed"``).
+    distribution : str
+        ``"seed"``, ``"uniform"`` or ``"normal"``.
+    low : float, optional
+        Lower end of "uniform" (default 0).
+    high : float, optional
+        Upper end of "uniform" (default 1).
+    mean : float, optional
+        Mean of "normal" (default 0).
+    std : float, optional
+        Standard deviation of "normal" (default 1).
+    relative : bool, optional
+        The draw is a factor on `base` (default False).
+    base : float, optional
+        The base value of a relative axis: the key's value in the scenario, or the model's
+        parameter (:func:`study_from_dict` finds it).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import RandomAxis
+    >>> axis = RandomAxis("plant.d_u", "uniform", low=0.8, high=1.2, relative=True, base=2.0)
+    >>> value = axis.draw(np.random.default_rng(0))
+    >>> bool(1.6 <= value <= 2.4)
+    True
+    """
 
     key: str
     distribution: str
@@ -102,9 +151,53 @@ class RandomAxis:
 
 @dataclasses.dataclass(frozen=True)
 class Study:
-    """A study read by :func:`load_study` (or :func:`study_from_dict`). `base` is the base
-    scenario's document (as tomllib reads it), `source` the scenario file (messages, relative
-    paths), `definition` the study's own document."""
+    """A study: a base scenario and the keys that vary (docs/studies.md).
+
+    Read by :func:`load_study` (or :func:`study_from_dict`). Runs are numbered from 0: grid
+    points in row-major order of the grid axes, samples fastest. ``runs``, ``grid_shape``,
+    ``grid_points`` and ``columns`` (the axis keys) describe it; ``point(run)``,
+    ``settings(run)``, ``document(run)`` and ``scenario(run)`` give one run's place, (key,
+    value) pairs, scenario document and :class:`hinf_cpp.Scenario`; ``content_hash()``
+    changes with anything that changes the table.
+
+    Parameters
+    ----------
+    name : str
+        The study's name ([study] name, default the file's stem).
+    description : str
+        [study] description.
+    source : str
+        The base scenario file (messages, relative paths), or ``"<dict>"``.
+    base : dict
+        The base scenario's document (as tomllib reads it).
+    seed : int
+        The master seed of the random axes (>= 0).
+    samples : int
+        Samples per grid point (random draws).
+    grid : tuple of GridAxis
+        The grid axes.
+    random : tuple of RandomAxis
+        The random axes.
+    chunk : int
+        Runs per task (a chunk of the table; default 100).
+    definition : dict
+        The study's own document.
+    report : dict
+        Its [report] table (metrics, figures).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> study.runs, study.grid_shape, study.columns
+    (2, (2,), ['controller.gamma'])
+    >>> study.settings(1)
+    [('controller.gamma', 10.0)]
+    >>> study.scenario(1).gamma
+    10.0
+    """
 
     name: str
     description: str
@@ -235,8 +328,50 @@ def _only(table: dict, allowed: set[str], where: str) -> None:
 
 def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.PathLike | None = None,
                     base: dict | None = None) -> Study:
-    """A :class:`Study` from the dictionary form of a study file. The scenario is read from
-    [study] scenario (relative to `folder`) unless its document `base` is given."""
+    """A :class:`Study` from the dictionary form of a study file (docs/studies.md).
+
+    The base scenario is read from [study] scenario (relative to `folder`) unless its
+    document `base` is given. Every key and value is checked, and the scenario of run 0 is
+    read by the C++ reader, so that a key it refuses is an error here.
+
+    Parameters
+    ----------
+    definition : dict
+        The study document: [study] (name, description, scenario, seed, samples, chunk),
+        [[grid]] (key, values), [[random]] (key, distribution, low, high, mean, std,
+        relative) and [report].
+    source : str, optional
+        What the study is called in messages (default ``"<study>"``).
+    folder : str or os.PathLike, optional
+        The folder a relative [study] scenario is taken from (default: the current one).
+    base : dict, optional
+        The base scenario's document, instead of reading [study] scenario.
+
+    Returns
+    -------
+    Study
+        The study.
+
+    Raises
+    ------
+    ValueError
+        Anything wrong with the definition or the base scenario, naming `source`, the table
+        and the key.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> study.name, study.runs
+    ('gammas', 2)
+    >>> study_from_dict({"study": {"scenario": str(hc.scenario_path("paper_fig1"))},
+    ...                  "grid": [{"key": "controller.gamma", "value": [5.0]}]})
+    Traceback (most recent call last):
+        ...
+    ValueError: <study>: [[grid]] 1: unknown key 'value' (allowed: key, values)
+    """
     where = source
     _only(definition, {"study", "grid", "random", "report"}, where)
     head = definition.get("study")
@@ -357,8 +492,40 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
 
 
 def load_study(path: str | os.PathLike) -> Study:
-    """Reads a study file (docs/studies.md); ValueError naming the file and the key for
-    anything wrong with it (and for a base scenario that cannot be read)."""
+    """Read a study file (TOML, docs/studies.md).
+
+    Its [study] scenario is taken from the study file's folder when relative.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The study file.
+
+    Returns
+    -------
+    Study
+        The study (:func:`study_from_dict` of the file's document).
+
+    Raises
+    ------
+    ValueError
+        Anything wrong with the file, naming the file and the key (also a study file or base
+        scenario that cannot be read).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import load_study
+    >>> with open("gammas.toml", "w") as f:
+    ...     _ = f.write(f'[study]\\nscenario = "{hc.scenario_path("paper_fig1")}"\\n'
+    ...                 '[[grid]]\\nkey = "controller.gamma"\\nvalues = [5.0, 10.0]\\n')
+    >>> study = load_study("gammas.toml")
+    >>> study.name, study.runs
+    ('gammas', 2)
+    >>> load_study("missing.toml")
+    Traceback (most recent call last):
+        ...
+    ValueError: cannot read the study 'missing.toml': No such file or directory
+    """
     path = pathlib.Path(path)
     return study_from_dict(read_toml_file(path, "the study "), os.fspath(path), path.parent)
 
@@ -376,7 +543,37 @@ def _batch(scenarios: list, threads: int, progress: Callable[[int, int], None] |
 
 
 def study_table_schema(study: Study):
-    """The Arrow schema of a study's table (one column per axis key, typed from its values)."""
+    """The Arrow schema of a study's table.
+
+    Columns: ``run``, ``grid_point``, ``sample``, ``seed`` (the measurement seed, or null),
+    one per axis key (a grid key typed from its values: bool, int64, float64, or string with
+    arrays written as TOML text; a random key int64 for "seed", else float64), then ``law``,
+    ``output_feedback``, ``gamma``, ``status``, ``reason`` and one float64 per metric
+    (:func:`hinf_cpp.metric_table`).
+
+    Parameters
+    ----------
+    study : Study
+        The study.
+
+    Returns
+    -------
+    pyarrow.Schema
+        The schema.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import study_table_schema
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> schema = study_table_schema(study)
+    >>> schema.names[:6]
+    ['run', 'grid_point', 'sample', 'seed', 'controller.gamma', 'law']
+    >>> str(schema.field("controller.gamma").type)
+    'double'
+    """
     import pyarrow as pa
 
     def grid_type(values) -> pa.DataType:
@@ -512,7 +709,21 @@ class _Partial:
 
 
 def local_cores() -> int:
-    """The cores this process may run on."""
+    """The number of cores this process may run on (its CPU affinity; at least 1).
+
+    The default number of chunks :func:`run_study` runs at once.
+
+    Returns
+    -------
+    int
+        The cores.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import local_cores
+    >>> local_cores() >= 1
+    True
+    """
     try:
         return max(1, len(os.sched_getaffinity(0)))
     except AttributeError:  # not on Linux
@@ -552,21 +763,56 @@ def _eta(started: float, done: int, new: int, total: int) -> str:
 
 def run_study(study: Study | str | os.PathLike, workers: int | None = None, client=None,
               out: str | os.PathLike | None = None, progress: bool | Callable[[int, int, str], None] = True):
-    """Runs every run of a study; a pandas DataFrame with one row per run, in run order.
+    """Run every run of a study into a table with one row per run, in run order.
+
+    The runs are cut into chunks of ``study.chunk`` runs; each chunk runs through
+    ``hc.run_scenarios`` (the C++ batch runner), locally or on a Dask cluster. A run that
+    fails is a row with its status (:data:`STATUSES`) and reason and NaN metrics; a run
+    whose scenario the reader refuses is "invalid_input".
 
     Parameters
     ----------
-    study : Study or path of a study file
+    study : Study or str or os.PathLike
+        The study, or the path of a study file.
     workers : int, optional
         Chunks run at once locally, each on one thread of the C++ batch runner (default: all
         cores). Not with `client`.
     client : dask.distributed.Client, optional
         Runs the chunks on this Dask cluster instead (the same table, bit for bit).
-    out : folder, optional
+    out : str or os.PathLike, optional
         Keeps finished chunks in out/partial/ so that an interrupted study resumes where it
         stopped (a study that changed starts over).
-    progress : bool or callable(done, total, message)
-        True: a progress line on a terminal; a callable is called after every chunk.
+    progress : bool or callable, optional
+        True (default): a progress line on a terminal; False: none; a callable is called as
+        ``progress(done, total, message)`` after every chunk.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The columns of :func:`study_table_schema` (integers as nullable Int64).
+        ``attrs["restarted"]`` is True when saved chunks in `out` were of another study and
+        were deleted.
+
+    Raises
+    ------
+    ValueError
+        `workers` with `client`, `workers` not an integer >= 1; as :func:`load_study` for a
+        path.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import run_study
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> table = run_study(study, workers=1, progress=False)
+    >>> table[["run", "controller.gamma", "status"]]
+       run  controller.gamma     status
+    0    0               5.0  completed
+    1    1              10.0  completed
+    >>> bool((table["final_position_error"] < 0.1).all())
+    True
     """
     import pyarrow as pa
 
@@ -666,16 +912,79 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
 
 
 def replay(study: Study | str | os.PathLike, run: int) -> _core.RunResult:
-    """Runs run `run` of a study alone (run_scenario: the same metrics as its row)."""
+    """Run one run of a study alone: the same metrics as its row of :func:`run_study`.
+
+    Parameters
+    ----------
+    study : Study or str or os.PathLike
+        The study, or the path of a study file.
+    run : int
+        The run index (0-based, the table's ``run`` column).
+
+    Returns
+    -------
+    hinf_cpp.RunResult
+        The result of :func:`hinf_cpp.run_scenario` on the run's scenario.
+
+    Raises
+    ------
+    ValueError
+        A run index outside the study, or a scenario the reader refuses.
+    hinf_cpp.HinfError
+        The run failed numerically (its row has the status).
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import replay
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> result = replay(study, 1)
+    >>> result.gamma, round(result.metrics.final_position_error, 3)
+    (10.0, 0.057)
+    """
     if not isinstance(study, Study):
         study = load_study(study)
     return _core.run_scenario(study.scenario(run))
 
 
 def replay_command(study: Study, run: int, scenario: str | None = None) -> str:
-    """The ``hinf-cpp run`` command that runs run `run` alone: ``--set KEY=VALUE`` for each
-    value of its row (floats written exactly), "feedback" last, and ``--seed N`` for a drawn
-    measurement seed (left out for a state-feedback run, which has no noise)."""
+    """The ``hinf-cpp run`` command that runs one run of a study alone.
+
+    ``--set KEY=VALUE`` for each value of its row (floats written exactly), "feedback" last,
+    and ``--seed N`` for a drawn measurement seed (left out for a state-feedback run, which
+    has no noise).
+
+    Parameters
+    ----------
+    study : Study
+        The study.
+    run : int
+        The run index (0-based).
+    scenario : str, optional
+        The scenario file as written in the command (default ``study.source``).
+
+    Returns
+    -------
+    str
+        The command, its arguments quoted for a POSIX shell.
+
+    Raises
+    ------
+    ValueError
+        A run index outside the study.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import replay_command
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> replay_command(study, 1, scenario="paper_fig1.toml")
+    'hinf-cpp run paper_fig1.toml --set controller.gamma=10.0'
+    """
     import shlex
 
     document = study.document(run)
