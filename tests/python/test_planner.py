@@ -44,16 +44,20 @@ def test_symbolic_statement_matches_the_cpp_model(name):
     assert symbolic.position_indices == model.position_indices()
     assert symbolic.heading_index == model.heading_index()
     assert symbolic.noise_channels == model.noise_channels()
-    np.testing.assert_array_equal(np.asarray(functions["C"](0.0, [])), model.C(0.0))
+    # The statement's parameters at the object's values (the planner evaluates it so).
+    p = [symbolic.parameter_values[name] for name in symbolic.parameter_names]
+    np.testing.assert_array_equal(np.asarray(functions["C"](0.0, p)), model.C(0.0))
     rng = np.random.default_rng(31)
     for _ in range(20):
         # States of the size a vehicle meets (speeds ~ 1, angles ~ pi), both signs.
         q = rng.normal(scale=2.0, size=model.n())
         for label, expected in (("f", model.f(0.0, q)), ("G", model.G(0.0, q)), ("D", model.D(0.0, q)),
                                 ("dfdq", model.dfdq(0.0, q))):
-            value = np.asarray(functions[label](0.0, q, [])).reshape(np.shape(expected))
-            # Two statements of the same formulas (and CasADi's derivative against the written
-            # one): round-off of the terms, at most 1e3 (the AUV's drag in N at 2 m/s).
+            value = np.asarray(functions[label](0.0, q, p)).reshape(np.shape(expected))
+            # The built-in vehicles' C++ equations are compiled from these statements (the
+            # LinearModel's are written in C++): the same formulas evaluated by CasADi's virtual
+            # machine and by its generated code, round-off of the terms, at most 1e3 (the AUV's
+            # drag in N at 2 m/s).
             scale = max(1.0, np.abs(expected).max()) * 1e3
             np.testing.assert_allclose(value, expected, rtol=0, atol=ROUNDOFF * scale, err_msg=f"{name} {label}")
 

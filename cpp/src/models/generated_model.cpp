@@ -104,12 +104,32 @@ GeneratedModel::GeneratedModel(const std::string& metadata_path, const std::map<
   // The library, beside model.json unless the path is absolute.
   fs::path library = read_key<std::string>(j, "library", source);
   if (library.is_relative()) library = fs::path(metadata_path).parent_path() / library;
-  const GeneratedLibraryPtr lib = GeneratedLibrary::open(library.string());
+  load_functions(GeneratedLibrary::open(library.string()), has_measurement, has_split, "", source);
+}
+
+GeneratedModel::GeneratedModel(GeneratedLibraryPtr library, ModelStructure structure, bool measurement,
+                               bool error_split, std::vector<std::string> parameter_names, Vec parameter_values,
+                               const std::string& function_prefix)
+    : structure_(std::move(structure)), parameter_names_(std::move(parameter_names)), p_(std::move(parameter_values)) {
+  require(library != nullptr, "GeneratedModel: the library is null");
+  const std::string source = str_cat("the model '", structure_.name, "' of '", library->path(), "'");
+  check_structure(structure_);
+  require(static_cast<Eigen::Index>(parameter_names_.size()) == p_.size(), source, ": ", parameter_names_.size(),
+          " parameter names for ", p_.size(), " values");
+  for (Eigen::Index k = 0; k < p_.size(); ++k)
+    require(std::isfinite(p_[k]), "the parameter '", parameter_names_[static_cast<std::size_t>(k)],
+            "' of the model '", structure_.name, "' must be finite, got ", p_[k]);
+  load_functions(library, measurement, error_split, function_prefix, source);
+}
+
+void GeneratedModel::load_functions(const GeneratedLibraryPtr& lib, bool measurement, bool error_split,
+                                    const std::string& prefix, const std::string& source) {
+  const ModelStructure& s = structure_;
   const int n = s.n, m = s.m, nw = s.nw, k = static_cast<int>(p_.size());
   const std::pair<int, int> t_shape{1, 1}, q_shape{n, 1}, u_shape{m, 1}, p_shape{k, 1};
   auto load = [&](const char* name, const std::vector<std::pair<int, int>>& in,
                   const std::vector<std::pair<int, int>>& out) {
-    auto function = std::make_unique<GeneratedFunction>(lib, name);
+    auto function = std::make_unique<GeneratedFunction>(lib, prefix + name);
     check_signature(*function, in, out, source);
     return function;
   };
@@ -118,14 +138,14 @@ GeneratedModel::GeneratedModel(const std::string& metadata_path, const std::map<
   G_ = load("G", {t_shape, q_shape, p_shape}, {{n, m}});
   D_ = load("D", {t_shape, q_shape, p_shape}, {{n, nw}});
   dGudq_ = load("dGudq", {t_shape, q_shape, u_shape, p_shape}, {{n, n}});
-  if (has_measurement) {
-    C_ = std::make_unique<GeneratedFunction>(lib, "C");
+  if (measurement) {
+    C_ = std::make_unique<GeneratedFunction>(lib, prefix + "C");
     const int p_y = C_->output_rows(0);
     check_signature(*C_, {t_shape, p_shape}, {{p_y, n}}, source);
     require(static_cast<int>(s.noise_channels.size()) == p_y, source, ": C has ", p_y, " rows but ",
             s.noise_channels.size(), " noise channels are named (one per measured output)");
   }
-  if (has_split) error_split_ = load("error_split", {t_shape, q_shape, u_shape, q_shape, p_shape}, {{n, n}, {n, 1}});
+  if (error_split) error_split_ = load("error_split", {t_shape, q_shape, u_shape, q_shape, p_shape}, {{n, n}, {n, 1}});
 }
 
 std::map<std::string, double> GeneratedModel::parameters() const {

@@ -75,9 +75,22 @@ std::shared_ptr<const GeneratedLibrary> GeneratedLibrary::open(const std::string
   return library;
 }
 
-GeneratedLibrary::~GeneratedLibrary() { dlclose(handle_); }
+std::shared_ptr<const GeneratedLibrary> GeneratedLibrary::compiled_in(std::string label,
+                                                                      std::map<std::string, void*> symbols) {
+  return std::shared_ptr<const GeneratedLibrary>(new GeneratedLibrary(std::move(label), nullptr, std::move(symbols)));
+}
 
-void* GeneratedLibrary::symbol(const std::string& name) const { return dlsym(handle_, name.c_str()); }
+GeneratedLibrary::~GeneratedLibrary() {
+  if (handle_) dlclose(handle_);
+}
+
+void* GeneratedLibrary::symbol(const std::string& name) const {
+  if (!handle_) {
+    const auto found = symbols_.find(name);
+    return found == symbols_.end() ? nullptr : found->second;
+  }
+  return dlsym(handle_, name.c_str());
+}
 
 // ---------------------------------------------------------------- the workspace pool
 

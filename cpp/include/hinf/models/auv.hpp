@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "hinf/models/builtin_vehicle.hpp"
 #include "hinf/models/model.hpp"
 
 namespace hinf {
@@ -48,7 +49,9 @@ inline constexpr std::array<std::pair<const char*, double AuvParameters::*>, 9> 
      {"N_r", &AuvParameters::N_r},
      {"N_rr", &AuvParameters::N_rr}}};
 
-class Auv final : public Model {
+// Its equations are generated from its statement (python/hinf_cpp/models/builtin.py, auv();
+// models/builtin_vehicle.hpp).
+class Auv final : public BuiltinVehicle {
  public:
   // InputError unless the masses are finite and > 0 and the drag coefficients finite and >= 0.
   explicit Auv(const AuvParameters& parameters = {});
@@ -56,21 +59,6 @@ class Auv final : public Model {
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kAuvParameterKeys);
   }
-  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
-
-  std::string name() const override { return "auv"; }
-  int n() const override { return 6; }
-  int m() const override { return 2; }
-  int nw() const override { return 6; }
-  void f(double t, const ConstVecRef& q, VecRef out) const override;
-  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat G(double t, const ConstVecRef& q) const override;
-  Mat D(double t, const ConstVecRef& q) const override;
-  Mat C(double t) const override;
-  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
-  std::vector<std::string> state_names() const override { return {"u", "v", "r", "x", "y", "psi"}; }
-  std::vector<int> position_indices() const override { return {3, 4}; }
-  int heading_index() const override { return 5; }
 
  private:
   AuvParameters p_;

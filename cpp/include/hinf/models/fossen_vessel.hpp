@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "hinf/models/builtin_vehicle.hpp"
 #include "hinf/models/model.hpp"
 
 namespace hinf {
@@ -38,7 +39,9 @@ struct FossenVesselParameters {
   static Mat supply_vessel_D();
 };
 
-class FossenVessel final : public Model {
+// Its equations are generated from its statement (python/hinf_cpp/models/builtin.py,
+// fossen_vessel(); models/builtin_vehicle.hpp), with M^-1 computed once here.
+class FossenVessel final : public BuiltinVehicle {
  public:
   // InputError unless M and D are finite 3 x 3 matrices, M symmetric positive definite and the
   // symmetric part of D positive definite.
@@ -46,25 +49,9 @@ class FossenVessel final : public Model {
   const FossenVesselParameters& parameters() const { return p_; }
   // M[i][j] and D[i][j], the entries of [model] M and D.
   std::vector<std::pair<std::string, double>> named_parameters() const override;
-  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
-
-  std::string name() const override { return "fossen_vessel"; }
-  int n() const override { return 6; }
-  int m() const override { return 2; }
-  int nw() const override { return 6; }
-  void f(double t, const ConstVecRef& q, VecRef out) const override;
-  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat G(double t, const ConstVecRef& q) const override;
-  Mat D(double t, const ConstVecRef& q) const override;
-  Mat C(double t) const override;
-  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
-  std::vector<std::string> state_names() const override { return {"u", "v", "r", "x", "y", "psi"}; }
-  std::vector<int> position_indices() const override { return {3, 4}; }
-  int heading_index() const override { return 5; }
 
  private:
   FossenVesselParameters p_;
-  Mat M_inverse_;
 };
 
 }  // namespace hinf

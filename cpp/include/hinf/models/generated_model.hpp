@@ -36,7 +36,16 @@ class GeneratedModel final : public Model {
   // description, a function is missing or has other sizes than the description says, the
   // structure is invalid (check_structure), or a parameter is unknown or not finite.
   explicit GeneratedModel(const std::string& metadata_path, const std::map<std::string, double>& parameters = {});
+  // The same from a library already loaded (the built-in vehicles' compiled-in code,
+  // GeneratedLibrary::compiled_in) and what model.json would say: its structure, whether it has
+  // the functions C and error_split, its parameters' names and values (in the order of the
+  // functions' parameter input), and the prefix of its functions' names ("hinf_ship_" for
+  // hinf_ship_f, ...; empty for a library of model.json). The same checks as above.
+  GeneratedModel(GeneratedLibraryPtr library, ModelStructure structure, bool measurement, bool error_split,
+                 std::vector<std::string> parameter_names, Vec parameter_values,
+                 const std::string& function_prefix = "");
 
+  // model.json's path (empty for compiled-in code).
   const std::string& metadata_path() const { return metadata_path_; }
   const std::string& library_path() const { return f_->library()->path(); }
   const std::vector<std::string>& parameter_names() const { return parameter_names_; }
@@ -69,6 +78,10 @@ class GeneratedModel final : public Model {
   bool same_as(const Model& other) const override;
 
  private:
+  // Loads the functions of the library (named prefix + "f", ...) and checks their signatures
+  // against the structure and the number of parameters; `source` names what describes them.
+  void load_functions(const GeneratedLibraryPtr& library, bool measurement, bool error_split,
+                      const std::string& prefix, const std::string& source);
   // Evaluates `function` with the inputs (each a pointer to its dense values) into `out`
   // (rows x cols, possibly a block of a larger matrix).
   void evaluate(const GeneratedFunction& function, std::initializer_list<const double*> inputs, MatRef out) const;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "hinf/models/builtin_vehicle.hpp"
 #include "hinf/models/model.hpp"
 
 namespace hinf {
@@ -27,7 +28,9 @@ struct HovercraftParameters {
 inline constexpr std::array<std::pair<const char*, double HovercraftParameters::*>, 2> kHovercraftParameterKeys{
     {{"d", &HovercraftParameters::d}, {"d_r", &HovercraftParameters::d_r}}};
 
-class Hovercraft final : public Model {
+// Its equations are generated from its statement (python/hinf_cpp/models/builtin.py,
+// hovercraft(); models/builtin_vehicle.hpp).
+class Hovercraft final : public BuiltinVehicle {
  public:
   // InputError unless d and d_r are finite and >= 0.
   explicit Hovercraft(const HovercraftParameters& parameters = {});
@@ -35,24 +38,6 @@ class Hovercraft final : public Model {
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kHovercraftParameterKeys);
   }
-  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
-
-  std::string name() const override { return "hovercraft"; }
-  int n() const override { return 6; }
-  int m() const override { return 2; }
-  int nw() const override { return 6; }
-  void f(double t, const ConstVecRef& q, VecRef out) const override;
-  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat G(double t, const ConstVecRef& q) const override;
-  Mat D(double t, const ConstVecRef& q) const override;
-  bool constant_input_matrices() const override { return false; }
-  bool state_dependent_inputs() const override { return true; }
-  void dGudq(double t, const ConstVecRef& q, const ConstVecRef& u, MatRef out) const override;
-  Mat C(double t) const override;
-  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
-  std::vector<std::string> state_names() const override { return {"x", "y", "psi", "vx", "vy", "r"}; }
-  std::vector<int> position_indices() const override { return {0, 1}; }
-  int heading_index() const override { return 2; }
 
  private:
   HovercraftParameters p_;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "hinf/models/builtin_vehicle.hpp"
 #include "hinf/models/model.hpp"
 
 namespace hinf {
@@ -28,7 +29,9 @@ struct PlanarVtolParameters {
 inline constexpr std::array<std::pair<const char*, double PlanarVtolParameters::*>, 2> kPlanarVtolParameterKeys{
     {{"g", &PlanarVtolParameters::g}, {"epsilon", &PlanarVtolParameters::epsilon}}};
 
-class PlanarVtol final : public Model {
+// Its equations are generated from its statement (python/hinf_cpp/models/builtin.py, pvtol();
+// models/builtin_vehicle.hpp).
+class PlanarVtol final : public BuiltinVehicle {
  public:
   // InputError unless g is finite and >= 0 and epsilon finite.
   explicit PlanarVtol(const PlanarVtolParameters& parameters = {});
@@ -36,26 +39,6 @@ class PlanarVtol final : public Model {
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kPlanarVtolParameterKeys);
   }
-  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
-
-  std::string name() const override { return "pvtol"; }
-  int n() const override { return 6; }
-  int m() const override { return 2; }
-  int nw() const override { return 6; }
-  void f(double t, const ConstVecRef& q, VecRef out) const override;
-  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat G(double t, const ConstVecRef& q) const override;
-  Mat D(double t, const ConstVecRef& q) const override;
-  bool constant_input_matrices() const override { return false; }
-  bool state_dependent_inputs() const override { return true; }
-  void dGudq(double t, const ConstVecRef& q, const ConstVecRef& u, MatRef out) const override;
-  Mat C(double t) const override;
-  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
-  std::vector<std::string> state_names() const override {
-    return {"x", "y", "theta", "x_dot", "y_dot", "theta_dot"};
-  }
-  std::vector<int> position_indices() const override { return {0, 1}; }
-  int heading_index() const override { return 2; }
 
  private:
   PlanarVtolParameters p_;

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "hinf/models/builtin_vehicle.hpp"
 #include "hinf/models/model.hpp"
 
 namespace hinf {
@@ -42,35 +43,19 @@ inline constexpr std::array<std::pair<const char*, double ShipParameters::*>, 6>
      {"d_v", &ShipParameters::d_v},
      {"d_r", &ShipParameters::d_r}}};
 
-class ShipModel final : public Model {
+// Its equations are generated from its statement (python/hinf_cpp/models/builtin.py, ship();
+// models/builtin_vehicle.hpp), the error split (26)-(31) included.
+class ShipModel final : public BuiltinVehicle {
  public:
+  // InputError unless every parameter is finite.
   explicit ShipModel(const ShipParameters& parameters = {});
   const ShipParameters& parameters() const { return p_; }
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kShipParameterKeys);
   }
-  bool same_as(const Model& other) const override { return same_type_and_parameters(*this, other); }
-
-  std::string name() const override { return "ship"; }
-  int n() const override { return 6; }
-  int m() const override { return 2; }
-  int nw() const override { return 6; }
-  void f(double t, const ConstVecRef& q, VecRef out) const override;
-  void dfdq(double t, const ConstVecRef& q, MatRef out) const override;
-  Mat G(double t, const ConstVecRef& q) const override;
-  Mat D(double t, const ConstVecRef& q) const override;
-  // u_d does not enter: G is constant.
-  void error_split(double t, const ConstVecRef& q_d, const ConstVecRef& u_d, const ConstVecRef& q_e, MatRef A,
-                   VecRef alpha) const override;
-  // Position and heading are measured: C = [0 I3], noise on w4..w6.
-  Mat C(double t) const override;
   // Global bound (any radius): L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2); see
-  // model.cpp for the derivation.
+  // ship.cpp for the derivation.
   double remainder_bound(double t, const ConstVecRef& q_d, double radius) const override;
-  std::vector<int> noise_channels() const override { return {3, 4, 5}; }
-  std::vector<std::string> state_names() const override;
-  std::vector<int> position_indices() const override { return {3, 4}; }
-  int heading_index() const override { return 5; }
 
  private:
   ShipParameters p_;

@@ -42,6 +42,7 @@
 // returns nonzero (CasADi's failure flag, e.g. from an embedded solver) is a HinfError.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -56,13 +57,19 @@ namespace hinf {
 using CasadiInt = long long int;
 using CasadiReal = double;
 
-// A shared library opened with dlopen(RTLD_NOW | RTLD_LOCAL) and closed with dlclose when the
-// last owner goes; GeneratedFunction holds it by shared_ptr so that its code stays loaded.
+// Generated code to call: a shared library opened with dlopen(RTLD_NOW | RTLD_LOCAL) and closed
+// with dlclose when the last owner goes (GeneratedFunction holds it by shared_ptr so that its code
+// stays loaded), or the code of the built-in vehicles compiled into this library, found by a table
+// of its entry points.
 class GeneratedLibrary {
  public:
   // InputError when the file is missing or dlopen refuses it (with dlerror()'s reason), or
   // when the library reports another casadi_int or casadi_real size than this loader's.
   static std::shared_ptr<const GeneratedLibrary> open(const std::string& path);
+  // Code compiled into the program: `symbols` maps each entry point's name to its address;
+  // `label` stands for the path in messages.
+  static std::shared_ptr<const GeneratedLibrary> compiled_in(std::string label,
+                                                             std::map<std::string, void*> symbols);
   ~GeneratedLibrary();
   GeneratedLibrary(const GeneratedLibrary&) = delete;
   GeneratedLibrary& operator=(const GeneratedLibrary&) = delete;
@@ -72,9 +79,11 @@ class GeneratedLibrary {
   void* symbol(const std::string& name) const;
 
  private:
-  GeneratedLibrary(std::string path, void* handle) : path_(std::move(path)), handle_(handle) {}
+  GeneratedLibrary(std::string path, void* handle, std::map<std::string, void*> symbols = {})
+      : path_(std::move(path)), handle_(handle), symbols_(std::move(symbols)) {}
   std::string path_;
-  void* handle_;
+  void* handle_;                           // dlopen's, or null for compiled-in code
+  std::map<std::string, void*> symbols_;  // compiled-in code's entry points
 };
 
 using GeneratedLibraryPtr = std::shared_ptr<const GeneratedLibrary>;
