@@ -1,11 +1,14 @@
-"""The certificates of paper §3 (eqs. 22-24) and the attenuation guarantee of eq. (12),
-checked against independent truth:
+"""The certificates of paper §3 (eqs. 22-24) and the attenuation guarantee of eq. (12) through
+the Python API.
 
-* m, M (22) and p(t) = lambda_min(Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z) (23) from
-  NumPy eigenvalues of matrices built here, on fine grids;
-* the ship's remainder bound |f(q_d + e) - f(q_d) - A_e e| <= L |e|^2 sampled with the NumPy
-  ship of docs/mathematics.md (_support.ship_drift, ship_jacobian);
-* closed loops started on the certified ball: V = q_e' Z q_e must decay at the certified rate;
+tests/cpp/test_certificates.cpp checks the numerics: m, M (22) and p(t) (23) against
+eigenvalues on fine grids, the ship's remainder bound against sampled remainders, epsilon and
+the rates of (24), closed loops from the certified ball, and the completed square of (12).
+Here: what certify returns to Python, with closed forms (p = 1 for kappa >= 1/2 on the ship,
+kappa's minimum, the remainder bound's derivation, the formulas of (24)) and one grid of NumPy
+eigenvalues; a model written in Python (its remainder sampled); and the Python-only
+gamma_sweep (sweep_gamma, cost_L_gamma, sweep_figure), checked against independent truth:
+
 * for LTI plants (where the linearization is exact), the completed square
       L_gamma = q_e(t0)' Z(t0) q_e(t0) - gamma^2 || w - gamma^-2 D' Z q_e ||^2
   (differentiate V along the closed loop with u = -B' Z q_e), so L_gamma <= 0 and the L2 gain is
@@ -26,15 +29,10 @@ import pytest
 
 import hinf_cpp as hc
 from _support import (
-    EPS,
     PAPER_PARAMETERS,
-    PAPER_Q_D0,
     ROUNDOFF,
     SHIP_B,
     SHIP_D,
-    ship_drift,
-    ship_jacobian,
-    summation_rtol,
 )
 from hinf_cpp.analysis.gamma_sweep import cost_L_gamma, sweep_figure, sweep_gamma
 
@@ -42,7 +40,6 @@ EYE6 = np.eye(6)
 BIN = pathlib.Path(sys.executable).parent
 HINF_CPP = BIN / "hinf-cpp"
 DATA = pathlib.Path(__file__).resolve().parents[1] / "data"
-KAPPAS = [1.0, 0.5, 2.0, 0.25]
 
 
 def fine_times(sol, count=40001):
@@ -69,7 +66,7 @@ def p_roundoff(Z, B, D, Q, kappa, gamma):
     """Round-off allowance for p(t) computed by two eigenvalue algorithms (the library's and
     LAPACK's): an eigenvalue of a symmetric matrix moves by at most the norm of the rounding
     errors, ~ eps times the size of its entries; ROUNDOFF times the largest entry of P over
-    the stack (~400 on the ship at gamma = 5, where p itself is 1)."""
+    the stack."""
     return ROUNDOFF * np.max(np.abs(p_matrices(Z, B, D, Q, kappa, gamma)))
 
 
@@ -80,7 +77,7 @@ def ship_L(q_d) -> np.ndarray:
     + [R(psi_d + e_psi) - R(psi_d)](e_u, e_v), R the rotation; |e^{ib} - 1 - ib| <= b^2/2,
     |e^{ib} - 1| <= |b| and |e_i e_j| <= |e|^2/2 give |r| <= L |e|^2 for EVERY e with
     L = 1/2 sqrt(m_u^2 + m_v^2 + m_r^2 + (|(u_d, v_d)| + 1)^2) (cpp/src/models/model.cpp documents
-    the same bound; the sampling test below checks that it is one)."""
+    the same bound; tests/cpp/test_certificates.cpp checks by sampling that it is one)."""
     p = PAPER_PARAMETERS
     speed = np.hypot(q_d[..., 0], q_d[..., 1])
     return 0.5 * np.sqrt(p["m_u"]**2 + p["m_v"]**2 + p["m_r"]**2 + (speed + 1.0)**2)
@@ -90,54 +87,41 @@ def ship_L(q_d) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def paper_design(paper_trajectory):
-    """The paper's design solved tightly (rtol 1e-10), so that V = q_e' Z q_e along the closed
-    loops is accurate far below the 1e-9 slack of the decay check."""
+    """The paper's design solved tightly (rtol 1e-10), as in tests/cpp/test_certificates.cpp."""
     return hc.solve_grde(paper_trajectory, EYE6, EYE6, 5.0,
                          hc.SolverOptions(method="bdf", rtol=1e-10, atol=1e-12))
 
 
-@pytest.fixture(scope="module")
-def paper_grid(paper_design):
-    times = fine_times(paper_design)
-    return times, paper_design.Z(times)
-
-
-def test_m_and_M_are_the_extreme_eigenvalues_of_Z(paper_solutions, method):
-    """(22): NumPy's extreme eigenvalues of Z over 40001 times plus every step and midpoint
-    are inner bounds of the true extremes; the certificates' m, M (refined between samples)
-    are at most 1e-8 beyond them (measured: m 1.3e-10 below, M equal)."""
-    sol = paper_solutions[method]
+def test_m_and_M_are_the_eigenvalue_bounds_of_Z(paper_solutions):
+    """(22) with kappa given as a number: m and M are the solution's eigenvalue bounds (against
+    NumPy's eigenvalues on a grid: the linear model below, and the ship in
+    tests/cpp/test_certificates.cpp)."""
+    sol = paper_solutions["auto"]
     c = hc.certify(sol, 1.0, EYE6)
-    eig = np.linalg.eigvalsh(sol.Z(fine_times(sol)))
-    lo, hi = eig[:, 0].min(), eig[:, -1].max()
-    # The library's eigenvalues (tridiagonalization and Laguerre's method) and LAPACK's of the
-    # same Z(t) differ by round-off: ROUNDOFF times |Z| (~20.8 here), not 1e-14 absolute
-    # (another CPU's LAPACK kernels put M 1.8e-14 above NumPy's maximum here).
-    slack = ROUNDOFF * max(abs(lo), abs(hi))
-    assert lo - 1e-8 <= c.m <= lo + slack
-    assert hi - slack <= c.M <= hi + 1e-8
+    assert c.kappa_min == 1.0
     assert (c.m, c.M) == sol.eigenvalue_bounds()  # the same computation (certify calls it)
-    # an independent implementation, orientation only.
+    assert 0.0 < c.m < 1.0 < c.M  # Z(tf) = Qf = I lies between them
+    # An independent implementation's values, orientation only.
     assert c.m == pytest.approx(0.219, abs=1e-3) and c.M == pytest.approx(20.8, abs=0.05)
 
 
-@pytest.mark.parametrize("kappa", KAPPAS)
-def test_p_min_is_the_smallest_eigenvalue_of_P(paper_design, paper_grid, kappa):
-    """(23) on the ship. For kappa >= 1/2, P = I + a positive semidefinite matrix of rank
-    <= 3 (D D' and B B' act on u, v, r only) in 6 dimensions, so p(t) = 1 = lambda_min(Q)
-    exactly (Remark 1's bound, attained); kappa = 1/4 makes it negative (measured -7.15)."""
-    times, Z = paper_grid
+@pytest.mark.parametrize("kappa", [1.0, 0.25])
+def test_p_min_is_the_smallest_eigenvalue_of_P(paper_design, kappa):
+    """(23) on the ship, kappa given as a Signal (p(t) against eigenvalues on a grid for
+    kappa = 1, 1/2, 2, 1/4: tests/cpp/test_certificates.cpp). For kappa >= 1/2, P = I + a
+    positive semidefinite matrix of rank <= 3 (D D' and B B' act on u, v, r only) in 6
+    dimensions, so p(t) = 1 = lambda_min(Q) exactly (Remark 1's bound, attained); kappa = 1/4
+    makes it negative (measured -7.15), and the certificate empty."""
     c = hc.certify(paper_design, hc.Signal(kappa), EYE6)
-    p = p_of_t(Z, SHIP_B, SHIP_D, EYE6, kappa, 5.0)
-    slack = p_roundoff(Z, SHIP_B, SHIP_D, EYE6, kappa, 5.0)  # two eigenvalue algorithms
     assert c.kappa_min == kappa
-    assert p.min() - 1e-8 <= c.p_min <= p.min() + slack
     assert 0.0 <= c.p_min_t <= 40.0
     at = p_of_t(paper_design.Z(np.array([c.p_min_t])), SHIP_B, SHIP_D, EYE6, kappa, 5.0)[0]
+    # p is the smallest eigenvalue of P, whose entries are at most 1 + (|2 kappa - 1| + 1/25) M^2
+    # (B and D have unit columns, |Z| <= M): two eigenvalue algorithms differ by round-off of that.
+    slack = ROUNDOFF * (1.0 + (abs(2.0 * kappa - 1.0) + 1.0 / 25.0) * c.M**2)
     assert at == pytest.approx(c.p_min, abs=slack)
     if kappa >= 0.5:
-        # p = 1 exactly; computed as the smallest eigenvalue of a matrix with entries up to ~400.
-        assert c.p_min >= 1.0 - slack and c.p_min == pytest.approx(1.0, abs=slack)
+        assert c.p_min == pytest.approx(1.0, abs=slack)
         assert c.decay_rate == pytest.approx(c.p_min / (2.0 * c.M), rel=ROUNDOFF)
     else:
         assert c.p_min < 0.0
@@ -147,7 +131,8 @@ def test_p_min_is_the_smallest_eigenvalue_of_P(paper_design, paper_grid, kappa):
 def test_linear_model_certificates_with_time_varying_kappa(lti_trajectory):
     """A plant with full-rank B and Q = diag(1, 2, 3), where p(t) is not trivially lambda_min(Q),
     and kappa(t) = 0.75 + 0.5 sin t (kappa_min = 1/4): p_min from NumPy on a fine grid; the
-    remainder of a LinearModel is 0, so epsilon and the attraction radius are infinite."""
+    remainder of a LinearModel is 0, so epsilon and the attraction radius are infinite. The one
+    check of m, M and p_min against a grid from Python (the ship's: tests/cpp/test_certificates.cpp)."""
     rng = np.random.default_rng(5)
     A, B, D = rng.standard_normal((3, 3)) - np.eye(3), rng.standard_normal((3, 3)), rng.standard_normal((3, 2))
     Q = np.diag([1.0, 2.0, 3.0])
@@ -174,50 +159,27 @@ def test_linear_model_certificates_with_time_varying_kappa(lti_trajectory):
     assert hc.certify(sol, hc.Signal(1.0), Q).p_min > np.linalg.eigvalsh(Q)[0] + 0.1  # strictly above Q's
 
 
-def test_ship_remainder_bound_is_a_bound(paper_design, paper_trajectory):
-    """|f(q_d + e) - f(q_d) - A_e e| <= L |e|^2 (NumPy ship, hand-written Jacobian) at 6000
-    random times, directions (dense and sparse) and radii 1e-4 .. 10 (the bound is global);
-    L = remainder_L, the largest L(t) of the run. The bound is not vacuous: the worst sampled
-    ratio is above half of it (measured 1.00 against L = 1.459)."""
+def test_ship_remainder_bound_is_the_derivation(paper_design, paper_trajectory):
+    """remainder_L is the largest L(t) over the run of the derivation in ship_L, on a fine grid
+    (that L |e|^2 bounds remainders sampled at 6000 random times, directions and radii:
+    tests/cpp/test_certificates.cpp)."""
     c = hc.certify(paper_design, 1.0, EYE6)
     assert c.remainder_is_bound and "analytic" in c.remainder_method
-    L = c.remainder_L
-    rng = np.random.default_rng(2024)
-    worst = 0.0
-    for k in range(6000):
-        t = rng.uniform(0.0, 40.0)
-        q_d = paper_trajectory.q_d(t)
-        e = np.zeros(6)
-        if k % 2:
-            e = rng.standard_normal(6)
-        else:
-            idx = rng.choice(6, size=rng.integers(2, 4), replace=False)
-            e[idx] = rng.standard_normal(idx.size)
-        radius = 10.0 ** rng.uniform(-4.0, 1.0)
-        e *= radius / np.linalg.norm(e)
-        r = ship_drift(q_d + e) - ship_drift(q_d) - ship_jacobian(q_d) @ e
-        ratio = np.linalg.norm(r) / radius**2
-        assert ratio <= L * (1 + 1e-9), (t, e, ratio, L)
-        worst = max(worst, ratio)
-    assert worst > 0.5 * L
-    # remainder_L is the largest L(t) over the run (the derivation in ship_L, on a fine grid).
     times = fine_times(paper_design)
-    assert ship_L(paper_trajectory.q_d(times)).max() == pytest.approx(L, rel=1e-9)
+    assert ship_L(paper_trajectory.q_d(times)).max() == pytest.approx(c.remainder_L, rel=1e-9)
 
 
-def test_epsilon_attraction_radius_and_decay_rate(paper_design, paper_grid, paper_trajectory):
-    """(24): epsilon = min_t p(t) / (4 M L(t)) (NumPy, p and L on the fine grid; measured
-    0.0082336, at t = 5.76), the attraction radius epsilon sqrt(m / M) and the decay rate
-    p_min / (2 M)."""
-    times, Z = paper_grid
+def test_epsilon_attraction_radius_and_decay_rate(paper_design):
+    """(24): epsilon = min_t p(t) / (4 M L(t)) with p = 1 here (kappa = 1), so epsilon =
+    1 / (4 M max L(t)) (measured 0.0082336; its place and the minimum over a grid:
+    tests/cpp/test_certificates.cpp), the attraction radius epsilon sqrt(m / M), the decay rate
+    p_min / (2 M), and scenario_certificates of paper_fig1.toml."""
     c = hc.certify(paper_design, 1.0, EYE6)
-    p = p_of_t(Z, SHIP_B, SHIP_D, EYE6, 1.0, 5.0)
-    ratio = p / (4.0 * c.M * ship_L(paper_trajectory.q_d(times)))
-    assert c.epsilon > 0.0
-    # p (>= 1 here) carries the round-off of two eigenvalue algorithms, relative p_roundoff / p.
-    slack = p_roundoff(Z, SHIP_B, SHIP_D, EYE6, 1.0, 5.0) / p.min() + ROUNDOFF
-    assert ratio.min() * (1 - 1e-8) <= c.epsilon <= ratio.min() * (1 + slack)
-    assert c.epsilon_t == pytest.approx(times[np.argmin(ratio)], abs=0.01)
+    # With p = 1 at every time, the smallest ratio is at the largest L(t), remainder_L: equal up
+    # to the round-off of p (|P| <= 1 + 1.04 M^2, see above) and of the quotient.
+    expected = 1.0 / (4.0 * c.M * c.remainder_L)
+    assert c.epsilon == pytest.approx(expected, rel=ROUNDOFF * (1.0 + 1.04 * c.M**2) + ROUNDOFF)
+    assert 0.0 <= c.epsilon_t <= 40.0
     # The formulas of (24) evaluated here and in the library: round-off apart.
     assert c.attraction_radius == pytest.approx(c.epsilon * math.sqrt(c.m / c.M), rel=ROUNDOFF)
     assert c.decay_rate == pytest.approx(c.p_min / (2.0 * c.M), rel=ROUNDOFF)
@@ -225,43 +187,10 @@ def test_epsilon_attraction_radius_and_decay_rate(paper_design, paper_grid, pape
         c.epsilon, rel=1e-6)
 
 
-@pytest.mark.parametrize("kappa", [1.0, 0.5, 2.0])
-@pytest.mark.parametrize("start", ["attraction_radius", "epsilon"])
-def test_closed_loops_decay_at_the_certified_rate(paper_design, paper_trajectory, kappa, start):
-    """No disturbance, u = u_d - kappa B' Z q_e, |q_e(t0)| = attraction_radius (certified: the
-    error stays in the epsilon-ball and V(t) <= V(t0) exp(-decay_rate (t - t0))) in 12 random
-    directions; also from |q_e(t0)| = epsilon, beyond the certificate (V(t0) may exceed
-    m epsilon^2), for information. Also step by step: V(t + dt) <= V(t) exp(-decay_rate dt),
-    with 1e-12 absolute slack (V(t0) ~ 1e-6; below ~1e-18 V is integration noise).
-    Measured: the slowest average rate over the runs is 0.52 (kappa = 1), 0.16 (kappa = 1/2),
-    0.63 (kappa = 2), from either start, against the certified 0.0240; |q_e| grows at most to
-    1.45 |q_e(t0)| (the ball's radius is 9.8 attraction radii)."""
-    c = hc.certify(paper_design, hc.Signal(kappa), EYE6)
-    radius = getattr(c, start)
-    controller = hc.HinfStateFeedback(paper_design, hc.Signal(kappa))
-    options = hc.SolverOptions(method="erk", rtol=1e-10, atol=1e-14)
-    rng = np.random.default_rng(1999)
-    for _ in range(12):
-        e = rng.standard_normal(6)
-        e *= radius / np.linalg.norm(e)
-        run = hc.simulate_state_feedback(paper_trajectory, controller, None, PAPER_Q_D0 + e,
-                                         hc.SimulationOptions(output_dt=0.01, solver=options))
-        q_e = run.q_e()
-        # q_e(t0) = (q_d0 + e) - q_d0: e was rounded once when added to q_d0 (|q_d0| = 1), an
-        # absolute error of eps/2 per entry (2.6e-13 relative to the radius 8.4e-4).
-        assert np.linalg.norm(q_e[0]) == pytest.approx(radius, abs=2.0 * EPS * np.max(np.abs(PAPER_Q_D0)))
-        V = np.einsum("ki,kij,kj->k", q_e, paper_design.Z(run.t), q_e)
-        bound = V[0] * np.exp(-c.decay_rate * (run.t - run.t[0]))
-        assert np.all(V <= bound + 1e-9), np.max(V - bound)
-        assert np.all(V[1:] <= V[:-1] * np.exp(-c.decay_rate * np.diff(run.t)) + 1e-12)
-        if start == "attraction_radius":
-            assert np.max(np.linalg.norm(q_e, axis=1)) <= c.epsilon
-
-
 def test_sampled_remainder_for_a_model_without_a_bound():
-    """A model with no remainder_bound (a Python model): the certificate samples |r| / |e|^2
+    """A model written in Python, without remainder_bound: the certificate samples |r| / |e|^2
     and says it is not a bound. For f(q) = -q + q^2 the remainder is exactly e^2, so the
-    sampled L is exactly 1 and epsilon = min p / (4 M)."""
+    sampled L is exactly 1 (and epsilon = min p / (4 M): tests/cpp/test_certificates.cpp)."""
 
     class Quadratic(hc.Model):
         def __init__(self):
@@ -298,9 +227,7 @@ def test_sampled_remainder_for_a_model_without_a_bound():
     # r = e^2 exactly; computed as a difference of values of f ~ 1 at radii >= 0.01 it carries
     # round-off of a few eps / 0.01^2 ~ 1e-11 relative.
     assert c.remainder_L == pytest.approx(1.0, rel=1e-9)
-    times = fine_times(sol, 3001)
-    p = p_of_t(sol.Z(times), np.eye(1), np.eye(1), np.eye(1), 1.0, 2.0)
-    assert c.epsilon == pytest.approx(p.min() / (4.0 * c.M), rel=1e-8)
+    assert 0.0 < c.epsilon < math.inf
 
 
 # ==== attenuation against gamma (paper eq. 12) on an LTI plant ====
@@ -356,16 +283,6 @@ def numpy_cost_and_gain(run, Q, Qf, gamma):
     ww = np.sum(w**2, axis=1)
     cost = np.trapezoid(x - gamma**2 * ww, sim.t) + q_e[-1] @ Qf @ q_e[-1]
     return cost, math.sqrt(np.trapezoid(x, sim.t) / np.trapezoid(ww, sim.t))
-
-
-def completed_square(run, D, gamma):
-    """q_e(t0)' Z(t0) q_e(t0) - gamma^2 int |w - gamma^-2 D' Z q_e|^2 dt (trapezoid)."""
-    sim = run.simulation
-    q_e = sim.q - sim.q_d
-    Z = run.solution.Z(sim.t)
-    w_star = np.einsum("ji,kjl,kl->ki", D, Z, q_e) / gamma**2
-    v = sim.w - w_star
-    return q_e[0] @ Z[0] @ q_e[0] - gamma**2 * np.trapezoid(np.sum(v**2, axis=1), sim.t)
 
 
 LTI_Q, LTI_QF = np.array([[1.0, 0.2], [0.2, 2.0]]), 0.5 * np.eye(2)
@@ -425,23 +342,16 @@ def test_sweep_gain_below_gamma_and_cost_nonpositive(sweeps, name):
 
 
 @pytest.mark.parametrize("worst_case", [False, True])
-@pytest.mark.parametrize("q0", [(0.0, 0.0), (0.5, -0.5)])
-def test_cost_L_gamma_against_numpy_and_the_completed_square(worst_case, q0):
-    """cost_L_gamma equals a NumPy trapezoid of the time series; and L_gamma equals
-    q_e(t0)' Z(t0) q_e(t0) - gamma^2 |w - gamma^-2 D' Z q_e|^2 (measured within 1e-7 of
-    gamma^2 |w|^2, the size of the terms, at dt = 0.002), at gamma = 2.2 (gamma* = 1.70)."""
-    scenario = lti_scenario(worst_case=worst_case, q0=q0)
+def test_cost_L_gamma_against_numpy(worst_case):
+    """cost_L_gamma equals a NumPy trapezoid of the time series of a run from a nonzero initial
+    error (so every term counts), at gamma = 2.2 (gamma* = 1.70). (L_gamma against the completed
+    square and the library's l2_gain against the series: tests/cpp/test_certificates.cpp.)"""
+    scenario = lti_scenario(worst_case=worst_case, q0=(0.5, -0.5))
     scenario.gamma = 2.2
     run = hc.run_scenario(scenario)
-    cost, gain = numpy_cost_and_gain(run, LTI_Q, LTI_QF, 2.2)
+    cost, _ = numpy_cost_and_gain(run, LTI_Q, LTI_QF, 2.2)
     # The same NumPy expression on the same arrays (1e-12 allows for another order of sums).
     assert cost_L_gamma(run, LTI_Q, LTI_QF) == pytest.approx(cost, rel=1e-12, abs=1e-12)
-    # The library's C++ trapezoid sums against NumPy's: summation round-off only.
-    assert run.metrics.l2_gain == pytest.approx(gain, rel=summation_rtol(run.simulation.t.size))
-    scale = 2.2**2 * np.trapezoid(np.sum(run.simulation.w**2, axis=1), run.simulation.t)
-    assert abs(cost - completed_square(run, LTI_D, 2.2)) < 1e-5 * scale
-    if q0 == (0.0, 0.0):
-        assert cost <= 0.0 and gain <= 2.2
 
 
 def test_sweep_figure_and_bad_arguments(sweeps, tmp_path):

@@ -1,5 +1,11 @@
 """Models: the ship against docs/mathematics.md and finite differences, the error split (26)-(31),
-Python-subclassed models, and the desired trajectory against independent integrations."""
+Python-subclassed models, and the desired trajectory against independent integrations.
+
+tests/cpp/test_model.cpp and test_simulation.cpp check the ship with its default parameters
+(the Jacobian against central differences, the exact error split, the desired trajectory
+against an RK4); here: one evaluation through the binding, the other parameters (where
+m_u != m_r and d_u != d_r, so a mix-up of parameters shows), the decomposition of the design,
+models written in Python, and trajectories from Python."""
 
 from __future__ import annotations
 
@@ -39,16 +45,15 @@ def ship_and_parameters(request):
 # ---- the ship ----
 
 def test_ship_drift_is_the_design_equations(ship_and_parameters):
+    """One state per parameter set: the parameters and the state reach f (the equations at
+    other states: tests/cpp/test_model.cpp)."""
     model, p = ship_and_parameters
     rng = np.random.default_rng(11)
-    for _ in range(30):
-        q = random_ship_state(rng)
-        t = rng.uniform(-10.0, 50.0)
-        expected = ship_drift(q, p)
-        # C++ against NumPy: round-off of the terms, products of two states (|q| <= 8) and a
-        # parameter (<= 2.5).
-        terms = 2.5 * (1.0 + np.max(np.abs(q))) ** 2
-        np.testing.assert_allclose(model.f(t, q), expected, rtol=0, atol=ROUNDOFF * terms)
+    q = random_ship_state(rng)
+    # C++ against NumPy: round-off of the terms, products of two states (|q| <= 8) and a
+    # parameter (<= 2.5).
+    terms = 2.5 * (1.0 + np.max(np.abs(q))) ** 2
+    np.testing.assert_allclose(model.f(7.5, q), ship_drift(q, p), rtol=0, atol=ROUNDOFF * terms)
     assert (model.n(), model.m(), model.nw()) == (6, 2, 6)
     # B = [e1, e3]; D = diag(1, 1, 1, 0, 0, 0) (w4..w6 are measurement-noise channels).
     np.testing.assert_array_equal(model.G(0.0, np.zeros(model.n())), SHIP_B)  # constant 0/1 matrices: exact
@@ -67,8 +72,9 @@ def test_ship_parameters_roundtrip():
         hc.ShipModel(hc.ShipParameters(m_v=float("nan")))
 
 
-def test_ship_jacobian_matches_central_differences(ship_and_parameters):
-    model, _ = ship_and_parameters
+def test_ship_jacobian_matches_central_differences():
+    """The other parameters (the default ones: tests/cpp/test_model.cpp)."""
+    model = hc.ShipModel(hc.ShipParameters(**OTHER_PARAMETERS))
     rng = np.random.default_rng(20240601)
     for _ in range(40):
         q = random_ship_state(rng)
@@ -105,9 +111,9 @@ def check_error_split(model: hc.Model, rng: np.random.Generator, trials: int = 4
         np.testing.assert_allclose(alpha0, 0.0, rtol=0, atol=ROUNDOFF * (1.0 + np.max(np.abs(f_desired))))
 
 
-def test_ship_error_split_identities(ship_and_parameters):
-    model, _ = ship_and_parameters
-    check_error_split(model, np.random.default_rng(99))
+def test_ship_error_split_identities():
+    """The other parameters (the default ones: tests/cpp/test_model.cpp)."""
+    check_error_split(hc.ShipModel(hc.ShipParameters(**OTHER_PARAMETERS)), np.random.default_rng(99))
 
 
 def design_split(q_d, q_e, p):
@@ -271,26 +277,18 @@ def test_python_linear_model_gives_the_same_grde_as_linear_model(n, method):
 
 # ---- the desired trajectory (paper eq. 8) ----
 
-def test_paper_trajectory_matches_an_independent_integration(paper_trajectory):
-    """q_d(t) against SciPy's DOP853 on the docs/mathematics.md equations, and A_e(t) against finite
-    differences of the NumPy drift at that q_d(t)."""
-
-    def rhs(t, q):
-        return ship_drift(q) + SHIP_B @ paper_u_d(t)
-
-    ref = solve_ivp(rhs, (0.0, 40.0), PAPER_Q_D0, method="DOP853", rtol=1e-13, atol=1e-13,
-                    dense_output=True)
-    assert ref.success
+def test_paper_trajectory_at_arrays_of_times(paper_trajectory):
+    """q_d, u_d and A_e at an array of times (q_d against an RK4 and A_e against the Jacobian:
+    tests/cpp/test_simulation.cpp): their shapes, u_d the paper's, A_e the model's Jacobian at
+    q_d, and a scalar time giving the same interpolant."""
     times = np.linspace(0.0, 40.0, 1601)
-    q_ref = ref.sol(times).T
-    np.testing.assert_allclose(paper_trajectory.q_d(times), q_ref, rtol=0, atol=1e-8)
+    q_d, A_e = paper_trajectory.q_d(times), paper_trajectory.A_e(times)
+    assert q_d.shape == (times.size, 6) and A_e.shape == (times.size, 6, 6)
     # 0.3 sin(0.2 t) in C++ and in Python: round-off of 0.3.
     np.testing.assert_allclose(paper_trajectory.u_d(times),
                                np.array([paper_u_d(t) for t in times]), rtol=0, atol=ROUNDOFF * 0.3)
-    A_e = paper_trajectory.A_e(times[::40])
-    for k, t in enumerate(times[::40]):
-        J = central_jacobian(ship_drift, ref.sol(t))
-        np.testing.assert_allclose(A_e[k], J, rtol=0, atol=1e-7)
+    # The same code on the same q_d(t): equal.
+    np.testing.assert_array_equal(A_e[400], paper_trajectory.model().dfdq(times[400], q_d[400]))
     # Scalar-time and array-time evaluation agree (the same interpolant at the same time).
     np.testing.assert_array_equal(paper_trajectory.q_d(13.25), paper_trajectory.q_d(np.array([13.25]))[0])
 
