@@ -252,6 +252,7 @@ GeneratedFunction::GeneratedFunction(GeneratedLibraryPtr library, const std::str
   if (!checkout_ || !release_) checkout_ = nullptr, release_ = nullptr;
   uses_stack_ = !has_memory && sz_arg_ <= kStackPointers && sz_res_ <= kStackPointers && sz_iw_ <= kStackIntegers &&
                 sz_w_ + sparse_values_size_ <= kStackReals;
+  passes_through_ = uses_stack_ && sparse_values_size_ == 0 && sz_arg_ == n_in && sz_res_ == n_out;
   decref_ = as_function<RefFn>(library_->symbol(name_ + "_decref"));
   if (const auto incref = as_function<RefFn>(library_->symbol(name_ + "_incref"))) {
     std::lock_guard<std::mutex> lock(generated_code_mutex());
@@ -283,6 +284,15 @@ const GeneratedFunction::Port& GeneratedFunction::output(int i) const {
 }
 
 void GeneratedFunction::eval(const double* const* inputs, double* const* outputs) const {
+  if (passes_through_) {
+    // The generated code only reads arg[0..n_in) and res[0..n_out) (sz_arg = n_in, sz_res =
+    // n_out): the caller's arrays serve as they are.
+    CasadiInt iw[kStackIntegers];
+    CasadiReal w[kStackReals];
+    const int status = eval_(const_cast<const CasadiReal**>(inputs), const_cast<CasadiReal**>(outputs), iw, w, 0);
+    if (status != 0) throw_failure(status);
+    return;
+  }
   if (uses_stack_) {
     const CasadiReal* arg[kStackPointers];
     CasadiReal* res[kStackPointers];
@@ -318,9 +328,7 @@ void GeneratedFunction::eval_with(const Scratch& scratch, const double* const* i
     scratch.res[o] = port.dense || !outputs[o] ? outputs[o] : scratch.sparse_values + port.buffer_offset;
   }
   const int status = eval_(scratch.arg, scratch.res, scratch.iw, scratch.w, scratch.mem);
-  if (status != 0)
-    throw HinfError(str_cat("the generated function '", name_, "' in '", library_->path(), "' returned ", status,
-                            " (CasADi's failure flag: an evaluation failed, e.g. an embedded solver)"));
+  if (status != 0) throw_failure(status);
   for (std::size_t o = 0; o < outputs_.size(); ++o) {
     const Port& port = outputs_[o];
     if (port.dense || !outputs[o]) continue;
@@ -331,6 +339,11 @@ void GeneratedFunction::eval_with(const Scratch& scratch, const double* const* i
       for (CasadiInt k = port.colind[c]; k < port.colind[c + 1]; ++k)
         dense[port.row[k] + static_cast<CasadiInt>(c) * port.rows] = values[k];
   }
+}
+
+void GeneratedFunction::throw_failure(int status) const {
+  throw HinfError(str_cat("the generated function '", name_, "' in '", library_->path(), "' returned ", status,
+                          " (CasADi's failure flag: an evaluation failed, e.g. an embedded solver)"));
 }
 
 std::vector<Mat> GeneratedFunction::eval(const std::vector<Mat>& inputs) const {

@@ -478,9 +478,11 @@ def generated_c_source(kind: str) -> str:
     prefix = f"hinf_{kind}_"
     generator = ca.CodeGenerator(f"{kind}.c", dict(_GENERATOR_OPTIONS, prefix=prefix))
     for function in model.functions():
+        # Dense outputs (structural zeros written as zeros): the C++ core then passes its arrays
+        # straight through (GeneratedFunction::passes_through), with nothing to scatter.
         inputs = function.sx_in()
-        generator.add(ca.Function(prefix + function.name(), inputs, function.call(inputs),
-                                  function.name_in(), function.name_out()))
+        outputs = [ca.densify(output) for output in function.call(inputs)]
+        generator.add(ca.Function(prefix + function.name(), inputs, outputs, function.name_in(), function.name_out()))
     code = generator.dump()
     symbols = _EXPORTED.findall(code)
     defaults = [model.parameter_values[name] for name in model.parameter_names]

@@ -35,8 +35,6 @@
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
-#define casadi_s7 CASADI_PREFIX(s7)
-#define casadi_s8 CASADI_PREFIX(s8)
 #define casadi_sign CASADI_PREFIX(sign)
 
 /* Symbol visibility in DLLs */
@@ -77,18 +75,10 @@ CASADI_SYMBOL_EXPORT int hinf_auv__casadi_real_size(void) { return (int) sizeof(
 static const casadi_int casadi_s0[3] = {1, 1, 1};
 static const casadi_int casadi_s1[3] = {6, 1, 1};
 static const casadi_int casadi_s2[3] = {9, 1, 1};
-static const casadi_int casadi_s3[25] = 
-  {6, 6, 0, 5, 10, 14, 14, 14,
-  16, 0, 1, 2, 3, 4, 0, 1,
-  2, 3, 4, 0, 1, 2, 5, 3,
-  4};
+static const casadi_int casadi_s3[3] = {6, 6, 1};
 static const casadi_int casadi_s4[3] = {6, 2, 1};
-static const casadi_int casadi_s5[3] = {6, 6, 1};
-static const casadi_int casadi_s6[3] = {2, 1, 1};
-static const casadi_int casadi_s7[9] = 
-  {6, 6, 0, 0, 0, 0, 0, 0,
-  0};
-static const casadi_int casadi_s8[3] = {3, 6, 1};
+static const casadi_int casadi_s5[3] = {2, 1, 1};
+static const casadi_int casadi_s6[3] = {3, 6, 1};
 
 /* hinf_auv_f:(i0,i1[6],i2[9])->(o0[6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -229,9 +219,10 @@ CASADI_SYMBOL_EXPORT int hinf_auv_f_work_bytes(casadi_int *sz_arg, casadi_int* s
   return 0;
 }
 
-/* hinf_auv_dfdq:(i0,i1[6],i2[9])->(o0[6x6,16nz]) */
+/* hinf_auv_dfdq:(i0,i1[6],i2[9])->(o0[6x6]) */
 static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12;
   a00=arg[2]? arg[2][3] : 0;
   a01=arg[1]? arg[1][0] : 0;
   a02=arg[2]? arg[2][4] : 0;
@@ -263,36 +254,39 @@ static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][3]=a08;
   a08=sin(a06);
   if (res[0]!=0) res[0][4]=a08;
-  a08=(a00*a04);
-  a08=(a08/a03);
+  a08=0.;
   if (res[0]!=0) res[0][5]=a08;
-  a08=arg[2]? arg[2][5] : 0;
-  a09=arg[2]? arg[2][6] : 0;
-  a10=casadi_sign(a02);
-  a10=(a09*a10);
-  a10=(a02*a10);
-  a11=casadi_fabs(a02);
-  a09=(a09*a11);
-  a10=(a10+a09);
-  a08=(a08+a10);
-  a08=(a08/a04);
-  a08=(-a08);
-  if (res[0]!=0) res[0][6]=a08;
+  a09=(a00*a04);
+  a09=(a09/a03);
+  if (res[0]!=0) res[0][6]=a09;
+  a09=arg[2]? arg[2][5] : 0;
+  a10=arg[2]? arg[2][6] : 0;
+  a11=casadi_sign(a02);
+  a11=(a10*a11);
+  a11=(a02*a11);
+  a12=casadi_fabs(a02);
+  a10=(a10*a12);
+  a11=(a11+a10);
+  a09=(a09+a11);
+  a09=(a09/a04);
+  a09=(-a09);
+  if (res[0]!=0) res[0][7]=a09;
   a05=(a05*a01);
   a05=(a05/a07);
-  if (res[0]!=0) res[0][7]=a05;
+  if (res[0]!=0) res[0][8]=a05;
   a05=sin(a06);
   a05=(-a05);
-  if (res[0]!=0) res[0][8]=a05;
-  a05=cos(a06);
   if (res[0]!=0) res[0][9]=a05;
+  a05=cos(a06);
+  if (res[0]!=0) res[0][10]=a05;
+  if (res[0]!=0) res[0][11]=a08;
   a05=(a04*a02);
   a05=(a05/a03);
-  if (res[0]!=0) res[0][10]=a05;
+  if (res[0]!=0) res[0][12]=a05;
   a03=(a03*a01);
   a03=(a03/a04);
   a03=(-a03);
-  if (res[0]!=0) res[0][11]=a03;
+  if (res[0]!=0) res[0][13]=a03;
   a03=arg[2]? arg[2][7] : 0;
   a04=arg[2]? arg[2][8] : 0;
   a05=casadi_sign(a00);
@@ -304,22 +298,40 @@ static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a03=(a03+a05);
   a03=(a03/a07);
   a03=(-a03);
-  if (res[0]!=0) res[0][12]=a03;
+  if (res[0]!=0) res[0][14]=a03;
+  if (res[0]!=0) res[0][15]=a08;
+  if (res[0]!=0) res[0][16]=a08;
   a03=1.;
-  if (res[0]!=0) res[0][13]=a03;
+  if (res[0]!=0) res[0][17]=a03;
+  if (res[0]!=0) res[0][18]=a08;
+  if (res[0]!=0) res[0][19]=a08;
+  if (res[0]!=0) res[0][20]=a08;
+  if (res[0]!=0) res[0][21]=a08;
+  if (res[0]!=0) res[0][22]=a08;
+  if (res[0]!=0) res[0][23]=a08;
+  if (res[0]!=0) res[0][24]=a08;
+  if (res[0]!=0) res[0][25]=a08;
+  if (res[0]!=0) res[0][26]=a08;
+  if (res[0]!=0) res[0][27]=a08;
+  if (res[0]!=0) res[0][28]=a08;
+  if (res[0]!=0) res[0][29]=a08;
+  if (res[0]!=0) res[0][30]=a08;
+  if (res[0]!=0) res[0][31]=a08;
+  if (res[0]!=0) res[0][32]=a08;
   a03=sin(a06);
   a03=(a01*a03);
   a07=cos(a06);
   a07=(a02*a07);
   a03=(a03+a07);
   a03=(-a03);
-  if (res[0]!=0) res[0][14]=a03;
+  if (res[0]!=0) res[0][33]=a03;
   a03=cos(a06);
   a01=(a01*a03);
   a06=sin(a06);
   a02=(a02*a06);
   a01=(a01-a02);
-  if (res[0]!=0) res[0][15]=a01;
+  if (res[0]!=0) res[0][34]=a01;
+  if (res[0]!=0) res[0][35]=a08;
   return 0;
 }
 
@@ -599,7 +611,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_D_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_D_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s3;
     default: return 0;
   }
 }
@@ -620,8 +632,46 @@ CASADI_SYMBOL_EXPORT int hinf_auv_D_work_bytes(casadi_int *sz_arg, casadi_int* s
   return 0;
 }
 
-/* hinf_auv_dGudq:(i0,i1[6],i2[2],i3[9])->(o0[6x6,0nz]) */
+/* hinf_auv_dGudq:(i0,i1[6],i2[2],i3[9])->(o0[6x6]) */
 static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  if (res[0]!=0) res[0][1]=a0;
+  if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  if (res[0]!=0) res[0][4]=a0;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  if (res[0]!=0) res[0][8]=a0;
+  if (res[0]!=0) res[0][9]=a0;
+  if (res[0]!=0) res[0][10]=a0;
+  if (res[0]!=0) res[0][11]=a0;
+  if (res[0]!=0) res[0][12]=a0;
+  if (res[0]!=0) res[0][13]=a0;
+  if (res[0]!=0) res[0][14]=a0;
+  if (res[0]!=0) res[0][15]=a0;
+  if (res[0]!=0) res[0][16]=a0;
+  if (res[0]!=0) res[0][17]=a0;
+  if (res[0]!=0) res[0][18]=a0;
+  if (res[0]!=0) res[0][19]=a0;
+  if (res[0]!=0) res[0][20]=a0;
+  if (res[0]!=0) res[0][21]=a0;
+  if (res[0]!=0) res[0][22]=a0;
+  if (res[0]!=0) res[0][23]=a0;
+  if (res[0]!=0) res[0][24]=a0;
+  if (res[0]!=0) res[0][25]=a0;
+  if (res[0]!=0) res[0][26]=a0;
+  if (res[0]!=0) res[0][27]=a0;
+  if (res[0]!=0) res[0][28]=a0;
+  if (res[0]!=0) res[0][29]=a0;
+  if (res[0]!=0) res[0][30]=a0;
+  if (res[0]!=0) res[0][31]=a0;
+  if (res[0]!=0) res[0][32]=a0;
+  if (res[0]!=0) res[0][33]=a0;
+  if (res[0]!=0) res[0][34]=a0;
+  if (res[0]!=0) res[0][35]=a0;
   return 0;
 }
 
@@ -673,7 +723,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_dGudq_sparsity_in(casadi_int i) 
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s1;
-    case 2: return casadi_s6;
+    case 2: return casadi_s5;
     case 3: return casadi_s2;
     default: return 0;
   }
@@ -681,7 +731,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_dGudq_sparsity_in(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_dGudq_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s3;
     default: return 0;
   }
 }
@@ -780,7 +830,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_C_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_auv_C_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s8;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }

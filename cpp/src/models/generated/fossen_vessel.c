@@ -34,8 +34,6 @@
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
-#define casadi_s7 CASADI_PREFIX(s7)
-#define casadi_s8 CASADI_PREFIX(s8)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -64,18 +62,10 @@ CASADI_SYMBOL_EXPORT int hinf_fossen_vessel__casadi_real_size(void) { return (in
 static const casadi_int casadi_s0[3] = {1, 1, 1};
 static const casadi_int casadi_s1[3] = {6, 1, 1};
 static const casadi_int casadi_s2[3] = {27, 1, 1};
-static const casadi_int casadi_s3[25] = 
-  {6, 6, 0, 5, 10, 14, 14, 14,
-  16, 0, 1, 2, 3, 4, 0, 1,
-  2, 3, 4, 0, 1, 2, 5, 3,
-  4};
+static const casadi_int casadi_s3[3] = {6, 6, 1};
 static const casadi_int casadi_s4[3] = {6, 2, 1};
-static const casadi_int casadi_s5[3] = {6, 6, 1};
-static const casadi_int casadi_s6[3] = {2, 1, 1};
-static const casadi_int casadi_s7[9] = 
-  {6, 6, 0, 0, 0, 0, 0, 0,
-  0};
-static const casadi_int casadi_s8[3] = {3, 6, 1};
+static const casadi_int casadi_s5[3] = {2, 1, 1};
+static const casadi_int casadi_s6[3] = {3, 6, 1};
 
 /* hinf_fossen_vessel_f:(i0,i1[6],i2[27])->(o0[6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -253,10 +243,10 @@ CASADI_SYMBOL_EXPORT int hinf_fossen_vessel_f_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* hinf_fossen_vessel_dfdq:(i0,i1[6],i2[27])->(o0[6x6,16nz]) */
+/* hinf_fossen_vessel_dfdq:(i0,i1[6],i2[27])->(o0[6x6]) */
 static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   a00=arg[2]? arg[2][18] : 0;
   a01=arg[2]? arg[2][9] : 0;
   a02=arg[1]? arg[1][2] : 0;
@@ -316,100 +306,121 @@ static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][3]=a10;
   a10=sin(a01);
   if (res[0]!=0) res[0][4]=a10;
-  a10=arg[2]? arg[2][10] : 0;
-  a18=(a02*a11);
-  a10=(a10-a18);
-  a18=(a00*a10);
-  a19=arg[2]? arg[2][1] : 0;
-  a20=(a02*a19);
-  a21=arg[2]? arg[2][13] : 0;
-  a20=(a20+a21);
-  a21=(a05*a20);
-  a18=(a18+a21);
+  a10=0.;
+  if (res[0]!=0) res[0][5]=a10;
+  a18=arg[2]? arg[2][10] : 0;
+  a19=(a02*a11);
+  a18=(a18-a19);
+  a19=(a00*a18);
+  a20=arg[2]? arg[2][1] : 0;
+  a21=(a02*a20);
+  a22=arg[2]? arg[2][13] : 0;
+  a21=(a21+a22);
+  a22=(a05*a21);
+  a19=(a19+a22);
   a11=(a09*a11);
-  a21=(a12*a19);
+  a22=(a12*a20);
   a06=(a06*a09);
-  a19=(a19*a12);
-  a06=(a06+a19);
-  a19=arg[2]? arg[2][2] : 0;
-  a22=(a19*a02);
-  a06=(a06+a22);
-  a21=(a21+a06);
-  a11=(a11-a21);
-  a21=arg[2]? arg[2][16] : 0;
-  a11=(a11+a21);
-  a21=(a08*a11);
+  a20=(a20*a12);
+  a06=(a06+a20);
+  a20=arg[2]? arg[2][2] : 0;
+  a23=(a20*a02);
+  a06=(a06+a23);
+  a22=(a22+a06);
+  a11=(a11-a22);
+  a22=arg[2]? arg[2][16] : 0;
+  a11=(a11+a22);
+  a22=(a08*a11);
+  a19=(a19+a22);
+  a19=(-a19);
+  if (res[0]!=0) res[0][6]=a19;
+  a19=(a04*a18);
+  a22=(a15*a21);
+  a19=(a19+a22);
+  a22=(a16*a11);
+  a19=(a19+a22);
+  a19=(-a19);
+  if (res[0]!=0) res[0][7]=a19;
+  a18=(a14*a18);
+  a21=(a17*a21);
   a18=(a18+a21);
-  a18=(-a18);
-  if (res[0]!=0) res[0][5]=a18;
-  a18=(a04*a10);
-  a21=(a15*a20);
-  a18=(a18+a21);
-  a21=(a16*a11);
-  a18=(a18+a21);
-  a18=(-a18);
-  if (res[0]!=0) res[0][6]=a18;
-  a10=(a14*a10);
-  a20=(a17*a20);
-  a10=(a10+a20);
   a11=(a07*a11);
-  a10=(a10+a11);
-  a10=(-a10);
-  if (res[0]!=0) res[0][7]=a10;
-  a10=sin(a01);
-  a10=(-a10);
-  if (res[0]!=0) res[0][8]=a10;
-  a10=cos(a01);
-  if (res[0]!=0) res[0][9]=a10;
-  a10=arg[2]? arg[2][11] : 0;
+  a18=(a18+a11);
+  a18=(-a18);
+  if (res[0]!=0) res[0][8]=a18;
+  a18=sin(a01);
+  a18=(-a18);
+  if (res[0]!=0) res[0][9]=a18;
+  a18=cos(a01);
+  if (res[0]!=0) res[0][10]=a18;
+  if (res[0]!=0) res[0][11]=a10;
+  a18=arg[2]? arg[2][11] : 0;
   a11=(a02*a13);
   a11=(a11+a03);
-  a10=(a10-a11);
-  a00=(a00*a10);
-  a02=(a02*a19);
+  a18=(a18-a11);
+  a00=(a00*a18);
+  a02=(a02*a20);
   a02=(a02+a06);
   a06=arg[2]? arg[2][14] : 0;
   a02=(a02+a06);
   a05=(a05*a02);
   a00=(a00+a05);
   a13=(a09*a13);
-  a19=(a12*a19);
-  a13=(a13-a19);
-  a19=arg[2]? arg[2][17] : 0;
-  a13=(a13+a19);
+  a20=(a12*a20);
+  a13=(a13-a20);
+  a20=arg[2]? arg[2][17] : 0;
+  a13=(a13+a20);
   a08=(a08*a13);
   a00=(a00+a08);
   a00=(-a00);
-  if (res[0]!=0) res[0][10]=a00;
-  a04=(a04*a10);
+  if (res[0]!=0) res[0][12]=a00;
+  a04=(a04*a18);
   a15=(a15*a02);
   a04=(a04+a15);
   a16=(a16*a13);
   a04=(a04+a16);
   a04=(-a04);
-  if (res[0]!=0) res[0][11]=a04;
-  a14=(a14*a10);
+  if (res[0]!=0) res[0][13]=a04;
+  a14=(a14*a18);
   a17=(a17*a02);
   a14=(a14+a17);
   a07=(a07*a13);
   a14=(a14+a07);
   a14=(-a14);
-  if (res[0]!=0) res[0][12]=a14;
+  if (res[0]!=0) res[0][14]=a14;
+  if (res[0]!=0) res[0][15]=a10;
+  if (res[0]!=0) res[0][16]=a10;
   a14=1.;
-  if (res[0]!=0) res[0][13]=a14;
+  if (res[0]!=0) res[0][17]=a14;
+  if (res[0]!=0) res[0][18]=a10;
+  if (res[0]!=0) res[0][19]=a10;
+  if (res[0]!=0) res[0][20]=a10;
+  if (res[0]!=0) res[0][21]=a10;
+  if (res[0]!=0) res[0][22]=a10;
+  if (res[0]!=0) res[0][23]=a10;
+  if (res[0]!=0) res[0][24]=a10;
+  if (res[0]!=0) res[0][25]=a10;
+  if (res[0]!=0) res[0][26]=a10;
+  if (res[0]!=0) res[0][27]=a10;
+  if (res[0]!=0) res[0][28]=a10;
+  if (res[0]!=0) res[0][29]=a10;
+  if (res[0]!=0) res[0][30]=a10;
+  if (res[0]!=0) res[0][31]=a10;
+  if (res[0]!=0) res[0][32]=a10;
   a14=sin(a01);
   a14=(a09*a14);
   a07=cos(a01);
   a07=(a12*a07);
   a14=(a14+a07);
   a14=(-a14);
-  if (res[0]!=0) res[0][14]=a14;
+  if (res[0]!=0) res[0][33]=a14;
   a14=cos(a01);
   a09=(a09*a14);
   a01=sin(a01);
   a12=(a12*a01);
   a09=(a09-a12);
-  if (res[0]!=0) res[0][15]=a09;
+  if (res[0]!=0) res[0][34]=a09;
+  if (res[0]!=0) res[0][35]=a10;
   return 0;
 }
 
@@ -694,7 +705,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_D_sparsity_in(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_D_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s3;
     default: return 0;
   }
 }
@@ -715,8 +726,46 @@ CASADI_SYMBOL_EXPORT int hinf_fossen_vessel_D_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* hinf_fossen_vessel_dGudq:(i0,i1[6],i2[2],i3[27])->(o0[6x6,0nz]) */
+/* hinf_fossen_vessel_dGudq:(i0,i1[6],i2[2],i3[27])->(o0[6x6]) */
 static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  if (res[0]!=0) res[0][1]=a0;
+  if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  if (res[0]!=0) res[0][4]=a0;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  if (res[0]!=0) res[0][8]=a0;
+  if (res[0]!=0) res[0][9]=a0;
+  if (res[0]!=0) res[0][10]=a0;
+  if (res[0]!=0) res[0][11]=a0;
+  if (res[0]!=0) res[0][12]=a0;
+  if (res[0]!=0) res[0][13]=a0;
+  if (res[0]!=0) res[0][14]=a0;
+  if (res[0]!=0) res[0][15]=a0;
+  if (res[0]!=0) res[0][16]=a0;
+  if (res[0]!=0) res[0][17]=a0;
+  if (res[0]!=0) res[0][18]=a0;
+  if (res[0]!=0) res[0][19]=a0;
+  if (res[0]!=0) res[0][20]=a0;
+  if (res[0]!=0) res[0][21]=a0;
+  if (res[0]!=0) res[0][22]=a0;
+  if (res[0]!=0) res[0][23]=a0;
+  if (res[0]!=0) res[0][24]=a0;
+  if (res[0]!=0) res[0][25]=a0;
+  if (res[0]!=0) res[0][26]=a0;
+  if (res[0]!=0) res[0][27]=a0;
+  if (res[0]!=0) res[0][28]=a0;
+  if (res[0]!=0) res[0][29]=a0;
+  if (res[0]!=0) res[0][30]=a0;
+  if (res[0]!=0) res[0][31]=a0;
+  if (res[0]!=0) res[0][32]=a0;
+  if (res[0]!=0) res[0][33]=a0;
+  if (res[0]!=0) res[0][34]=a0;
+  if (res[0]!=0) res[0][35]=a0;
   return 0;
 }
 
@@ -768,7 +817,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_dGudq_sparsity_in(casa
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s1;
-    case 2: return casadi_s6;
+    case 2: return casadi_s5;
     case 3: return casadi_s2;
     default: return 0;
   }
@@ -776,7 +825,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_dGudq_sparsity_in(casa
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_dGudq_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s3;
     default: return 0;
   }
 }
@@ -875,7 +924,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_C_sparsity_in(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_fossen_vessel_C_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s8;
+    case 0: return casadi_s6;
     default: return 0;
   }
 }

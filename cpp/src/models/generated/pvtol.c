@@ -33,8 +33,6 @@
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
-#define casadi_s6 CASADI_PREFIX(s6)
-#define casadi_s7 CASADI_PREFIX(s7)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -63,15 +61,9 @@ CASADI_SYMBOL_EXPORT int hinf_pvtol__casadi_real_size(void) { return (int) sizeo
 static const casadi_int casadi_s0[3] = {1, 1, 1};
 static const casadi_int casadi_s1[3] = {6, 1, 1};
 static const casadi_int casadi_s2[3] = {2, 1, 1};
-static const casadi_int casadi_s3[12] = 
-  {6, 6, 0, 0, 0, 0, 1, 2,
-  3, 0, 1, 2};
+static const casadi_int casadi_s3[3] = {6, 6, 1};
 static const casadi_int casadi_s4[3] = {6, 2, 1};
-static const casadi_int casadi_s5[3] = {6, 6, 1};
-static const casadi_int casadi_s6[11] = 
-  {6, 6, 0, 0, 0, 2, 2, 2,
-  2, 3, 4};
-static const casadi_int casadi_s7[3] = {3, 6, 1};
+static const casadi_int casadi_s5[3] = {3, 6, 1};
 
 /* hinf_pvtol_f:(i0,i1[6],i2[2])->(o0[6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -166,13 +158,47 @@ CASADI_SYMBOL_EXPORT int hinf_pvtol_f_work_bytes(casadi_int *sz_arg, casadi_int*
   return 0;
 }
 
-/* hinf_pvtol_dfdq:(i0,i1[6],i2[2])->(o0[6x6,3nz]) */
+/* hinf_pvtol_dfdq:(i0,i1[6],i2[2])->(o0[6x6]) */
 static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0;
-  a0=1.;
+  casadi_real a0, a1;
+  a0=0.;
   if (res[0]!=0) res[0][0]=a0;
   if (res[0]!=0) res[0][1]=a0;
   if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  if (res[0]!=0) res[0][4]=a0;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  if (res[0]!=0) res[0][8]=a0;
+  if (res[0]!=0) res[0][9]=a0;
+  if (res[0]!=0) res[0][10]=a0;
+  if (res[0]!=0) res[0][11]=a0;
+  if (res[0]!=0) res[0][12]=a0;
+  if (res[0]!=0) res[0][13]=a0;
+  if (res[0]!=0) res[0][14]=a0;
+  if (res[0]!=0) res[0][15]=a0;
+  if (res[0]!=0) res[0][16]=a0;
+  if (res[0]!=0) res[0][17]=a0;
+  a1=1.;
+  if (res[0]!=0) res[0][18]=a1;
+  if (res[0]!=0) res[0][19]=a0;
+  if (res[0]!=0) res[0][20]=a0;
+  if (res[0]!=0) res[0][21]=a0;
+  if (res[0]!=0) res[0][22]=a0;
+  if (res[0]!=0) res[0][23]=a0;
+  if (res[0]!=0) res[0][24]=a0;
+  if (res[0]!=0) res[0][25]=a1;
+  if (res[0]!=0) res[0][26]=a0;
+  if (res[0]!=0) res[0][27]=a0;
+  if (res[0]!=0) res[0][28]=a0;
+  if (res[0]!=0) res[0][29]=a0;
+  if (res[0]!=0) res[0][30]=a0;
+  if (res[0]!=0) res[0][31]=a0;
+  if (res[0]!=0) res[0][32]=a1;
+  if (res[0]!=0) res[0][33]=a0;
+  if (res[0]!=0) res[0][34]=a0;
+  if (res[0]!=0) res[0][35]=a0;
   return 0;
 }
 
@@ -451,7 +477,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_pvtol_D_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_pvtol_D_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s3;
     default: return 0;
   }
 }
@@ -472,26 +498,61 @@ CASADI_SYMBOL_EXPORT int hinf_pvtol_D_work_bytes(casadi_int *sz_arg, casadi_int*
   return 0;
 }
 
-/* hinf_pvtol_dGudq:(i0,i1[6],i2[2],i3[2])->(o0[6x6,2nz]) */
+/* hinf_pvtol_dGudq:(i0,i1[6],i2[2],i3[2])->(o0[6x6]) */
 static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6;
-  a0=arg[2]? arg[2][1] : 0;
-  a1=arg[3]? arg[3][1] : 0;
-  a2=arg[1]? arg[1][2] : 0;
-  a3=sin(a2);
-  a4=(a1*a3);
-  a4=(a0*a4);
-  a5=arg[2]? arg[2][0] : 0;
-  a2=cos(a2);
-  a6=(a5*a2);
-  a4=(a4+a6);
-  a4=(-a4);
-  if (res[0]!=0) res[0][0]=a4;
-  a1=(a1*a2);
-  a0=(a0*a1);
-  a5=(a5*a3);
-  a0=(a0-a5);
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
   if (res[0]!=0) res[0][1]=a0;
+  if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  if (res[0]!=0) res[0][4]=a0;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  if (res[0]!=0) res[0][8]=a0;
+  if (res[0]!=0) res[0][9]=a0;
+  if (res[0]!=0) res[0][10]=a0;
+  if (res[0]!=0) res[0][11]=a0;
+  if (res[0]!=0) res[0][12]=a0;
+  if (res[0]!=0) res[0][13]=a0;
+  if (res[0]!=0) res[0][14]=a0;
+  a1=arg[2]? arg[2][1] : 0;
+  a2=arg[3]? arg[3][1] : 0;
+  a3=arg[1]? arg[1][2] : 0;
+  a4=sin(a3);
+  a5=(a2*a4);
+  a5=(a1*a5);
+  a6=arg[2]? arg[2][0] : 0;
+  a3=cos(a3);
+  a7=(a6*a3);
+  a5=(a5+a7);
+  a5=(-a5);
+  if (res[0]!=0) res[0][15]=a5;
+  a2=(a2*a3);
+  a1=(a1*a2);
+  a6=(a6*a4);
+  a1=(a1-a6);
+  if (res[0]!=0) res[0][16]=a1;
+  if (res[0]!=0) res[0][17]=a0;
+  if (res[0]!=0) res[0][18]=a0;
+  if (res[0]!=0) res[0][19]=a0;
+  if (res[0]!=0) res[0][20]=a0;
+  if (res[0]!=0) res[0][21]=a0;
+  if (res[0]!=0) res[0][22]=a0;
+  if (res[0]!=0) res[0][23]=a0;
+  if (res[0]!=0) res[0][24]=a0;
+  if (res[0]!=0) res[0][25]=a0;
+  if (res[0]!=0) res[0][26]=a0;
+  if (res[0]!=0) res[0][27]=a0;
+  if (res[0]!=0) res[0][28]=a0;
+  if (res[0]!=0) res[0][29]=a0;
+  if (res[0]!=0) res[0][30]=a0;
+  if (res[0]!=0) res[0][31]=a0;
+  if (res[0]!=0) res[0][32]=a0;
+  if (res[0]!=0) res[0][33]=a0;
+  if (res[0]!=0) res[0][34]=a0;
+  if (res[0]!=0) res[0][35]=a0;
   return 0;
 }
 
@@ -551,7 +612,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_pvtol_dGudq_sparsity_in(casadi_int i
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_pvtol_dGudq_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s3;
     default: return 0;
   }
 }
@@ -650,7 +711,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_pvtol_C_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_pvtol_C_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }

@@ -34,8 +34,6 @@
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
-#define casadi_s6 CASADI_PREFIX(s6)
-#define casadi_s7 CASADI_PREFIX(s7)
 
 /* Symbol visibility in DLLs */
 #ifndef CASADI_SYMBOL_EXPORT
@@ -63,18 +61,10 @@ CASADI_SYMBOL_EXPORT int hinf_ship__casadi_real_size(void) { return (int) sizeof
 
 static const casadi_int casadi_s0[3] = {1, 1, 1};
 static const casadi_int casadi_s1[3] = {6, 1, 1};
-static const casadi_int casadi_s2[25] = 
-  {6, 6, 0, 5, 10, 14, 14, 14,
-  16, 0, 1, 2, 3, 4, 0, 1,
-  2, 3, 4, 0, 1, 2, 5, 3,
-  4};
+static const casadi_int casadi_s2[3] = {6, 6, 1};
 static const casadi_int casadi_s3[3] = {6, 2, 1};
-static const casadi_int casadi_s4[3] = {6, 6, 1};
-static const casadi_int casadi_s5[3] = {2, 1, 1};
-static const casadi_int casadi_s6[9] = 
-  {6, 6, 0, 0, 0, 0, 0, 0,
-  0};
-static const casadi_int casadi_s7[3] = {3, 6, 1};
+static const casadi_int casadi_s4[3] = {2, 1, 1};
+static const casadi_int casadi_s5[3] = {3, 6, 1};
 
 /* hinf_ship_f:(i0,i1[6],i2[6])->(o0[6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -195,9 +185,9 @@ CASADI_SYMBOL_EXPORT int hinf_ship_f_work_bytes(casadi_int *sz_arg, casadi_int* 
   return 0;
 }
 
-/* hinf_ship_dfdq:(i0,i1[6],i2[6])->(o0[6x6,16nz]) */
+/* hinf_ship_dfdq:(i0,i1[6],i2[6])->(o0[6x6]) */
 static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5;
+  casadi_real a0, a1, a2, a3, a4, a5, a6;
   a0=arg[2]? arg[2][3] : 0;
   a0=(-a0);
   if (res[0]!=0) res[0][0]=a0;
@@ -214,42 +204,63 @@ static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   if (res[0]!=0) res[0][3]=a5;
   a5=sin(a4);
   if (res[0]!=0) res[0][4]=a5;
-  a5=arg[2]? arg[2][0] : 0;
-  a0=(a0*a5);
-  if (res[0]!=0) res[0][5]=a0;
+  a5=0.;
+  if (res[0]!=0) res[0][5]=a5;
+  a6=arg[2]? arg[2][0] : 0;
+  a0=(a0*a6);
+  if (res[0]!=0) res[0][6]=a0;
   a0=arg[2]? arg[2][4] : 0;
   a0=(-a0);
-  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
   a0=arg[1]? arg[1][0] : 0;
   a3=(a3*a0);
-  if (res[0]!=0) res[0][7]=a3;
+  if (res[0]!=0) res[0][8]=a3;
   a3=sin(a4);
   a3=(-a3);
-  if (res[0]!=0) res[0][8]=a3;
-  a3=cos(a4);
   if (res[0]!=0) res[0][9]=a3;
-  a5=(a5*a2);
-  if (res[0]!=0) res[0][10]=a5;
+  a3=cos(a4);
+  if (res[0]!=0) res[0][10]=a3;
+  if (res[0]!=0) res[0][11]=a5;
+  a6=(a6*a2);
+  if (res[0]!=0) res[0][12]=a6;
   a1=(a1*a0);
-  if (res[0]!=0) res[0][11]=a1;
+  if (res[0]!=0) res[0][13]=a1;
   a1=arg[2]? arg[2][5] : 0;
   a1=(-a1);
-  if (res[0]!=0) res[0][12]=a1;
+  if (res[0]!=0) res[0][14]=a1;
+  if (res[0]!=0) res[0][15]=a5;
+  if (res[0]!=0) res[0][16]=a5;
   a1=1.;
-  if (res[0]!=0) res[0][13]=a1;
+  if (res[0]!=0) res[0][17]=a1;
+  if (res[0]!=0) res[0][18]=a5;
+  if (res[0]!=0) res[0][19]=a5;
+  if (res[0]!=0) res[0][20]=a5;
+  if (res[0]!=0) res[0][21]=a5;
+  if (res[0]!=0) res[0][22]=a5;
+  if (res[0]!=0) res[0][23]=a5;
+  if (res[0]!=0) res[0][24]=a5;
+  if (res[0]!=0) res[0][25]=a5;
+  if (res[0]!=0) res[0][26]=a5;
+  if (res[0]!=0) res[0][27]=a5;
+  if (res[0]!=0) res[0][28]=a5;
+  if (res[0]!=0) res[0][29]=a5;
+  if (res[0]!=0) res[0][30]=a5;
+  if (res[0]!=0) res[0][31]=a5;
+  if (res[0]!=0) res[0][32]=a5;
   a1=sin(a4);
   a1=(a0*a1);
-  a5=cos(a4);
-  a5=(a2*a5);
-  a1=(a1+a5);
+  a6=cos(a4);
+  a6=(a2*a6);
+  a1=(a1+a6);
   a1=(-a1);
-  if (res[0]!=0) res[0][14]=a1;
+  if (res[0]!=0) res[0][33]=a1;
   a1=cos(a4);
   a0=(a0*a1);
   a4=sin(a4);
   a2=(a2*a4);
   a0=(a0-a2);
-  if (res[0]!=0) res[0][15]=a0;
+  if (res[0]!=0) res[0][34]=a0;
+  if (res[0]!=0) res[0][35]=a5;
   return 0;
 }
 
@@ -521,7 +532,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_D_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_D_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s2;
     default: return 0;
   }
 }
@@ -542,8 +553,46 @@ CASADI_SYMBOL_EXPORT int hinf_ship_D_work_bytes(casadi_int *sz_arg, casadi_int* 
   return 0;
 }
 
-/* hinf_ship_dGudq:(i0,i1[6],i2[2],i3[6])->(o0[6x6,0nz]) */
+/* hinf_ship_dGudq:(i0,i1[6],i2[2],i3[6])->(o0[6x6]) */
 static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  if (res[0]!=0) res[0][1]=a0;
+  if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  if (res[0]!=0) res[0][4]=a0;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  if (res[0]!=0) res[0][8]=a0;
+  if (res[0]!=0) res[0][9]=a0;
+  if (res[0]!=0) res[0][10]=a0;
+  if (res[0]!=0) res[0][11]=a0;
+  if (res[0]!=0) res[0][12]=a0;
+  if (res[0]!=0) res[0][13]=a0;
+  if (res[0]!=0) res[0][14]=a0;
+  if (res[0]!=0) res[0][15]=a0;
+  if (res[0]!=0) res[0][16]=a0;
+  if (res[0]!=0) res[0][17]=a0;
+  if (res[0]!=0) res[0][18]=a0;
+  if (res[0]!=0) res[0][19]=a0;
+  if (res[0]!=0) res[0][20]=a0;
+  if (res[0]!=0) res[0][21]=a0;
+  if (res[0]!=0) res[0][22]=a0;
+  if (res[0]!=0) res[0][23]=a0;
+  if (res[0]!=0) res[0][24]=a0;
+  if (res[0]!=0) res[0][25]=a0;
+  if (res[0]!=0) res[0][26]=a0;
+  if (res[0]!=0) res[0][27]=a0;
+  if (res[0]!=0) res[0][28]=a0;
+  if (res[0]!=0) res[0][29]=a0;
+  if (res[0]!=0) res[0][30]=a0;
+  if (res[0]!=0) res[0][31]=a0;
+  if (res[0]!=0) res[0][32]=a0;
+  if (res[0]!=0) res[0][33]=a0;
+  if (res[0]!=0) res[0][34]=a0;
+  if (res[0]!=0) res[0][35]=a0;
   return 0;
 }
 
@@ -595,7 +644,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_dGudq_sparsity_in(casadi_int i)
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s1;
-    case 2: return casadi_s5;
+    case 2: return casadi_s4;
     case 3: return casadi_s1;
     default: return 0;
   }
@@ -603,7 +652,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_dGudq_sparsity_in(casadi_int i)
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_dGudq_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s2;
     default: return 0;
   }
 }
@@ -702,7 +751,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_C_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_C_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s5;
     default: return 0;
   }
 }
@@ -895,7 +944,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_error_split_sparsity_in(casadi_
   switch (i) {
     case 0: return casadi_s0;
     case 1: return casadi_s1;
-    case 2: return casadi_s5;
+    case 2: return casadi_s4;
     case 3: return casadi_s1;
     case 4: return casadi_s1;
     default: return 0;
@@ -904,7 +953,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_error_split_sparsity_in(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* hinf_ship_error_split_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s4;
+    case 0: return casadi_s2;
     case 1: return casadi_s1;
     default: return 0;
   }
