@@ -36,7 +36,7 @@ import warnings
 
 from hinf_cpp import _core
 from hinf_cpp.output.files import check_output_folder, check_output_path, write_text
-from hinf_cpp.analysis.compare import Feedback
+from hinf_cpp.analysis.comparison import Feedback
 from hinf_cpp.output.progress import Progress
 from hinf_cpp.scenario import load_scenario
 from hinf_cpp.output.tables import markdown_table, run_key, text_table
@@ -336,7 +336,7 @@ def _comparison_notes(comparison) -> list[str]:
 
 
 def cmd_compare(args: argparse.Namespace) -> int:
-    from hinf_cpp.analysis.compare import compare, parse_controllers
+    from hinf_cpp.analysis.comparison import compare, parse_controllers
     from hinf_cpp.output.plotting import paths_figure, save_figure
 
     controllers = parse_controllers(args.controllers)
@@ -364,7 +364,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
 
 
 def cmd_recovery(args: argparse.Namespace) -> int:
-    from hinf_cpp.analysis.compare import parse_controllers
+    from hinf_cpp.analysis.comparison import parse_controllers
     from hinf_cpp.output.plotting import recovery_figure, save_figure
     from hinf_cpp.analysis.recovery import recovery_study
 
@@ -397,7 +397,7 @@ def cmd_recovery(args: argparse.Namespace) -> int:
 
 
 def cmd_report(args: argparse.Namespace) -> int:
-    from hinf_cpp.analysis.compare import parse_controllers
+    from hinf_cpp.analysis.comparison import parse_controllers
     from hinf_cpp.analysis.report import write_report
 
     controllers = parse_controllers(args.controllers)
@@ -445,7 +445,7 @@ def cmd_model_export(args: argparse.Namespace) -> int:
 
 def cmd_paper(args: argparse.Namespace) -> int:
     from hinf_cpp.scenario import scenario_path
-    from hinf_cpp.analysis.compare import compare
+    from hinf_cpp.analysis.comparison import compare
     from hinf_cpp.output.plotting import paths_figure, save_figure, xy_figure
 
     _check_outputs(folders=[args.out])

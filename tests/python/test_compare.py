@@ -1,4 +1,4 @@
-"""The comparison of the tracking laws (hinf_cpp.analysis.compare), the worst-case guarantee of the
+"""The comparison of the tracking laws (hinf_cpp.analysis.comparison), the worst-case guarantee of the
 H-infinity design, recovery from poor initial conditions and the turn-around detector
 (hinf_cpp.analysis.recovery), and the command lines `compare` and `recovery`.
 
@@ -23,7 +23,7 @@ from scipy.integrate import solve_ivp
 
 import hinf_cpp as hc
 from _support import PAPER_Q_D0, ROUNDOFF, SHIP_B, SHIP_D, paper_u_d, ship_drift
-from hinf_cpp.analysis.compare import (
+from hinf_cpp.analysis.comparison import (
     METRICS,
     Feedback,
     compare,

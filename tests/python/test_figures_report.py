@@ -24,7 +24,7 @@ import hinf_cpp as hc
 from hinf_cpp.output import export
 from hinf_cpp.output import plotting
 from hinf_cpp.analysis.gamma_sweep import sweep_gamma
-from hinf_cpp.analysis.compare import compare, run_law
+from hinf_cpp.analysis.comparison import compare, run_law
 from hinf_cpp.output.progress import Progress
 from hinf_cpp.analysis.report import write_report
 
@@ -111,7 +111,7 @@ def test_figures_need_no_display(tmp_path):
     script = f"""
 import sys, hinf_cpp as hc
 from hinf_cpp.output import plotting
-from hinf_cpp.analysis.compare import compare
+from hinf_cpp.analysis.comparison import compare
 s = hc.load_scenario(hc.scenario_path("paper_fig2")); s.tf = 5.0
 c = compare(s, "hinf,lqr")
 for name, fig in [("p", plotting.paths_figure(c.results())), ("e", plotting.eigenvalues_figure(c.results())),

@@ -275,7 +275,7 @@ def test_a_start_350_degrees_off_is_a_10_degree_error(law):
     np.testing.assert_allclose(q_e_350, q_e_10, atol=1e-5)
     # The ship does not spin a full turn: the continuous heading error starts at -10 degrees
     # and stays within 45 degrees (the 1 m offset of the start makes it turn ~21 degrees).
-    from hinf_cpp.analysis.compare import heading_error
+    from hinf_cpp.analysis.comparison import heading_error
     e = heading_error(off_350)
     assert abs(e[0] - math.radians(-10.0)) < 1e-12
     assert np.max(np.abs(e)) < math.radians(45.0)

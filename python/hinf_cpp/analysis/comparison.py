@@ -87,7 +87,7 @@ class MetricInfo:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import METRICS, MetricInfo
+    >>> from hinf_cpp.analysis.comparison import METRICS, MetricInfo
     >>> info = next(m for m in METRICS if isinstance(m, MetricInfo))
     >>> info.name, info.label, info.unit
     ('l2_gain_from_desired', 'L2 gain (from the desired start)', '-')
@@ -145,7 +145,7 @@ def parse_controllers(spec: str | Iterable[str | _core.Law] | None) -> list[_cor
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import parse_controllers
+    >>> from hinf_cpp.analysis.comparison import parse_controllers
     >>> parse_controllers("hinf,lqr")
     [<Law.hinf: 0>, <Law.lqr: 1>]
     >>> len(parse_controllers(None))
@@ -199,7 +199,7 @@ def parse_feedback(scenario: _core.Scenario, spec: str | Iterable[str | Feedback
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import parse_feedback
+    >>> from hinf_cpp.analysis.comparison import parse_feedback
     >>> parse_feedback(hc.load_scenario(hc.scenario_path("paper_fig2")), None)
     [<Feedback.state: 'state'>, <Feedback.output: 'output'>]
     >>> parse_feedback(hc.load_scenario(hc.scenario_path("paper_fig1")), "output")
@@ -233,7 +233,7 @@ def wrap_angles(angle: np.ndarray | float) -> np.ndarray:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import wrap_angles
+    >>> from hinf_cpp.analysis.comparison import wrap_angles
     >>> wrap_angles([np.pi, -np.pi, 1.5 * np.pi, 0.5]).round(4)
     array([ 3.1416,  3.1416, -1.5708,  0.5   ])
     """
@@ -259,7 +259,7 @@ def heading_error(result: _core.RunResult) -> np.ndarray | None:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import heading_error
+    >>> from hinf_cpp.analysis.comparison import heading_error
     >>> result = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
     >>> e = heading_error(result)
     >>> e.shape, round(float(e[0]), 4)  # starts 45 degrees off
@@ -318,7 +318,7 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import describe_disturbance
+    >>> from hinf_cpp.analysis.comparison import describe_disturbance
     >>> disturbance = describe_disturbance(hc.load_scenario(hc.scenario_path("paper_fig2")))
     >>> disturbance["signals"]["w1"], disturbance["measurement_noise"]["channels"]
     ('0.1 cos(1.25664 t)', ['w4', 'w5', 'w6'])
@@ -400,7 +400,7 @@ def run_law(scenario: _core.Scenario, law: _core.Law | str, feedback: Feedback |
 
     Examples
     --------
-    >>> from hinf_cpp.analysis.compare import run_law
+    >>> from hinf_cpp.analysis.comparison import run_law
     >>> result = run_law(hc.load_scenario(hc.scenario_path("paper_fig2")), "lqr", "output")
     >>> result.law, result.gamma, result.output_feedback
     (<Law.lqr: 1>, inf, True)
@@ -450,7 +450,7 @@ class ComparisonRun:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import compare
+    >>> from hinf_cpp.analysis import comparison
     >>> run = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "lqr")["lqr"]
     >>> run.ok, run.design_gamma, run.feedback
     (True, inf, <Feedback.state: 'state'>)
@@ -507,7 +507,7 @@ class Comparison:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import compare
+    >>> from hinf_cpp.analysis import comparison
     >>> comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "hinf,lqr")
     >>> comparison.keys
     ['hinf', 'lqr']
@@ -611,7 +611,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import compare
+    >>> from hinf_cpp.analysis import comparison
     >>> comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr")
     >>> comparison.keys
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']

@@ -38,7 +38,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from hinf_cpp import _core
-from hinf_cpp.analysis.compare import Feedback, heading_error, parse_controllers, run_law, wrap_angles
+from hinf_cpp.analysis.comparison import Feedback, heading_error, parse_controllers, run_law, wrap_angles
 from hinf_cpp.output.progress import ProgressCallback
 from hinf_cpp.scenario import load_scenario
 
@@ -262,7 +262,7 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
 
     Recovers: the final position error is below `position_tolerance` and the final wrapped
     heading error below `heading_tolerance`. Turns around: :func:`turn_around` of the
-    continuous heading error (:func:`hinf_cpp.analysis.compare.heading_error`).
+    continuous heading error (:func:`hinf_cpp.analysis.comparison.heading_error`).
 
     Parameters
     ----------

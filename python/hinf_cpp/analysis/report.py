@@ -1,6 +1,6 @@
 """A report folder for one scenario: the comparison of the laws, its figures, tables and results files.
 
-``write_report(scenario, out)`` runs :func:`~hinf_cpp.analysis.compare.compare` and writes into ``out``:
+``write_report(scenario, out)`` runs :func:`~hinf_cpp.analysis.comparison.compare` and writes into ``out``:
 
     report.md            everything below in one page (tables, definitions, figures)
     metrics.md           the comparison table (Markdown), one column per run
@@ -25,7 +25,7 @@ import pathlib
 from typing import Callable, Sequence
 
 from hinf_cpp import _core
-from hinf_cpp.analysis.compare import METRICS, Comparison, Feedback, compare
+from hinf_cpp.analysis.comparison import METRICS, Comparison, Feedback, compare
 from hinf_cpp.output.export import save_csv, save_json, save_npz
 from hinf_cpp.output.files import check_output_folder, write_text
 from hinf_cpp.output.plotting import (controls_figure, coupling_figure, eigenvalues_figure, errors_figure, paths_figure,
@@ -140,7 +140,7 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
                  pdf: bool = False, progress: ProgressCallback | None = None) -> Report:
     """Run the comparison of the laws on a scenario and write the report folder.
 
-    Runs :func:`~hinf_cpp.analysis.compare.compare` and writes into `out` the files of the
+    Runs :func:`~hinf_cpp.analysis.comparison.compare` and writes into `out` the files of the
     module docstring: report.md, metrics.md, metrics.csv, comparison.json, the figures
     (paths, errors, controls, eigenvalues; coupling with output feedback) and per run
     ``<run>.json``, ``<run>.npz`` and ``<run>.csv``.
@@ -154,7 +154,7 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
         whole or not at all). A path that cannot be a folder is a ValueError before the runs.
     controllers : str or sequence of str, optional
         Laws among ``"hinf"``, ``"lqr"``, ``"cascade"``; default all three (as in
-        :func:`~hinf_cpp.analysis.compare.compare`).
+        :func:`~hinf_cpp.analysis.comparison.compare`).
     feedback : str or sequence of str, optional
         ``"state"`` and/or ``"output"``; default both with ``[measurement]``, else state.
     worst_case : bool, optional
