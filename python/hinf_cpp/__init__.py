@@ -23,7 +23,7 @@ CasADi symbols), :mod:`hinf_cpp.planning` (desired trajectories from waypoints),
 :mod:`hinf_cpp.scenario` (files, keys set by name), :mod:`hinf_cpp.studies` (grid and random
 studies as DataFrames), :mod:`hinf_cpp.analysis` (laws compared, recovery, attenuation against
 gamma), :mod:`hinf_cpp.output` (figures, exports, tables). Plumbing (the TOML parser entry
-points, output grids, the noise generator) stays in :mod:`hinf_cpp._core`.
+points, output grids, the noise generator) stays in ``hinf_cpp._core``.
 
 Conventions (docs/mathematics.md): time in seconds; errors q_e = q - q_d (actual minus desired),
 the heading wrapped to (-pi, pi]; Z(t) > 0 is the cost-to-go of paper eq. (13), solved backward

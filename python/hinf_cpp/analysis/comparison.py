@@ -114,6 +114,7 @@ def _comparison_metrics() -> list:
     return rows
 
 
+#: The metrics of a comparison, in the order of its table (MetricInfo: name, label, unit, definition).
 METRICS = _comparison_metrics()
 
 

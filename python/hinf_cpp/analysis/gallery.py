@@ -27,7 +27,7 @@ class Vehicle:
     length_unit: str  # the model's unit of x and y
 
 
-# One shipped scenario per built-in vehicle, in the order of docs/vehicles.md.
+#: One shipped scenario per built-in vehicle, in the order of docs/vehicles.md.
 VEHICLES = [
     Vehicle("Fossen vessel (supply vessel)", "fossen_vessel_turn", "ship lengths L = 76.2 m"),
     Vehicle("hovercraft", "hovercraft_s_curve", "m"),
@@ -254,6 +254,7 @@ class PlannedCase:
     length_unit: str
 
 
+#: The shipped planned scenarios (scenarios/planned), each vehicle with each pattern.
 PLANNED = [PlannedCase(f"{vehicle}: {pattern.replace('_', ' ')}", f"planned/{stem}_{pattern}", "m")
            for vehicle, stem in (("ship", "ship"), ("hovercraft", "hovercraft"))
            for pattern in ("lane_change", "figure_eight", "lawnmower", "docking")]

@@ -56,9 +56,15 @@ __all__ = [
     "turn_around",
 ]
 
-POSITION_TOLERANCE = 0.5                 # m
-HEADING_TOLERANCE = math.radians(10.0)   # rad
-TURN_MARGIN = 0.1                        # rad
+#: The final position error (m) below which a run has recovered (assess_recovery).
+POSITION_TOLERANCE = 0.5
+#: The final heading error (rad) below which a run has recovered (assess_recovery).
+HEADING_TOLERANCE = math.radians(10.0)
+#: How far (rad) the heading error must go beyond max(pi, |e(t0)|) to count as passing
+#: through +-pi, i.e. turning around (turn_around).
+TURN_MARGIN = 0.1
+#: The share of the last half above which a heading error beyond pi/2 counts as tracking
+#: backwards (turn_around).
 BACKWARDS_FRACTION = 0.5
 
 

@@ -361,8 +361,8 @@ def auv(parameter_values: dict | None = None) -> SymbolicModel:
                          state_names=["u", "v", "r", "x", "y", "psi"], position_indices=[3, 4], heading_index=5)
 
 
-# The statement of each built-in vehicle by its scenario-file kind, with the C++ class it is the
-# equations of.
+#: The statement of each built-in vehicle by its scenario-file kind, with the name of the C++ class
+#: whose equations it is: kind -> (statement function, class name).
 STATEMENTS = {"ship": (ship, "ShipModel"), "fossen_vessel": (fossen_vessel, "FossenVessel"),
               "hovercraft": (hovercraft, "Hovercraft"), "pvtol": (pvtol, "PlanarVtol"), "auv": (auv, "Auv")}
 

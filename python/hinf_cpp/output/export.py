@@ -44,6 +44,7 @@ from hinf_cpp.output.files import atomic_output, write_text
 __all__ = ["FORMAT", "RunData", "component_names", "load_csv", "load_json", "load_npz", "npz_path",
            "save_csv", "save_json", "save_npz", "time_series"]
 
+#: The format name that an exported run carries (NPZ, JSON).
 FORMAT = "hinf_cpp-run/1"
 
 

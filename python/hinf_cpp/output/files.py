@@ -20,6 +20,7 @@ from typing import BinaryIO, Iterator
 
 __all__ = ["FIGURE_SUFFIXES", "atomic_output", "check_output_folder", "check_output_path", "write_text"]
 
+#: The file endings a figure can be written as.
 FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
 
 _counter = itertools.count()

@@ -13,8 +13,8 @@ from typing import Callable, TextIO
 
 __all__ = ["Progress", "ProgressCallback"]
 
-# What the data functions (compare, recovery_study, sweep_gamma) call before each run:
-# callback(index, total, message), index counting from 1.
+#: What the data functions (compare, recovery_study, sweep_gamma) call before each run:
+#: callback(index, total, message), index counting from 1.
 ProgressCallback = Callable[[int, int, str], None]
 
 

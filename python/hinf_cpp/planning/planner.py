@@ -1,7 +1,7 @@
 """Feasible desired trajectories from waypoints or a sampled path (docs/planning.md).
 
 The paper tracks "a feasible trajectory": q_d driven by inputs u_d through the model. This
-module finds such a pair from where the vehicle should go. :func:`plan` solves
+module finds such a pair from where the vehicle should go. :func:`plan` solves::
 
     minimize    effort_weight * int |u / s|^2 dt + rate_weight * int |du/dt / s|^2 dt
     subject to  dq/dt = f(t, q) + G(t, q) u,  q(t0) = q0,  u_min <= u <= u_max,

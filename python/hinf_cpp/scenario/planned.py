@@ -5,7 +5,7 @@ the planning keys in [desired] as tables with interpolation = "linear"; the scen
 through the one C++ reader like any other. Plans are cached by the content of what they depend
 on (``hinf_cpp.planning.planner.default_cache_dir``), so running a file again does not optimize again.
 ``hinf-sim`` does not plan: it refuses these keys and says to run ``hinf-cpp run`` or to write
-the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml``.
+the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml``. For example::
 
     [desired]
     q0 = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
@@ -34,6 +34,7 @@ from hinf_cpp.scenario.documents import resolve_callable, toml_text
 
 __all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario"]
 
+#: The keys of [desired] that ask for planning (docs/planning.md).
 PLANNING_KEYS = ("waypoints", "path", "plan")
 WAYPOINT_KEYS = ("x", "y", "t", "heading", "speed")
 PATH_KEYS = ("x", "y", "speed")

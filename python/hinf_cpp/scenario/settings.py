@@ -15,7 +15,8 @@ from typing import Any, Sequence
 
 __all__ = ["FEEDBACK_KEY", "apply_settings", "get_key", "key_path", "parse_setting", "set_key", "toml_value"]
 
-FEEDBACK_KEY = "feedback"  # the key that keeps ("output") or drops ("state") [measurement]
+#: The key that keeps ("output") or drops ("state") a scenario's [measurement].
+FEEDBACK_KEY = "feedback"
 
 
 _PART = re.compile(r"^([A-Za-z0-9_-]+)((?:\[\d+\])*)$")

@@ -24,6 +24,7 @@ from hinf_cpp.output.tables import markdown_table
 __all__ = ["DEFAULT_METRICS", "distribution_figure", "gamma_figure", "paired_differences", "recovered", "roa_figure",
            "status_counts", "summarize", "summary_markdown", "write_study_outputs"]
 
+#: The metrics that a study's summary and figures show unless told otherwise.
 DEFAULT_METRICS = ["rms_position_error_last_half", "rms_heading_error_last_half", "final_position_error",
                    "max_position_error"]
 PERCENTILES = (5, 50, 95)
@@ -66,7 +67,7 @@ def status_counts(df, study=None):
     -------
     pandas.DataFrame
         One row per group: its keys, ``runs`` and one column per status (:data:`STATUSES
-        <hinf_cpp.studies.STATUSES>`: completed, diverged, conjugate_point,
+        <hinf_cpp.studies.study.STATUSES>`: completed, diverged, conjugate_point,
         coupling_violation, solver_failure, invalid_input, failed).
 
     Examples

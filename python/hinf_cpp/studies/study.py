@@ -49,7 +49,7 @@ __all__ = [
     "study_table_schema",
 ]
 
-# What StudyRun.status can be, in the order of the summary's columns.
+#: What a run's status can be (StudyRun.status), in the order of the summary's columns.
 STATUSES = ["completed", "diverged", "conjugate_point", "coupling_violation", "solver_failure",
             "invalid_input", "failed"]
 METRIC_NAMES = [definition.name for definition in _core.metric_table()]
