@@ -6,9 +6,9 @@ and as the built-in ShipModel, on the Figure 1 and Figure 2 runs.
     .venv/bin/python benchmarks/bench_symbolic_model.py --json benchmarks/results/symbolic_model.json
 
 Models, all the same equations (docs/mathematics.md):
-- "built-in": hc.ShipModel (C++, hand-written Jacobian and error split);
-- "casadi": examples/ship_casadi.py compiled by hinf_cpp.models.symbolic (generated C code in a shared
-  library, called from C++; Jacobian by automatic differentiation, the paper's error split);
+- "built-in": hc.ShipModel (C++, the C code generated from the ship's statement compiled in);
+- "casadi": the same statement (hinf_cpp.models.builtin.ship) compiled at run time by
+  hinf_cpp.models.symbolic (generated C code in a shared library in a cache, called from C++);
 - "python": a subclass of hc.Model in this file (NumPy; every call goes through Python).
 
 Workloads: "design" (the GRDE of Figure 1, method bdf), "state feedback" (the whole Figure 1
@@ -27,7 +27,6 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse  # noqa: E402
-import importlib.util  # noqa: E402
 import json  # noqa: E402
 import pathlib  # noqa: E402
 import pickle  # noqa: E402
@@ -39,6 +38,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 import hinf_cpp as hc  # noqa: E402
+from hinf_cpp.models import builtin  # noqa: E402
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
@@ -86,13 +86,6 @@ class PythonShip(hc.Model):
     def heading_index(self): return 5
 
 
-def load_ship_example():
-    spec = importlib.util.spec_from_file_location("ship_casadi", HERE.parent / "examples" / "ship_casadi.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def with_model(scenario, model):
     copy = pickle.loads(pickle.dumps(scenario))
     copy.model = model
@@ -106,18 +99,17 @@ def main() -> None:
     args = parser.parse_args()
     repeat = 1 if args.quick else 7
 
-    example = load_ship_example()
     with tempfile.TemporaryDirectory() as cache:
-        first = [example.ship().build(pathlib.Path(cache) / f"first{k}") for k in range(1 if args.quick else 3)]
-        again = [example.ship().build(pathlib.Path(cache) / "first0") for _ in range(3)]
+        first = [builtin.ship().build(pathlib.Path(cache) / f"first{k}") for k in range(1 if args.quick else 3)]
+        again = [builtin.ship().build(pathlib.Path(cache) / "first0") for _ in range(3)]
         build_first = float(np.median([b.generate_seconds + b.compile_seconds for b in first]))
         generate = float(np.median([b.generate_seconds for b in first]))
         started = time.perf_counter()
         for _ in range(3):
-            example.ship().build(pathlib.Path(cache) / "first0")
+            builtin.ship().build(pathlib.Path(cache) / "first0")
         build_hit = (time.perf_counter() - started) / 3
         assert all(b.cache_hit for b in again)
-        casadi_ship = example.ship().compile(cache_dir=pathlib.Path(cache) / "first0")
+        casadi_ship = builtin.ship().compile(cache_dir=pathlib.Path(cache) / "first0")
 
         models = {"built-in": hc.ShipModel(), "casadi": casadi_ship, "python": PythonShip()}
         fig1 = hc.load_scenario(hc.scenario_path("paper_fig1"))

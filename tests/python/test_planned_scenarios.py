@@ -181,14 +181,14 @@ def test_models_the_planner_cannot_use(tmp_path):
 
 @pytest.mark.ipopt
 def test_a_symbolic_model_named_by_a_python_callable(tmp_path):
-    """kind = "python" naming a SymbolicModel (examples/ship_casadi.py): planned with its own
-    expressions, and the same plan as the built-in ship's (the same equations)."""
+    """kind = "python" naming a SymbolicModel (the ship's statement, hinf_cpp.models.builtin:ship):
+    planned with its own expressions, compiled from CasADi, and the same plan as the built-in ship's."""
     path = tmp_path / "lane.toml"
-    path.write_text(mutate(LANE, 'kind = "ship"', f'kind = "python"\ncallable = "{ROOT / "examples" / "ship_casadi.py"}:ship"'))
+    path.write_text(mutate(LANE, 'kind = "ship"', 'kind = "python"\ncallable = "hinf_cpp.models.builtin:ship"'))
     planned = load_planned(path)
     builtin = plan_scenario(tomllib.loads(LANE), "lane.toml")
     assert planned.plan.report.position_mismatch < 1e-6
-    assert planned.plan.model.name() == "ship-casadi"
-    # Two statements of the same model, one compiled from CasADi: the same optimum to IPOPT's
+    assert planned.plan.model.name() == "ship"
+    # The same statement, one route compiled from CasADi at run time: the same optimum to IPOPT's
     # tolerance (1e-9 relative), far below the inputs' size (~1).
     np.testing.assert_allclose(planned.plan.u, builtin.plan.u, atol=1e-6)

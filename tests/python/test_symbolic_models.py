@@ -1,14 +1,14 @@
 """Models written with CasADi symbols (hinf_cpp.models.symbolic), compiled to C and evaluated in C++.
 
-The paper's ship written symbolically (examples/ship_casadi.py) against the built-in ShipModel
-on the Figure 1 and Figure 2 runs; Jacobians from automatic differentiation against central
+The paper's ship, its statement (hinf_cpp.models.builtin.ship) compiled at run time into a
+cache, against the built-in ShipModel that compiles in the C code of the same statement, on the
+Figure 1 and Figure 2 runs (the run-time route: code generation, compiler, loader, cache); Jacobians from automatic differentiation against central
 differences; the scenario-file route (kind = "casadi") through hinf-sim and hinf-cpp; the
 cache; and bad models, which are errors naming the problem when the model is built.
 """
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import pathlib
 import pickle
@@ -21,17 +21,10 @@ import pytest
 import hinf_cpp as hc
 
 ca = pytest.importorskip("casadi")
+from hinf_cpp.models import builtin  # noqa: E402
 from hinf_cpp.models.symbolic import SymbolicModel  # noqa: E402
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
 BIN = pathlib.Path(sys.executable).parent
-
-
-def load_example(name):
-    spec = importlib.util.spec_from_file_location(name, ROOT / "examples" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 @pytest.fixture(scope="module")
@@ -41,7 +34,7 @@ def cache_dir(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def ship_symbolic():
-    return load_example("ship_casadi").ship()
+    return builtin.ship()
 
 
 @pytest.fixture(scope="module")
@@ -105,7 +98,7 @@ def test_symbolic_ship_reproduces_the_built_in_ship(name, ship_generated):
     result = hc.run_scenario(with_model(scenario, ship_generated))
     a, b = json.loads(hc._core.results_json(reference)), json.loads(hc._core.results_json(result))
     # The symbolic ship's parameters have the built-in ship's names and values.
-    assert b["model"] == {"name": "ship-casadi", "jacobian": "automatic differentiation",
+    assert b["model"] == {"name": "ship", "jacobian": "automatic differentiation",
                           "parameters": a["model"]["parameters"]}
     assert a["status"] == b["status"] == "completed"
     for key, value in a["metrics"].items():
@@ -191,7 +184,7 @@ def test_missing_or_foreign_model_file(tmp_path):
 
 def test_second_build_is_a_cache_hit(ship_symbolic, cache_dir):
     first = ship_symbolic.build(cache_dir)
-    again = load_example("ship_casadi").ship().build(cache_dir)
+    again = builtin.ship().build(cache_dir)
     assert again.cache_hit and again.metadata_path == first.metadata_path
     assert again.compile_seconds == 0  # the C code is generated again to find its hash, not compiled
 

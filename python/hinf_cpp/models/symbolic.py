@@ -14,7 +14,7 @@ it costs). :meth:`SymbolicModel.export` writes the library and its description
 (``model.json``) to a folder that a scenario file names with ``[model] kind = "casadi"``, so
 ``hinf-sim`` runs the same model.
 
-Example (the ship of the paper, see ``examples/ship_casadi.py``)::
+Example (the ship of the paper; in full in :func:`hinf_cpp.models.builtin.ship`)::
 
     import casadi as ca
     q = ca.SX.sym("q", 6)
