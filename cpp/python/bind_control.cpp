@@ -132,6 +132,18 @@ py::tuple range(const Solution& s, const std::vector<double>& times) {
   return py::make_tuple(lo, hi);
 }
 
+// The first lines of the examples that need a desired trajectory, or a design along it: the
+// ship on the path of paper Fig. 1, over 10 s; Z at gamma = 5 with Q = Qf = I. The text that
+// follows begins with a newline.
+#define HINF_TRAJECTORY_EXAMPLE \
+  ">>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1\n" \
+  ">>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)"
+#define HINF_DESIGN_EXAMPLE \
+  HINF_TRAJECTORY_EXAMPLE "\n>>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)"
+
+// What a matrix function of t vectorized over times returns, for the docstrings.
+constexpr const char* kSquareOfT = "Shape (n, n) for a number t, (k, n, n) for a 1-D array of k times.";
+
 // X(t) of a symmetric solution, vectorized over t.
 template <class Solution, class Member>
 py::object matrix_of_t(const Solution& s, const py::object& t, Member member) {
@@ -143,20 +155,79 @@ py::object matrix_of_t(const Solution& s, const py::object& t, Member member) {
 
 void bind_control(py::module_& m) {
   // ---- enums ----
-  bind_enum<RunStatus>(m, "RunStatus", "How a closed-loop run ended (simulation.hpp)");
-  bind_enum<FilterLinearization>(m, "FilterLinearization",
-                                 "Which A the filter Riccati equation (36) uses (output_feedback.hpp)");
-  bind_enum<CouplingPolicy>(m, "CouplingPolicy",
-                            "What a violation of rho(Sigma Z) < gamma^2 does (output_feedback.hpp)");
-  bind_enum<GammaCondition>(m, "GammaCondition", "The condition a gamma fails (analysis.hpp)");
+  bind_enum<RunStatus>(m, "RunStatus", R"(Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.tf = 10.0
+>>> hc.run_scenario(scenario).simulation.status
+<RunStatus.completed: 0>)");
+  bind_enum<FilterLinearization>(m, "FilterLinearization", R"(Examples
+--------
+>>> hc.OutputFeedbackOptions(filter_A="desired").filter_A
+<FilterLinearization.desired: 1>)");
+  bind_enum<CouplingPolicy>(m, "CouplingPolicy", R"(Examples
+--------
+>>> hc.OutputFeedbackOptions(on_coupling_violation="flag").on_coupling_violation
+<CouplingPolicy.flag: 1>)");
+  bind_enum<GammaCondition>(m, "GammaCondition", R"(Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
+>>> scenario.tf = 10.0
+>>> hc.scenario_gamma_star(scenario).binding              # state feedback: the GRDE
+<GammaCondition.grde: 1>
+>>> hc.scenario_gamma_star_output_feedback(scenario).binding
+<GammaCondition.coupling: 3>)");
 
   // ---- options ----
-  bind_options<SimulationOptions>(m, "SimulationOptions",
-                                  "How a closed loop is simulated ([output] dt and [solver] of a scenario)");
-  bind_options<TrajectoryOptions>(m, "TrajectoryOptions", "Tolerances of the desired trajectory's integration");
+  bind_options<SimulationOptions>(m, "SimulationOptions", {"SimulationOptions"}, {}, R"(Raises
+------
+ValueError
+    An option out of its range, naming it.
+
+Examples
+--------
+>>> options = hc.SimulationOptions(output_dt=0.05, solver=hc.SolverOptions(method="erk"))
+>>> options.output_dt, options.solver.method
+(0.05, <Method.erk: 3>))");
+  bind_options<TrajectoryOptions>(m, "TrajectoryOptions", {"TrajectoryOptions"}, {}, R"(Examples
+--------
+>>> options = hc.TrajectoryOptions(rtol=1e-8, atol=1e-10)
+>>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], [1.0, 0.0], 0.0, 10.0, options)
+>>> round(float(trajectory.q_d(10.0)[3]), 6)                # x_d(10) = 10 m at 1 m/s
+10.0)");
 
   // ---- desired trajectory ----
-  py::class_<Trajectory, py::smart_holder>(m, "Trajectory", "Desired trajectory of paper eq. (8) with dense output")
+  py::class_<Trajectory, py::smart_holder>(m, "Trajectory", doc({"Trajectory", "control/trajectory.hpp"}, R"(Parameters
+----------
+model : Model
+    The design model.
+q_d0 : array_like, shape (n,)
+    The desired initial state q_d(t0).
+u_d : VectorSignal, callable, or list of Signal or float
+    The desired inputs, m channels: a VectorSignal, a callable ``u_d(t) -> array_like, shape (m,)``
+    (t in seconds), or one Signal or number per input.
+t0 : float
+    The start of the horizon (s).
+tf : float
+    The end of the horizon (s), > t0.
+options : TrajectoryOptions, optional
+    Tolerances of the integration.
+
+Raises
+------
+ValueError
+    A model that is not valid, q_d0 not of shape (n,) or not finite, u_d without m channels,
+    tf <= t0, bad options.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> trajectory.q_d(10.0).round(3)                            # [u, v, r, x, y, psi] at t = 10 s
+array([ 0.981, -0.192,  0.191,  8.814,  3.236,  1.331])
+>>> trajectory.A_e(np.array([0.0, 5.0])).shape, trajectory.B_e(0.0).shape
+((2, 6, 6), (6, 2)))").c_str())
       .def(py::init([](ModelPtr model, Vec q_d0, const py::object& u_d, double t0, double tf,
                        const TrajectoryOptions& options) {
              require(model != nullptr, "Trajectory needs a model");
@@ -166,38 +237,42 @@ void bind_control(py::module_& m) {
                                                  options);
            }),
            py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("tf"),
-           py::arg("options") = TrajectoryOptions{},
-           "u_d: a VectorSignal, a callable u_d(t) -> array, or a list of Signals/numbers")
-      .def("model", &Trajectory::model_ptr)
-      .def("n", &Trajectory::n)
-      .def("m", &Trajectory::m)
-      .def("t0", &Trajectory::t0)
-      .def("tf", &Trajectory::tf)
-      .def("q_d0", &Trajectory::q_d0)
-      .def("u_d_signal", &Trajectory::u_d_signal)
+           py::arg("options") = TrajectoryOptions{})
+      .def("model", &Trajectory::model_ptr, doc({"Trajectory::model"}).c_str())
+      .def("n", &Trajectory::n, doc({"Trajectory::n"}).c_str())
+      .def("m", &Trajectory::m, doc({"Trajectory::n"}).c_str())
+      .def("t0", &Trajectory::t0, doc({"Trajectory::t0"}).c_str())
+      .def("tf", &Trajectory::tf, doc({"Trajectory::t0"}).c_str())
+      .def("q_d0", &Trajectory::q_d0, doc({"Trajectory::q_d0"}).c_str())
+      .def("u_d_signal", &Trajectory::u_d_signal, doc({"Trajectory::q_d0"}).c_str())
       .def("q_d", [](const Trajectory& tr, const py::object& t) {
         return vectorize(t, tr.n(), 0, [&tr](double tt, double* out) { tr.q_d(tt, out); });
-      }, py::arg("t"))
+      }, py::arg("t"),
+         doc({"Trajectory::q_d"}, "Shape (n,) for a number t, (k, n) for a 1-D array of k times.").c_str())
       .def("u_d", [](const Trajectory& tr, const py::object& t) {
         return vectorize(t, tr.m(), 0, [&tr](double tt, double* out) { tr.u_d(tt, out); });
-      }, py::arg("t"))
+      }, py::arg("t"),
+         doc({"Trajectory::u_d"}, "Shape (m,) for a number t, (k, m) for a 1-D array of k times.").c_str())
       .def("A_e", [](const Trajectory& tr, const py::object& t) {
         return vectorize(t, tr.n(), tr.n(), [&tr](double tt, double* out) {
           Eigen::Map<Mat>(out, tr.n(), tr.n()) = tr.A_e(tt);
         });
-      }, py::arg("t"), "d/dq [f + G u_d] at q_d(t)")
+      }, py::arg("t"),
+         doc({"Trajectory::A_e"}, kSquareOfT).c_str())
       .def("B_e", [](const Trajectory& tr, const py::object& t) {
         return vectorize(t, tr.n(), tr.m(), [&tr](double tt, double* out) {
           Eigen::Map<Mat>(out, tr.n(), tr.m()) = tr.B_e(tt);
         });
-      }, py::arg("t"), "G(t, q_d(t))")
+      }, py::arg("t"),
+         doc({"Trajectory::A_e"}, "Shape (n, m) for a number t, (k, n, m) for a 1-D array of k times.").c_str())
       .def("D_e", [](const Trajectory& tr, const py::object& t) {
         return vectorize(t, tr.n(), tr.model().nw(), [&tr](double tt, double* out) {
           Eigen::Map<Mat>(out, tr.n(), tr.model().nw()) = tr.D_e(tt);
         });
-      }, py::arg("t"), "D(t, q_d(t))")
-      .def("dense", &Trajectory::dense, py::return_value_policy::reference_internal)
-      .def("stats", &Trajectory::stats)
+      }, py::arg("t"),
+         doc({"Trajectory::A_e"}, "Shape (n, nw) for a number t, (k, n, nw) for a 1-D array of k times.").c_str())
+      .def("dense", &Trajectory::dense, py::return_value_policy::reference_internal, doc({"Trajectory::dense"}).c_str())
+      .def("stats", &Trajectory::stats, doc({"Trajectory::dense"}).c_str())
       .def(py::pickle(
           [](const Trajectory& tr) {
             return py::make_tuple<py::return_value_policy::copy>(tr.model_ptr(), tr.q_d0(), tr.u_d_signal(), tr.t0(),
@@ -212,130 +287,408 @@ void bind_control(py::module_& m) {
           }));
 
   // ---- Riccati equations ----
-  bind_result<SolveStats>(m, "SolveStats", "Counts and stored size of a Riccati solve", /*repr=*/true);
+  bind_result<SolveStats>(m, "SolveStats", {"SolveStats"}, {}, R"(Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> stats = design.stats()
+>>> stats.method, stats.steps > 0, stats.memory_bytes == design.dense().memory_bytes()
+('erk', True, True))", /*repr=*/true);
 
-  py::class_<SymmetricSolution, py::smart_holder>(m, "SymmetricSolution",
-                                                  "A symmetric-matrix-valued solution X(t) on [t0, tf] (dense output)")
-      .def("trajectory", &SymmetricSolution::trajectory_ptr)
-      .def("n", &SymmetricSolution::n)
-      .def("gamma", &SymmetricSolution::gamma)
-      .def("t0", &SymmetricSolution::t0)
-      .def("tf", &SymmetricSolution::tf)
+  py::class_<SymmetricSolution, py::smart_holder>(m, "SymmetricSolution", doc({"SymmetricSolution"}, R"(
+The base of RiccatiSolution (Z) and FilterRiccatiSolution (Sigma), made by the solvers.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> isinstance(design, hc.SymmetricSolution), design.n(), design.gamma()
+(True, 6, 5.0)
+>>> np.round(design.eigenvalue_bounds(), 3)                   # m and M of eq. (22)
+array([ 0.219, 20.815]))").c_str())
+      .def("trajectory", &SymmetricSolution::trajectory_ptr, doc({"SymmetricSolution::trajectory"}).c_str())
+      .def("n", &SymmetricSolution::n, doc({"SymmetricSolution::n"}).c_str())
+      .def("gamma", &SymmetricSolution::gamma, doc({"SymmetricSolution::gamma"}).c_str())
+      .def("t0", &SymmetricSolution::t0, doc({"SymmetricSolution::t0"}).c_str())
+      .def("tf", &SymmetricSolution::tf, doc({"SymmetricSolution::t0"}).c_str())
       .def("value", [](const SymmetricSolution& s, const py::object& t) {
         return matrix_of_t(s, t, &SymmetricSolution::value);
-      }, py::arg("t"), "X(t): (n, n) for a number, (len(t), n, n) for an array")
+      }, py::arg("t"),
+         doc({"SymmetricSolution::value"}, kSquareOfT).c_str())
       .def("derivative", [](const SymmetricSolution& s, const py::object& t) {
         return matrix_of_t(s, t, &SymmetricSolution::derivative);
-      }, py::arg("t"))
+      }, py::arg("t"),
+         doc({"SymmetricSolution::derivative"}, kSquareOfT).c_str())
       .def("eigenvalue_range", &range<SymmetricSolution>, py::arg("times"),
-           "(smallest, largest) eigenvalue of X over the given times")
+           doc({"SymmetricSolution::eigenvalue_range"}, "Returns (smallest, largest); times (s): a non-empty list.")
+               .c_str())
       .def("eigenvalue_bounds", &bounds<SymmetricSolution>,
-           "(m, M) with m I <= X(t) <= M I on [t0, tf] (paper eq. 22)")
-      .def("dense", &SymmetricSolution::dense, py::return_value_policy::reference_internal)
-      .def("stats", &SymmetricSolution::stats);
+           doc({"SymmetricSolution::eigenvalue_bounds"}, "Returns (m, M).").c_str())
+      .def("dense", &SymmetricSolution::dense, py::return_value_policy::reference_internal,
+           doc({"SymmetricSolution::dense"}).c_str())
+      .def("stats", &SymmetricSolution::stats, doc({"SymmetricSolution::dense"}).c_str());
 
   py::class_<RiccatiSolution, SymmetricSolution, py::smart_holder> riccati(m, "RiccatiSolution",
-                                                                           "Z(t) of the GRDE (13) on [t0, tf]");
-  riccati.def("m", &RiccatiSolution::m)
+      doc({"RiccatiSolution", "control/riccati.hpp"}, R"(
+Made by solve_grde (and run_scenario); it pickles with its trajectory.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> design.Z(np.array([0.0, 5.0, 10.0])).shape                  # Z(t) at three times
+(3, 6, 6)
+>>> np.allclose(design.Z(10.0), np.eye(6)), design.gain(0.0).shape   # Z(tf) = Qf; K = B' Z
+(True, (2, 6)))").c_str());
+  riccati.def("m", &RiccatiSolution::m, doc({"RiccatiSolution::m"}).c_str())
       .def("Z", [](const RiccatiSolution& s, const py::object& t) {
         return matrix_of_t(s, t, &RiccatiSolution::Z);
-      }, py::arg("t"), "Z(t): (n, n) for a number, (len(t), n, n) for an array")
+      }, py::arg("t"),
+         doc({"RiccatiSolution::Z"}, kSquareOfT).c_str())
       .def("dZdt", [](const RiccatiSolution& s, const py::object& t) {
         return matrix_of_t(s, t, &RiccatiSolution::dZdt);
-      }, py::arg("t"))
+      }, py::arg("t"),
+         doc({"RiccatiSolution::Z"}, kSquareOfT).c_str())
       .def("gain", [](const RiccatiSolution& s, const py::object& t) {
         return vectorize(t, s.m(), s.n(), [&s](double tt, double* out) { s.gain(tt, out); });
-      }, py::arg("t"), "K(t) = B' Z(t): (m, n) for a number, (len(t), m, n) for an array");
+      }, py::arg("t"),
+         doc({"RiccatiSolution::gain"}, "Shape (m, n) for a number t, (k, m, n) for a 1-D array of k times.").c_str());
   def_solution_pickle(riccati);
 
-  py::class_<FilterRiccatiSolution, SymmetricSolution, py::smart_holder> filter(
-      m, "FilterRiccatiSolution", "Sigma(t) of the filter Riccati equation (36), A = A_e(t)");
+  py::class_<FilterRiccatiSolution, SymmetricSolution, py::smart_holder> filter(m, "FilterRiccatiSolution",
+      doc({"FilterRiccatiSolution"}, R"(
+Made by solve_filter_riccati; it pickles with its trajectory.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> Sigma = hc.solve_filter_riccati(trajectory, 0.25 * np.eye(3), np.eye(6), 5.0, np.eye(6))
+>>> np.allclose(Sigma.Sigma(0.0), np.eye(6)), Sigma.Sigma(10.0).diagonal().round(3)
+(True, array([0.431, 0.377, 0.384, 0.276, 0.298, 0.272])))").c_str());
   filter.def("Sigma", [](const FilterRiccatiSolution& s, const py::object& t) {
           return matrix_of_t(s, t, &FilterRiccatiSolution::Sigma);
-        }, py::arg("t"))
+        }, py::arg("t"),
+           doc({"FilterRiccatiSolution::Sigma"}, kSquareOfT).c_str())
       .def("dSigma_dt", [](const FilterRiccatiSolution& s, const py::object& t) {
         return matrix_of_t(s, t, &FilterRiccatiSolution::dSigma_dt);
-      }, py::arg("t"));
+      }, py::arg("t"),
+         doc({"FilterRiccatiSolution::Sigma"}, kSquareOfT).c_str());
   def_solution_pickle(filter);
 
   m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
         py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
-        "Solve the GRDE (13) backward from Z(tf) = Qf; raises ConjugatePointError when gamma <= gamma*");
+            doc({"solve_grde", "control/riccati.hpp"}, R"(
+Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory: the horizon [t0, tf] and A_e, B_e, D_e along it.
+Q : array_like, shape (n, n)
+    Weight of the tracking error q_e.
+Qf : array_like, shape (n, n)
+    Final value, Z(tf) = Qf.
+gamma : float
+    The attenuation level; ``np.inf`` gives LQR.
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+RiccatiSolution
+    Z(t) on [t0, tf].
+
+Raises
+------
+ValueError
+    Q or Qf of another shape, not symmetric or not (semi)definite; gamma <= 0 or NaN; bad options.
+ConjugatePointError
+    Z escapes to infinity at t_escape (s): gamma is at or below gamma*.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> np.round(design.eigenvalue_bounds(), 3)                   # m I <= Z(t) <= M I
+array([ 0.219, 20.815])
+>>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), np.inf)
+>>> bool(np.all(np.linalg.eigvalsh(design.Z(0.0) - lqr.Z(0.0)) >= 0))  # Z grows as gamma falls
+True)").c_str());
   m.def("solve_filter_riccati", &solve_filter_riccati, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
-        py::call_guard<py::gil_scoped_release>(),
-        "Solve the filter Riccati equation (36) forward from Sigma(t0) = Sigma0 with A = A_e(t)");
+        py::call_guard<py::gil_scoped_release>(), doc({"solve_filter_riccati"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory: A = A_e(t) and D = D_e(t) along it; its model gives C (Model.C).
+N : array_like, shape (p, p)
+    The measurement noise weight N = E E' (p measured outputs, the rows of C).
+Q : array_like, shape (n, n)
+    The weight of the performance index (the GRDE's Q).
+gamma : float
+    The attenuation level; ``np.inf`` gives the Kalman-Bucy filter.
+Sigma0 : array_like, shape (n, n)
+    Sigma(t0), symmetric positive definite.
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+FilterRiccatiSolution
+    Sigma(t) on [t0, tf].
+
+Raises
+------
+ValueError
+    A model without a measurement; matrices of other shapes, not symmetric or not (semi)definite;
+    gamma <= 0 or NaN; bad options.
+ConjugatePointError
+    Sigma escapes to infinity or loses positive definiteness at t_escape (s).
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> Sigma = hc.solve_filter_riccati(trajectory, 0.25 * np.eye(3), np.eye(6), 5.0, np.eye(6))
+>>> np.round(Sigma.eigenvalue_bounds(), 3)
+array([0.101, 1.005]))").c_str());
   m.def("grde_escape_time", &grde_escape_time, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
-        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
-        "Time of the first conjugate point of the GRDE on [t0, tf] (integrating backward), NaN if none");
+        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(), doc({"grde_escape_time"}, R"(
+Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory.
+Q : array_like, shape (n, n)
+    Weight of the tracking error.
+Qf : array_like, shape (n, n)
+    Final value Z(tf).
+gamma : float
+    The attenuation level.
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+float
+    The escape time (s), or NaN when Z stays finite on [t0, tf].
+
+Raises
+------
+ValueError
+    As solve_grde.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> hc.grde_escape_time(trajectory, np.eye(6), np.eye(6), 5.0)              # gamma > gamma*
+nan
+>>> round(hc.grde_escape_time(trajectory, np.eye(6), np.eye(6), 1.0), 2)     # gamma < gamma* = 1.33
+7.56)").c_str());
   m.def("filter_escape_time", &filter_escape_time, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
-        py::call_guard<py::gil_scoped_release>(),
-        "Time of the first escape of the filter Riccati equation (36) on [t0, tf], NaN if none");
+        py::call_guard<py::gil_scoped_release>(), doc({"filter_escape_time"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory (A = A_e(t); C of its model).
+N : array_like, shape (p, p)
+    The measurement noise weight.
+Q : array_like, shape (n, n)
+    The weight of the performance index.
+gamma : float
+    The attenuation level.
+Sigma0 : array_like, shape (n, n)
+    Sigma(t0).
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+float
+    The first time (s) Sigma escapes or loses positive definiteness, or NaN.
+
+Raises
+------
+ValueError
+    As solve_filter_riccati.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> hc.filter_escape_time(trajectory, 0.25 * np.eye(3), np.eye(6), 5.0, np.eye(6))
+nan)").c_str());
 
   // ---- controllers and disturbances ----
   py::class_<Controller, PyController, py::smart_holder>(m, "Controller",
-                                                         "Tracking controller u = control(t, q)")
+      doc({"Controller", "control/controller.hpp"}, R"(
+Notes
+-----
+Subclass it in Python and implement m() and control(t, q) -> array_like of shape (m,) (q: the
+actual state, shape (n,); t in seconds), and optionally name() and n(). It is called at every
+stage of the integrator, holding the GIL.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> class OpenLoop(hc.Controller):
+...     def m(self): return 2
+...     def control(self, t, q): return trajectory.u_d(t)      # u = u_d(t): no feedback
+>>> run = hc.simulate_state_feedback(trajectory, OpenLoop(), None, [1, 0, 0, 0, 0, 0])
+>>> bool(np.abs(run.q - run.q_d).max() < 1e-6)               # from q_d(t0): stays on q_d
+True)").c_str())
       .def(py::init<>())
-      .def("name", &Controller::name)
-      .def("n", &Controller::n, "the state size (0: a Python controller that does not say)")
-      .def("m", &Controller::m)
+      .def("name", &Controller::name, doc({"Controller::name"}).c_str())
+      .def("n", &Controller::n, doc({"Controller::n"}).c_str())
+      .def("m", &Controller::m, doc({"Controller::m"}).c_str())
       .def("control", [](Controller& c, double t, const Vec& q) {
         check_finite(t, "t");
         if (c.n() > 0) check_size(q, c.n(), "q");
         Vec u(c.m());
         c.control(t, q, u);
         return u;
-      }, py::arg("t"), py::arg("q"));
+      }, py::arg("t"), py::arg("q"), doc({"Controller::control"}, "Returns u, shape (m,).").c_str());
 
   py::class_<HinfStateFeedback, Controller, py::smart_holder>(m, "HinfStateFeedback",
-                                                              "u = u_d - kappa B' Z (q - q_d), paper (17)/(18)")
+      doc({"HinfStateFeedback", "HinfStateFeedback::HinfStateFeedback"}, R"(
+Parameters
+----------
+solution : RiccatiSolution
+    The design Z (solve_grde).
+kappa : Signal or float, default 1.0
+    The gain scaling kappa(t), > 0 (>= 1/2 for the certificates).
+
+Raises
+------
+ValueError
+    No solution; later, kappa(t) <= 0 where the law evaluates it.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> law = hc.HinfStateFeedback(design, kappa=1.0)
+>>> q0 = np.array([1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])      # 1 m behind, 1 m aside, 45 deg off
+>>> law.name(), law.control(0.0, q0).round(3)
+('hinf', array([ 2.035, -1.947])))").c_str())
       .def(py::init([](RiccatiSolutionPtr solution, const py::object& kappa) {
              return std::make_shared<HinfStateFeedback>(std::move(solution), to_signal(kappa, "kappa"));
            }),
            py::arg("solution"), py::arg("kappa") = Signal(1.0))
-      .def("solution", &HinfStateFeedback::solution, py::return_value_policy::reference_internal)
-      .def("kappa", &HinfStateFeedback::kappa)
-      .def("checked_kappa", &HinfStateFeedback::checked_kappa, py::arg("t"), "kappa(t); a ValueError if not > 0");
+      .def("solution", &HinfStateFeedback::solution, py::return_value_policy::reference_internal,
+           doc({"HinfStateFeedback::solution"}).c_str())
+      .def("kappa", &HinfStateFeedback::kappa, doc({"HinfStateFeedback::solution"}).c_str())
+      .def("checked_kappa", &HinfStateFeedback::checked_kappa, py::arg("t"),
+           doc({"HinfStateFeedback::checked_kappa"}).c_str());
 
-  bind_options<CascadeGains>(m, "CascadeGains", "Gains k, k1, k2 > 0 of the cascade baseline");
+  bind_options<CascadeGains>(m, "CascadeGains", {"CascadeGains"}, {}, R"(Examples
+--------
+>>> hc.CascadeGains(k=0.5)
+CascadeGains(k=0.5, k1=2.0, k2=3.0))");
 
-  py::class_<CascadeController, Controller, py::smart_holder>(
-      m, "CascadeController", "Cascaded tracking baseline for the ship (Lefeber, Pettersen, Nijmeijer type)")
+  py::class_<CascadeController, Controller, py::smart_holder>(m, "CascadeController",
+      doc({"CascadeController", "CascadeController::CascadeController"}, R"(
+Parameters
+----------
+trajectory : Trajectory
+    A desired trajectory of a ShipModel.
+gains : CascadeGains, optional
+    k, k1, k2 > 0.
+
+Raises
+------
+ValueError
+    A model other than the ship, or gains not > 0.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> law = hc.CascadeController(trajectory, hc.CascadeGains(k=0.2))
+>>> run = hc.simulate_state_feedback(trajectory, law, None, [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+>>> law.name(), round(float(np.hypot(*run.q_e()[-1, 3:5])), 2)  # position error at 10 s (m)
+('cascade', 1.34))").c_str())
       .def(py::init<TrajectoryPtr, const CascadeGains&>(), py::arg("trajectory"), py::arg("gains") = CascadeGains{})
-      .def("gains", &CascadeController::gains);
+      .def("gains", &CascadeController::gains, doc({"CascadeController::gains"}).c_str());
 
-  py::class_<Disturbance>(m, "Disturbance",
-                          "w(t, q) = signals(t) [+ gamma^-2 D' Z q_e, the worst case of paper eq. (16)]")
+  py::class_<Disturbance>(m, "Disturbance", doc({"Disturbance", "control/disturbance.hpp"}, R"(
+Wherever a Disturbance is expected, a VectorSignal (or what one is made from) is taken too.
+
+Parameters
+----------
+signals : VectorSignal
+    w(t), the model's nw channels: ``Disturbance(signals)`` is the signals alone.
+design : RiccatiSolution
+    ``Disturbance(signals, design)`` adds the worst-case disturbance of this design (finite
+    gamma).
+
+Raises
+------
+ValueError
+    signals without nw channels, no design, or a design at gamma = inf.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> w = hc.Disturbance(hc.VectorSignal([0.1, 0.1, 0.1, 0, 0, 0]), design)
+>>> q0 = np.array([1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+>>> w.worst_case(), w.eval(0.0, q0).round(4)                  # signals + gamma^-2 D' Z q_e
+(True, array([0.0586, 0.1472, 0.1779, 0.    , 0.    , 0.    ])))").c_str())
       .def(py::init<VectorSignal>(), py::arg("signals"))
-      .def(py::init<VectorSignal, RiccatiSolutionPtr>(), py::arg("signals"), py::arg("design"),
-           "signals plus the worst-case disturbance of the design (a finite gamma)")
-      .def("dim", &Disturbance::dim)
-      .def("worst_case", &Disturbance::worst_case)
-      .def("design", &Disturbance::design)
-      .def("signals", &Disturbance::signals)
+      .def(py::init<VectorSignal, RiccatiSolutionPtr>(), py::arg("signals"), py::arg("design"))
+      .def("dim", &Disturbance::dim, doc({"Disturbance::dim"}).c_str())
+      .def("worst_case", &Disturbance::worst_case, doc({"Disturbance::worst_case"}).c_str())
+      .def("design", &Disturbance::design, doc({"Disturbance::design"}).c_str())
+      .def("signals", &Disturbance::signals, doc({"Disturbance::signals"}).c_str())
       .def("eval", [](const Disturbance& d, double t, const Vec& q) {
         check_finite(t, "t");
         if (d.design()) check_size(q, d.design()->n(), "q");
         Vec w(d.dim());
         d.eval(t, q.data(), w.data());
         return w;
-      }, py::arg("t"), py::arg("q"), "w at time t for the actual state q (used by the worst case only)");
+      }, py::arg("t"), py::arg("q"),
+         doc({"Disturbance::eval"}, "Returns w, shape (nw,); q is read by the worst case only.").c_str());
   py::implicitly_convertible<VectorSignal, Disturbance>();
 
   // ---- simulation ----
-  bind_result<EstimatorSeries>(m, "EstimatorSeries", "The estimator's series of an output-feedback run (paper §4)",
-                               /*repr=*/false);
+  bind_result<EstimatorSeries>(m, "EstimatorSeries", {"EstimatorSeries"},
+                               {{"q_hat", "ndarray, shape (k, n)"}, {"y", "ndarray, shape (k, p)"},
+                                {"sigma_min_eig", "ndarray, shape (k,)"}, {"sigma_max_eig", "ndarray, shape (k,)"},
+                                {"rho_sigma_z", "ndarray, shape (k,)"}},
+                               R"(Notes
+-----
+k is the number of output times, p the number of measured outputs.
 
-  bind_result<SimulationResult>(m, "SimulationResult", "Time series on the output grid, one row per time",
+Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
+>>> scenario.tf = 10.0
+>>> estimator = hc.run_scenario(scenario).simulation.estimator
+>>> estimator.q_hat.shape, estimator.y.shape, bool(estimator.rho_sigma_z.max() < 25.0)
+((1001, 6), (1001, 3), True))", /*repr=*/false);
+
+  bind_result<SimulationResult>(m, "SimulationResult", {"SimulationResult"},
+                                {{"t", "ndarray, shape (k,)"}, {"q", "ndarray, shape (k, n)"},
+                                 {"q_d", "ndarray, shape (k, n)"}, {"u", "ndarray, shape (k, m)"},
+                                 {"u_d", "ndarray, shape (k, m)"}, {"w", "ndarray, shape (k, nw)"}},
+                                R"(Notes
+-----
+k is the number of output times.
+
+Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.tf = 10.0
+>>> run = hc.run_scenario(scenario).simulation
+>>> run.t.shape, run.q.shape, run.u.shape, run.status
+((1001,), (1001, 6), (1001, 2), <RunStatus.completed: 0>)
+>>> round(float(np.hypot(*run.q_e()[0, 3:5])), 3)              # initial position error (m)
+1.414)",
                                 /*repr=*/false)
       .def_property_readonly("estimator", [](const SimulationResult& r) -> const EstimatorSeries* {
         return r.estimator ? &*r.estimator : nullptr;
-      }, py::return_value_policy::reference_internal, "the estimator's series (output feedback), else None")
-      .def("q_e", &SimulationResult::q_e, "q - q_d, the heading component wrapped to (-pi, pi]");
+      }, py::return_value_policy::reference_internal,
+         doc({"SimulationResult::estimator"}, "None under state feedback.").c_str())
+      .def("q_e", &SimulationResult::q_e, doc({"SimulationResult::q_e"}, "Shape (k, n).").c_str());
 
-  m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"));
-  m.def("output_count", &output_count, py::arg("t0"), py::arg("tf"), py::arg("dt"));
+  m.def("output_grid", &output_grid, py::arg("t0"), py::arg("tf"), py::arg("dt"), doc({"output_grid"}).c_str());
+  m.def("output_count", &output_count, py::arg("t0"), py::arg("tf"), py::arg("dt"), doc({"output_count"}).c_str());
   m.def("simulate_state_feedback",
         [](const Trajectory& trajectory, Controller& controller, const py::object& disturbance, const Vec& q0,
            const SimulationOptions& options, const std::optional<ModelPtr>& plant) {
@@ -346,17 +699,76 @@ void bind_control(py::module_& m) {
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
         py::arg("options") = SimulationOptions{}, py::arg("plant") = py::none(),
-        "Closed loop under state feedback (paper eq. 7); disturbance: a Disturbance, a VectorSignal, a callable"
-        " w(t) -> array, a list of Signals/numbers, or None (zero); plant: the vehicle integrated (None: the"
-        " trajectory's model)");
+        doc({"simulate_state_feedback", "control/simulation.hpp"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory (of the design model): q_d and the divergence bound.
+controller : Controller
+    The law, e.g. HinfStateFeedback, CascadeController, or a Python Controller.
+disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+    The disturbance on the model's nw channels: a callable is ``w(t) -> array_like, shape (nw,)``
+    (t in seconds); None is zero.
+q0 : array_like, shape (n,)
+    The initial state q(t0).
+options : SimulationOptions, optional
+    Output step (s), divergence factor and integrator.
+plant : Model or None, optional
+    The vehicle integrated, of the design model's structure; None: the trajectory's model.
 
-  bind_options<OutputFeedbackProblem>(m, "OutputFeedbackProblem",
-                                      "The output-feedback problem: design, measurement noise, filter weights"
-                                      " (paper §4); noise: standard normal samples, one row per hold interval",
-                                      &check_problem);
-  bind_options<OutputFeedbackOptions>(m, "OutputFeedbackOptions", "Choices of the output-feedback loop (paper §4)");
+Returns
+-------
+SimulationResult
+    The series on the output grid; status diverged when the run stopped early.
 
-  m.def("noise_sample_count", &noise_sample_count, py::arg("t0"), py::arg("tf"), py::arg("period"));
+Raises
+------
+ValueError
+    q0 not of shape (n,) or not finite, a controller or disturbance of other sizes, a plant of
+    another structure, bad options.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> law = hc.HinfStateFeedback(design)
+>>> w = hc.Signal(0.0, [hc.Harmonic(0.1, 2 * np.pi * 0.2, cosine=True)])     # paper Fig. 1
+>>> q0 = [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4]                 # 1 m behind, 1 m aside, 45 deg off
+>>> run = hc.simulate_state_feedback(trajectory, law, [w, w, w, 0, 0, 0], q0)
+>>> error = np.hypot(run.q_e()[:, 3], run.q_e()[:, 4])       # position error (m)
+>>> round(float(error[0]), 3), bool(error[-1] < 0.1)
+(1.414, True))").c_str());
+
+  bind_options<OutputFeedbackProblem>(m, "OutputFeedbackProblem", {"OutputFeedbackProblem"},
+                                      {{"noise", "array_like, shape (k, p)"}, {"N", "array_like, shape (p, p)"},
+                                       {"Sigma0", "array_like, shape (n, n)"}, {"Q", "array_like, shape (n, n)"}},
+                                      R"(Notes
+-----
+k is noise_sample_count(t0, tf, sample_period), p the number of measured outputs (rows of the
+model's C).
+
+Raises
+------
+ValueError
+    sigma < 0, sample_period <= 0, N or Sigma0 not symmetric positive definite, Q not
+    symmetric positive semidefinite of Sigma0's size, noise not finite; the sizes against the
+    design's model are checked by simulate_output_feedback.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> noise = hc.scenario_noise(hc.load_scenario(hc.scenario_path("paper_fig2")))[:1000]
+>>> problem = hc.OutputFeedbackProblem(design, sigma=0.5, sample_period=0.01, noise=noise,
+...                                    N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+>>> problem.noise.shape, problem.design.gamma()
+((1000, 3), 5.0))", &check_problem);
+  bind_options<OutputFeedbackOptions>(m, "OutputFeedbackOptions", {"OutputFeedbackOptions"}, {}, R"(Examples
+--------
+>>> hc.OutputFeedbackOptions(on_coupling_violation="flag", sigma_eigenvalues=False)
+OutputFeedbackOptions(filter_A='estimate', on_coupling_violation='flag', sigma_eigenvalues=False))");
+
+  m.def("noise_sample_count", &noise_sample_count, py::arg("t0"), py::arg("tf"), py::arg("period"),
+        doc({"noise_sample_count"}).c_str());
   m.def("standard_normal_samples",
         [](std::uint64_t seed, long count, int channels) {
           // A few GB at most: an absurd count is an input error, not an attempt to allocate it.
@@ -369,7 +781,7 @@ void bind_control(py::module_& m) {
           return standard_normal_samples(seed, count, channels);
         },
         py::arg("seed"), py::arg("count"), py::arg("channels"),
-        "Seeded standard normal samples, one row per sample (mt19937_64, polar method)");
+        doc({"standard_normal_samples"}, "At most 1e9 numbers (count x channels).").c_str());
   m.def("simulate_output_feedback",
         [](const OutputFeedbackProblem& problem, Controller& controller, const py::object& disturbance,
            const Vec& q0, const OutputFeedbackOptions& options, const SimulationOptions& simulation,
@@ -385,24 +797,88 @@ void bind_control(py::module_& m) {
         py::arg("problem"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
         py::arg("options") = OutputFeedbackOptions{}, py::arg("simulation") = SimulationOptions{},
         py::arg("plant") = py::none(),
-        "Output-feedback closed loop (paper 34-36): filter and estimator of the problem's design, control by"
-        " `controller` at the estimated state; disturbance as in simulate_state_feedback; plant: the vehicle"
-        " integrated (None: the design's model)");
+        doc({"simulate_output_feedback", "control/output_feedback.hpp"}, R"(Parameters
+----------
+problem : OutputFeedbackProblem
+    The design (Z, gamma, trajectory), the noise samples and the filter's weights.
+controller : Controller
+    The law, applied at the estimated state q_d + q_hat (HinfStateFeedback of the design: eq. 34).
+disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+    The disturbance on the model's nw channels, as for simulate_state_feedback (zero on the
+    noise channels).
+q0 : array_like, shape (n,)
+    The initial state q(t0).
+options : OutputFeedbackOptions, optional
+    The filter's A and what a coupling violation does.
+simulation : SimulationOptions, optional
+    Output step (s), divergence factor and integrator.
+plant : Model or None, optional
+    The vehicle integrated, of the design model's structure; None: the design's model.
+
+Returns
+-------
+SimulationResult
+    The series on the output grid, with the estimator's series.
+
+Raises
+------
+ValueError
+    A problem without a design, or whose sizes do not fit the model; q0 not of shape (n,);
+    a controller, disturbance or plant of other sizes; bad options.
+CouplingConditionError
+    rho(Sigma Z) >= gamma^2 (unless on_coupling_violation is "flag").
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> noise = hc._core.standard_normal_samples(1, hc._core.noise_sample_count(0.0, 10.0, 0.01), 3)
+>>> problem = hc.OutputFeedbackProblem(design, sigma=0.5, sample_period=0.01, noise=noise,
+...                                    N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+>>> run = hc.simulate_output_feedback(problem, hc.HinfStateFeedback(design), None,
+...                                   [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+>>> run.estimator.q_hat.shape, round(float(run.estimator.rho_sigma_z.max()), 2)  # < gamma^2 = 25
+((1001, 6), 20.81))").c_str());
 
   // ---- metrics (metrics.hpp: metric_table() is their one definition) ----
-  py::class_<MetricDefinition>(m, "MetricDefinition", "One metric of a run: name, label, unit, definition")
-      .def_readonly("name", &MetricDefinition::name, "its key in the results file and Metrics' property")
-      .def_readonly("label", &MetricDefinition::label)
-      .def_readonly("unit", &MetricDefinition::unit)
-      .def_readonly("definition", &MetricDefinition::definition)
+  py::class_<MetricDefinition>(m, "MetricDefinition", doc({"MetricDefinition"}, R"(Examples
+--------
+>>> definition = hc.metric_table()[0]
+>>> definition.name, definition.unit, definition.definition
+('rms_position_error_last_half', 'm', 'sqrt(mean over the last half of |p - p_d|^2)'))").c_str())
+      .def_readonly("name", &MetricDefinition::name, doc({"MetricDefinition::name"}).c_str())
+      .def_readonly("label", &MetricDefinition::label, doc({"MetricDefinition::label"}).c_str())
+      .def_readonly("unit", &MetricDefinition::unit, doc({"MetricDefinition::unit"}).c_str())
+      .def_readonly("definition", &MetricDefinition::definition, doc({"MetricDefinition::definition"}).c_str())
       .def("__repr__", [](const MetricDefinition& d) { return str_cat("MetricDefinition('", d.name, "')"); });
   m.def("metric_table", [] { return std::vector<MetricDefinition>(metric_table().begin(), metric_table().end()); },
-        "The metrics of a run, in the order of the results file");
+        doc({"metric_table"}, R"(Returns
+-------
+list of MetricDefinition
 
-  py::class_<Metrics> metrics(m, "Metrics", "Metrics of a closed-loop run (metric_table() defines each)");
+Examples
+--------
+>>> [definition.name for definition in hc.metric_table()][:3]
+['rms_position_error_last_half', 'max_position_error', 'final_position_error'])").c_str());
+
+  std::string metric_attributes = "Attributes\n----------";
+  for (const MetricDefinition& d : metric_table())
+    metric_attributes +=
+        str_cat("\n", d.name, " : float\n", indented(wrapped(str_cat(d.definition, " (unit: ", d.unit, ")"), 92), 4));
+  py::class_<Metrics> metrics(m, "Metrics", doc({"Metrics", "control/metrics.hpp"}, metric_attributes + R"(
+
+Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.tf = 10.0
+>>> metrics = hc.run_scenario(scenario).metrics
+>>> round(metrics.max_position_error, 3), metrics.max_rho_sigma_z        # NaN: state feedback
+(1.414, nan))").c_str());
   for (const MetricDefinition& d : metric_table()) {
     const auto member = d.value;
-    metrics.def_property_readonly(d.name, [member](const Metrics& x) { return x.*member; }, d.definition);
+    metrics.def_property_readonly(d.name, [member](const Metrics& x) { return x.*member; },
+                                  str_cat(d.definition, " (unit: ", d.unit, ")").c_str());
   }
   metrics.def("__repr__", &metrics_repr)
       .def("__eq__", [](const Metrics& a, const Metrics& b) { return same(a, b); }, py::is_operator())
@@ -419,16 +895,64 @@ void bind_control(py::module_& m) {
             for (const MetricDefinition& d : metric_table()) x.*(d.value) = state[i++].cast<double>();
             return x;
           }));
-  m.def("compute_metrics", &compute_metrics, py::arg("model"), py::arg("run"), py::arg("Q"));
-  m.def("l2_norm", &l2_norm, py::arg("t"), py::arg("series"),
-        "sqrt of the trapezoid integral of the squared row norms of series over times t");
+  m.def("compute_metrics", &compute_metrics, py::arg("model"), py::arg("run"), py::arg("Q"),
+      doc({"compute_metrics"}, R"(
+Parameters
+----------
+model : Model
+    The model simulated (its position and heading indices).
+run : SimulationResult
+    The closed-loop run.
+Q : array_like, shape (n, n)
+    The weight of q_e in the L2 gain.
+
+Returns
+-------
+Metrics
+
+Raises
+------
+ValueError
+    Series whose shapes do not fit the model, or Q not symmetric positive semidefinite.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> run = hc.simulate_state_feedback(trajectory, hc.HinfStateFeedback(design), None,
+...                               [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+>>> metrics = hc.compute_metrics(trajectory.model(), run, np.eye(6))
+>>> round(metrics.max_position_error, 3), metrics.l2_gain                # no disturbance: no gain
+(1.414, nan))").c_str());
+  m.def("l2_norm", &l2_norm, py::arg("t"), py::arg("series"), doc({"l2_norm"}).c_str());
 
   // ---- gamma* and certificates (paper §3) ----
-  bind_options<GammaStarOptions>(m, "GammaStarOptions",
-                                 "Options of the gamma* search. threads: gammas evaluated in parallel per round"
-                                 " (one for a model implemented in Python, whose calls hold the GIL)");
-  bind_result<GammaTrial>(m, "GammaTrial", "One gamma tried by the gamma* search", /*repr=*/true);
-  bind_result<GammaStarResult>(m, "GammaStarResult", "gamma*, the final bracket and every gamma tried", /*repr=*/false)
+  bind_options<GammaStarOptions>(m, "GammaStarOptions", {"GammaStarOptions"}, {}, R"(Notes
+-----
+For a model implemented in Python the search evaluates one gamma at a time (its calls hold the
+GIL).
+
+Raises
+------
+ValueError
+    An option out of its range, naming it.
+
+Examples
+--------
+>>> options = hc.GammaStarOptions(lower=1.0, upper=2.0, rtol=1e-4)
+>>> options.threads, options.solver.method
+(2, <Method.auto: 0>))");
+  bind_result<GammaTrial>(m, "GammaTrial", {"GammaTrial"}, {}, R"(Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> first = hc.gamma_star(trajectory, np.eye(6), np.eye(6)).trials[0]
+>>> first.gamma, first.passed, first.condition, round(first.t_escape, 2)
+(1.0, False, <GammaCondition.grde: 1>, 7.56))", /*repr=*/true);
+  bind_result<GammaStarResult>(m, "GammaStarResult", {"GammaStarResult"}, {}, R"(Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> result = hc.gamma_star(trajectory, np.eye(6), np.eye(6))
+>>> round(result.gamma_star, 4), result.binding, result.converged
+(1.3346, <GammaCondition.grde: 1>, True))", /*repr=*/false)
       .def("__repr__", [](const GammaStarResult& r) {
         return str_cat("GammaStarResult(gamma_star=", r.gamma_star, ", bracket=[", r.lower, ", ", r.upper,
                        "], binding='", to_string(r.binding), "', t_escape_lower=", r.t_escape_lower,
@@ -440,8 +964,35 @@ void bind_control(py::module_& m) {
           return gamma_star(trajectory, Q, Qf, serial_for_python_models(model_of(trajectory), options));
         },
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("options") = GammaStarOptions{},
-        py::call_guard<py::gil_scoped_release>(),
-        "gamma* (paper eq. 14): the smallest gamma without a conjugate point of the GRDE on [t0, tf]");
+        py::call_guard<py::gil_scoped_release>(), doc({"gamma_star", "control/analysis.hpp"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory (its horizon [t0, tf]).
+Q : array_like, shape (n, n)
+    Weight of the tracking error, symmetric positive semidefinite.
+Qf : array_like, shape (n, n)
+    Final value Z(tf), symmetric positive definite.
+options : GammaStarOptions, optional
+    The bracket, tolerance, evaluations, threads and solver options.
+
+Returns
+-------
+GammaStarResult
+    gamma*, the final bracket and every gamma tried.
+
+Raises
+------
+ValueError
+    Q or Qf not such weights, bad options.
+SolverError
+    An integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> result = hc.gamma_star(trajectory, np.eye(6), np.eye(6))
+>>> round(result.gamma_star, 4), result.binding                  # below it, no design
+(1.3346, <GammaCondition.grde: 1>))").c_str());
   m.def("gamma_star_output_feedback",
         [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const Mat& N, const Mat& Sigma0,
            const GammaStarOptions& options) {
@@ -450,7 +1001,40 @@ void bind_control(py::module_& m) {
         },
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("N"), py::arg("Sigma0"),
         py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
-        "The smallest gamma for output feedback: GRDE, filter (36) with A_e and rho(Sigma Z) < gamma^2");
+        doc({"gamma_star_output_feedback"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory (its model has a measurement, Model.C).
+Q : array_like, shape (n, n)
+    Weight of the tracking error.
+Qf : array_like, shape (n, n)
+    Final value Z(tf).
+N : array_like, shape (p, p)
+    The measurement noise weight, symmetric positive definite.
+Sigma0 : array_like, shape (n, n)
+    Sigma(t0), symmetric positive definite.
+options : GammaStarOptions, optional
+    The bracket, tolerance, evaluations, threads and solver options.
+
+Returns
+-------
+GammaStarResult
+    The smallest gamma; binding is the condition that limits it.
+
+Raises
+------
+ValueError
+    A model without a measurement, matrices that are not such weights, bad options.
+SolverError
+    An integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> N, Sigma0 = 0.25 * np.eye(3), np.eye(6)                  # x, y, psi measured; Sigma(t0)
+>>> result = hc.gamma_star_output_feedback(trajectory, np.eye(6), np.eye(6), N, Sigma0)
+>>> round(result.gamma_star, 2), result.binding                  # the GRDE alone allows 1.33
+(4.59, <GammaCondition.coupling: 3>))").c_str());
   m.def("max_rho_sigma_z",
         [](const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma) {
           require(Z.n() == Sigma.n(), "max_rho_sigma_z: Z is ", Z.n(), " x ", Z.n(), " but Sigma is ", Sigma.n(), " x ",
@@ -458,17 +1042,70 @@ void bind_control(py::module_& m) {
           py::gil_scoped_release release;
           return max_rho_sigma_z(Z, Sigma);
         },
-        py::arg("Z"), py::arg("Sigma"), "(max over [t0, tf] of rho(Sigma Z), where)");
+        py::arg("Z"), py::arg("Sigma"), doc({"max_rho_sigma_z"}, R"(Parameters
+----------
+Z : RiccatiSolution
+    The GRDE's solution.
+Sigma : FilterRiccatiSolution
+    The filter's solution along the same trajectory.
 
-  bind_result<Certificates>(m, "Certificates", "The stability certificates of paper §3 (eqs. 22-24)", /*repr=*/true);
+Returns
+-------
+tuple of float
+    (the largest rho(Sigma(t) Z(t)), t in seconds).
+
+Raises
+------
+ValueError
+    Solutions of different sizes.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> Sigma = hc.solve_filter_riccati(trajectory, 0.25 * np.eye(3), np.eye(6), 5.0, np.eye(6))
+>>> rho, t = hc.max_rho_sigma_z(design, Sigma)
+>>> round(rho, 2), t, rho < design.gamma() ** 2              # the coupling condition holds
+(20.81, 0.0, True))").c_str());
+
+  bind_result<Certificates>(m, "Certificates", {"Certificates"}, {}, R"(Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> certificates = hc.certify(design, 1.0, np.eye(6))
+>>> round(certificates.m, 3), round(certificates.M, 3), round(certificates.p_min, 3)
+(0.219, 20.815, 1.0))", /*repr=*/true);
   m.def("certify",
         [](const RiccatiSolution& Z, const py::object& kappa, const Mat& Q) {
           const Signal k = to_signal(kappa, "kappa");
           py::gil_scoped_release release;
           return certify(Z, k, Q);
         },
-        py::arg("Z"), py::arg("kappa"), py::arg("Q"),
-        "The certificates of paper §3 for a design Z (its gamma), the gain scaling kappa(t) and the weight Q");
+        py::arg("Z"), py::arg("kappa"), py::arg("Q"), doc({"certify"}, R"(Parameters
+----------
+Z : RiccatiSolution
+    The design (solve_grde).
+kappa : Signal or float
+    The gain scaling kappa(t) of the law.
+Q : array_like, shape (n, n)
+    The GRDE's weight Q.
+
+Returns
+-------
+Certificates
+
+Raises
+------
+ValueError
+    kappa not a Signal or a finite number; Q not a symmetric positive semidefinite (n, n) matrix.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> certificates = hc.certify(design, 1.0, np.eye(6))
+>>> certificates.remainder_is_bound, certificates.decay_rate > 0      # the ship's analytic L
+(True, True))").c_str());
 }
+
+#undef HINF_DESIGN_EXAMPLE
+#undef HINF_TRAJECTORY_EXAMPLE
 
 }  // namespace hinf::python

@@ -27,20 +27,39 @@ std::string scenario_text(const Scenario& s) {
 void bind_io(py::module_& m) {
   // ---- scenario and results files (io/scenario_file.hpp, io/results.hpp) ----
   m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
-        "The one scenario reader (the one hinf-sim uses): same checks, same messages");
-  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), "Reads a scenario file (parse_scenario_toml)");
+        doc({"parse_scenario_toml"}).c_str());
+  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), doc({"load_scenario_toml"}).c_str());
   m.def("needs_planning_toml", &needs_planning_toml, py::arg("text"), py::arg("source"),
-        "Whether a scenario document's [desired] gives waypoints, a path or plan options (parsed with every guard"
-        " of the reader)");
-  m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"),
-        "The model of a document's [model] section, read as parse_scenario_toml reads it");
-  m.def("scenario_toml", &scenario_toml, py::arg("scenario"),
-        "The scenario as a scenario file that reads back to an equal scenario");
+        doc({"needs_planning_toml"}).c_str());
+  m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"), doc({"parse_model_toml"}).c_str());
+  m.def("scenario_toml", &scenario_toml, py::arg("scenario"), doc({"scenario_toml", "io/scenario_file.hpp"}, R"(
+Parameters
+----------
+scenario : Scenario
+    The scenario to write.
+
+Returns
+-------
+str
+    The scenario file (TOML; docs/scenarios.md).
+
+Raises
+------
+ValueError
+    A model or a signal implemented in Python (it has no file form), naming it.
+
+Examples
+--------
+>>> from hinf_cpp.scenario import scenario_toml
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.gamma = 4.0
+>>> text = scenario_toml(scenario)
+>>> "gamma = 4.0" in text, scenario_toml(hc._core.parse_scenario_toml(text, "copy")) == text
+(True, True))").c_str());
   m.def("parse_signal_toml", &parse_signal_toml, py::arg("text"), py::arg("key"), py::arg("source"),
-        "A Signal from a TOML document whose one key is `key` (as in a scenario)");
-  m.def("results_json", &results_json, py::arg("result"), py::arg("indent") = 2,
-        "The results file of scenarios.md (JSON; non-finite numbers as null)");
-  m.def("results_csv", &results_csv, py::arg("result"), "The time series on the output grid (CSV, one row per time)");
+        doc({"parse_signal_toml"}).c_str());
+  m.def("results_json", &results_json, py::arg("result"), py::arg("indent") = 2, doc({"results_json"}).c_str());
+  m.def("results_csv", &results_csv, py::arg("result"), doc({"results_csv"}).c_str());
 
   // [model] kind = "python" in scenario files: the Python package registers the function that
   // makes the model (hinf_cpp.scenario.documents.model_from_callable) when it is imported.
@@ -65,8 +84,8 @@ void bind_io(py::module_& m) {
 
   // RunResult (bind_scenario.cpp) writes its results files.
   py::class_<RunResult> run_result = py::reinterpret_borrow<py::class_<RunResult>>(m.attr("RunResult"));
-  run_result.def("to_json", &results_json, py::arg("indent") = 2, "The results file (results_json)")
-      .def("to_csv", &results_csv, "The time series on the output grid (results_csv)");
+  run_result.def("to_json", &results_json, py::arg("indent") = 2, doc({"results_json"}).c_str())
+      .def("to_csv", &results_csv, doc({"results_csv"}).c_str());
 
   // Scenario (bind_scenario.cpp) pickles as its scenario file.
   py::class_<Scenario> scenario = py::reinterpret_borrow<py::class_<Scenario>>(m.attr("Scenario"));

@@ -256,11 +256,11 @@ class PyModel : public Model, public py::trampoline_self_life_support {
 // A built-in vehicle (vehicles.hpp): Vehicle(parameters), parameters(), pickled by value as
 // its parameters (as ShipModel).
 template <class Vehicle, class Parameters>
-void bind_vehicle(py::module_& m, const char* name, const char* doc) {
+void bind_vehicle(py::module_& m, const char* name, const std::string& text) {
   const std::string type = name;
-  py::class_<Vehicle, Model, py::smart_holder>(m, name, doc)
+  py::class_<Vehicle, Model, py::smart_holder>(m, name, text.c_str())
       .def(py::init<const Parameters&>(), py::arg("parameters") = Parameters{})
-      .def("parameters", &Vehicle::parameters)
+      .def("parameters", &Vehicle::parameters, doc({str_cat(type, "::parameters")}).c_str())
       .def(py::pickle(
           [](const Vehicle& model) { return py::make_tuple<py::return_value_policy::copy>(model.parameters()); },
           [type](const py::tuple& state) {
@@ -275,60 +275,80 @@ bool implemented_in_python(const Model* model) { return dynamic_cast<const PyMod
 
 void bind_models(py::module_& m) {
   // ---- models ----
-  py::class_<Model, PyModel, py::smart_holder>(m, "Model", R"doc(
-Control-affine model dq/dt = f(t, q) + G(t, q) u + D(t, q) w (paper eq. 7; model.hpp).
+  py::class_<Model, PyModel, py::smart_holder>(m, "Model", doc({"Model", "models/model.hpp"}, R"(Notes
+-----
 Subclass it in Python and implement n(), m(), nw(), f(t, q), G(t, q), D(t, q), and if you can
-dfdq(t, q) (else a numerical Jacobian is used: the complex step when f accepts complex q, else
-central differences; jacobian_method() says which). A G or D that depends on q needs
-state_dependent_inputs() -> True and constant_input_matrices() -> False (dGudq(t, q, u) =
-d/dq [G(t, q) u] is optional: central differences otherwise). Its structure (n, m, nw, name,
-state_names, position_indices, heading_index, noise_channels, constant_input_matrices,
-state_dependent_inputs) is read once, when the library first needs it, and validated; it must not
-change afterwards. What f, dfdq, G, D, C and error_split return is checked at every call.
-A model implemented in Python does not pickle.)doc")
+dfdq(t, q) (else the Jacobian is numerical: the complex step when f accepts complex q, else
+central differences; jacobian_method() says which). q arrives as a float64 array of shape (n,);
+f returns shape (n,), dfdq (n, n), G (n, m), D (n, nw). A G or D that depends on q needs
+state_dependent_inputs() -> True and constant_input_matrices() -> False (dGudq(t, q, u) is
+optional: central differences otherwise). The other methods have defaults. The structure is
+read once, when the library first needs it, and validated; what f, dfdq, G, D, C and
+error_split return is checked at every call (ValueError naming the method). Each call holds the
+GIL, so computations with a Python model run on one thread; such a model does not pickle.
+
+Examples
+--------
+>>> class DoubleIntegrator(hc.Model):
+...     def n(self): return 2
+...     def m(self): return 1
+...     def nw(self): return 1
+...     def f(self, t, q): return np.array([q[1], 0.0])
+...     def G(self, t, q): return np.array([[0.0], [1.0]])
+...     def D(self, t, q): return np.array([[0.0], [1.0]])
+>>> model = DoubleIntegrator()
+>>> model.dfdq(0.0, np.array([0.0, 2.0]))                    # no dfdq: numerical
+array([[0., 1.],
+       [0., 0.]])
+>>> model.jacobian_method(), model.state_names()
+('complex step', ['q0', 'q1']))").c_str())
       .def(py::init<>())
-      .def("name", &Model::name)
-      .def("n", &Model::n)
-      .def("m", &Model::m)
-      .def("nw", &Model::nw)
+      .def("name", &Model::name, doc({"Model::name"}).c_str())
+      .def("n", &Model::n, doc({"Model::n"}).c_str())
+      .def("m", &Model::m, doc({"Model::n"}).c_str())
+      .def("nw", &Model::nw, doc({"Model::n"}).c_str())
       .def("f", [](const Model& model, double t, const Vec& q) {
         check_size(q, model.n(), "q");
         Vec out(model.n());
         model.f(t, q, out);
         return out;
-      }, py::arg("t"), py::arg("q"))
+      }, py::arg("t"), py::arg("q"), doc({"Model::f"}, "t in seconds, q of shape (n,); returns f, shape (n,).").c_str())
       .def("dfdq", [](const Model& model, double t, const Vec& q) {
         check_size(q, model.n(), "q");
         Mat out(model.n(), model.n());
         model.dfdq(t, q, out);
         return out;
-      }, py::arg("t"), py::arg("q"))
+      }, py::arg("t"), py::arg("q"),
+         doc({"Model::f"}, "t in seconds, q of shape (n,); returns df/dq, shape (n, n).").c_str())
       .def("G", [](const Model& model, double t, const Vec& q) {
         check_size(q, model.n(), "q");
         return model.G(t, q);
-      }, py::arg("t"), py::arg("q"), "input matrix G(t, q) (n x m)")
+      }, py::arg("t"), py::arg("q"),
+         doc({"Model::G"}, "t in seconds, q of shape (n,); returns G, shape (n, m).").c_str())
       .def("D", [](const Model& model, double t, const Vec& q) {
         check_size(q, model.n(), "q");
         return model.D(t, q);
-      }, py::arg("t"), py::arg("q"), "disturbance matrix D(t, q) (n x nw)")
+      }, py::arg("t"), py::arg("q"),
+         doc({"Model::G"}, "t in seconds, q of shape (n,); returns D, shape (n, nw).").c_str())
       .def("dGudq", [](const Model& model, double t, const Vec& q, const Vec& u) {
         check_size(q, model.n(), "q");
         check_size(u, model.m(), "u");
         Mat out(model.n(), model.n());
         model.dGudq(t, q, u, out);
         return out;
-      }, py::arg("t"), py::arg("q"), py::arg("u"), "d/dq [G(t, q) u] (n x n; zero when G does not depend on q)")
+      }, py::arg("t"), py::arg("q"), py::arg("u"),
+         doc({"Model::dGudq"}, "q of shape (n,), u of shape (m,); returns shape (n, n).").c_str())
       .def("linearize", [](const Model& model, double t, const Vec& q, const Vec& u) {
         check_size(q, model.n(), "q");
         check_size(u, model.m(), "u");
         Mat out(model.n(), model.n());
         linearize(model, t, q, u, out);
         return out;
-      }, py::arg("t"), py::arg("q"), py::arg("u"), "d/dq [f(t, q) + G(t, q) u] (A_e(t) at q_d(t), u_d(t))")
-      .def("constant_input_matrices", &Model::constant_input_matrices)
-      .def("state_dependent_inputs", &Model::state_dependent_inputs)
-      .def("jacobian_method", &Model::jacobian_method,
-           "how dfdq is obtained: analytic, automatic differentiation, complex step or central differences")
+      }, py::arg("t"), py::arg("q"), py::arg("u"),
+         doc({"linearize"}, "q of shape (n,), u of shape (m,); returns A, shape (n, n).").c_str())
+      .def("constant_input_matrices", &Model::constant_input_matrices, doc({"Model::constant_input_matrices"}).c_str())
+      .def("state_dependent_inputs", &Model::state_dependent_inputs, doc({"Model::state_dependent_inputs"}).c_str())
+      .def("jacobian_method", &Model::jacobian_method, doc({"Model::jacobian_method"}).c_str())
       .def("error_split", [](const Model& model, double t, const Vec& q_d, const Vec& u_d, const Vec& q_e) {
         check_size(q_d, model.n(), "q_d");
         check_size(u_d, model.m(), "u_d");
@@ -338,36 +358,57 @@ A model implemented in Python does not pickle.)doc")
         model.error_split(t, q_d, u_d, q_e, A, alpha);
         return py::make_tuple(A, alpha);
       }, py::arg("t"), py::arg("q_d"), py::arg("u_d"), py::arg("q_e"),
-         "(A, alpha) of f_e = A(t, q_e) q_e + alpha (paper 26-31; f_e includes G(q) u_d - G(q_d) u_d)")
-      .def("C", &Model::C, py::arg("t"), "measurement matrix of y = C q + E w (paper eq. 25)")
-      .def("noise_channels", &Model::noise_channels, "the w channels that carry measurement noise")
+         doc({"Model::error_split"},
+             "q_d, q_e of shape (n,), u_d of shape (m,); returns (A, alpha) of shapes (n, n) and (n,).").c_str())
+      .def("C", &Model::C, py::arg("t"), doc({"Model::C"}, "Returns C, shape (p, n).").c_str())
+      .def("noise_channels", &Model::noise_channels,
+         doc({"Model::C"}, "Returns the noise channels, indices into w.").c_str())
       .def("remainder_bound", [](const Model& model, double t, const Vec& q_d, double radius) {
         check_size(q_d, model.n(), "q_d");
         return model.remainder_bound(t, q_d, radius);
-      }, py::arg("t"), py::arg("q_d"), py::arg("radius"),
-         "L with |f_e - A_e q_e| <= L |q_e|^2 for |q_e| <= radius, or NaN if the model has none")
-      .def("state_names", &Model::state_names)
-      .def("position_indices", &Model::position_indices)
-      .def("heading_index", &Model::heading_index)
+      }, py::arg("t"), py::arg("q_d"), py::arg("radius"), doc({"Model::remainder_bound"}).c_str())
+      .def("state_names", &Model::state_names, doc({"Model::state_names"}).c_str())
+      .def("position_indices", &Model::position_indices, doc({"Model::position_indices"}).c_str())
+      .def("heading_index", &Model::heading_index, doc({"Model::heading_index"}).c_str())
       .def("named_parameters",
            [](const Model& model) {
              py::typing::Dict<py::str, py::float_> parameters;
              for (const auto& [name, value] : model.named_parameters()) parameters[py::str(name)] = value;
              return parameters;
            },
-           "the parameters by name, the keys of the model's scenario-file section ([model], [plant]); a matrix"
-           " entry as NAME[i][j] (from 0); empty for a model without named parameters. A model implemented in"
-           " Python may define it (returning a dict of numbers)")
+           doc({"Model::named_parameters"}, "Returns a dict name -> value; a model implemented in Python may define it "
+                                            "(returning a dict of numbers).").c_str())
       .def("__getstate__", [](const Model& model) -> py::tuple {
         cannot_pickle(str_cat("the model '", model.name(), "'"),
                       "a model implemented in Python does not pickle (ShipModel and LinearModel do)");
       });
 
-  bind_options<ShipParameters>(m, "ShipParameters", "Parameters of the ship of paper eqs. (1)-(6)");
+  bind_options<ShipParameters>(m, "ShipParameters", {"ShipParameters"}, {}, R"(Examples
+--------
+>>> hc.ShipParameters(d_u=1.5)
+ShipParameters(m_u=0.5, m_v=-2.0, m_r=0.5, d_u=1.5, d_v=2.0, d_r=1.0))");
 
-  py::class_<ShipModel, Model, py::smart_holder>(m, "ShipModel", "The underactuated ship of paper eqs. (1)-(6)")
+  py::class_<ShipModel, Model, py::smart_holder>(m, "ShipModel",
+      doc({"models/ship.hpp", "ShipParameters", "ShipModel", "ShipModel::ShipModel"}, R"(
+Parameters
+----------
+parameters : ShipParameters, optional
+    The paper's parameters by default.
+
+Raises
+------
+ValueError
+    A parameter that is not finite.
+
+Examples
+--------
+>>> ship = hc.ShipModel(hc.ShipParameters(d_u=1.5))
+>>> ship.n(), ship.m(), ship.nw(), ship.state_names()
+(6, 2, 6, ['u', 'v', 'r', 'x', 'y', 'psi'])
+>>> ship.f(0.0, np.array([1.0, 0.0, 0.0, 0.0, 0.0, 0.0]))[[0, 3]]   # du/dt = -d_u u, dx/dt = u
+array([-1.5,  1. ]))").c_str())
       .def(py::init<const ShipParameters&>(), py::arg("parameters") = ShipParameters{})
-      .def("parameters", &ShipModel::parameters)
+      .def("parameters", &ShipModel::parameters, doc({"ShipModel::parameters"}).c_str())
       .def(py::pickle(
           [](const ShipModel& model) { return py::make_tuple<py::return_value_policy::copy>(model.parameters()); },
           [](const py::tuple& state) {
@@ -375,14 +416,33 @@ A model implemented in Python does not pickle.)doc")
             return std::make_shared<ShipModel>(state[0].cast<ShipParameters>());
           }));
 
-  py::class_<LinearModel, Model, py::smart_holder>(
-      m, "LinearModel",
-      "dq/dt = A q + B u + D w; with C (p x n), y = C q + noise on p extra w channels")
+  py::class_<LinearModel, Model, py::smart_holder>(m, "LinearModel", doc({"LinearModel"}, R"(Parameters
+----------
+A : array_like, shape (n, n)
+    The state matrix.
+B : array_like, shape (n, m)
+    The input matrix.
+D : array_like, shape (n, nw)
+    The disturbance matrix.
+C : array_like, shape (p, n), optional
+    The measurement matrix; without it the model has no measurement.
+
+Raises
+------
+ValueError
+    Matrices whose shapes do not fit, or entries that are not finite.
+
+Examples
+--------
+>>> model = hc.LinearModel(np.array([[0.0, 1.0], [0.0, 0.0]]), np.array([[0.0], [1.0]]), np.eye(2),
+...                        C=np.array([[1.0, 0.0]]))
+>>> model.n(), model.m(), model.nw(), model.noise_channels()      # w = [process (2), noise (1)]
+(2, 1, 3, [2]))").c_str())
       .def(py::init<Mat, Mat, Mat, Mat>(), py::arg("A"), py::arg("B"), py::arg("D"), py::arg("C") = Mat())
-      .def("A", &LinearModel::A)
-      .def("B", &LinearModel::B)
-      .def("process_D", &LinearModel::process_D, "D as given to the constructor (without the noise channels)")
-      .def("measurement_C", &LinearModel::measurement_C, "C as given to the constructor (empty if none)")
+      .def("A", &LinearModel::A, doc({"LinearModel::A"}).c_str())
+      .def("B", &LinearModel::B, doc({"LinearModel::A"}).c_str())
+      .def("process_D", &LinearModel::process_D, doc({"LinearModel::process_D"}).c_str())
+      .def("measurement_C", &LinearModel::measurement_C, doc({"LinearModel::process_D"}).c_str())
       .def(py::pickle(
           [](const LinearModel& model) {
             return py::make_tuple(model.A(), model.B(), model.process_D(), model.measurement_C());
@@ -393,11 +453,28 @@ A model implemented in Python does not pickle.)doc")
                                                  state[3].cast<Mat>());
           }));
 
-  py::class_<FleetModel, Model, py::smart_holder>(
-      m, "FleetModel", "count independent copies of a model stacked block-diagonally (fleet.hpp)")
+  py::class_<FleetModel, Model, py::smart_holder>(m, "FleetModel",
+      doc({"models/fleet.hpp", "FleetModel::FleetModel"}, R"(
+Parameters
+----------
+member : Model
+    The model of one vehicle (n_1 states).
+count : int
+    The number of vehicles, >= 1.
+
+Raises
+------
+ValueError
+    No member, or count < 1 or too large.
+
+Examples
+--------
+>>> fleet = hc.FleetModel(hc.ShipModel(), 3)
+>>> fleet.n(), fleet.m(), fleet.state_names()[:4], fleet.heading_index()
+(18, 6, ['u_1', 'v_1', 'r_1', 'x_1'], -1))").c_str())
       .def(py::init<ModelPtr, int>(), py::arg("member"), py::arg("count"))
-      .def("member", &FleetModel::member)
-      .def("count", &FleetModel::count)
+      .def("member", &FleetModel::member, doc({"FleetModel::member"}).c_str())
+      .def("count", &FleetModel::count, doc({"FleetModel::member"}).c_str())
       .def(py::pickle(
           [](const FleetModel& model) { return py::make_tuple(model.member(), model.count()); },
           [](const py::tuple& state) {
@@ -406,36 +483,130 @@ A model implemented in Python does not pickle.)doc")
           }));
 
   // ---- the built-in vehicles (vehicles.hpp): parameters and models, pickled by value ----
-  bind_options<FossenVesselParameters>(
-      m, "FossenVesselParameters",
-      "M (mass) and D (damping) of the 3-DOF vessel in Fossen's form; defaults: the supply vessel (bis units)")
+  bind_options<FossenVesselParameters>(m, "FossenVesselParameters", {"FossenVesselParameters"},
+                                       {{"M", "array_like, shape (3, 3)"}, {"D", "array_like, shape (3, 3)"}},
+                                       R"(Examples
+--------
+>>> vessel = hc.FossenVesselParameters.supply_vessel()
+>>> float(vessel.M[1, 2]), vessel.D.shape
+(-0.0744, (3, 3)))")
       .def_static("supply_vessel", &FossenVesselParameters::supply_vessel,
-                  "Fossen, Sagatun and Sorensen (1996), in bis units (the defaults)");
-  bind_options<HovercraftParameters>(m, "HovercraftParameters",
-                                     "Damping per unit mass (d) and inertia (d_r) of the planar hovercraft (1/s)");
-  bind_options<PlanarVtolParameters>(m, "PlanarVtolParameters",
-                                     "Gravity g and coupling epsilon of the planar VTOL (normalized units)");
-  bind_options<AuvParameters>(m, "AuvParameters",
-                              "Masses (kg, kg m^2) and drag coefficients of the AUV; defaults: the Sirene AUV")
-      .def_static("sirene", &AuvParameters::sirene, "Aguiar and Pascoal (2007) (the defaults)");
+                  doc({"FossenVesselParameters::supply_vessel"}).c_str());
+  bind_options<HovercraftParameters>(m, "HovercraftParameters", {"HovercraftParameters"}, {}, R"(Examples
+--------
+>>> hc.HovercraftParameters(d=0.1)
+HovercraftParameters(d=0.1, d_r=0.5))");
+  bind_options<PlanarVtolParameters>(m, "PlanarVtolParameters", {"PlanarVtolParameters"}, {}, R"(Examples
+--------
+>>> hc.PlanarVtolParameters(epsilon=0.0)
+PlanarVtolParameters(g=1.0, epsilon=0.0))");
+  bind_options<AuvParameters>(m, "AuvParameters", {"AuvParameters"}, {}, R"(Examples
+--------
+>>> sirene = hc.AuvParameters.sirene()
+>>> sirene.m11, sirene == hc.AuvParameters()
+(215.0, True))")
+      .def_static("sirene", &AuvParameters::sirene, doc({"AuvParameters::sirene"}).c_str());
   bind_vehicle<FossenVessel, FossenVesselParameters>(
-      m, "FossenVessel", "3-DOF underactuated surface vessel M nu' + C(nu) nu + D nu = tau (vehicles.hpp)");
-  bind_vehicle<Hovercraft, HovercraftParameters>(m, "Hovercraft",
-                                                 "Planar hovercraft in inertial coordinates (vehicles.hpp)");
-  bind_vehicle<PlanarVtol, PlanarVtolParameters>(
-      m, "PlanarVtol", "Planar VTOL aircraft of Hauser, Sastry and Meyer (1992) (vehicles.hpp)");
-  bind_vehicle<Auv, AuvParameters>(m, "Auv", "Underactuated AUV in the horizontal plane (vehicles.hpp)");
+      m, "FossenVessel", doc({"models/fossen_vessel.hpp", "FossenVesselParameters", "FossenVessel::FossenVessel"}, R"(
+Parameters
+----------
+parameters : FossenVesselParameters, optional
+    M and D; the supply vessel by default.
 
-  py::class_<GeneratedModel, Model, py::smart_holder>(
-      m, "GeneratedModel",
-      "A model evaluated by CasADi-generated C code (generated_model.hpp; build it with "
-      "hinf_cpp.symbolic.SymbolicModel)")
+Raises
+------
+ValueError
+    M or D not finite 3 x 3, M not symmetric positive definite, or the symmetric part of D not.
+
+Examples
+--------
+>>> vessel = hc.FossenVessel()
+>>> vessel.name(), vessel.state_names(), vessel.m()
+('fossen_vessel', ['u', 'v', 'r', 'x', 'y', 'psi'], 2))"));
+  bind_vehicle<Hovercraft, HovercraftParameters>(
+      m, "Hovercraft", doc({"models/hovercraft.hpp", "HovercraftParameters", "Hovercraft::Hovercraft"}, R"(Parameters
+----------
+parameters : HovercraftParameters, optional
+    The damping d and d_r (1/s).
+
+Raises
+------
+ValueError
+    d or d_r not finite or negative.
+
+Examples
+--------
+>>> hover = hc.Hovercraft()
+>>> hover.state_names(), hover.state_dependent_inputs()
+(['x', 'y', 'psi', 'vx', 'vy', 'r'], True)
+>>> hover.G(0.0, np.array([0.0, 0.0, np.pi / 2, 0.0, 0.0, 0.0]))[3:5, 0].round(6)   # thrust along y
+array([0., 1.]))"));
+  bind_vehicle<PlanarVtol, PlanarVtolParameters>(
+      m, "PlanarVtol", doc({"models/planar_vtol.hpp", "PlanarVtolParameters", "PlanarVtol::PlanarVtol"}, R"(Parameters
+----------
+parameters : PlanarVtolParameters, optional
+    Gravity g and the coupling epsilon (normalized units).
+
+Raises
+------
+ValueError
+    g not finite or negative, or epsilon not finite.
+
+Examples
+--------
+>>> vtol = hc.PlanarVtol()
+>>> vtol.state_names()[:3], float(vtol.f(0.0, np.zeros(6))[4])   # y_ddot = -g without thrust
+(['x', 'y', 'theta'], -1.0))"));
+  bind_vehicle<Auv, AuvParameters>(m, "Auv", doc({"models/auv.hpp", "AuvParameters", "Auv::Auv"}, R"(Parameters
+----------
+parameters : AuvParameters, optional
+    Masses and drag coefficients (SI); the Sirene AUV by default.
+
+Raises
+------
+ValueError
+    A mass not finite or not > 0, or a drag coefficient not finite or negative.
+
+Examples
+--------
+>>> auv = hc.Auv()
+>>> auv.named_parameters()["m11"], auv.state_names()[3:]
+(215.0, ['x', 'y', 'psi']))"));
+
+  py::class_<GeneratedModel, Model, py::smart_holder>(m, "GeneratedModel", doc({"models/generated_model.hpp"}, R"(
+hinf_cpp.models.SymbolicModel writes model.json and its library (build(), compile()).
+
+Parameters
+----------
+metadata_path : str
+    The path of model.json.
+parameters : dict of str to float, optional
+    Parameter values by name; the others keep their defaults.
+
+Raises
+------
+ValueError
+    Naming the file: a missing file or not a model description, a missing function or one of
+    other sizes than the description says, an invalid structure, an unknown or non-finite
+    parameter.
+
+Examples
+--------
+>>> import casadi as ca
+>>> from hinf_cpp.models import SymbolicModel
+>>> q, d = ca.SX.sym("q", 2), ca.SX.sym("d")
+>>> cart = SymbolicModel("cart", state=q, inputs=1, f=ca.vertcat(q[1], -d * q[1]), G=[[0.0], [1.0]],
+...                      D=[[0.0], [1.0]], parameters=d, parameter_values={"d": 0.5})
+>>> built = cart.build(cache_dir="cache")                    # model.json and its library
+>>> model = hc.GeneratedModel(str(built.metadata_path), {"d": 1.0})
+>>> model.parameters(), model.f(0.0, np.array([0.0, 2.0]))
+({'d': 1.0}, array([ 2., -2.])))").c_str())
       .def(py::init<const std::string&, const std::map<std::string, double>&>(), py::arg("metadata_path"),
            py::arg("parameters") = std::map<std::string, double>{})
-      .def("metadata_path", &GeneratedModel::metadata_path)
-      .def("library_path", &GeneratedModel::library_path)
-      .def("parameter_names", &GeneratedModel::parameter_names)
-      .def("parameters", &GeneratedModel::parameters)
+      .def("metadata_path", &GeneratedModel::metadata_path, doc({"GeneratedModel::metadata_path"}).c_str())
+      .def("library_path", &GeneratedModel::library_path, doc({"GeneratedModel::library_path"}).c_str())
+      .def("parameter_names", &GeneratedModel::parameter_names, doc({"GeneratedModel::parameter_names"}).c_str())
+      .def("parameters", &GeneratedModel::parameters, doc({"GeneratedModel::parameters"}).c_str())
       .def(py::pickle(
           [](const GeneratedModel& model) { return py::make_tuple(model.metadata_path(), model.parameters()); },
           [](const py::tuple& state) {
@@ -444,7 +615,7 @@ A model implemented in Python does not pickle.)doc")
                                                     state[1].cast<std::map<std::string, double>>());
           }));
 
-  py::class_<ModelStructure>(m, "ModelStructure", "What a model says about itself (model.hpp)")
+  py::class_<ModelStructure>(m, "ModelStructure", doc({"ModelStructure"}).c_str())
       .def(py::init<>())
       .def_readwrite("name", &ModelStructure::name)
       .def_readwrite("n", &ModelStructure::n)
@@ -456,8 +627,7 @@ A model implemented in Python does not pickle.)doc")
       .def_readwrite("noise_channels", &ModelStructure::noise_channels)
       .def_readwrite("constant_input_matrices", &ModelStructure::constant_input_matrices)
       .def_readwrite("state_dependent_inputs", &ModelStructure::state_dependent_inputs);
-  m.def("check_model_structure", &check_structure, py::arg("structure"),
-        "ValueError naming the first fault of a model's structure (names per state, indices in range)");
+  m.def("check_model_structure", &check_structure, py::arg("structure"), doc({"check_structure"}).c_str());
 }
 
 }  // namespace hinf::python

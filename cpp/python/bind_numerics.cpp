@@ -189,16 +189,63 @@ void bind_generated_function(py::module_& m) {
 
 }  // namespace
 
+// What a vector function of t vectorized over times returns, for the docstrings.
+constexpr const char* kVectorOfT = "Shape (dim,) for a number t, (k, dim) for a 1-D array of k times.";
+
 void bind_numerics(py::module_& m) {
   // ---- enums ----
-  bind_enum<Method>(m, "Method", "Integrator of every ODE solve (solver_options.hpp)");
-  bind_enum<NewtonSystems>(m, "NewtonSystems", "How BDF solves the Newton systems of a Riccati equation (solver_options.hpp)");
-  bind_enum<Interpolation>(m, "Interpolation", "How a table Signal is interpolated between its points (signal.hpp)");
+  bind_enum<Method>(m, "Method", R"(Examples
+--------
+>>> hc.SolverOptions(method="erk").method
+<Method.erk: 3>
+>>> list(hc.Method.__members__), hc.Method("bdf") == hc.Method.bdf
+(['auto', 'bdf', 'adams', 'erk'], True))");
+  bind_enum<NewtonSystems>(m, "NewtonSystems", R"(Examples
+--------
+>>> hc.SolverOptions(method="bdf", newton_systems="lyapunov").newton_systems
+<NewtonSystems.lyapunov: 2>)");
+  bind_enum<Interpolation>(m, "Interpolation", R"(Examples
+--------
+>>> step = hc.Signal.table([0.0, 1.0, 2.0], [0.0, 1.0, 0.0], "linear")
+>>> step.interpolation(), step(0.5)
+(<Interpolation.linear: 1>, 0.5))");
 
   // ---- signals ----
-  bind_options<Harmonic>(m, "Harmonic", "a sin(omega t + phase) (or cos) term of a Signal");
+  bind_options<Harmonic>(m, "Harmonic", {"Harmonic"}, {}, R"(Examples
+--------
+>>> term = hc.Harmonic(amplitude=0.3, omega=0.2)
+>>> term
+Harmonic(amplitude=0.3, omega=0.2, phase=0.0, cosine=False)
+>>> round(hc.Signal(0.0, [term])(np.pi / 0.4), 6)         # 0.3 sin(pi / 2)
+0.3)");
 
-  py::class_<Signal>(m, "Signal", "A scalar signal of absolute time: offset + harmonics, or a table")
+  py::class_<Signal>(m, "Signal", doc({"Signal"}, R"(Wherever a Signal is expected, a number is taken too (a constant).
+
+Parameters
+----------
+constant : float
+    ``Signal(constant)``: the constant signal. ``Signal()`` is zero.
+offset : float
+    ``Signal(offset, harmonics)``: offset + the sum of the harmonics, in the signal's unit.
+harmonics : list of Harmonic
+    The terms added to `offset`.
+
+Raises
+------
+ValueError
+    A constant, offset or harmonic that is not finite.
+
+See Also
+--------
+Signal.table : a signal interpolated between points.
+
+Examples
+--------
+>>> u2 = hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])
+>>> u2(np.array([0.0, 2.5])).round(4)                       # 0.3 sin(0.2 t)
+array([0.    , 0.1438])
+>>> u2.describe(), hc.Signal(1.0).is_constant()
+('0 + 0.3 sin(0.2 t + 0)', True))").c_str())
       .def(py::init<>())
       .def(py::init<double>(), py::arg("constant"))
       .def(py::init<double, std::vector<Harmonic>>(), py::arg("offset"), py::arg("harmonics"))
@@ -210,44 +257,97 @@ void bind_numerics(py::module_& m) {
             return signal;
           },
           py::arg("t"), py::arg("values"), py::arg("interpolation") = Interpolation::Pchip,
-          "The table (t_i, v_i), interpolated by \"pchip\" (default, no overshoot), \"linear\", \"hold\" "
-          "(the value of the last point at or before t) or \"cubic\" (natural spline; a UserWarning when it "
-          "overshoots the values' range); at least two points, strictly increasing t")
+          doc({"Signal::table"}, R"(Parameters
+----------
+t : array_like, shape (k,)
+    The times t_i (s), k >= 2, finite and strictly increasing.
+values : array_like, shape (k,)
+    The values v_i, finite.
+interpolation : Interpolation or str, default "pchip"
+    "pchip", "linear", "hold" or "cubic".
+
+Returns
+-------
+Signal
+
+Raises
+------
+ValueError
+    Fewer than two points, times not strictly increasing, a value not finite, lengths that differ.
+
+Warns
+-----
+UserWarning
+    When the "cubic" interpolant overshoots the range of the values (see overshoot()).
+
+Examples
+--------
+>>> ramp = hc.Signal.table([0.0, 10.0, 20.0], [0.0, 1.0, 1.0])
+>>> ramp(np.array([5.0, 15.0])), ramp.is_table()
+(array([0.5, 1. ]), True))").c_str())
       .def("__call__", [](const Signal& s, const py::object& t) {
         return vectorize(t, 0, 0, [&s](double tt, double* out) { out[0] = s(tt); });
-      }, py::arg("t"))
+      }, py::arg("t"),
+         "The value at t (s): a float for a number, an array of shape (k,) for a 1-D array of k times. A table "
+         "outside [t_first, t_last] is a ValueError.")
       .def("minimum", &Signal::minimum, py::arg("t0"), py::arg("tf"),
-           "(the smallest value on [t0, tf], where it is taken)")
-      .def("is_table", &Signal::is_table)
-      .def("is_constant", &Signal::is_constant)
-      .def("offset", &Signal::offset)
-      .def("harmonics", &Signal::harmonics)
-      .def("table_t", &Signal::table_t)
-      .def("table_values", &Signal::table_values)
-      .def("interpolation", &Signal::interpolation)
-      .def("overshoot", &Signal::overshoot,
-           "(how far a table's interpolant leaves the range of its values, where); (0, t_first) inside it")
-      .def("describe", &Signal::describe)
+           doc({"Signal::minimum"}, "Returns (value, t), t in seconds.").c_str())
+      .def("is_table", &Signal::is_table, doc({"Signal::is_table"}).c_str())
+      .def("is_constant", &Signal::is_constant, doc({"Signal::is_constant"}).c_str())
+      .def("offset", &Signal::offset, doc({"Signal::offset"}).c_str())
+      .def("harmonics", &Signal::harmonics, doc({"Signal::harmonics"}).c_str())
+      .def("table_t", &Signal::table_t, doc({"Signal::table_t"}).c_str())
+      .def("table_values", &Signal::table_values, doc({"Signal::table_values"}).c_str())
+      .def("interpolation", &Signal::interpolation, doc({"Signal::interpolation"}).c_str())
+      .def("overshoot", &Signal::overshoot, doc({"Signal::overshoot"}, "Returns (amount, t), t in seconds.").c_str())
+      .def("describe", &Signal::describe, doc({"Signal::describe"}).c_str())
       .def("__repr__", [](const Signal& s) { return "Signal(" + s.describe() + ")"; })
       .def(py::pickle(&signal_state, &signal_from_state));
   py::implicitly_convertible<double, Signal>();
   m.def("overshoot_warning", &overshoot_warning, py::arg("signal"), py::arg("name"),
-        "The warning for a table whose interpolant overshoots the range of its values, naming it `name`; '' otherwise");
+        doc({"overshoot_warning"}).c_str());
 
-  py::class_<VectorSignal>(m, "VectorSignal", "A vector signal: one Signal per channel, or a function of t")
+  py::class_<VectorSignal>(m, "VectorSignal", doc({"VectorSignal"}, R"(
+Wherever a VectorSignal is expected, a list of Signals or numbers, or a callable f(t), is taken
+too. A function of t implemented in Python holds the GIL at each call, and does not pickle.
+
+Parameters
+----------
+channels : list of Signal or float
+    ``VectorSignal(channels)``: one Signal (or number) per channel.
+dim : int
+    ``VectorSignal(dim, function)``: the number of channels, >= 0.
+function : callable
+    ``function(t) -> array_like, shape (dim,)``, t in seconds; its values must be finite.
+
+Raises
+------
+ValueError
+    A channel that is not a Signal or a finite number; dim out of range; later, a function that
+    returns the wrong length or a non-finite value (naming t).
+
+Examples
+--------
+>>> w = hc.VectorSignal([hc.Signal(0.1), 0.0])
+>>> w.dim(), w(2.0)
+(2, array([0.1, 0. ]))
+>>> hc.VectorSignal(2, lambda t: [t, 2 * t])(np.array([0.0, 1.0]))
+array([[0., 0.],
+       [1., 2.]]))").c_str())
       .def(py::init([](const py::sequence& channels) { return VectorSignal(to_signals(channels, "channels")); }),
-           py::arg("channels"), "one Signal (or number) per channel")
+           py::arg("channels"))
       .def(py::init([](int dim, const py::function& function) {
              return vector_signal_from_callable(function, dim, "function");
            }),
-           py::arg("dim"), py::arg("function"), "function(t) must return an array of dim numbers")
-      .def_static("zeros", &VectorSignal::zeros, py::arg("dim"))
-      .def("dim", &VectorSignal::dim)
-      .def("is_function", &VectorSignal::is_function)
-      .def("channels", &VectorSignal::channels)
+           py::arg("dim"), py::arg("function"))
+      .def_static("zeros", &VectorSignal::zeros, py::arg("dim"), doc({"VectorSignal::zeros"}).c_str())
+      .def("dim", &VectorSignal::dim, doc({"VectorSignal::dim"}).c_str())
+      .def("is_function", &VectorSignal::is_function, doc({"VectorSignal::is_function"}).c_str())
+      .def("channels", &VectorSignal::channels, doc({"VectorSignal::channels"}).c_str())
       .def("__call__", [](const VectorSignal& s, const py::object& t) {
         return vectorize(t, s.dim(), 0, [&s](double tt, double* out) { s.eval(tt, out); });
-      }, py::arg("t"))
+      }, py::arg("t"),
+         "The values at t (s): shape (dim,) for a number, (k, dim) for a 1-D array of k times.")
       .def(py::pickle(
           [](const VectorSignal& s) {
             if (s.is_function())
@@ -261,26 +361,58 @@ void bind_numerics(py::module_& m) {
           }));
 
   // ---- solver options ----
-  bind_options<SolverOptions>(m, "SolverOptions", "Integrator and tolerances ([solver] of a scenario)");
+  bind_options<SolverOptions>(m, "SolverOptions", {"SolverOptions"}, {},
+                              R"(Raises
+------
+ValueError
+    An option out of its range, naming it.
+
+Examples
+--------
+>>> options = hc.SolverOptions(method="erk", rtol=1e-6, atol=1e-8)
+>>> options.method, options.max_steps
+(<Method.erk: 3>, 500000)
+>>> try:
+...     hc.SolverOptions(atol=0.0)
+... except ValueError as error:
+...     print(error)
+solver atol must be in (0, 1e-3] (about rtol / 100 for solutions of order 1), got 0)");
 
   // ---- dense output ----
-  py::class_<PiecewisePolynomial>(m, "PiecewisePolynomial", "Dense output of an ODE solve: one polynomial per step")
-      .def("dim", &PiecewisePolynomial::dim)
-      .def("num_pieces", &PiecewisePolynomial::num_pieces)
-      .def("empty", &PiecewisePolynomial::empty)
-      .def("t_min", &PiecewisePolynomial::t_min)
-      .def("t_max", &PiecewisePolynomial::t_max)
+  py::class_<PiecewisePolynomial>(m, "PiecewisePolynomial",
+                                  doc({"numerics/piecewise_polynomial.hpp"}, R"(
+Made by the solvers (Trajectory.dense(), RiccatiSolution.dense()); it pickles.
+
+Examples
+--------
+>>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], [1.0, 0.0], 0.0, 10.0)
+>>> dense = trajectory.dense()                               # q_d: surge 1 m/s along x
+>>> dense.dim(), dense.t_min(), dense.t_max()
+(6, 0.0, 10.0)
+>>> dense.eval(5.0).round(6)
+array([1., 0., 0., 5., 0., 0.]))").c_str())
+      .def("dim", &PiecewisePolynomial::dim, doc({"PiecewisePolynomial::dim"}).c_str())
+      .def("num_pieces", &PiecewisePolynomial::num_pieces, doc({"PiecewisePolynomial::num_pieces"}).c_str())
+      .def("empty", &PiecewisePolynomial::empty, doc({"PiecewisePolynomial::empty"}).c_str())
+      .def("t_min", &PiecewisePolynomial::t_min, doc({"PiecewisePolynomial::t_min"}).c_str())
+      .def("t_max", &PiecewisePolynomial::t_max, doc({"PiecewisePolynomial::t_min"}).c_str())
       .def("eval", [](const PiecewisePolynomial& p, const py::object& t) {
         return vectorize(t, p.dim(), 0, [&p](double tt, double* out) { p.eval(tt, out); });
-      }, py::arg("t"))
+      }, py::arg("t"),
+         doc({"PiecewisePolynomial::eval"}, kVectorOfT).c_str())
       .def("eval_derivative", [](const PiecewisePolynomial& p, const py::object& t) {
         return vectorize(t, p.dim(), 0, [&p](double tt, double* out) { p.eval_derivative(tt, out); });
-      }, py::arg("t"))
-      .def("breakpoints", &PiecewisePolynomial::breakpoints, "the ends of the pieces, increasing")
-      .def("memory_bytes", &PiecewisePolynomial::memory_bytes)
+      }, py::arg("t"),
+         doc({"PiecewisePolynomial::eval_derivative"}, kVectorOfT).c_str())
+      .def("breakpoints", &PiecewisePolynomial::breakpoints, doc({"PiecewisePolynomial::breakpoints"}).c_str())
+      .def("memory_bytes", &PiecewisePolynomial::memory_bytes, doc({"PiecewisePolynomial::memory_bytes"}).c_str())
       .def(py::pickle(&dense_state, &dense_from_state));
 
-  bind_result<StepStats>(m, "StepStats", "Counts of an integration", /*repr=*/true);
+  bind_result<StepStats>(m, "StepStats", {"StepStats"}, {}, R"(Examples
+--------
+>>> stats = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], [1.0, 0.0], 0.0, 10.0).stats()
+>>> stats.steps > 0, stats.jac_evals                         # Dormand-Prince: no Jacobian
+(True, 0))", /*repr=*/true);
 
   bind_generated_function(m);
 }

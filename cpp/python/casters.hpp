@@ -26,12 +26,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <stdexcept>
+#include <string_view>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "contracts.hpp"
 #include "hinf/core/checks.hpp"
 #include "hinf/core/enum_names.hpp"
 #include "hinf/core/errors.hpp"
@@ -97,14 +101,103 @@ HINF_ENUM_CASTER(RunOutcome);
 
 namespace hinf::python {
 
+// ---- docstrings ----
+// A docstring is written once: the contract of a C++ declaration is its comment in the header
+// (cpp/include/hinf, gathered by name into contracts.hpp by scripts/generate_contracts.py), and
+// the binding adds only what Python has of its own, as numpydoc sections (Parameters with NumPy
+// shapes, Returns, Raises, Examples).
+
+// The contract of `key`, or nothing when no comment of the headers has that name: for what may
+// lack one (a field of a struct, each of whose fields is looked up).
+inline std::optional<std::string_view> find_contract(std::string_view key) {
+  for (const auto& [name, text] : kContracts)
+    if (name == key) return text;
+  return std::nullopt;
+}
+
+// The contract of `key` ("solve_grde", "Trajectory::A_e", "control/riccati.hpp", ...). A key
+// without one is a defect of the bindings: std::logic_error, which fails the import.
+inline std::string_view contract(std::string_view key) {
+  if (const std::optional<std::string_view> text = find_contract(key)) return *text;
+  throw std::logic_error(str_cat("the bindings name the C++ contract '", std::string(key),
+                                 "', which no comment of cpp/include/hinf has (scripts/generate_contracts.py)"));
+}
+
+// The docstring: the contracts of `keys` (paragraphs, in order), then `sections` (without a
+// first newline: a raw string may begin on the line after its R"( ).
+inline std::string doc(std::initializer_list<std::string_view> keys, std::string_view sections = {}) {
+  if (!sections.empty() && sections.front() == '\n') sections.remove_prefix(1);
+  std::string text;
+  for (std::string_view key : keys) {
+    if (!text.empty()) text += "\n\n";
+    text += contract(key);
+  }
+  if (!sections.empty()) {
+    if (!text.empty()) text += "\n\n";
+    text += sections;
+  }
+  return text;
+}
+
+// `text` with every line but empty ones indented by `spaces`.
+inline std::string indented(std::string_view text, int spaces) {
+  const std::string margin(static_cast<std::size_t>(spaces), ' ');
+  std::string out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view line = text.substr(start, end - start);
+    if (!line.empty()) out += margin;
+    out += line;
+    if (end == text.size()) break;
+    out += '\n';
+    start = end + 1;
+  }
+  return out;
+}
+
+// `text`, one paragraph, broken at spaces into lines of at most `width` characters (a longer
+// word stays whole).
+inline std::string wrapped(std::string_view text, std::size_t width) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += line + '\n';
+      line.clear();
+    }
+    if (!line.empty()) line += ' ';
+    line += word;
+    start = end + 1;
+  }
+  return out + line;
+}
+
 // An enum E as a Python enum whose members are the names of its table (enum_names.hpp), with
 // a constructor from the name: Method("erk") is Method.erk. A member equals only itself (not its
 // name: "erk" is taken as input, but Method.erk == "erk" is False, as hashes must agree).
+// Its docstring: the contract of the enum (key `name`), the constructor's Parameters, an
+// Attributes section with the contract of each member ("Method::bdf": the C++ enumerator's name
+// lower-cased, the member's name without underscores), then `sections`.
 template <class E>
-void bind_enum(py::module_& m, const char* name, const char* doc) {
-  py::enum_<E> cls(m, name, doc);
+void bind_enum(py::module_& m, const char* name, std::string_view sections) {
+  std::string members = "Parameters\n----------\nvalue : int\n    The member's number, as its repr shows it.\n"
+                        "name : str\n    The member's name, one of those below.\n\nAttributes\n----------";
+  for (const auto& [item, item_name] : EnumNames<E>::names) {
+    std::string key = str_cat(name, "::", item_name);
+    key.erase(std::remove(key.begin(), key.end(), '_'), key.end());
+    members += str_cat("\n", item_name, "\n", indented(contract(key), 4));
+  }
+  const std::string text = doc({name}, members + "\n\n" + std::string(sections));
+  py::options options;
+  options.disable_enum_members_docstring();  // the members are in the text, with their meaning
+  py::enum_<E> cls(m, name, text.c_str());
   for (const auto& [item, item_name] : EnumNames<E>::names) cls.value(item_name, item);
-  cls.def(py::init([](const std::string& item_name) { return from_string<E>(item_name); }), py::arg("name"));
+  cls.def(py::init([](const std::string& item_name) { return from_string<E>(item_name); }), py::arg("name"),
+          "The member of that name (ValueError listing the names for another).");
   // Replaces (not overloads) pybind11's ==, whose argument would go through the caster above.
   const auto same_member = [](E self, const py::object& other) {
     return py::isinstance<E>(other) && other.cast<E>() == self;

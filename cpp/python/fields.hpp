@@ -30,16 +30,19 @@ namespace hinf::python {
 
 // Fields<T>::list names the data members of a C++ struct once, in declaration order. The
 // properties of its Python class, the keyword constructor (defaults from T{}), __repr__,
-// __eq__ and pickling are all made from that list.
+// __eq__ and pickling are all made from that list; the documentation of each field is its
+// contract, "<T>::<name>", or for a field declared on the line of another (double m, M;), the
+// other's ("documented_by").
 template <class T, class V>
 struct Field {
   using Value = V;
   const char* name;
   V T::*member;
+  const char* documented_by = nullptr;
 };
 template <class T, class V>
-constexpr Field<T, V> field(const char* name, V T::*member) {
-  return {name, member};
+constexpr Field<T, V> field(const char* name, V T::*member, const char* documented_by = nullptr) {
+  return {name, member, documented_by};
 }
 
 template <class T>
@@ -169,11 +172,12 @@ struct Fields<GammaStarResult> {
 template <>
 struct Fields<Certificates> {
   static constexpr auto list = std::make_tuple(
-      field("m", &Certificates::m), field("M", &Certificates::M), field("kappa_min", &Certificates::kappa_min),
-      field("p_min", &Certificates::p_min), field("p_min_t", &Certificates::p_min_t),
+      field("m", &Certificates::m), field("M", &Certificates::M, "m"), field("kappa_min", &Certificates::kappa_min),
+      field("p_min", &Certificates::p_min), field("p_min_t", &Certificates::p_min_t, "p_min"),
       field("remainder_L", &Certificates::remainder_L), field("remainder_method", &Certificates::remainder_method),
       field("remainder_is_bound", &Certificates::remainder_is_bound), field("epsilon", &Certificates::epsilon),
-      field("epsilon_t", &Certificates::epsilon_t), field("attraction_radius", &Certificates::attraction_radius),
+      field("epsilon_t", &Certificates::epsilon_t, "epsilon"),
+      field("attraction_radius", &Certificates::attraction_radius),
       field("decay_rate", &Certificates::decay_rate));
 };
 template <>
@@ -201,7 +205,8 @@ struct Fields<RunResult> {
       field("output_feedback", &RunResult::output_feedback), field("gamma", &RunResult::gamma),
       field("trajectory", &RunResult::trajectory), field("plant", &RunResult::plant),
       field("solution", &RunResult::solution),
-      field("Z0", &RunResult::Z0), field("Z_min_eig", &RunResult::Z_min_eig), field("Z_max_eig", &RunResult::Z_max_eig),
+      field("Z0", &RunResult::Z0), field("Z_min_eig", &RunResult::Z_min_eig),
+      field("Z_max_eig", &RunResult::Z_max_eig, "Z_min_eig"),
       field("gamma_star", &RunResult::gamma_star), field("simulation", &RunResult::simulation),
       field("metrics", &RunResult::metrics), field("timing", &RunResult::timing));
 };
@@ -240,6 +245,10 @@ template <class T>
 struct is_vector : std::false_type {};
 template <class T>
 struct is_vector<std::vector<T>> : std::true_type {};
+template <class T>
+struct is_shared_ptr : std::false_type {};
+template <class T>
+struct is_shared_ptr<std::shared_ptr<T>> : std::true_type {};
 
 // Equal values: NaN equals NaN (a value compared with its copy or its pickle), arrays of the
 // same shape and entries, structs field by field.
@@ -275,27 +284,119 @@ std::string value_repr(const V& value) {
   else return py::repr(py::cast(value, py::return_value_policy::copy)).template cast<std::string>();
 }
 
+// The contract of a field of T (its comment in the header), or nothing; `type` is T's name.
+template <class F>
+std::optional<std::string_view> field_contract(const std::string& type, const F& f) {
+  return find_contract(str_cat(type, "::", f.documented_by ? f.documented_by : f.name));
+}
+
+// The name of V in a docstring's type: float, int, bool, str, a bound class or enum by its
+// Python name, X or None, list of X.
+template <class V>
+std::string python_type_name() {
+  if constexpr (std::is_same_v<V, bool>) {
+    return "bool";
+  } else if constexpr (std::is_floating_point_v<V>) {
+    return "float";
+  } else if constexpr (std::is_integral_v<V>) {
+    return "int";
+  } else if constexpr (std::is_same_v<V, std::string>) {
+    return "str";
+  } else if constexpr (is_optional<V>::value) {
+    return python_type_name<typename V::value_type>() + " or None";
+  } else if constexpr (is_vector<V>::value) {
+    return "list of " + python_type_name<typename V::value_type>();
+  } else if constexpr (is_shared_ptr<V>::value) {
+    return python_type_name<std::remove_const_t<typename V::element_type>>();
+  } else {
+    const py::detail::type_info* info = py::detail::get_type_info(typeid(V));
+    if (info == nullptr)
+      throw std::logic_error(str_cat("a field's type (", typeid(V).name(), ") has no Python name: give it"));
+    return py::handle(reinterpret_cast<PyObject*>(info->type)).attr("__name__").cast<std::string>();
+  }
+}
+
+// The numpydoc section `title` of T's fields: "Parameters" for an option struct (its keyword
+// constructor, each with its default), "Attributes" for a result. Each field is
+// "name : type" and its contract, indented. `types` gives the type of the fields whose Python
+// type says too little, {field name, type}: every array (its shape and unit), since only the
+// struct knows them ("array_like, shape (p, p)").
+using FieldTypes = std::initializer_list<std::pair<std::string_view, std::string_view>>;
+template <class T>
+std::string fields_section(const std::string& type, const char* title, FieldTypes types) {
+  const T defaults{};
+  const bool with_defaults = std::string_view(title) == "Parameters";
+  std::string text = str_cat(title, "\n", std::string(std::string_view(title).size(), '-'));
+  for_each_field<T>([&](const auto& f) {
+    using V = typename std::decay_t<decltype(f)>::Value;
+    std::string type_name;
+    for (const auto& [name, given] : types)
+      if (name == f.name) type_name = std::string(given);
+    if (type_name.empty()) {
+      if constexpr (std::is_base_of_v<Eigen::EigenBase<V>, V>)
+        throw std::logic_error(str_cat(type, ".", f.name, " is an array: give its shape (fields_section)"));
+      else
+        type_name = python_type_name<V>();
+    }
+    if (with_defaults) {
+      if constexpr (std::is_enum_v<V>) type_name += " or str";  // an enum is also taken by its name
+      if constexpr (std::is_arithmetic_v<V> || std::is_enum_v<V> || std::is_same_v<V, std::string>)
+        type_name += ", default " + value_repr(defaults.*(f.member));
+      else
+        type_name += ", optional";
+    }
+    text += str_cat("\n", f.name, " : ", type_name);
+    if (const std::optional<std::string_view> about = field_contract(type, f))
+      text += "\n" + indented(*about, 4);
+  });
+  return text;
+}
+
+// The numpydoc section `title` of members of the C++ class `type` bound one by one (not through
+// Fields): `items` gives each member's name and Python type, the text is its contract.
+inline std::string members_section(const std::string& type, const char* title, FieldTypes items) {
+  std::string text = str_cat(title, "\n", std::string(std::string_view(title).size(), '-'));
+  for (const auto& [name, type_name] : items)
+    text += str_cat("\n", std::string(name), " : ", std::string(type_name), "\n",
+                    indented(contract(str_cat(type, "::", std::string(name))), 4));
+  return text;
+}
+
 // Properties for the fields: read/write for options, read-only for results. Enums are returned
 // by value (a Python enum object must not alias the struct's memory); other members as views.
-// The class's __match_args__ lists the field names, for code that goes through all of them.
+// Each property's docstring is the field's contract. The class's __match_args__ lists the
+// field names, for code that goes through all of them.
 template <class T, class... Options>
 void def_fields(py::class_<T, Options...>& cls, bool writable) {
+  const std::string type = py::str(cls.attr("__name__"));
   py::list names;  // __match_args__: the field names, in order (as a dataclass has them)
   for_each_field<T>([&](const auto& f) { names.append(f.name); });
   cls.attr("__match_args__") = py::tuple(names);
   for_each_field<T>([&](const auto& f) {
     using V = typename std::decay_t<decltype(f)>::Value;
     const auto member = f.member;
+    const std::string about(field_contract(type, f).value_or(""));
+    const py::doc doc(about.empty() ? nullptr : about.c_str());
     if constexpr (std::is_enum_v<V>) {
       const auto get = [member](const T& o) { return o.*member; };
-      if (writable) cls.def_property(f.name, get, [member](T& o, V v) { o.*member = v; });
-      else cls.def_property_readonly(f.name, get);
+      if (writable) cls.def_property(f.name, get, [member](T& o, V v) { o.*member = v; }, doc);
+      else cls.def_property_readonly(f.name, get, doc);
     } else if (writable) {
-      cls.def_readwrite(f.name, member);
+      cls.def_readwrite(f.name, member, doc);
     } else {
-      cls.def_readonly(f.name, member);
+      cls.def_readonly(f.name, member, doc);
     }
   });
+}
+
+// The keyword argument of field I with its default from `defaults`; an array's default shows as
+// "..." in the signature (its repr, "array([], shape=(0, 0), dtype=float64)", says nothing).
+template <class T, std::size_t I>
+py::arg_v field_arg(const T& defaults) {
+  const auto& f = std::get<I>(Fields<T>::list);
+  using V = typename std::decay_t<decltype(f)>::Value;
+  if constexpr (std::is_base_of_v<Eigen::EigenBase<V>, V>) return py::arg_v(f.name, defaults.*(f.member), "...");
+  else return py::arg(f.name) = defaults.*(f.member);
 }
 
 // The keyword constructor T(field1=T{}.field1, ...), followed by check(object).
@@ -309,7 +410,7 @@ void def_field_init(py::class_<T, Options...>& cls, Check check, std::index_sequ
             check(object);
             return object;
           }),
-          (py::arg(std::get<I>(Fields<T>::list).name) = defaults.*(std::get<I>(Fields<T>::list).member))...);
+          field_arg<T, I>(defaults)...);
 }
 template <class T, class... Options, class Check>
 void def_field_init(py::class_<T, Options...>& cls, Check check) {
@@ -355,10 +456,21 @@ void def_field_repr(py::class_<T, Options...>& cls) {
   });
 }
 
-// An option struct: keyword constructor (then check), read/write fields, repr, pickle, ==.
+// The docstring of a struct bound field by field: the contracts of `keys`, the section of its
+// fields (fields_section), then `sections`.
+template <class T>
+std::string struct_doc(const char* name, std::initializer_list<std::string_view> keys, const char* title,
+                       FieldTypes types, std::string_view sections) {
+  if (!sections.empty() && sections.front() == '\n') sections.remove_prefix(1);
+  return doc(keys, fields_section<T>(name, title, types) + "\n\n" + std::string(sections));
+}
+
+// An option struct: keyword constructor (then check), read/write fields, repr, pickle, ==. Its
+// docstring: the contracts of `keys`, its fields as the constructor's Parameters, `sections`.
 template <class T, class Check>
-py::class_<T> bind_options(py::module_& m, const char* name, const char* doc, Check check) {
-  py::class_<T> cls(m, name, doc);
+py::class_<T> bind_options(py::module_& m, const char* name, std::initializer_list<std::string_view> keys,
+                           FieldTypes types, std::string_view sections, Check check) {
+  py::class_<T> cls(m, name, struct_doc<T>(name, keys, "Parameters", types, sections).c_str());
   def_field_init(cls, check);
   def_fields(cls, /*writable=*/true);
   def_field_repr(cls);
@@ -372,16 +484,19 @@ struct has_validate<T, std::void_t<decltype(std::declval<const T&>().validate())
 
 // ... checked by T::validate() where T has one.
 template <class T>
-py::class_<T> bind_options(py::module_& m, const char* name, const char* doc) {
-  return bind_options<T>(m, name, doc, [](const T& options) {
+py::class_<T> bind_options(py::module_& m, const char* name, std::initializer_list<std::string_view> keys,
+                           FieldTypes types, std::string_view sections) {
+  return bind_options<T>(m, name, keys, types, sections, [](const T& options) {
     if constexpr (has_validate<T>::value) options.validate();
   });
 }
 
-// A result struct: read-only fields, pickle, == (unless equality is false); small ones also a repr.
+// A result struct: read-only fields, pickle, == (unless equality is false); small ones also a
+// repr. Its docstring: the contracts of `keys`, its fields as Attributes, `sections`.
 template <class T>
-py::class_<T> bind_result(py::module_& m, const char* name, const char* doc, bool repr, bool equality = true) {
-  py::class_<T> cls(m, name, doc);
+py::class_<T> bind_result(py::module_& m, const char* name, std::initializer_list<std::string_view> keys,
+                          FieldTypes types, std::string_view sections, bool repr, bool equality = true) {
+  py::class_<T> cls(m, name, struct_doc<T>(name, keys, "Attributes", types, sections).c_str());
   def_fields(cls, /*writable=*/false);
   if (repr) def_field_repr(cls);
   def_value_protocol(cls, equality);

@@ -23,3 +23,13 @@ def test_checked_in_stubs_match_the_module(tmp_path):
         "the package) and commit the result")
     assert "0x" not in generated and " at 0x" not in generated  # no memory addresses
     assert (ROOT / "python" / "hinf_cpp" / "py.typed").exists()
+
+
+def test_checked_in_contracts_match_the_headers():
+    """cpp/python/contracts.hpp (the header comments the docstrings begin with) is what
+    scripts/generate_contracts.py extracts from cpp/include/hinf today."""
+    done = subprocess.run([sys.executable, str(ROOT / "scripts" / "generate_contracts.py"), "--check"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, (
+        f"cpp/python/contracts.hpp is out of date with the headers: run `python scripts/generate_contracts.py`, "
+        f"rebuild and commit the result\n{done.stdout}{done.stderr}")

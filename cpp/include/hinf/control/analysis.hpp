@@ -20,12 +20,17 @@
 
 namespace hinf {
 
+// Options of the gamma* search (gamma_star, gamma_star_output_feedback). validate() checks
+// them: a bracket of finite numbers >= 0 with lower < upper (or both 0), rtol in (0, 1),
+// max_evaluations >= 2, threads >= 1, and the solver options.
 struct GammaStarOptions {
-  double lower = 0.0;        // bracket [lower, upper]: lower must fail, upper must pass;
-  double upper = 0.0;        // both 0: found automatically (doubling / halving from 1)
+  double lower = 0.0;        // the bracket's lower end: a gamma that fails (0 with upper: found
+                             // automatically)
+  double upper = 0.0;        // the bracket's upper end: a gamma that passes; lower = upper = 0:
+                             // the bracket is found by doubling / halving from 1
   double rtol = 1e-7;        // stop when upper - lower <= rtol * upper (1e-7: with the integration
                              // error of the default solver options, gamma* is good to 1e-6)
-  int max_evaluations = 200;
+  int max_evaluations = 200;  // gammas evaluated at most, >= 2 (then converged is false)
   int threads = 2;           // gammas evaluated in parallel per round (>= 1); at most the hardware's
                              // threads are used, and fewer when max_evaluations would not
                              // suffice to converge with that many per round
@@ -50,18 +55,21 @@ struct EnumNames<GammaCondition> {
        {GammaCondition::Coupling, "coupling"}}};
 };
 
+// One gamma evaluated by the gamma* search.
 struct GammaTrial {
-  double gamma = NAN;
-  bool passed = false;
+  double gamma = NAN;     // the gamma tried
+  bool passed = false;    // no condition failed on [t0, tf]
   double t_escape = NAN;  // failure time (escape, coupling violation, or where a solution too
                           // close to its escape could not be integrated), NaN if passed
   GammaCondition condition = GammaCondition::None;  // what failed; None if passed
 };
 
+// The result of a gamma* search: gamma* (the final bracket's upper end), the bracket, the
+// condition that binds, and every gamma tried.
 struct GammaStarResult {
   double gamma_star = NAN;  // the upper end of the final bracket: the smallest gamma known to pass
   double lower = NAN;       // final bracket: lower fails (0 when every gamma > 0 passes)
-  double upper = NAN;
+  double upper = NAN;       // final bracket: upper passes (= gamma_star)
   double t_escape_lower = NAN;  // where the lower end fails
   GammaCondition binding = GammaCondition::None;  // the condition that fails at the lower end
   bool converged = false;       // false: max_evaluations reached first
@@ -88,21 +96,25 @@ struct Certificates {
   double kappa_min = NAN;   // min kappa(t); the proof needs kappa >= 1/2
   // Smallest eigenvalue over [t0, tf] of P(t) = Q + (2 kappa - 1) Z B B' Z + gamma^-2 Z D D' Z:
   // V = q_e' Z q_e has dV/dt = -q_e' P q_e + 2 q_e' Z r(q_e) (eq. 23).
-  double p_min = NAN, p_min_t = NAN;
+  double p_min = NAN, p_min_t = NAN;  // p_min, and p_min_t the time (s) where it is taken
   // L with |r(q_e)| <= L |q_e|^2, r the remainder of the error dynamics beyond A_e q_e (with
-  // state-dependent inputs it includes (G(q) - B_e) u_e; analysis.cpp) (the largest over [t0, tf]).
-  double remainder_L = NAN;
+  // state-dependent inputs it includes (G(q) - B_e) u_e; analysis.cpp).
+  double remainder_L = NAN;  // the largest L over [t0, tf]
   std::string remainder_method;  // how L was obtained (see Model::remainder_bound)
   bool remainder_is_bound = false;  // false: a sampled estimate, not a proof
   // Radius of eq. (24): with |r| <= L |q_e|^2 and |q_e| < epsilon = min_t p(t) / (4 M L(t)),
   // |r| <= p |q_e| / (4 M), so dV/dt <= -(p/2) |q_e|^2 (exponential decay).
-  double epsilon = NAN, epsilon_t = NAN;
+  double epsilon = NAN, epsilon_t = NAN;  // epsilon, and epsilon_t the time (s) of the minimum
   // Initial errors with |q_e(t0)| < epsilon sqrt(m / M) never leave the epsilon-ball (V decays).
-  double attraction_radius = NAN;
+  double attraction_radius = NAN;  // a bound on the Euclidean norm |q_e(t0)|
   // V(t) <= V(t0) exp(-decay_rate (t - t0)) inside the ball: decay_rate = p_min / (2 M).
-  double decay_rate = NAN;
+  double decay_rate = NAN;  // in 1/s
 };
 
+// The certificates of the design Z (its trajectory and gamma) for the law (17)/(18) with gain
+// scaling kappa(t), and Q, the weight of the GRDE (n x n, symmetric positive semidefinite;
+// InputError otherwise). L is the model's remainder_bound where it has one, else a sampled
+// estimate (remainder_is_bound false).
 Certificates certify(const RiccatiSolution& Z, const Signal& kappa, const Mat& Q);
 
 }  // namespace hinf

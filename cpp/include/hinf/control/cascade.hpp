@@ -11,6 +11,13 @@
 
 namespace hinf {
 
+// The gains of the cascade law (CascadeController), each finite and > 0.
+struct CascadeGains {
+  double k = 0.2;   // surge/position loop (0.2 converges fastest on the paper's path)
+  double k1 = 2.0;  // heading
+  double k2 = 3.0;  // yaw rate
+};
+
 // A cascaded tracking controller for the ship, of the type of Lefeber, Pettersen & Nijmeijer
 // (IEEE TCST 11(1), 2003), used as a baseline. With z1 = x cos(psi) + y sin(psi) (the same for
 // the desired state), z1e = z1 - z1d, z3e = psi - psi_d wrapped to (-pi, pi], u_e = u - u_d,
@@ -21,19 +28,16 @@ namespace hinf {
 // The yaw loop is an exact feedback linearization; the surge loop relies on the desired yaw
 // rate r_d being persistently exciting: on a straight line (r_d = 0) a lateral offset is not
 // corrected (docs/baselines.md). Needs the ShipModel (it uses its parameters).
-struct CascadeGains {
-  double k = 0.2;   // surge/position loop (0.2 converges fastest on the paper's path)
-  double k1 = 2.0;  // heading
-  double k2 = 3.0;  // yaw rate
-};
-
 class CascadeController final : public Controller {
  public:
+  // InputError unless the trajectory's model is a ShipModel (with m_v != 0 and d_v != 0) and
+  // the gains are finite and > 0.
   CascadeController(TrajectoryPtr trajectory, const CascadeGains& gains = {});
   std::string name() const override { return "cascade"; }
   int n() const override { return 6; }
   int m() const override { return 2; }
   void control(double t, const ConstVecRef& q, VecRef u) override;
+  // The gains it was made with.
   const CascadeGains& gains() const { return gains_; }
 
  private:

@@ -12,9 +12,12 @@
 
 namespace hinf {
 
+// A tracking law u = control(t, q) of the actual state q; the closed loops call it at every
+// stage of the integrator.
 class Controller {
  public:
   virtual ~Controller() = default;
+  // The law's name ("hinf", "lqr", "cascade", ...), for results and messages.
   virtual std::string name() const = 0;
   // The state size: control() takes q of n() numbers. A controller implemented in Python may
   // leave n() out (it reads q as a NumPy array of whatever length it is given): it then
@@ -48,12 +51,16 @@ using ControllerPtr = std::shared_ptr<Controller>;
 // of local exponential stability (eq. 23). kappa must stay > 0.
 class HinfStateFeedback final : public Controller {
  public:
+  // The law of the design `solution` (Z of the GRDE along its trajectory) with the gain
+  // scaling kappa(t) (checked > 0 where the law evaluates it). InputError without a solution.
   HinfStateFeedback(RiccatiSolutionPtr solution, Signal kappa = Signal(1.0));
+  // "hinf", or "lqr" for a design at gamma = inf.
   std::string name() const override;
   int n() const override { return solution_->n(); }
   int m() const override { return solution_->m(); }
   void control(double t, const ConstVecRef& q, VecRef u) override;
   void control_jacobian(double t, const ConstVecRef& q, MatRef dudq) override;
+  // The design Z and the gain scaling kappa(t) of the law.
   const RiccatiSolution& solution() const { return *solution_; }
   const Signal& kappa() const { return kappa_; }
   // kappa(t); an InputError if it is not > 0.

@@ -12,17 +12,23 @@
 
 namespace hinf {
 
+// The disturbance w(t, q) applied to a closed loop: signals, plus the worst-case disturbance of
+// a design when one is given.
 class Disturbance {
  public:
   Disturbance() = default;
-  Disturbance(VectorSignal signals);  // implicit: a VectorSignal is a disturbance
+  // The signals alone (implicit: a VectorSignal is a disturbance).
+  Disturbance(VectorSignal signals);
   // signals + the worst-case disturbance of `design` (needs a finite gamma).
   Disturbance(VectorSignal signals, RiccatiSolutionPtr design);
 
+  // The number of channels: the model's nw.
   int dim() const { return signals_.dim(); }
+  // True when the worst-case disturbance of a design is added.
   bool worst_case() const { return design_ != nullptr; }
   // The design of the worst-case part (null without one); q in eval() has design()->n() numbers.
   const RiccatiSolutionPtr& design() const { return design_; }
+  // The signals w(t) without the worst-case part.
   const VectorSignal& signals() const { return signals_; }
   // w at time t for the actual state q (n numbers); writes dim() numbers. Safe to call from
   // several threads at once (it keeps no state between calls).

@@ -15,6 +15,7 @@
 
 namespace hinf {
 
+// The metrics of one run, each defined by its row of metric_table().
 struct Metrics {
   double rms_position_error_last_half = NAN;
   double max_position_error = NAN;
@@ -29,6 +30,7 @@ struct Metrics {
   double rms_estimation_error_last_half = NAN;
 };
 
+// The definition of one metric: a row of metric_table().
 struct MetricDefinition {
   const char* name;        // key in the results file and in Python's RunResult.metrics
   const char* label;       // for tables
@@ -38,8 +40,12 @@ struct MetricDefinition {
 };
 
 constexpr std::size_t kMetricCount = 11;
+// The metrics, in the order of the results file.
 const std::array<MetricDefinition, kMetricCount>& metric_table();
 
+// The metrics of a closed-loop run of `model` (whose position and heading indices they use),
+// with Q (n x n, symmetric positive semidefinite) weighting q_e in the L2 gain.
+// InputError when the run's series do not fit the model or Q is not such a weight.
 Metrics compute_metrics(const Model& model, const SimulationResult& run, const Mat& Q);
 
 // sqrt of the trapezoid integral of the squared row norms of series over times t.

@@ -84,14 +84,16 @@ struct OutputFeedbackProblem {
   Mat Q;                        // weight of the performance index, in (36)
 };
 
+// The choices of the output-feedback loop.
 struct OutputFeedbackOptions {
-  FilterLinearization filter_A = FilterLinearization::Estimate;
-  CouplingPolicy on_coupling_violation = CouplingPolicy::Error;
-  // The series EstimatorSeries::sigma_min_eig and sigma_max_eig (false: NaN). Every other
-  // output, the metrics and the check that Sigma stays positive semidefinite are the same
-  // either way; run_scenarios, which keeps only the metrics, turns it off (a third of a Figure 2
-  // run's time goes to eigenvalues on the output grid).
-  bool sigma_eigenvalues = true;
+  FilterLinearization filter_A = FilterLinearization::Estimate;  // the A of the filter (36)
+  CouplingPolicy on_coupling_violation = CouplingPolicy::Error;   // what a violation does
+  bool sigma_eigenvalues = true;  // the series EstimatorSeries::sigma_min_eig and sigma_max_eig
+                                  // (false: NaN). Every other output, the metrics and the check
+                                  // that Sigma stays positive semidefinite are the same either
+                                  // way; run_scenarios, which keeps only the metrics, turns it
+                                  // off (a third of a Figure 2 run's time goes to eigenvalues on
+                                  // the output grid).
 };
 
 // Simulates the output-feedback closed loop: filter and estimator of the problem's design

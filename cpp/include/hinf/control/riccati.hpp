@@ -31,15 +31,16 @@
 
 namespace hinf {
 
+// The counts of a Riccati solve or a closed-loop run, and the size of what it stored.
 struct SolveStats {
-  long steps = 0;
+  long steps = 0;     // accepted steps
   long rejected = 0;  // rejected steps (error test failures)
-  long rhs_evals = 0;
+  long rhs_evals = 0;  // right-hand-side evaluations
   long jac_evals = 0;  // Jacobians (dense) or Schur factorizations (Lyapunov Newton systems)
   std::size_t memory_bytes = 0;  // stored dense output
-  // The integrator that solved it: "erk", "adams", "bdf (dense Newton)", "bdf (Lyapunov
-  // Newton)", or "erk, then bdf (...) from t = ..." for Method::Auto.
-  std::string method;
+  std::string method;  // the integrator that solved it: "erk", "adams", "bdf (dense Newton)",
+                       // "bdf (Lyapunov Newton)", or "erk, then bdf (...) from t = ..." for
+                       // Method::Auto
 };
 
 // A Riccati solution that should be positive semidefinite counts as such while its smallest
@@ -53,14 +54,20 @@ class SymmetricSolution {
   SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X, SolveStats stats);
   virtual ~SymmetricSolution() = default;
 
+  // The desired trajectory it was solved along.
   const Trajectory& trajectory() const { return *trajectory_; }
   const TrajectoryPtr& trajectory_ptr() const { return trajectory_; }
+  // The size of X: n x n, the trajectory's states.
   int n() const { return n_; }
+  // The gamma of the equation (+inf: LQR, or the Kalman-Bucy filter).
   double gamma() const { return gamma_; }
+  // The horizon [t0, tf] (s), the trajectory's.
   double t0() const { return trajectory_->t0(); }
   double tf() const { return trajectory_->tf(); }
 
+  // X(t) (n x n, symmetric) from the dense output; t outside [t0, tf] is an InputError.
   Mat value(double t) const;
+  // dX/dt at t (per second): the derivative of the dense output.
   Mat derivative(double t) const;
   // Packed symmetric half of X(t) (types.hpp).
   void packed(double t, double* out, std::size_t* cursor = nullptr) const;
@@ -71,6 +78,8 @@ class SymmetricSolution {
   // over the neighbouring steps.
   void eigenvalue_bounds(double& lambda_min, double& lambda_max) const;
 
+  // The dense output of X's packed upper triangle (n(n+1)/2 components, types.hpp) and the
+  // counts of its solve.
   const PiecewisePolynomial& dense() const { return X_; }
   const SolveStats& stats() const { return stats_; }
 
@@ -90,14 +99,15 @@ class RiccatiSolution final : public SymmetricSolution {
  public:
   RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z, SolveStats stats);
 
+  // The model's number of inputs (the rows of the gain).
   int m() const { return m_; }
+  // Z(t) (n x n) and dZ/dt: value(t) and derivative(t).
   Mat Z(double t) const { return value(t); }
   Mat dZdt(double t) const { return derivative(t); }
   void Z_packed(double t, double* out, std::size_t* cursor = nullptr) const { packed(t, out, cursor); }
   // K(t) = B_e(t)' Z(t) (m x n), the gain of the state-feedback law (17), B_e(t) = G(t, q_d(t)).
   Mat gain(double t) const;
-  // K(t) column-major into out (m * n numbers).
-  void gain(double t, double* out, std::size_t* cursor = nullptr) const;
+  void gain(double t, double* out, std::size_t* cursor = nullptr) const;  // column-major into out (m n)
 
  private:
   int m_;
@@ -111,6 +121,7 @@ class RiccatiSolution final : public SymmetricSolution {
 class FilterRiccatiSolution final : public SymmetricSolution {
  public:
   using SymmetricSolution::SymmetricSolution;
+  // Sigma(t) (n x n) and dSigma/dt: value(t) and derivative(t).
   Mat Sigma(double t) const { return value(t); }
   Mat dSigma_dt(double t) const { return derivative(t); }
 };

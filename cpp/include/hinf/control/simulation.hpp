@@ -48,7 +48,8 @@ long check_output_grid(double t0, double tf, double dt);
 // How a closed-loop run ended.
 enum class RunStatus {
   Completed,  // integrated over the whole horizon
-  Diverged    // stopped when the tracking error exceeded the divergence bound (see above)
+  Diverged    // stopped when the tracking error exceeded the divergence bound (see above):
+              // divergence_factor times the problem's scale
 };
 template <>
 struct EnumNames<RunStatus> {
@@ -61,26 +62,26 @@ struct EnumNames<RunStatus> {
 struct EstimatorSeries {
   RowMat q_hat;         // estimate of the error q_e (n)
   RowMat y;             // measurement y (p)
-  Vec sigma_min_eig;    // eigenvalue bounds of the filter Riccati solution Sigma(t)
-  Vec sigma_max_eig;
+  Vec sigma_min_eig;    // smallest eigenvalue of the filter Riccati solution Sigma(t)
+  Vec sigma_max_eig;    // largest eigenvalue of Sigma(t)
   Vec rho_sigma_z;      // spectral radius of Sigma(t) Z(t)
   double coupling_violation_t = NAN;  // first output time with rho(Sigma Z) >= gamma^2, if any
 };
 
 // Time series on the output grid, one row per time.
 struct SimulationResult {
-  Vec t;
+  Vec t;       // output times (s), from t0
   RowMat q;    // actual state (n)
   RowMat q_d;  // desired state (n)
   RowMat u;    // applied control (m)
   RowMat u_d;  // desired control (m)
   RowMat w;    // applied disturbance (nw), noise channels included for output feedback
   std::optional<EstimatorSeries> estimator;  // output feedback only
-  RunStatus status = RunStatus::Completed;
+  RunStatus status = RunStatus::Completed;  // how the run ended
   std::string status_message;  // why the run stopped early; empty when completed
   int heading_index = -1;      // the model's heading component (angles.hpp), -1 if none
   std::string integrator;      // how the closed loop was integrated
-  SolveStats stats;
+  SolveStats stats;            // the counts of the closed loop's integration
 
   // The tracking errors q - q_d, one row per output time, the heading component wrapped to
   // (-pi, pi].

@@ -34,7 +34,7 @@ struct AuvParameters {
 
   // The Sirene AUV as in Aguiar and Pascoal, "Dynamic positioning and way-point tracking of
   // underactuated AUVs in the presence of ocean currents", Int. J. Control 80(7), 1092-1108,
-  // 2007 (the defaults above).
+  // 2007 (the defaults of the fields).
   static AuvParameters sirene() { return {}; }
 };
 // The parameters by their scenario-file keys (the reader, the writer, named_parameters()).
@@ -55,6 +55,7 @@ class Auv final : public BuiltinVehicle {
  public:
   // InputError unless the masses are finite and > 0 and the drag coefficients finite and >= 0.
   explicit Auv(const AuvParameters& parameters = {});
+  // The parameters it was made with.
   const AuvParameters& parameters() const { return p_; }
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kAuvParameterKeys);

@@ -22,6 +22,7 @@ class FleetModel final : public Model {
   // kMaxDimension).
   FleetModel(ModelPtr member, int count);
 
+  // The model of one vehicle, and the number of vehicles.
   const ModelPtr& member() const { return member_; }
   int count() const { return count_; }
 

@@ -46,6 +46,7 @@ class FossenVessel final : public BuiltinVehicle {
   // InputError unless M and D are finite 3 x 3 matrices, M symmetric positive definite and the
   // symmetric part of D positive definite.
   explicit FossenVessel(const FossenVesselParameters& parameters = {});
+  // The parameters it was made with.
   const FossenVesselParameters& parameters() const { return p_; }
   // M[i][j] and D[i][j], the entries of [model] M and D.
   std::vector<std::pair<std::string, double>> named_parameters() const override;

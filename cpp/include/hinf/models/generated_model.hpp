@@ -47,7 +47,9 @@ class GeneratedModel final : public Model {
 
   // model.json's path (empty for compiled-in code).
   const std::string& metadata_path() const { return metadata_path_; }
+  // The path of the shared library that holds the functions.
   const std::string& library_path() const { return f_->library()->path(); }
+  // The names of the parameters, in the order of the functions' parameter vector p.
   const std::vector<std::string>& parameter_names() const { return parameter_names_; }
   const Vec& parameter_values() const { return p_; }
   // The values by name (what a scenario file writes back).

@@ -34,6 +34,7 @@ class Hovercraft final : public BuiltinVehicle {
  public:
   // InputError unless d and d_r are finite and >= 0.
   explicit Hovercraft(const HovercraftParameters& parameters = {});
+  // The parameters it was made with.
   const HovercraftParameters& parameters() const { return p_; }
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kHovercraftParameterKeys);

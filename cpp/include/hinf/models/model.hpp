@@ -28,14 +28,19 @@
 
 namespace hinf {
 
+// The interface every model implements. Its structure (name, sizes, state names, position and
+// heading indices, noise channels, the two flags about the input matrices: ModelStructure) must
+// not change over the model's life.
 class Model {
  public:
   virtual ~Model() = default;
 
+  // The model's name (the results file, tables, messages).
   virtual std::string name() const = 0;
-  virtual int n() const = 0;   // states
-  virtual int m() const = 0;   // control inputs
-  virtual int nw() const = 0;  // disturbance channels
+  // The sizes: n states, m control inputs, nw disturbance channels.
+  virtual int n() const = 0;
+  virtual int m() const = 0;
+  virtual int nw() const = 0;
 
   // Drift f(t, q) (n) and its Jacobian df/dq (n x n).
   virtual void f(double t, const ConstVecRef& q, VecRef out) const = 0;
@@ -176,6 +181,7 @@ class LinearModel final : public Model {
   Mat C(double t) const override;
   std::vector<int> noise_channels() const override;
   double remainder_bound(double, const ConstVecRef&, double) const override { return 0.0; }
+  // A (n x n) and B (n x m) as given to the constructor.
   const Mat& A() const { return A_; }
   const Mat& B() const { return B_; }
   // The matrices as given to the constructor: D without the noise channels, C empty if none.

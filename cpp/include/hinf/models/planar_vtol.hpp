@@ -35,6 +35,7 @@ class PlanarVtol final : public BuiltinVehicle {
  public:
   // InputError unless g is finite and >= 0 and epsilon finite.
   explicit PlanarVtol(const PlanarVtolParameters& parameters = {});
+  // The parameters it was made with.
   const PlanarVtolParameters& parameters() const { return p_; }
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kPlanarVtolParameterKeys);

@@ -26,12 +26,12 @@ namespace hinf {
 //     dy/dt   = u sin(psi) + v cos(psi)
 //     dpsi/dt = r
 struct ShipParameters {
-  double m_u = 0.5;
-  double m_v = -2.0;
-  double m_r = 0.5;
-  double d_u = 1.0;
-  double d_v = 2.0;
-  double d_r = 1.0;
+  double m_u = 0.5;   // coefficient of v r in du/dt (m_u v r), finite
+  double m_v = -2.0;  // coefficient of u r in dv/dt (m_v u r), finite
+  double m_r = 0.5;   // coefficient of u v in dr/dt (m_r u v), finite
+  double d_u = 1.0;   // surge damping (1/s), finite
+  double d_v = 2.0;   // sway damping (1/s), finite
+  double d_r = 1.0;   // yaw damping (1/s), finite
 };
 // The parameters by their keys in a scenario file's [model] (and [plant]) section: the reader,
 // the writer and ShipModel::named_parameters() go through this one list.
@@ -49,6 +49,7 @@ class ShipModel final : public BuiltinVehicle {
  public:
   // InputError unless every parameter is finite.
   explicit ShipModel(const ShipParameters& parameters = {});
+  // The parameters it was made with.
   const ShipParameters& parameters() const { return p_; }
   std::vector<std::pair<std::string, double>> named_parameters() const override {
     return named_parameters_of(p_, kShipParameterKeys);

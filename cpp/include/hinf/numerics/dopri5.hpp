@@ -26,6 +26,7 @@
 
 namespace hinf {
 
+// The counts of one integration (the desired trajectory's, Trajectory::stats()).
 struct StepStats {
   long steps = 0;      // accepted steps
   long rejected = 0;   // rejected step attempts

@@ -20,13 +20,18 @@
 
 namespace hinf {
 
+// The dense output y(t) in R^dim of one solve: one polynomial piece per integrator step.
 class PiecewisePolynomial {
  public:
   explicit PiecewisePolynomial(int dim = 0);
 
+  // The number of components of y.
   int dim() const { return dim_; }
+  // The number of pieces (integrator steps).
   std::size_t num_pieces() const { return t_start_.size(); }
+  // True before the first piece is appended.
   bool empty() const { return t_start_.empty(); }
+  // The interval covered, [t_min, t_max] (s).
   double t_min() const;
   double t_max() const;
 
@@ -39,7 +44,9 @@ class PiecewisePolynomial {
   // lives unchanged: appending the pieces in that order rebuilds an identical dense output.
   DensePiece piece(std::size_t k) const { return {t_start_[k], t_end_[k], degree_[k], dim_, coefficients(k)}; }
 
+  // y(t) into out (dim numbers); t outside [t_min, t_max] is an InputError.
   void eval(double t, double* out, std::size_t* cursor = nullptr) const;
+  // dy/dt at t (per second) into out: the derivative of the piece's polynomial.
   void eval_derivative(double t, double* out, std::size_t* cursor = nullptr) const;
 
   // The ends of the pieces, increasing (num_pieces + 1 values).

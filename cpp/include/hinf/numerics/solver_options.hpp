@@ -8,6 +8,8 @@
 
 namespace hinf {
 
+// The integrator of the Riccati equations (13) and (36) and of the closed loops
+// (SolverOptions::method; the desired trajectory is always integrated by Dormand-Prince).
 enum class Method {
   Auto,   // Dormand-Prince while the problem is not stiff; once its stiffness test fires (15
           // accepted steps in a row limited by stability), BDF from there on (the default)
@@ -41,17 +43,19 @@ struct EnumNames<NewtonSystems> {
 // system of 8 states, horizon 20; benchmarks/README.md).
 constexpr int kDenseNewtonMaxStates = 7;
 
+// Integrator and tolerances of one solve or closed loop (scenario section [solver]). Each
+// field says its admissible range; validate() checks them.
 struct SolverOptions {
-  Method method = Method::Auto;
+  Method method = Method::Auto;  // the integrator
   double rtol = 1e-8;        // relative tolerance, in [1e-14, 1e-3]
   double atol = 1e-10;       // absolute tolerance (about rtol/100 for O(1) solutions), in (0, 1e-3];
                              // Riccati solves use atol * min(1, the solution's scale)
   long max_steps = 500000;   // steps of one whole solve or closed-loop run (all its restarts
-                             // included); exceeding it is a SolverError
+                             // included), in [1, 1e9]; exceeding it is a SolverError
   // Riccati solves: when |X|_max passes escape_norm times the solution's scale, the escape
   // test (riccati.hpp) decides whether X escapes to infinity (a conjugate point, paper eq. 14)
   // or is only large. Only the cost depends on it.
-  double escape_norm = 1e6;
+  double escape_norm = 1e6;  // finite and > 1
   NewtonSystems newton_systems = NewtonSystems::Auto;  // Riccati equations with BDF
 
   void validate() const;  // InputError naming the option and its admissible range

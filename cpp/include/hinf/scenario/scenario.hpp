@@ -22,12 +22,12 @@ namespace hinf {
 struct MeasurementSpec {
   double sigma = 0.0;           // std of the noise on each measured output
   double sample_period = 0.01;  // noise held constant over each period (s)
-  std::uint64_t seed = 0;
+  std::uint64_t seed = 0;       // seed of the noise samples (scenario_noise)
   Mat N;                        // filter weight N = E E' (empty: sigma^2 I)
   Mat Q0;                       // Sigma(t0) = (Q0 - eta I)^-1 (empty: 2 I)
-  double eta = 1.0;
-  FilterLinearization filter_A = FilterLinearization::Estimate;
-  CouplingPolicy on_coupling_violation = CouplingPolicy::Error;
+  double eta = 1.0;             // > 0, with Q0 - eta I positive definite
+  FilterLinearization filter_A = FilterLinearization::Estimate;  // the A of the filter (36)
+  CouplingPolicy on_coupling_violation = CouplingPolicy::Error;   // what a violation does
 };
 
 // The tracking law of a scenario ([controller] law).
@@ -43,29 +43,32 @@ struct EnumNames<Law> {
       {{Law::Hinf, "hinf"}, {Law::Lqr, "lqr"}, {Law::Cascade, "cascade"}}};
 };
 
+// A scenario: the model, the horizon, the desired trajectory, the law and its design, the
+// disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
+// empty take the defaults that resolved() fills in.
 struct Scenario {
-  std::string name;
-  std::string description;
+  std::string name;           // for results and messages (a file's stem by default)
+  std::string description;    // free text
   ModelPtr model;             // the design model: desired trajectory, GRDE, controller, estimator
-  // [plant]: the vehicle the closed loop integrates (its f, G, D), when it differs from the
-  // design model; null: the design model. Same structure as the model (check_plant).
-  ModelPtr plant;
-  double t0 = 0.0;
-  double tf = 0.0;
+  ModelPtr plant;             // [plant]: the vehicle the closed loop integrates (its f, G, D),
+                              // when it differs from the design model; null: the design model.
+                              // Same structure as the model (check_plant).
+  double t0 = 0.0;            // [horizon] t0 (s)
+  double tf = 0.0;            // [horizon] tf (s), > t0
   Vec desired_q0;             // q_d(t0)
   VectorSignal desired_u;     // u_d(t), m channels
   double gamma = 0.0;         // > 0, may be +inf (LQR)
   Mat Q;                      // empty: identity
   Mat Qf;                     // empty: identity
-  Signal kappa = Signal(1.0);
-  Law law = Law::Hinf;
-  CascadeGains cascade;
+  Signal kappa = Signal(1.0);  // gain scaling kappa(t) of the law (17)/(18), > 0
+  Law law = Law::Hinf;        // the tracking law
+  CascadeGains cascade;       // the gains of the cascade law
   VectorSignal disturbance;   // w(t), nw channels (dim 0: all zero)
-  // Adds the worst-case disturbance gamma^-2 D' Z q_e of paper eq. (16) (Z of the H-infinity
-  // design at gamma, whatever the law) to the disturbance signals.
-  bool worst_case = false;
+  bool worst_case = false;    // adds the worst-case disturbance gamma^-2 D' Z q_e of paper
+                              // eq. (16) (Z of the H-infinity design at gamma, whatever the
+                              // law) to the disturbance signals
   Vec initial_q0;             // q(t0)
-  std::optional<MeasurementSpec> measurement;
+  std::optional<MeasurementSpec> measurement;  // imperfect measurements; none: state feedback
   SolverOptions solver;             // every integration: the Riccati equations and the closed loop
   double output_dt = 0.01;          // [output] dt
   double divergence_factor = 1e3;   // [solver] divergence_factor (simulation.hpp)
@@ -84,30 +87,38 @@ struct Scenario {
 // or no measurement when the model has none. Messages name [plant].
 void check_plant(const Model& model, const Model& plant, double t0);
 
+// The wall-clock time of a run's parts (s).
 struct Timing {
   double design = 0.0;    // desired trajectory, GRDE, eigenvalue bounds of Z
   double simulate = 0.0;  // closed loop
   double analysis = 0.0;  // metrics
-  double total = 0.0;
+  double total = 0.0;     // the whole run_scenario, checks included
 };
 
+// What run_scenario gives: the design, the closed loop and its metrics.
 struct RunResult {
-  std::string scenario_name;
-  Law law = Law::Hinf;
-  bool output_feedback = false;
-  double gamma = 0.0;
+  std::string scenario_name;    // the scenario's name
+  Law law = Law::Hinf;          // the scenario's law
+  bool output_feedback = false;  // true with [measurement]
+  double gamma = 0.0;           // of the law's design: the scenario's gamma, inf for lqr
   TrajectoryPtr trajectory;   // its model is the design model
   ModelPtr plant;             // the scenario's plant; null when the closed loop integrated the design model
   RiccatiSolutionPtr solution;  // the law's design; null only for the cascade law with state
                                 // feedback when no design exists at gamma (gamma <= gamma*)
-  Mat Z0;
+  Mat Z0;                       // Z(t0) (n x n); empty without a design
   double Z_min_eig = NAN, Z_max_eig = NAN;  // m and M of paper eq. (22) over [t0, tf]
-  std::optional<double> gamma_star;
-  SimulationResult simulation;
-  Metrics metrics;
-  Timing timing;
+  std::optional<double> gamma_star;  // not computed by run_scenario; set by the caller for
+                                     // the results file (scenario_gamma_star)
+  SimulationResult simulation;  // the closed loop's time series
+  Metrics metrics;              // of the closed loop (metrics.hpp)
+  Timing timing;                // the wall-clock time of its parts
 };
 
+// One run: resolves and validates the scenario (InputError naming the key), designs the law
+// (the desired trajectory, Z of the GRDE at the law's gamma), simulates the closed loop (state
+// feedback, or output feedback with [measurement], its noise from the seed), and computes the
+// metrics. ConjugatePointError when the design needs Z and gamma <= gamma*;
+// CouplingConditionError and SolverError as the closed loops raise them.
 RunResult run_scenario(const Scenario& scenario);
 
 // What is legal but probably not meant, one message per finding, naming the key: a table

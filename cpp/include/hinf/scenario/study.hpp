@@ -81,13 +81,13 @@ struct EnumNames<RunOutcome> {
 
 // One row of a study.
 struct StudyRun {
-  RunOutcome status = RunOutcome::Failed;
+  RunOutcome status = RunOutcome::Failed;  // how the run ended
   std::string reason;     // empty when completed; else the error message or the status message
   Metrics metrics;        // all NaN when the run failed before its closed loop ended; a diverged
                           // run has what compute_metrics gives for the part it ran
   double gamma = NAN;     // of the law's design (inf for lqr), as RunResult::gamma
-  Law law = Law::Hinf;
-  bool output_feedback = false;
+  Law law = Law::Hinf;            // the scenario's law
+  bool output_feedback = false;   // true with [measurement]
   double design_seconds = 0.0;    // wall-clock time of the design the run used (a shared design's
                                   // time is given in each of its runs)
   double simulate_seconds = 0.0;  // closed loop and metrics
@@ -95,13 +95,18 @@ struct StudyRun {
                     // one; -1 when the run failed before a design was made (invalid input)
 };
 
+// Options of run_scenarios.
 struct StudyOptions {
   int threads = 0;            // worker threads (>= 0); 0: the hardware's threads; never more than runs
-  bool share_designs = true;  // compute each distinct design once (see above)
+  bool share_designs = true;  // compute each distinct design once: runs with equal design
+                              // inputs share it (see above)
 
   void validate() const;  // InputError unless threads >= 0
 };
 
+// Runs every scenario, in parallel, and returns one StudyRun per scenario, in the order given:
+// each row is what run_scenario gives for that scenario alone. InputError only for invalid
+// options; whatever a run raises is its row's outcome and reason.
 std::vector<StudyRun> run_scenarios(const std::vector<Scenario>& scenarios, const StudyOptions& options = {},
                                 const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 // The name of run_scenarios in 0.1, deprecated: removed in 0.3.
