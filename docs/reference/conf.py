@@ -116,5 +116,25 @@ def _prepare_docstring(app, what, name, obj, options, lines):
             literal = True
 
 
+def _escape_attribute_summaries() -> None:
+    """numpydoc describes an Attributes entry that is a documented property by the first sentence
+    of the property's docstring, read after _prepare_docstring ran: escape its '|' too (norms such
+    as |p - p_d| in the extension's contracts)."""
+    from numpydoc.docscrape_sphinx import SphinxDocString
+
+    process = SphinxDocString._process_param
+
+    def process_escaped(self, param, desc, fake_autosummary):
+        shown, summary = process(self, param, desc, fake_autosummary)
+        if summary is not desc:
+            summary = [line.replace("|", r"\|") for line in summary]
+        return shown, summary
+
+    SphinxDocString._process_param = process_escaped
+
+
+_escape_attribute_summaries()
+
+
 def setup(app):
     app.connect("autodoc-process-docstring", _prepare_docstring, priority=100)

@@ -451,7 +451,7 @@ class ComparisonRun:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> run = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "lqr")["lqr"]
     >>> run.ok, run.design_gamma, run.feedback
     (True, inf, <Feedback.state: 'state'>)
@@ -508,7 +508,7 @@ class Comparison:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "hinf,lqr")
     >>> comparison.keys
     ['hinf', 'lqr']
@@ -612,7 +612,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr")
     >>> comparison.keys
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']

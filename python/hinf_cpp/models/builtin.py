@@ -94,8 +94,8 @@ def ship(parameter_values: dict | None = None) -> SymbolicModel:
 
     Examples
     --------
-    >>> from hinf_cpp.models import vehicles
-    >>> ship = vehicles.ship()
+    >>> from hinf_cpp.models import builtin
+    >>> ship = builtin.ship()
     >>> ship.parameter_values
     {'m_u': 0.5, 'm_v': -2.0, 'm_r': 0.5, 'd_u': 1.0, 'd_v': 2.0, 'd_r': 1.0}
     >>> ship.state_names, ship.error_split is not None
@@ -175,8 +175,8 @@ def fossen_vessel(parameter_values: dict | None = None) -> SymbolicModel:
 
     Examples
     --------
-    >>> from hinf_cpp.models import vehicles
-    >>> vessel = vehicles.fossen_vessel()
+    >>> from hinf_cpp.models import builtin
+    >>> vessel = builtin.fossen_vessel()
     >>> len(vessel.parameter_names), vessel.parameter_names[:2]
     (27, ['M[0][0]', 'M[0][1]'])
     >>> round(vessel.parameter_values["M_inv[0][0]"] * vessel.parameter_values["M[0][0]"], 4)
@@ -240,8 +240,8 @@ def hovercraft(parameter_values: dict | None = None) -> SymbolicModel:
 
     Examples
     --------
-    >>> from hinf_cpp.models import vehicles
-    >>> hovercraft = vehicles.hovercraft()
+    >>> from hinf_cpp.models import builtin
+    >>> hovercraft = builtin.hovercraft()
     >>> hovercraft.parameter_values, hovercraft.state_dependent_inputs
     ({'d': 0.2, 'd_r': 0.5}, True)
     """
@@ -286,8 +286,8 @@ def pvtol(parameter_values: dict | None = None) -> SymbolicModel:
 
     Examples
     --------
-    >>> from hinf_cpp.models import vehicles
-    >>> vtol = vehicles.pvtol({"g": 1.0, "epsilon": 0.2})
+    >>> from hinf_cpp.models import builtin
+    >>> vtol = builtin.pvtol({"g": 1.0, "epsilon": 0.2})
     >>> vtol.parameter_values, vtol.heading_index
     ({'g': 1.0, 'epsilon': 0.2}, 2)
     """
@@ -338,8 +338,8 @@ def auv(parameter_values: dict | None = None) -> SymbolicModel:
 
     Examples
     --------
-    >>> from hinf_cpp.models import vehicles
-    >>> auv = vehicles.auv()
+    >>> from hinf_cpp.models import builtin
+    >>> auv = builtin.auv()
     >>> auv.parameter_names[:3], auv.parameter_values["m11"]
     (['m11', 'm22', 'm33'], 215.0)
     """

@@ -299,7 +299,7 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
     Examples
     --------
     >>> from hinf_cpp.output.plotting import paths_figure
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
     >>> [label for label, _ in runs]
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
@@ -368,7 +368,7 @@ def errors_figure(runs: Runs, title: str | None = None) -> Figure:
     Examples
     --------
     >>> from hinf_cpp.output.plotting import errors_figure
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
     >>> [label for label, _ in runs]
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
@@ -434,7 +434,7 @@ def controls_figure(runs: Runs, title: str | None = None) -> Figure:
     Examples
     --------
     >>> from hinf_cpp.output.plotting import controls_figure
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
     >>> [label for label, _ in runs]
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
@@ -499,7 +499,7 @@ def eigenvalues_figure(runs: Runs, title: str | None = None) -> Figure:
     Examples
     --------
     >>> from hinf_cpp.output.plotting import eigenvalues_figure
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
     >>> [label for label, _ in runs]
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']
@@ -573,7 +573,7 @@ def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
     Examples
     --------
     >>> from hinf_cpp.output.plotting import coupling_figure
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> runs = compare(hc.load_scenario(hc.scenario_path("paper_fig2")), "hinf,lqr").results()
     >>> [label for label, _ in runs]
     ['hinf', 'lqr', 'hinf/output-feedback', 'lqr/output-feedback']

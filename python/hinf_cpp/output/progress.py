@@ -43,7 +43,7 @@ class Progress:
 
     Examples
     --------
-    >>> from hinf_cpp.analysis import comparison
+    >>> from hinf_cpp.analysis import compare
     >>> from hinf_cpp.output.progress import Progress
     >>> with Progress() as progress:  # shown on a terminal only
     ...     comparison = compare(hc.load_scenario(hc.scenario_path("paper_fig1")), "hinf,lqr",
