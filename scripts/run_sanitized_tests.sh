@@ -4,8 +4,9 @@
 # Eigen's and libstdc++'s assertions on (Debug: no NDEBUG), in build/sanitize/cmake
 # (incremental). Then ctest, then pytest on the sanitized extension. Any sanitizer report, also
 # from a subprocess whose failure a test expects, fails the step. Extra arguments go to pytest.
-# Both suites whole, no subset: from scratch on 2 cores the step took 12 minutes (build 5.5,
-# ctest 0.5, pytest 6; pytest about 3 times its time on the plain build), 21 on a busy machine.
+# scripts/run_tests.sh runs it after the plain pytest; this is where the C++ tests run. pytest
+# skips what runs once, in the plain stage: the tests marked slow or text (tests/python/conftest.py).
+# Timings: README.md, "Tests".
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -103,9 +104,11 @@ lap ctest
 # --capture=sys: pytest captures the tests' output at the level of sys.stdout and sys.stderr,
 # not of the file descriptors, so that a UBSan report in the pytest process reaches the log
 # rather than a capture file that dies with the process.
+# -n 2: two workers (pytest-xdist), as in the plain stage; a report aborts its worker, which
+# pytest-xdist reports as crashed, naming the test it was running.
 status=0
 ASAN_OPTIONS="$asan_options:detect_leaks=0" LD_PRELOAD="$preload" PYTHONMALLOC=malloc \
-  "$STAGE/bin/python" -m pytest --capture=sys "$@" || status=$?
+  "$STAGE/bin/python" -m pytest -n 2 --capture=sys "$@" || status=$?
 check_reports pytest
 ((status == 0)) || fail "pytest failed (status $status)"
 lap pytest

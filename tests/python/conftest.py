@@ -68,11 +68,21 @@ SANITIZER_SKIPS = {
 IPOPT_SKIP = "CasADi loads IPOPT with dlopen(RTLD_DEEPBIND), which the ASan runtime refuses"
 
 
+# Tests that run once per CI, in the plain stage (scripts/run_tests.sh runs both stages): those
+# marked "slow" (long runs of code the other tests also cover) and "text" (they check documents,
+# stubs, generated sources and include lines, not what the library computes).
+ONCE_SKIPS = {
+    "slow": "a slow test, run once, in the plain stage",
+    "text": "checks text, not the library; run once, in the plain stage",
+}
+
+
 def pytest_collection_modifyitems(config, items):
     if not SANITIZER_STAGE:
         return
     for item in items:
         reason = SANITIZER_SKIPS.get(item.nodeid) or (IPOPT_SKIP if item.get_closest_marker("ipopt") else None)
+        reason = reason or next((why for marker, why in ONCE_SKIPS.items() if item.get_closest_marker(marker)), None)
         if reason:
             item.add_marker(pytest.mark.skip(reason=f"under the sanitizers: {reason}"))
 

@@ -26,6 +26,8 @@ import pytest
 
 import hinf_cpp as hc
 
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PACKAGE = ROOT / "python" / "hinf_cpp"
 SUBPACKAGES = ("scenario", "models", "planning", "studies", "analysis", "output")

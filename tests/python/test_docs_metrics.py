@@ -5,7 +5,11 @@ import json
 import pathlib
 import re
 
+import pytest
+
 import hinf_cpp as hc
+
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 

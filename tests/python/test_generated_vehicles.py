@@ -15,6 +15,8 @@ import re
 
 import pytest
 
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
+
 casadi = pytest.importorskip("casadi")
 
 from hinf_cpp.models.builtin import STATEMENTS, generated_c_source  # noqa: E402

@@ -21,6 +21,10 @@ import re
 import subprocess
 import sys
 
+import pytest
+
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 CPP_LAYERS = ["core", "numerics", "models", "control", "scenario", "io"]

@@ -12,6 +12,8 @@ import subprocess
 
 import pytest
 
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 # Markdown links [text](target) and images ![alt](target).

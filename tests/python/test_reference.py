@@ -16,6 +16,8 @@ from sphinx.util.inventory import InventoryFile  # noqa: E402
 
 from test_api_docs import OBJECTS  # noqa: E402
 
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 

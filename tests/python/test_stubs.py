@@ -8,6 +8,10 @@ import pathlib
 import subprocess
 import sys
 
+import pytest
+
+pytestmark = pytest.mark.text  # run once per CI, not under the sanitizers (conftest.py)
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 REGENERATE = "bash scripts/generate_stubs.sh"
 
