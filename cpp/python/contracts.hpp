@@ -8,6 +8,10 @@
 namespace hinf::python {
 
 inline constexpr std::pair<std::string_view, std::string_view> kContracts[] = {
+    {"ActuatorLimits", R"contract(The actuators' limits. Empty vectors: no limit of that kind.)contract"},
+    {"ActuatorLimits::rate_max", R"contract(largest |du/dt| per channel (units of u per second; +inf: free), > 0)contract"},
+    {"ActuatorLimits::u_max", R"contract(bounds of the command (m numbers each; -inf / +inf for a free side))contract"},
+    {"ActuatorLimits::validate", R"contract(InputError unless each vector is empty or has m numbers, u_min <= u_max, no NaN, rate_max > 0.)contract"},
     {"Auv", R"contract(Its equations are generated from its statement (python/hinf_cpp/models/builtin.py, auv();
 models/builtin_vehicle.hpp).)contract"},
     {"Auv::Auv", R"contract(InputError unless the masses are finite and > 0 and the drag coefficients finite and >= 0.)contract"},
@@ -114,6 +118,13 @@ order) as a piece from the step's start to its end; valid until the next call.)c
     {"DensePiece::theta", R"contract(theta of time t (clamped to [0, 1]).
 At t == t_start the start (theta = 0) even for a step shorter than the spacing of doubles
 (t_end == t_start): the value at the start of an integration is its initial value.)contract"},
+    {"DiscreteDesign", R"contract(The solution of the game Riccati difference equation: M_k and the gains F_k of the law.
+Immutable; may be read from several threads.)contract"},
+    {"DiscreteDesign::M", R"contract(M_k (n x n, symmetric), k = 0 .. steps(); M_steps = Qf. InputError outside.)contract"},
+    {"DiscreteDesign::gain", R"contract(F_k (m x n): u_k = u_d(t_k) - F_k q_e(t_k), k = 0 .. steps() - 1. InputError outside.)contract"},
+    {"DiscreteDesign::sample_index", R"contract(The sample that holds t: floor((t - t0) / T), within 1e-9 T of a sample time that sample;
+InputError for t outside [t0, t_N).)contract"},
+    {"DiscreteDesign::worst_case_gain", R"contract(The worst-case disturbance's gain (nw x n): w_k = W_k q_e(t_k); zero for gamma = inf.)contract"},
     {"Disturbance", R"contract(The disturbance w(t, q) applied to a closed loop: signals, plus the worst-case disturbance of
 a design when one is given.)contract"},
     {"Disturbance::D_", R"contract(D of the design's model, when constant)contract"},
@@ -181,7 +192,7 @@ positioned ships", Control Engineering Practice 4(3), 369-376, 1996, in bis unit
     {"GammaCondition", R"contract(The condition a gamma fails.)contract"},
     {"GammaCondition::coupling", R"contract(rho(Sigma Z) >= gamma^2 somewhere on [t0, tf])contract"},
     {"GammaCondition::filter", R"contract(the filter Riccati equation (36) escapes or loses positive definiteness)contract"},
-    {"GammaCondition::grde", R"contract(a conjugate point of the GRDE (13))contract"},
+    {"GammaCondition::grde", R"contract(a conjugate point of the GRDE (13), or of its discrete game (gamma_star_discrete))contract"},
     {"GammaCondition::none", R"contract(passed (or, for the bracket's lower end 0, never evaluated))contract"},
     {"GammaStarOptions", R"contract(Options of the gamma* search (gamma_star, gamma_star_output_feedback). validate() checks
 them: a bracket of finite numbers >= 0 with lower < upper (or both 0), rtol in (0, 1),
@@ -334,6 +345,13 @@ w = [process disturbance (D.cols()), measurement noise (p)], and D is padded wit
     {"MeasurementSpec::sample_period", R"contract(noise held constant over each period (s))contract"},
     {"MeasurementSpec::seed", R"contract(seed of the noise samples (scenario_noise))contract"},
     {"MeasurementSpec::sigma", R"contract(std of the noise on each measured output)contract"},
+    {"MeasurementUse", R"contract(What became of the measurement given to step(). Anything but Used: the estimate was predicted.)contract"},
+    {"MeasurementUse::duplicate", R"contract(not newer than the last measurement used (the same one again, or out of order))contract"},
+    {"MeasurementUse::future", R"contract(t_meas > t_now)contract"},
+    {"MeasurementUse::missing", R"contract(none given)contract"},
+    {"MeasurementUse::notfinite", R"contract(t_meas or a component of q is NaN or infinite)contract"},
+    {"MeasurementUse::stale", R"contract(older than max_age at t_now, or than the commands remembered)contract"},
+    {"MeasurementUse::used", R"contract(used (and predicted to t_now with delay compensation))contract"},
     {"Method", R"contract(The integrator of the Riccati equations (13) and (36) and of the closed loops
 (SolverOptions::method; the desired trajectory is always integrated by Dormand-Prince).)contract"},
     {"Method::adams", R"contract(CVODE Adams-Moulton with fixed-point iteration: non-stiff, high order)contract"},
@@ -404,6 +422,37 @@ system is singular (the step is then retried with another step size).)contract"}
     {"NewtonSystems::auto", R"contract(densely up to kDenseNewtonMaxStates states, as Lyapunov equations beyond)contract"},
     {"NewtonSystems::dense", R"contract(the packed Jacobian (n(n+1)/2 unknowns) and LU: O(n^6) per factorization)contract"},
     {"NewtonSystems::lyapunov", R"contract(Schur form and Bartels-Stewart: O(n^3) per factorization and per solve)contract"},
+    {"OnlineController", R"contract(The state-feedback controller of one vehicle (see the top of this file).)contract"},
+    {"OnlineController::OnlineController", R"contract(InputError for a null law or bad options. Takes all the memory step() uses.)contract"},
+    {"OnlineController::derivative", R"contract(dx = A_e(t) x + B_e(t) (u - u_d(t)), A_e and B_e interpolated between samples (into A_t_, B_t_),
+u the command of history entry `entry`.)contract"},
+    {"OnlineController::entry_at", R"contract(The history entry whose command is applied at t (the latest entry with time <= t).)contract"},
+    {"OnlineController::estimate", R"contract(The estimate of q_e at estimate_time() (n), the command held since held_time() (m).)contract"},
+    {"OnlineController::history_u_", R"contract(m x history)contract"},
+    {"OnlineController::predict_to", R"contract(The estimate x_ predicted from t_x_ to t along the linearization with the applied commands.)contract"},
+    {"OnlineController::reset", R"contract(Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and
+the command held is u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q
+or u_held (reset() may allocate and throw; step() does neither).)contract"},
+    {"OnlineController::step", R"contract(One sample: the measurement q (n numbers, or null: none) taken at t_meas, the command for
+t_now into u (m numbers). Never throws, never allocates.)contract"},
+    {"OnlineController::t_last_", R"contract(the last call's t_now)contract"},
+    {"OnlineController::t_meas_last_", R"contract(the last measurement used)contract"},
+    {"OnlineCounts", R"contract(Counts since reset().)contract"},
+    {"OnlineCounts::largest_command", R"contract(max |u_i| over the commands computed)contract"},
+    {"OnlineCounts::past_horizon", R"contract(StepStatus::PastHorizon)contract"},
+    {"OnlineCounts::predicted", R"contract(commands computed without a measurement (MeasurementUse other than Used))contract"},
+    {"OnlineCounts::rate_limited", R"contract(commands with the rate limit active)contract"},
+    {"OnlineCounts::refused", R"contract(StepStatus::Refused)contract"},
+    {"OnlineCounts::saturated", R"contract(commands with a bound active)contract"},
+    {"OnlineCounts::steps", R"contract(calls of step() (any status))contract"},
+    {"OnlineCounts::used", R"contract(measurements used)contract"},
+    {"OnlineOptions", R"contract(The choices of an online controller.)contract"},
+    {"OnlineOptions::compensate_delay", R"contract(predict a measurement from t_meas to t_now (false: the command
+is the law's at t_meas, u_d(t_meas) - K q_e(t_meas), as if
+computed then and applied late))contract"},
+    {"OnlineOptions::history", R"contract(applied commands remembered (>= 2): a measurement older than
+the oldest is stale)contract"},
+    {"OnlineOptions::max_age", R"contract(s: a measurement older than this at t_now is stale (not used))contract"},
     {"OutputFeedbackOptions", R"contract(The choices of the output-feedback loop.)contract"},
     {"OutputFeedbackOptions::filter_A", R"contract(the A of the filter (36))contract"},
     {"OutputFeedbackOptions::on_coupling_violation", R"contract(what a violation does)contract"},
@@ -486,6 +535,27 @@ feedback when no design exists at gamma (gamma <= gamma*))contract"},
     {"RunStatus::completed", R"contract(integrated over the whole horizon)contract"},
     {"RunStatus::diverged", R"contract(stopped when the tracking error exceeded the divergence bound (see above):
 divergence_factor times the problem's scale)contract"},
+    {"SampledLaw", R"contract(The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
+linearization A_e(t_k), B_e(t_k) (k = 0 .. steps()) for the prediction. Immutable.)contract"},
+    {"SampledLaw::SampledLaw", R"contract(The tables; use emulated() or digital().)contract"},
+    {"SampledLaw::digital", R"contract(The digital design: K_k = F_k of the discrete game (discrete_design.hpp), at its period.)contract"},
+    {"SampledLaw::emulated", R"contract(The continuous design emulated: K_k = kappa(t_k) B_e(t_k)' Z(t_k), held over each sample of
+`period` (s). InputError for a period that is not > 0 or longer than the horizon, kappa not
+> 0 at a sample, or u_d given as a function of t (a function may allocate and throw in
+step(): give u_d as signals: constants, harmonics or tables).)contract"},
+    {"SampledLaw::gain", R"contract(K_k (m x n), and A_e(t_k) (n x n), B_e(t_k) (n x m); unchecked indices.)contract"},
+    {"SampledLaw::gamma", R"contract(The gamma of the design (+inf: LQR).)contract"},
+    {"SampledLaw::kind", R"contract("emulated" or "digital".)contract"},
+    {"SampledLaw::steps", R"contract(The number of samples N: the law is defined on [t0, t_end), t_end = t0 + N T <= tf.)contract"},
+    {"SampledLinearization", R"contract(The linearization along the desired trajectory sampled at period T with the inputs held: A_k,
+B_k, D_k for k = 0 .. steps() - 1 (see above). Immutable; may be read from several threads.)contract"},
+    {"SampledLinearization::A", R"contract(A_k (n x n), B_k (n x m), D_k (n x nw), k = 0 .. steps() - 1 (unchecked index).)contract"},
+    {"SampledLinearization::SampledLinearization", R"contract(Integrates the variational equations over each sample with classical Runge-Kutta steps of at
+most kMaxSubstep (at least two per sample): their error, O(h^4), is far below the O(T)
+difference between the sampled and the continuous design. InputError for a period that is
+not finite and > 0, or longer than the horizon.)contract"},
+    {"SampledLinearization::kMaxSubstep", R"contract(s)contract"},
+    {"SampledLinearization::period", R"contract(The period T (s), the number of samples N, and t_k = t0 + k T (k = 0 .. N).)contract"},
     {"Scenario", R"contract(A scenario: the model, the horizon, the desired trajectory, the law and its design, the
 disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
 empty take the defaults that resolved() fills in.)contract"},
@@ -625,12 +695,22 @@ included), in [1, 1e9]; exceeding it is a SolverError)contract"},
     {"SolverOptions::rtol", R"contract(relative tolerance, in [1e-14, 1e-3])contract"},
     {"SparseMatrix::add_product", R"contract(y += M x)contract"},
     {"StepAction", R"contract(What a step callback asks the integrator to do next.)contract"},
+    {"StepReport", R"contract(The report of one step().)contract"},
+    {"StepReport::rate_limited", R"contract(the rate limit was active)contract"},
+    {"StepReport::saturated", R"contract(a bound of u_min / u_max was active)contract"},
     {"StepStats", R"contract(The counts of one integration (the desired trajectory's, Trajectory::stats()).)contract"},
     {"StepStats::jac_evals", R"contract(Jacobian evaluations (implicit methods))contract"},
     {"StepStats::method", R"contract(what integrated: "erk", "bdf", "adams", "erk, then bdf from t = ...")contract"},
     {"StepStats::rejected", R"contract(rejected step attempts)contract"},
     {"StepStats::rhs_evals", R"contract(right-hand-side evaluations)contract"},
     {"StepStats::steps", R"contract(accepted steps)contract"},
+    {"StepStatus", R"contract(What step() did.)contract"},
+    {"StepStatus::notreset", R"contract(step() before reset(): u is left as it is)contract"},
+    {"StepStatus::ok", R"contract(a command was computed (see MeasurementUse for the measurement))contract"},
+    {"StepStatus::pasthorizon", R"contract(t_now >= t_end, where the design ends: u is the command held; reset() with a
+new design to continue)contract"},
+    {"StepStatus::refused", R"contract(t_now is not finite or earlier than the last call's: nothing changed, u is the
+command held)contract"},
     {"StudyOptions", R"contract(Options of run_scenarios.)contract"},
     {"StudyOptions::share_designs", R"contract(compute each distinct design once: runs with equal design
 inputs share it (see above))contract"},
@@ -744,6 +824,30 @@ condition rho(Sigma Z) < gamma^2 on [t0, tf]; each condition is monotone in gamm
     {"control/cascade.hpp", R"contract(The cascaded tracking baseline for the ship (models/ship.hpp): a law of the type of Lefeber,
 Pettersen & Nijmeijer, written for the ship's equations and parameters.)contract"},
     {"control/controller.hpp", R"contract(Tracking controllers: u = control(t, q) for the actual state q.)contract"},
+    {"control/discrete_design.hpp", R"contract(The digital design: the H-infinity tracking design for a computer that measures every T seconds
+and holds its command until the next sample (zero-order hold). Basar & Bernhard, "H-infinity
+optimal control and related minimax design problems", 2nd ed. 1995, ch. 3 (the discrete-time
+game with perfect state measurements).
+
+Sampling the error dynamics along the desired trajectory (trajectory.hpp)
+    dq_e/dt = A_e(t) q_e + B_e(t) u_e + D_e(t) w,   u_e and w held over [t_k, t_k + T),
+with t_k = t0 + k T, k = 0 .. N-1, gives exactly the linear recursion
+    x_{k+1} = A_k x_k + B_k u_k + D_k w_k,
+    A_k = Phi(t_{k+1}, t_k),  B_k = int_{t_k}^{t_{k+1}} Phi(t_{k+1}, s) B_e(s) ds,  D_k alike,
+Phi the transition matrix of A_e. The game's cost, the sampled counterpart of the GRDE's (it
+converges to it as T -> 0: weights T Q, T I and gamma^2 T),
+    |x_N|^2_Qf + sum_{k<N} ( T |x_k|^2_Q + T |u_k|^2 - gamma^2 T |w_k|^2 ),
+has the game Riccati difference equation, solved backward from M_N = Qf:
+    Lambda_k = I + (B_k B_k' - gamma^-2 D_k D_k') M_{k+1} / T,
+    M_k = T Q + A_k' M_{k+1} Lambda_k^-1 A_k.
+A saddle point exists if and only if (the discrete conjugate point condition)
+    gamma^2 T I - D_k' M_{k+1} D_k > 0   for every k;
+the smallest gamma that keeps it is the discrete gamma*_d (gamma_star_discrete, analysis.hpp),
+which tends to the continuous gamma* as T -> 0. The law and the worst-case disturbance are
+    u_k = u_d(t_k) - F_k q_e(t_k),   F_k = B_k' M_{k+1} Lambda_k^-1 A_k / T,
+    w_k = gamma^-2 D_k' M_{k+1} Lambda_k^-1 A_k q_e(t_k) / T.
+N is the number of whole samples in [t0, tf]: the design ends at t_N = t0 + N T <= tf (a
+remainder of the horizon shorter than T is not designed for). gamma = +inf is the discrete LQR.)contract"},
     {"control/disturbance.hpp", R"contract(The disturbance w applied to the plant (all nw channels of the model):
     w(t, q) = signals(t) [+ w*(t, q)],
 where w* = gamma^-2 D_e(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
@@ -757,6 +861,28 @@ wrapped to (-pi, pi] (angles.hpp); "last half" is the grid points with t >= (t0 
 A metric that does not apply (no position, no heading, no disturbance, no output feedback)
 is NaN. A run that stopped early (status Diverged) reports only max_position_error, over
 the part it ran.)contract"},
+    {"control/online_controller.hpp", R"contract(The controller on a vehicle: called once per sample with the latest measurement, it answers
+with the command to apply now and hold until the next call.
+
+Two objects, as a design and a context: a SampledLaw (the design tabulated on the controller's
+sample grid t_k = t0 + k T; immutable, shared by any number of vehicles and threads) and an
+OnlineController (one per vehicle: the estimate, the command held, the statistics). All the
+memory of step() is taken at construction: step() allocates nothing, takes no lock and never
+throws (errors are statuses).
+
+State feedback, step(t_now, q, t_meas, u): q is the full state measured at t_meas <= t_now. The
+controller keeps the estimate of the tracking error q_e = q - q_d (heading wrapped, angles.hpp)
+and the commands it applied. A measurement used resets the estimate to q - q_d(t_meas); with
+delay compensation the estimate is then predicted to t_now along the linearization
+    dq_e/dt = A_e(t) q_e + B_e(t) (u(t) - u_d(t)),
+with u(t) the commands actually applied (after limits), A_e and B_e interpolated linearly between
+the samples, classical Runge-Kutta steps of at most 5 ms, restarted where the command changed.
+A sample without a usable measurement (none, stale, a duplicate, ...) predicts the estimate
+from the last call in the same way. Then
+    u = u_d(t_now) - K_k q_e(t_now),   k the sample that holds t_now
+(without delay compensation, u_d(t_meas) - K q_e(t_meas) with the sample of t_meas),
+limited: first the rate, |u - u_held| <= rate_max (t_now - t_held) per channel, then the bounds
+u_min <= u <= u_max. The command returned is the one applied, and the one the prediction uses.)contract"},
     {"control/output_feedback.hpp", R"contract(Imperfect measurements (paper §4): the H-infinity filter, the estimator and the
 output-feedback tracking law, simulated together with the nonlinear plant.
 
@@ -858,9 +984,16 @@ SolverError, ConjugatePointError and CouplingConditionError derive from HinfErro
 (Python: hinf_cpp.HinfError, a RuntimeError).)contract"},
     {"core/resources.hpp", R"contract(Limits on what one computation may allocate, checked before allocating.)contract"},
     {"core/types.hpp", R"contract(Eigen aliases and the packed storage of symmetric matrices used throughout hinf_cpp.)contract"},
+    {"discrete_conjugate_time", R"contract(The latest sample time t_k at which the existence condition fails (the recursion stops there),
+or NaN when it holds for every k: the pass/fail test of the discrete gamma*. Nothing is
+stored; the same input checks as solve_discrete_game.)contract"},
     {"divergence_bound", R"contract(The divergence bound of the run from q0 along the trajectory (see above).)contract"},
     {"filter_escape_time", R"contract(The same for the filter Riccati equation (36) (forward from Sigma0, A = A_e(t)).)contract"},
     {"gamma_star", R"contract(gamma* of the state-feedback design (trajectory, Q, Qf, horizon).)contract"},
+    {"gamma_star_discrete", R"contract(The discrete gamma*_d of the digital design at the sampled linearization's period
+(discrete_design.hpp): the smallest gamma that keeps gamma^2 T I - D_k' M_{k+1} D_k > 0 at every
+sample. binding is Grde (the discrete conjugate point) and t_escape_lower the latest sample
+time where the lower end fails. The recursion is exact: options.solver is not used.)contract"},
     {"gamma_star_output_feedback", R"contract(The smallest gamma for the output-feedback design: no conjugate point of the GRDE, the
 filter Riccati equation (36) with A_e(t) bounded and positive definite from Sigma0, and
 rho(Sigma Z) < gamma^2 on [t0, tf]. binding names the condition that limits it.)contract"},
@@ -1154,6 +1287,9 @@ options; whatever a run raises is its row's outcome and reason.)contract"},
     {"run_study", R"contract(The name of run_scenarios in 0.1, deprecated: removed in 0.3.)contract"},
     {"same_type_and_parameters", R"contract(Model::same_as of a model that its type and named_parameters() describe completely (the
 built-in models): the same dynamic type and equal named parameters.)contract"},
+    {"sample_count", R"contract(The number of whole samples of `period` in [t0, tf] (a horizon that is a multiple of the period
+up to round-off counts as one): floor((tf - t0) / period). InputError for a period that is not
+finite and > 0, longer than the horizon, or of more than 1e8 samples.)contract"},
     {"scenario/scenario.hpp", R"contract(A scenario: everything one run needs (docs/scenarios.md is the reference of its TOML form).
 Both front ends (the Python package and the hinf-sim executable) build a Scenario and call
 run_scenario(), so they give the same numbers.)contract"},
@@ -1225,6 +1361,12 @@ estimator, the filter and the control stay those of the design (its model and tr
     {"simulate_state_feedback", R"contract(The closed loop of `plant` (null: the trajectory's model) under `controller`: the plant's f,
 G and D are integrated; the trajectory (of the design model) gives q_d and the divergence
 bound. A plant other than the design model is the model error of a robustness study.)contract"},
+    {"solve_discrete_game", R"contract(Solves the game Riccati difference equation backward from M_N = Qf. Q (n x n) symmetric
+positive semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf). InputError for
+bad input; ConjugatePointError when gamma^2 T I - D_k' M_{k+1} D_k is not positive definite at
+some k (its t_escape() is t_k, the latest such sample: gamma is below gamma*_d).
+
+The same, sampling the trajectory at `period` first.)contract"},
     {"solve_filter_riccati", R"contract(Solves the filter Riccati equation (36) forward from Sigma(t0) = Sigma0, with the model's
 measurement matrix C (Model::C), N (p x p) positive definite, Q (n x n) positive
 semidefinite, gamma > 0 (may be +inf: the Kalman-Bucy filter), A = A_e(t).)contract"},

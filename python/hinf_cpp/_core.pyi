@@ -2040,7 +2040,7 @@ class GammaCondition:
     none
         passed (or, for the bracket's lower end 0, never evaluated)
     grde
-        a conjugate point of the GRDE (13)
+        a conjugate point of the GRDE (13), or of its discrete game (gamma_star_discrete)
     filter
         the filter Riccati equation (36) escapes or loses positive definiteness
     coupling

@@ -209,6 +209,17 @@ GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const 
   }, options);
 }
 
+GammaStarResult gamma_star_discrete(const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf,
+                                    const GammaStarOptions& options) {
+  require(sampled != nullptr, "gamma_star_discrete needs a sampled linearization");
+  options.validate();
+  discrete_conjugate_time(*sampled, Q, Qf, std::numeric_limits<double>::infinity());  // input checks
+  return bisect([&](double gamma) {
+    const double t = discrete_conjugate_time(*sampled, Q, Qf, gamma);
+    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+  }, options);
+}
+
 GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                                            const Mat& N, const Mat& Sigma0, const GammaStarOptions& options) {
   require(trajectory != nullptr, "gamma_star_output_feedback needs a trajectory");

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "hinf/control/discrete_design.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/core/enum_names.hpp"
 #include "hinf/numerics/signal.hpp"
@@ -41,7 +42,7 @@ struct GammaStarOptions {
 // The condition a gamma fails.
 enum class GammaCondition {
   None,     // passed (or, for the bracket's lower end 0, never evaluated)
-  Grde,     // a conjugate point of the GRDE (13)
+  Grde,     // a conjugate point of the GRDE (13), or of its discrete game (gamma_star_discrete)
   Filter,   // the filter Riccati equation (36) escapes or loses positive definiteness
   Coupling  // rho(Sigma Z) >= gamma^2 somewhere on [t0, tf]
 };
@@ -86,6 +87,13 @@ GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const 
 GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                                            const Mat& N, const Mat& Sigma0,
                                            const GammaStarOptions& options = {});
+
+// The discrete gamma*_d of the digital design at the sampled linearization's period
+// (discrete_design.hpp): the smallest gamma that keeps gamma^2 T I - D_k' M_{k+1} D_k > 0 at every
+// sample. binding is Grde (the discrete conjugate point) and t_escape_lower the latest sample
+// time where the lower end fails. The recursion is exact: options.solver is not used.
+GammaStarResult gamma_star_discrete(const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf,
+                                    const GammaStarOptions& options = {});
 
 // The largest value of rho(Sigma(t) Z(t)) on [t0, tf] and where it is taken.
 std::pair<double, double> max_rho_sigma_z(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma);

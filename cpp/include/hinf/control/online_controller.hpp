@@ -1,0 +1,212 @@
+// The controller on a vehicle: called once per sample with the latest measurement, it answers
+// with the command to apply now and hold until the next call.
+//
+// Two objects, as a design and a context: a SampledLaw (the design tabulated on the controller's
+// sample grid t_k = t0 + k T; immutable, shared by any number of vehicles and threads) and an
+// OnlineController (one per vehicle: the estimate, the command held, the statistics). All the
+// memory of step() is taken at construction: step() allocates nothing, takes no lock and never
+// throws (errors are statuses).
+//
+// State feedback, step(t_now, q, t_meas, u): q is the full state measured at t_meas <= t_now. The
+// controller keeps the estimate of the tracking error q_e = q - q_d (heading wrapped, angles.hpp)
+// and the commands it applied. A measurement used resets the estimate to q - q_d(t_meas); with
+// delay compensation the estimate is then predicted to t_now along the linearization
+//     dq_e/dt = A_e(t) q_e + B_e(t) (u(t) - u_d(t)),
+// with u(t) the commands actually applied (after limits), A_e and B_e interpolated linearly between
+// the samples, classical Runge-Kutta steps of at most 5 ms, restarted where the command changed.
+// A sample without a usable measurement (none, stale, a duplicate, ...) predicts the estimate
+// from the last call in the same way. Then
+//     u = u_d(t_now) - K_k q_e(t_now),   k the sample that holds t_now
+// (without delay compensation, u_d(t_meas) - K q_e(t_meas) with the sample of t_meas),
+// limited: first the rate, |u - u_held| <= rate_max (t_now - t_held) per channel, then the bounds
+// u_min <= u <= u_max. The command returned is the one applied, and the one the prediction uses.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "hinf/control/discrete_design.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/core/enum_names.hpp"
+#include "hinf/numerics/signal.hpp"
+
+namespace hinf {
+
+// The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
+// linearization A_e(t_k), B_e(t_k) (k = 0 .. steps()) for the prediction. Immutable.
+class SampledLaw {
+ public:
+  // The continuous design emulated: K_k = kappa(t_k) B_e(t_k)' Z(t_k), held over each sample of
+  // `period` (s). InputError for a period that is not > 0 or longer than the horizon, kappa not
+  // > 0 at a sample, or u_d given as a function of t (a function may allocate and throw in
+  // step(): give u_d as signals: constants, harmonics or tables).
+  static std::shared_ptr<const SampledLaw> emulated(RiccatiSolutionPtr design, double period,
+                                                    const Signal& kappa = Signal(1.0));
+  // The digital design: K_k = F_k of the discrete game (discrete_design.hpp), at its period.
+  static std::shared_ptr<const SampledLaw> digital(DiscreteDesignPtr design);
+
+  const Trajectory& trajectory() const { return *trajectory_; }
+  // "emulated" or "digital".
+  const std::string& kind() const { return kind_; }
+  // The gamma of the design (+inf: LQR).
+  double gamma() const { return gamma_; }
+  double period() const { return period_; }
+  int n() const { return trajectory_->n(); }
+  int m() const { return trajectory_->m(); }
+  // The number of samples N: the law is defined on [t0, t_end), t_end = t0 + N T <= tf.
+  int steps() const { return static_cast<int>(K_.size()); }
+  double t0() const { return trajectory_->t0(); }
+  double t_end() const { return t0() + steps() * period_; }
+  // K_k (m x n), and A_e(t_k) (n x n), B_e(t_k) (n x m); unchecked indices.
+  const Mat& gain(int k) const { return K_[static_cast<std::size_t>(k)]; }
+  const Mat& A(int k) const { return A_[static_cast<std::size_t>(k)]; }
+  const Mat& B(int k) const { return B_[static_cast<std::size_t>(k)]; }
+
+  // The tables; use emulated() or digital().
+  SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K);
+
+ private:
+  TrajectoryPtr trajectory_;
+  std::string kind_;
+  double gamma_, period_;
+  std::vector<Mat> K_, A_, B_;
+};
+
+using SampledLawPtr = std::shared_ptr<const SampledLaw>;
+
+// The actuators' limits. Empty vectors: no limit of that kind.
+struct ActuatorLimits {
+  Vec u_min, u_max;  // bounds of the command (m numbers each; -inf / +inf for a free side)
+  Vec rate_max;      // largest |du/dt| per channel (units of u per second; +inf: free), > 0
+  // InputError unless each vector is empty or has m numbers, u_min <= u_max, no NaN, rate_max > 0.
+  void validate(int m) const;
+};
+
+// The choices of an online controller.
+struct OnlineOptions {
+  ActuatorLimits limits;
+  double max_age = 1e300;        // s: a measurement older than this at t_now is stale (not used)
+  bool compensate_delay = true;  // predict a measurement from t_meas to t_now (false: the command
+                                 // is the law's at t_meas, u_d(t_meas) - K q_e(t_meas), as if
+                                 // computed then and applied late)
+  int history = 64;              // applied commands remembered (>= 2): a measurement older than
+                                 // the oldest is stale
+  void validate(int m) const;    // InputError naming the option
+};
+
+// What step() did.
+enum class StepStatus {
+  Ok,           // a command was computed (see MeasurementUse for the measurement)
+  Refused,      // t_now is not finite or earlier than the last call's: nothing changed, u is the
+                // command held
+  PastHorizon,  // t_now >= t_end, where the design ends: u is the command held; reset() with a
+                // new design to continue
+  NotReset      // step() before reset(): u is left as it is
+};
+template <>
+struct EnumNames<StepStatus> {
+  static constexpr const char* what = "step status";
+  static constexpr std::array<std::pair<StepStatus, const char*>, 4> names{{{StepStatus::Ok, "ok"},
+                                                                            {StepStatus::Refused, "refused"},
+                                                                            {StepStatus::PastHorizon, "past_horizon"},
+                                                                            {StepStatus::NotReset, "not_reset"}}};
+};
+
+// What became of the measurement given to step(). Anything but Used: the estimate was predicted.
+enum class MeasurementUse {
+  Used,       // used (and predicted to t_now with delay compensation)
+  Missing,    // none given
+  Stale,      // older than max_age at t_now, or than the commands remembered
+  Duplicate,  // not newer than the last measurement used (the same one again, or out of order)
+  Future,     // t_meas > t_now
+  NotFinite   // t_meas or a component of q is NaN or infinite
+};
+template <>
+struct EnumNames<MeasurementUse> {
+  static constexpr const char* what = "measurement use";
+  static constexpr std::array<std::pair<MeasurementUse, const char*>, 6> names{
+      {{MeasurementUse::Used, "used"},
+       {MeasurementUse::Missing, "missing"},
+       {MeasurementUse::Stale, "stale"},
+       {MeasurementUse::Duplicate, "duplicate"},
+       {MeasurementUse::Future, "future"},
+       {MeasurementUse::NotFinite, "not_finite"}}};
+};
+
+// The report of one step().
+struct StepReport {
+  StepStatus status = StepStatus::NotReset;
+  MeasurementUse measurement = MeasurementUse::Missing;
+  bool saturated = false;     // a bound of u_min / u_max was active
+  bool rate_limited = false;  // the rate limit was active
+};
+
+// Counts since reset().
+struct OnlineCounts {
+  long steps = 0;         // calls of step() (any status)
+  long used = 0;          // measurements used
+  long predicted = 0;     // commands computed without a measurement (MeasurementUse other than Used)
+  long refused = 0;       // StepStatus::Refused
+  long past_horizon = 0;  // StepStatus::PastHorizon
+  long saturated = 0;     // commands with a bound active
+  long rate_limited = 0;  // commands with the rate limit active
+  double largest_command = 0.0;  // max |u_i| over the commands computed
+};
+
+// The state-feedback controller of one vehicle (see the top of this file).
+class OnlineController {
+ public:
+  // InputError for a null law or bad options. Takes all the memory step() uses.
+  OnlineController(SampledLawPtr law, const OnlineOptions& options = {});
+
+  const SampledLaw& law() const { return *law_; }
+  const OnlineOptions& options() const { return options_; }
+  int n() const { return law_->n(); }
+  int m() const { return law_->m(); }
+
+  // Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and
+  // the command held is u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q
+  // or u_held (reset() may allocate and throw; step() does neither).
+  void reset(double t, const ConstVecRef& q, const ConstVecRef& u_held = Vec());
+
+  // One sample: the measurement q (n numbers, or null: none) taken at t_meas, the command for
+  // t_now into u (m numbers). Never throws, never allocates.
+  StepReport step(double t_now, const double* q, double t_meas, double* u) noexcept;
+
+  // The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
+  const Vec& estimate() const { return x_; }
+  double estimate_time() const { return t_x_; }
+  const Vec& held_command() const { return u_held_; }
+  double held_time() const { return t_held_; }
+  const OnlineCounts& counts() const { return counts_; }
+
+ private:
+  // The estimate x_ predicted from t_x_ to t along the linearization with the applied commands.
+  void predict_to(double t) noexcept;
+  // dx = A_e(t) x + B_e(t) (u - u_d(t)), A_e and B_e interpolated between samples (into A_t_, B_t_),
+  // u the command of history entry `entry`.
+  void derivative(double t, const Vec& x, int entry, Vec& dx) noexcept;
+  // The history entry whose command is applied at t (the latest entry with time <= t).
+  int entry_at(double t) const noexcept;
+  void remember(double t, const Vec& u) noexcept;
+
+  SampledLawPtr law_;
+  OnlineOptions options_;
+  int heading_;
+  bool reset_ = false;
+  double t_last_ = 0.0;       // the last call's t_now
+  double t_meas_last_ = 0.0;  // the last measurement used
+  double t_x_ = 0.0, t_held_ = 0.0;
+  Vec x_, u_held_, u_, u_ff_, q_d_, u_d_, ue_, k1_, k2_, k3_, k4_, x_stage_;
+  Mat A_t_, B_t_;
+  // The applied commands: a ring of options_.history entries (time, command), oldest first from
+  // history_start_.
+  std::vector<double> history_t_;
+  Mat history_u_;  // m x history
+  int history_start_ = 0, history_size_ = 0;
+  std::size_t q_cursor_ = 0;
+  OnlineCounts counts_;
+};
+
+}  // namespace hinf
