@@ -6,8 +6,10 @@
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/controller.hpp"
+#include "hinf/control/discrete_design.hpp"
 #include "hinf/control/disturbance.hpp"
 #include "hinf/control/metrics.hpp"
+#include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/simulation.hpp"
@@ -151,6 +153,379 @@ py::object matrix_of_t(const Solution& s, const py::object& t, Member member) {
   return vectorize(t, n, n, [&s, n, member](double tt, double* out) { Eigen::Map<Mat>(out, n, n) = (s.*member)(tt); });
 }
 
+// A_k, B_k or D_k of a sampled linearization, with k checked (the C++ accessors do not check).
+Mat sampled_matrix(const SampledLinearization& s, int k, const Mat& (SampledLinearization::*member)(int) const) {
+  require(k >= 0 && k < s.steps(), "the sampled matrices are defined for k = 0 .. ", s.steps() - 1, ", got k = ", k);
+  return (s.*member)(k);
+}
+
+// The digital design and the online controller (discrete_design.hpp, online_controller.hpp).
+void bind_digital(py::module_& m) {
+  py::class_<SampledLinearization, py::smart_holder>(m, "SampledLinearization",
+      doc({"SampledLinearization", "SampledLinearization::SampledLinearization"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory.
+period : float
+    The sample period T (s), > 0 and at most the horizon.
+
+Raises
+------
+ValueError
+    A bad period.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> sampled = hc.SampledLinearization(trajectory, 0.1)
+>>> sampled.steps(), sampled.A(0).shape, sampled.B(0).shape, sampled.D(0).shape
+(100, (6, 6), (6, 2), (6, 6)))").c_str())
+      .def(py::init([](TrajectoryPtr trajectory, double period) {
+             py::gil_scoped_release release;
+             return std::make_shared<SampledLinearization>(std::move(trajectory), period);
+           }),
+           py::arg("trajectory"), py::arg("period"))
+      .def("period", &SampledLinearization::period, doc({"SampledLinearization::period"}).c_str())
+      .def("steps", &SampledLinearization::steps, doc({"SampledLinearization::steps"}).c_str())
+      .def("time", &SampledLinearization::time, py::arg("k"), doc({"SampledLinearization::time"}).c_str())
+      .def("trajectory", &SampledLinearization::trajectory_ptr, doc({"SampledLinearization::trajectory"}).c_str())
+      .def("A", [](const SampledLinearization& s, int k) { return sampled_matrix(s, k, &SampledLinearization::A); },
+           py::arg("k"),
+           doc({"SampledLinearization::A"}, "k : int\n    0 .. steps() - 1 (ValueError outside).").c_str())
+      .def("B", [](const SampledLinearization& s, int k) { return sampled_matrix(s, k, &SampledLinearization::B); },
+           py::arg("k"),
+           doc({"SampledLinearization::A"}).c_str())
+      .def("D", [](const SampledLinearization& s, int k) { return sampled_matrix(s, k, &SampledLinearization::D); },
+           py::arg("k"),
+           doc({"SampledLinearization::A"}).c_str());
+
+  py::class_<DiscreteDesign, py::smart_holder>(m, "DiscreteDesign", doc({"DiscreteDesign"}, R"(Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+>>> design.steps(), design.M(0).shape, design.gain(0).shape
+(100, (6, 6), (2, 6)))").c_str())
+      .def("gamma", &DiscreteDesign::gamma, doc({"DiscreteDesign::gamma"}).c_str())
+      .def("period", &DiscreteDesign::period, doc({"DiscreteDesign::period"}).c_str())
+      .def("steps", &DiscreteDesign::steps, doc({"DiscreteDesign::steps"}).c_str())
+      .def("time", &DiscreteDesign::time, py::arg("k"), doc({"DiscreteDesign::time"}).c_str())
+      .def("sampled", &DiscreteDesign::sampled_ptr, doc({"DiscreteDesign::sampled"}).c_str())
+      .def("M", &DiscreteDesign::M, py::arg("k"), doc({"DiscreteDesign::M"}).c_str())
+      .def("gain", &DiscreteDesign::gain, py::arg("k"), doc({"DiscreteDesign::gain"}).c_str())
+      .def("worst_case_gain", &DiscreteDesign::worst_case_gain, py::arg("k"),
+           doc({"DiscreteDesign::worst_case_gain"}).c_str())
+      .def("sample_index", &DiscreteDesign::sample_index, py::arg("t"), doc({"DiscreteDesign::sample_index"}).c_str());
+
+  m.def("solve_discrete_game",
+        [](const py::object& source, double period, const Mat& Q, const Mat& Qf, double gamma) {
+          if (py::isinstance<SampledLinearization>(source)) {
+            auto sampled = source.cast<SampledLinearizationPtr>();
+            py::gil_scoped_release release;
+            return solve_discrete_game(sampled, Q, Qf, gamma);
+          }
+          auto trajectory = source.cast<TrajectoryPtr>();
+          py::gil_scoped_release release;
+          return solve_discrete_game(trajectory, period, Q, Qf, gamma);
+        },
+        py::arg("trajectory"), py::arg("period"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
+        doc({"solve_discrete_game", "control/discrete_design.hpp"}, R"(Parameters
+----------
+trajectory : Trajectory or SampledLinearization
+    The desired trajectory, or its linearization sampled before (then `period` is its own and
+    the argument is ignored; pass 0).
+period : float
+    The sample period T (s).
+Q : array_like, shape (n, n)
+    Weight of the tracking error, symmetric positive semidefinite (per second, as in the GRDE).
+Qf : array_like, shape (n, n)
+    M_N, symmetric positive definite.
+gamma : float
+    The attenuation level, > 0 (inf: the discrete LQR).
+
+Returns
+-------
+DiscreteDesign
+
+Raises
+------
+ValueError
+    Bad weights, gamma or period.
+ConjugatePointError
+    gamma^2 T I - D_k' M_{k+1} D_k is not positive definite at some sample: gamma is below
+    the discrete gamma* (its t_escape is that sample's time).
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+>>> K = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0).gain(0.0)    # the continuous law's
+>>> float(round(np.linalg.norm(design.gain(0) - K) / np.linalg.norm(K), 3))   # first order in T
+0.059)").c_str());
+
+  m.def("discrete_conjugate_time",
+        [](const SampledLinearization& sampled, const Mat& Q, const Mat& Qf, double gamma) {
+          py::gil_scoped_release release;
+          return discrete_conjugate_time(sampled, Q, Qf, gamma);
+        },
+        py::arg("sampled"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"), doc({"discrete_conjugate_time"}, R"(Parameters
+----------
+sampled : SampledLinearization
+Q : array_like, shape (n, n)
+    Weight of the tracking error, as for solve_discrete_game.
+Qf : array_like, shape (n, n)
+    M_N, as for solve_discrete_game.
+gamma : float
+    The attenuation level.
+
+Returns
+-------
+float
+    t_k (s), or nan.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> sampled = hc.SampledLinearization(trajectory, 0.1)
+>>> hc.discrete_conjugate_time(sampled, np.eye(6), np.eye(6), 5.0), hc.discrete_conjugate_time(sampled, np.eye(6), np.eye(6), 1.0)
+(nan, 7.6000000000000005))").c_str());
+
+  m.def("gamma_star_discrete",
+        [](const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf, const GammaStarOptions& options) {
+          py::gil_scoped_release release;
+          return gamma_star_discrete(sampled, Q, Qf, options);
+        },
+        py::arg("sampled"), py::arg("Q"), py::arg("Qf"), py::arg("options") = GammaStarOptions{},
+        doc({"gamma_star_discrete"}, R"(Parameters
+----------
+sampled : SampledLinearization
+    The linearization sampled at the controller's period.
+Q : array_like, shape (n, n)
+    Weight of the tracking error, as for solve_discrete_game.
+Qf : array_like, shape (n, n)
+    M_N, as for solve_discrete_game.
+options : GammaStarOptions, optional
+    The bracket, tolerance, evaluations and threads.
+
+Returns
+-------
+GammaStarResult
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> sampled = hc.SampledLinearization(trajectory, 0.1)
+>>> round(hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6)).gamma_star, 4)
+1.3992)").c_str());
+
+  py::class_<SampledLaw, py::smart_holder>(m, "SampledLaw", doc({"SampledLaw"}, R"(Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> law = hc.SampledLaw.emulated(design, 0.1)
+>>> law.kind(), law.steps(), law.t_end()
+('emulated', 100, 10.0))").c_str())
+      .def_static("emulated",
+                  [](RiccatiSolutionPtr design, double period, const py::object& kappa) {
+                    const Signal k = to_signal(kappa, "kappa");
+                    py::gil_scoped_release release;
+                    return SampledLaw::emulated(std::move(design), period, k);
+                  },
+                  py::arg("design"), py::arg("period"), py::arg("kappa") = Signal(1.0),
+                  doc({"SampledLaw::emulated"}, R"(Parameters
+----------
+design : RiccatiSolution
+    The continuous design (solve_grde).
+period : float
+    The controller's period T (s).
+kappa : Signal or float, default 1.0
+    The gain scaling kappa(t), > 0.
+
+Returns
+-------
+SampledLaw
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> hc.SampledLaw.emulated(design, 0.05).period()
+0.05)").c_str())
+      .def_static("digital", &SampledLaw::digital, py::arg("design"), doc({"SampledLaw::digital"}, R"(Parameters
+----------
+design : DiscreteDesign
+    The digital design (solve_discrete_game).
+
+Returns
+-------
+SampledLaw
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> law = hc.SampledLaw.digital(hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0))
+>>> law.kind(), law.gamma()
+('digital', 5.0))").c_str())
+      .def("kind", &SampledLaw::kind, doc({"SampledLaw::kind"}).c_str())
+      .def("gamma", &SampledLaw::gamma, doc({"SampledLaw::gamma"}).c_str())
+      .def("period", &SampledLaw::period, doc({"SampledLaw::period"}).c_str())
+      .def("n", &SampledLaw::n, doc({"SampledLaw::n"}).c_str())
+      .def("m", &SampledLaw::m, doc({"SampledLaw::n"}).c_str())
+      .def("steps", &SampledLaw::steps, doc({"SampledLaw::steps"}).c_str())
+      .def("t0", &SampledLaw::t0, doc({"SampledLaw::t0"}).c_str())
+      .def("t_end", &SampledLaw::t_end, doc({"SampledLaw::t0"}).c_str())
+      .def("gain", [](const SampledLaw& law, int k) {
+             require(k >= 0 && k < law.steps(), "the gain K_k is defined for k = 0 .. ", law.steps() - 1, ", got k = ", k);
+             return law.gain(k);
+           }, py::arg("k"), doc({"SampledLaw::gain"}).c_str());
+
+  bind_options<ActuatorLimits>(m, "ActuatorLimits", {"ActuatorLimits"},
+                               {{"u_min", "array_like, shape (m,) or (0,)"}, {"u_max", "array_like, shape (m,) or (0,)"},
+                                {"rate_max", "array_like, shape (m,) or (0,)"}},
+                               R"(Examples
+--------
+>>> limits = hc.ActuatorLimits(u_min=[-2.0, -1.0], u_max=[2.0, 1.0], rate_max=[4.0, np.inf])
+>>> limits.u_max
+array([2., 1.]))");
+  bind_options<OnlineOptions>(m, "OnlineOptions", {"OnlineOptions"}, {}, R"(Examples
+--------
+>>> hc.OnlineOptions(max_age=0.2).compensate_delay
+True)");
+  bind_enum<StepStatus>(m, "StepStatus", R"(Examples
+--------
+>>> hc.StepStatus("refused")
+<StepStatus.refused: 1>)");
+  bind_enum<MeasurementUse>(m, "MeasurementUse", R"(Examples
+--------
+>>> hc.MeasurementUse("stale")
+<MeasurementUse.stale: 2>)");
+  bind_result<StepReport>(m, "StepReport", {"StepReport"}, {}, R"(Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> controller.step(0.1, None)[1]
+StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False))", /*repr=*/true);
+  bind_result<OnlineCounts>(m, "OnlineCounts", {"OnlineCounts"}, {}, R"(Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> u, report = controller.step(0.1, None)
+>>> controller.counts().steps, controller.counts().predicted
+(1, 1))", /*repr=*/true);
+
+  py::class_<OnlineController, py::smart_holder>(m, "OnlineController",
+      doc({"OnlineController", "OnlineController::OnlineController"}, R"(Parameters
+----------
+law : SampledLaw
+    The law (SampledLaw.emulated or SampledLaw.digital), shared by any number of controllers.
+options : OnlineOptions, optional
+    Actuator limits, the largest age of a measurement, delay compensation.
+
+Raises
+------
+ValueError
+    Bad options.
+
+Notes
+-----
+One object per vehicle: its calls change it, so two threads must not call one object at once.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> limits = hc.ActuatorLimits(u_min=[-2.0, -2.0], u_max=[2.0, 2.0])
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1), hc.OnlineOptions(limits=limits))
+>>> q0 = np.array([1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+>>> controller.reset(0.0, q0)
+>>> u, report = controller.step(0.1, q0, 0.1)
+>>> u.round(3), report.status, report.saturated
+(array([ 2.   , -1.941]), <StepStatus.ok: 0>, True))").c_str())
+      .def(py::init<SampledLawPtr, const OnlineOptions&>(), py::arg("law"), py::arg("options") = OnlineOptions{})
+      .def("law", [](const OnlineController& c) { return &c.law(); }, py::return_value_policy::reference_internal,
+           doc({"OnlineController::law"}).c_str())
+      .def("options", &OnlineController::options, doc({"OnlineController::law"}).c_str())
+      .def("n", &OnlineController::n, doc({"OnlineController::n"}).c_str())
+      .def("m", &OnlineController::m, doc({"OnlineController::n"}).c_str())
+      .def("reset",
+           [](OnlineController& c, double t, const Vec& q, const std::optional<Vec>& u_held) {
+             c.reset(t, q, u_held ? *u_held : Vec());
+           },
+           py::arg("t"), py::arg("q"), py::arg("u_held") = py::none(), doc({"OnlineController::reset"}, R"(Parameters
+----------
+t : float
+    The time (s), in [t0, t_end).
+q : array_like, shape (n,)
+    The full state at t.
+u_held : array_like, shape (m,), optional
+    The command held before t (default: u_d(t) within the limits).
+
+Raises
+------
+ValueError
+    A bad t, q or u_held.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> controller.held_command()
+array([1., 0.]))").c_str())
+      .def("step",
+           // q as a raw array, not through the Vec caster, which refuses NaN: a non-finite
+           // measurement is a status of step() (MeasurementUse.not_finite), as in C++.
+           [](OnlineController& c, double t_now, const std::optional<py::array_t<double, py::array::c_style |
+                                                                                    py::array::forcecast>>& q,
+              const std::optional<double>& t_meas) {
+             if (q && (q->ndim() != 1 || q->shape(0) != c.n()))
+               throw InputError(str_cat("q must have shape (", c.n(), ",), got an array of ", q->size(),
+                                        " numbers in ", q->ndim(), " dimensions"));
+             const double* measurement = q ? q->data() : nullptr;
+             Vec u(c.m());
+             StepReport report;
+             {
+               py::gil_scoped_release release;
+               report = c.step(t_now, measurement, t_meas.value_or(t_now), u.data());
+             }
+             if (report.status == StepStatus::NotReset)
+               throw InputError("step() before reset(): call reset(t0, q0) first");
+             return py::make_tuple(u, report);
+           },
+           py::arg("t_now"), py::arg("q") = py::none(), py::arg("t_meas") = py::none(),
+           doc({"OnlineController::step"}, R"(Parameters
+----------
+t_now : float
+    The time of the command (s).
+q : array_like, shape (n,), optional
+    The full state measured at t_meas; None: no measurement this sample.
+t_meas : float, optional
+    The time of the measurement (s), <= t_now; default t_now.
+
+Returns
+-------
+u : numpy.ndarray, shape (m,)
+    The command to apply now and hold.
+report : StepReport
+    The status, what became of the measurement, whether a limit was active.
+
+Raises
+------
+ValueError
+    q of another size than n; step() before reset() (the C++ step() returns NotReset).
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> u, report = controller.step(0.2, None)                      # no measurement: predicted
+>>> report.measurement
+<MeasurementUse.missing: 1>)").c_str())
+      .def("estimate", &OnlineController::estimate, doc({"OnlineController::estimate"}).c_str())
+      .def("estimate_time", &OnlineController::estimate_time, doc({"OnlineController::estimate"}).c_str())
+      .def("held_command", &OnlineController::held_command, doc({"OnlineController::estimate"}).c_str())
+      .def("held_time", &OnlineController::held_time, doc({"OnlineController::estimate"}).c_str())
+      .def("counts", &OnlineController::counts, doc({"OnlineController::counts"}).c_str());
+}
 }  // namespace
 
 void bind_control(py::module_& m) {
@@ -1103,6 +1478,7 @@ Examples
 >>> certificates = hc.certify(design, 1.0, np.eye(6))
 >>> certificates.remainder_is_bound, certificates.decay_rate > 0      # the ship's analytic L
 (True, True))").c_str());
+  bind_digital(m);
 }
 
 #undef HINF_DESIGN_EXAMPLE

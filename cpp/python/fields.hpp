@@ -15,6 +15,7 @@
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/metrics.hpp"
+#include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
@@ -87,6 +88,32 @@ template <>
 struct Fields<CascadeGains> {
   static constexpr auto list =
       std::make_tuple(field("k", &CascadeGains::k), field("k1", &CascadeGains::k1), field("k2", &CascadeGains::k2));
+};
+template <>
+struct Fields<ActuatorLimits> {
+  static constexpr auto list = std::make_tuple(field("u_min", &ActuatorLimits::u_min),
+                                               field("u_max", &ActuatorLimits::u_max),
+                                               field("rate_max", &ActuatorLimits::rate_max));
+};
+template <>
+struct Fields<OnlineOptions> {
+  static constexpr auto list = std::make_tuple(
+      field("limits", &OnlineOptions::limits), field("max_age", &OnlineOptions::max_age),
+      field("compensate_delay", &OnlineOptions::compensate_delay), field("history", &OnlineOptions::history));
+};
+template <>
+struct Fields<StepReport> {
+  static constexpr auto list =
+      std::make_tuple(field("status", &StepReport::status), field("measurement", &StepReport::measurement),
+                      field("saturated", &StepReport::saturated), field("rate_limited", &StepReport::rate_limited));
+};
+template <>
+struct Fields<OnlineCounts> {
+  static constexpr auto list = std::make_tuple(
+      field("steps", &OnlineCounts::steps), field("used", &OnlineCounts::used),
+      field("predicted", &OnlineCounts::predicted), field("refused", &OnlineCounts::refused),
+      field("past_horizon", &OnlineCounts::past_horizon), field("saturated", &OnlineCounts::saturated),
+      field("rate_limited", &OnlineCounts::rate_limited), field("largest_command", &OnlineCounts::largest_command));
 };
 template <>
 struct Fields<SolverOptions> {

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepStats', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'filter_escape_time', 'gamma_star', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledLaw', 'SampledLinearization', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -3706,6 +3706,760 @@ class Certificates:
         """
         how L was obtained (see Model::remainder_bound)
         """
+class SampledLinearization:
+    """
+    The linearization along the desired trajectory sampled at period T with the inputs held: A_k,
+    B_k, D_k for k = 0 .. steps() - 1 (see above). Immutable; may be read from several threads.
+    
+    Integrates the variational equations over each sample with classical Runge-Kutta steps of at
+    most kMaxSubstep (at least two per sample): their error, O(h^4), is far below the O(T)
+    difference between the sampled and the continuous design. InputError for a period that is
+    not finite and > 0, or longer than the horizon.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The desired trajectory.
+    period : float
+        The sample period T (s), > 0 and at most the horizon.
+    
+    Raises
+    ------
+    ValueError
+        A bad period.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> sampled = hc.SampledLinearization(trajectory, 0.1)
+    >>> sampled.steps(), sampled.A(0).shape, sampled.B(0).shape, sampled.D(0).shape
+    (100, (6, 6), (6, 2), (6, 6))
+    """
+    def A(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        A_k (n x n), B_k (n x m), D_k (n x nw), k = 0 .. steps() - 1 (unchecked index).
+        
+        k : int
+            0 .. steps() - 1 (ValueError outside).
+        """
+    def B(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        A_k (n x n), B_k (n x m), D_k (n x nw), k = 0 .. steps() - 1 (unchecked index).
+        """
+    def D(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        A_k (n x n), B_k (n x m), D_k (n x nw), k = 0 .. steps() - 1 (unchecked index).
+        """
+    def __init__(self, trajectory: Trajectory, period: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    def period(self) -> float:
+        """
+        The period T (s).
+        """
+    def steps(self) -> int:
+        """
+        The number of samples N.
+        """
+    def time(self, k: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        t_k = t0 + k T (s), k = 0 .. N.
+        """
+    def trajectory(self) -> Trajectory:
+        """
+        The desired trajectory it samples.
+        """
+class DiscreteDesign:
+    """
+    The solution of the game Riccati difference equation: M_k and the gains F_k of the law.
+    Immutable; may be read from several threads.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+    >>> design.steps(), design.M(0).shape, design.gain(0).shape
+    (100, (6, 6), (2, 6))
+    """
+    def M(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        M_k (n x n, symmetric), k = 0 .. steps(); M_steps = Qf. InputError outside.
+        """
+    def gain(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        F_k (m x n): u_k = u_d(t_k) - F_k q_e(t_k), k = 0 .. steps() - 1. InputError outside.
+        """
+    def gamma(self) -> float:
+        """
+        The gamma of the game (+inf: the discrete LQR).
+        """
+    def period(self) -> float:
+        """
+        The period T (s).
+        """
+    def sample_index(self, t: typing.SupportsFloat | typing.SupportsIndex) -> int:
+        """
+        The sample that holds t: floor((t - t0) / T), within 1e-9 T of a sample time that sample;
+        InputError for t outside [t0, t_N).
+        """
+    def sampled(self) -> SampledLinearization:
+        """
+        The sampled linearization it was solved on, and its trajectory.
+        """
+    def steps(self) -> int:
+        """
+        The number of samples N.
+        """
+    def time(self, k: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        t_k = t0 + k T (s), k = 0 .. N.
+        """
+    def worst_case_gain(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        The worst-case disturbance's gain (nw x n): w_k = W_k q_e(t_k); zero for gamma = inf.
+        """
+class SampledLaw:
+    """
+    The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
+    linearization A_e(t_k), B_e(t_k) (k = 0 .. steps()) for the prediction. Immutable.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+    >>> law = hc.SampledLaw.emulated(design, 0.1)
+    >>> law.kind(), law.steps(), law.t_end()
+    ('emulated', 100, 10.0)
+    """
+    @staticmethod
+    def digital(design: DiscreteDesign) -> SampledLaw:
+        """
+        The digital design: K_k = F_k of the discrete game (discrete_design.hpp), at its period.
+        
+        Parameters
+        ----------
+        design : DiscreteDesign
+            The digital design (solve_discrete_game).
+        
+        Returns
+        -------
+        SampledLaw
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> law = hc.SampledLaw.digital(hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0))
+        >>> law.kind(), law.gamma()
+        ('digital', 5.0)
+        """
+    @staticmethod
+    def emulated(design: RiccatiSolution, period: typing.SupportsFloat | typing.SupportsIndex, kappa: typing.Any = ...) -> SampledLaw:
+        """
+        The continuous design emulated: K_k = kappa(t_k) B_e(t_k)' Z(t_k), held over each sample of
+        `period` (s). InputError for a period that is not > 0 or longer than the horizon, kappa not
+        > 0 at a sample, or u_d given as a function of t (a function may allocate and throw in
+        step(): give u_d as signals: constants, harmonics or tables).
+        
+        Parameters
+        ----------
+        design : RiccatiSolution
+            The continuous design (solve_grde).
+        period : float
+            The controller's period T (s).
+        kappa : Signal or float, default 1.0
+            The gain scaling kappa(t), > 0.
+        
+        Returns
+        -------
+        SampledLaw
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+        >>> hc.SampledLaw.emulated(design, 0.05).period()
+        0.05
+        """
+    def gain(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        K_k (m x n), and A_e(t_k) (n x n), B_e(t_k) (n x m); unchecked indices.
+        """
+    def gamma(self) -> float:
+        """
+        The gamma of the design (+inf: LQR).
+        """
+    def kind(self) -> str:
+        """
+        "emulated" or "digital".
+        """
+    def m(self) -> int:
+        """
+        The number of states n and of inputs m.
+        """
+    def n(self) -> int:
+        """
+        The number of states n and of inputs m.
+        """
+    def period(self) -> float:
+        """
+        The period T (s).
+        """
+    def steps(self) -> int:
+        """
+        The number of samples N.
+        """
+    def t0(self) -> float:
+        """
+        The law is defined on [t0, t_end), t_end = t0 + N T <= tf (s).
+        """
+    def t_end(self) -> float:
+        """
+        The law is defined on [t0, t_end), t_end = t0 + N T <= tf (s).
+        """
+class ActuatorLimits:
+    """
+    The actuators' limits. Empty vectors: no limit of that kind.
+    
+    Parameters
+    ----------
+    u_min : array_like, shape (m,) or (0,), optional
+        lower bounds of the command (m numbers; -inf: free)
+    u_max : array_like, shape (m,) or (0,), optional
+        upper bounds of the command (m numbers; +inf: free)
+    rate_max : array_like, shape (m,) or (0,), optional
+        largest |du/dt| per channel (units of u per second; +inf: free), > 0
+    
+    Examples
+    --------
+    >>> limits = hc.ActuatorLimits(u_min=[-2.0, -1.0], u_max=[2.0, 1.0], rate_max=[4.0, np.inf])
+    >>> limits.u_max
+    array([2., 1.])
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('u_min', 'u_max', 'rate_max')
+    def __eq__(self, arg0: ActuatorLimits) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, u_min: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] = ..., u_max: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] = ..., rate_max: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def rate_max(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        largest |du/dt| per channel (units of u per second; +inf: free), > 0
+        """
+    @rate_max.setter
+    def rate_max(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> None:
+        ...
+    @property
+    def u_max(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        upper bounds of the command (m numbers; +inf: free)
+        """
+    @u_max.setter
+    def u_max(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> None:
+        ...
+    @property
+    def u_min(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        lower bounds of the command (m numbers; -inf: free)
+        """
+    @u_min.setter
+    def u_min(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> None:
+        ...
+class OnlineOptions:
+    """
+    The choices of an online controller.
+    
+    Parameters
+    ----------
+    limits : ActuatorLimits, optional
+        bounds and rate limits of the command
+    max_age : float, default 1e+300
+        s: a measurement older than this at t_now is stale (not used)
+    compensate_delay : bool, default True
+        predict a measurement from t_meas to t_now (false: the command
+        is the law's at t_meas, u_d(t_meas) - K q_e(t_meas), as if
+        computed then and applied late)
+    history : int, default 64
+        applied commands remembered (>= 2): a measurement older than
+        the oldest is stale
+    
+    Examples
+    --------
+    >>> hc.OnlineOptions(max_age=0.2).compensate_delay
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('limits', 'max_age', 'compensate_delay', 'history')
+    def __eq__(self, arg0: OnlineOptions) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, limits: ActuatorLimits = ..., max_age: typing.SupportsFloat | typing.SupportsIndex = 1e+300, compensate_delay: bool = True, history: typing.SupportsInt | typing.SupportsIndex = 64) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def compensate_delay(self) -> bool:
+        """
+        predict a measurement from t_meas to t_now (false: the command
+        is the law's at t_meas, u_d(t_meas) - K q_e(t_meas), as if
+        computed then and applied late)
+        """
+    @compensate_delay.setter
+    def compensate_delay(self, arg0: bool) -> None:
+        ...
+    @property
+    def history(self) -> int:
+        """
+        applied commands remembered (>= 2): a measurement older than
+        the oldest is stale
+        """
+    @history.setter
+    def history(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def limits(self) -> ActuatorLimits:
+        """
+        bounds and rate limits of the command
+        """
+    @limits.setter
+    def limits(self, arg0: ActuatorLimits) -> None:
+        ...
+    @property
+    def max_age(self) -> float:
+        """
+        s: a measurement older than this at t_now is stale (not used)
+        """
+    @max_age.setter
+    def max_age(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class StepStatus:
+    """
+    What step() did.
+    
+    Parameters
+    ----------
+    value : int
+        The member's number, as its repr shows it.
+    name : str
+        The member's name, one of those below.
+    
+    Attributes
+    ----------
+    ok
+        a command was computed (see MeasurementUse for the measurement)
+    refused
+        t_now is not finite or earlier than the last call's: nothing changed, u is the
+        command held
+    past_horizon
+        t_now >= t_end, where the design ends: u is the command held; reset() with a
+        new design to continue
+    not_reset
+        step() before reset(): u is left as it is
+    
+    Examples
+    --------
+    >>> hc.StepStatus("refused")
+    <StepStatus.refused: 1>
+    """
+    __members__: typing.ClassVar[dict[str, StepStatus]]
+    not_reset: typing.ClassVar[StepStatus]
+    ok: typing.ClassVar[StepStatus]
+    past_horizon: typing.ClassVar[StepStatus]
+    refused: typing.ClassVar[StepStatus]
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        """
+        The member of that name (ValueError listing the names for another).
+        """
+    def __int__(self) -> int:
+        ...
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class MeasurementUse:
+    """
+    What became of the measurement given to step(). Anything but Used: the estimate was predicted.
+    
+    Parameters
+    ----------
+    value : int
+        The member's number, as its repr shows it.
+    name : str
+        The member's name, one of those below.
+    
+    Attributes
+    ----------
+    used
+        used (and predicted to t_now with delay compensation)
+    missing
+        none given
+    stale
+        older than max_age at t_now, or than the commands remembered
+    duplicate
+        not newer than the last measurement used (the same one again, or out of order)
+    future
+        t_meas > t_now
+    not_finite
+        t_meas or a component of q is NaN or infinite
+    
+    Examples
+    --------
+    >>> hc.MeasurementUse("stale")
+    <MeasurementUse.stale: 2>
+    """
+    __members__: typing.ClassVar[dict[str, MeasurementUse]]
+    duplicate: typing.ClassVar[MeasurementUse]
+    future: typing.ClassVar[MeasurementUse]
+    missing: typing.ClassVar[MeasurementUse]
+    not_finite: typing.ClassVar[MeasurementUse]
+    stale: typing.ClassVar[MeasurementUse]
+    used: typing.ClassVar[MeasurementUse]
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        """
+        The member of that name (ValueError listing the names for another).
+        """
+    def __int__(self) -> int:
+        ...
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class StepReport:
+    """
+    The report of one step().
+    
+    Attributes
+    ----------
+    status : StepStatus
+        what step() did
+    measurement : MeasurementUse
+        what became of the measurement
+    saturated : bool
+        a bound of u_min / u_max was active
+    rate_limited : bool
+        the rate limit was active
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+    >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+    >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+    >>> controller.step(0.1, None)[1]
+    StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('status', 'measurement', 'saturated', 'rate_limited')
+    def __eq__(self, arg0: StepReport) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def measurement(self) -> MeasurementUse:
+        """
+        what became of the measurement
+        """
+    @property
+    def rate_limited(self) -> bool:
+        """
+        the rate limit was active
+        """
+    @property
+    def saturated(self) -> bool:
+        """
+        a bound of u_min / u_max was active
+        """
+    @property
+    def status(self) -> StepStatus:
+        """
+        what step() did
+        """
+class OnlineCounts:
+    """
+    Counts since reset().
+    
+    Attributes
+    ----------
+    steps : int
+        calls of step() (any status)
+    used : int
+        measurements used
+    predicted : int
+        commands computed without a measurement (MeasurementUse other than Used)
+    refused : int
+        StepStatus::Refused
+    past_horizon : int
+        StepStatus::PastHorizon
+    saturated : int
+        commands with a bound active
+    rate_limited : int
+        commands with the rate limit active
+    largest_command : float
+        max |u_i| over the commands computed
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+    >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+    >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+    >>> u, report = controller.step(0.1, None)
+    >>> controller.counts().steps, controller.counts().predicted
+    (1, 1)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'saturated', 'rate_limited', 'largest_command')
+    def __eq__(self, arg0: OnlineCounts) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def largest_command(self) -> float:
+        """
+        max |u_i| over the commands computed
+        """
+    @property
+    def past_horizon(self) -> int:
+        """
+        StepStatus::PastHorizon
+        """
+    @property
+    def predicted(self) -> int:
+        """
+        commands computed without a measurement (MeasurementUse other than Used)
+        """
+    @property
+    def rate_limited(self) -> int:
+        """
+        commands with the rate limit active
+        """
+    @property
+    def refused(self) -> int:
+        """
+        StepStatus::Refused
+        """
+    @property
+    def saturated(self) -> int:
+        """
+        commands with a bound active
+        """
+    @property
+    def steps(self) -> int:
+        """
+        calls of step() (any status)
+        """
+    @property
+    def used(self) -> int:
+        """
+        measurements used
+        """
+class OnlineController:
+    """
+    The state-feedback controller of one vehicle (see the top of this file).
+    
+    InputError for a null law or bad options. Takes all the memory step() uses.
+    
+    Parameters
+    ----------
+    law : SampledLaw
+        The law (SampledLaw.emulated or SampledLaw.digital), shared by any number of controllers.
+    options : OnlineOptions, optional
+        Actuator limits, the largest age of a measurement, delay compensation.
+    
+    Raises
+    ------
+    ValueError
+        Bad options.
+    
+    Notes
+    -----
+    One object per vehicle: its calls change it, so two threads must not call one object at once.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+    >>> limits = hc.ActuatorLimits(u_min=[-2.0, -2.0], u_max=[2.0, 2.0])
+    >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1), hc.OnlineOptions(limits=limits))
+    >>> q0 = np.array([1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+    >>> controller.reset(0.0, q0)
+    >>> u, report = controller.step(0.1, q0, 0.1)
+    >>> u.round(3), report.status, report.saturated
+    (array([ 2.   , -1.941]), <StepStatus.ok: 0>, True)
+    """
+    def __init__(self, law: SampledLaw, options: OnlineOptions = ...) -> None:
+        ...
+    def counts(self) -> OnlineCounts:
+        """
+        The counts since reset().
+        """
+    def estimate(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
+        """
+    def estimate_time(self) -> float:
+        """
+        The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
+        """
+    def held_command(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
+        """
+    def held_time(self) -> float:
+        """
+        The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
+        """
+    def law(self) -> SampledLaw:
+        """
+        The law and the options it was made with.
+        """
+    def m(self) -> int:
+        """
+        The number of states n (of q) and of inputs m (of u).
+        """
+    def n(self) -> int:
+        """
+        The number of states n (of q) and of inputs m (of u).
+        """
+    def options(self) -> OnlineOptions:
+        """
+        The law and the options it was made with.
+        """
+    def reset(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_held: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None) -> None:
+        """
+        Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and
+        the command held is u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q
+        or u_held (reset() may allocate and throw; step() does neither).
+        
+        Parameters
+        ----------
+        t : float
+            The time (s), in [t0, t_end).
+        q : array_like, shape (n,)
+            The full state at t.
+        u_held : array_like, shape (m,), optional
+            The command held before t (default: u_d(t) within the limits).
+        
+        Raises
+        ------
+        ValueError
+            A bad t, q or u_held.
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+        >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+        >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+        >>> controller.held_command()
+        array([1., 0.])
+        """
+    def step(self, t_now: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None, t_meas: typing.SupportsFloat | typing.SupportsIndex | None = None) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], StepReport]:
+        """
+        One sample: the measurement q (n numbers, or null: none) taken at t_meas, the command for
+        t_now into u (m numbers). Never throws, never allocates.
+        
+        Parameters
+        ----------
+        t_now : float
+            The time of the command (s).
+        q : array_like, shape (n,), optional
+            The full state measured at t_meas; None: no measurement this sample.
+        t_meas : float, optional
+            The time of the measurement (s), <= t_now; default t_now.
+        
+        Returns
+        -------
+        u : numpy.ndarray, shape (m,)
+            The command to apply now and hold.
+        report : StepReport
+            The status, what became of the measurement, whether a limit was active.
+        
+        Raises
+        ------
+        ValueError
+            q of another size than n; step() before reset() (the C++ step() returns NotReset).
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+        >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+        >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+        >>> u, report = controller.step(0.2, None)                      # no measurement: predicted
+        >>> report.measurement
+        <MeasurementUse.missing: 1>
+        """
 class Law:
     """
     The tracking law of a scenario ([controller] law).
@@ -4667,6 +5421,35 @@ def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[num
     >>> round(metrics.max_position_error, 3), metrics.l2_gain                # no disturbance: no gain
     (1.414, nan)
     """
+def discrete_conjugate_time(sampled: SampledLinearization, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    The latest sample time t_k at which the existence condition fails (the recursion stops there),
+    or NaN when it holds for every k: the pass/fail test of the discrete gamma*. Nothing is
+    stored; the same input checks as solve_discrete_game.
+    
+    Parameters
+    ----------
+    sampled : SampledLinearization
+    Q : array_like, shape (n, n)
+        Weight of the tracking error, as for solve_discrete_game.
+    Qf : array_like, shape (n, n)
+        M_N, as for solve_discrete_game.
+    gamma : float
+        The attenuation level.
+    
+    Returns
+    -------
+    float
+        t_k (s), or nan.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> sampled = hc.SampledLinearization(trajectory, 0.1)
+    >>> hc.discrete_conjugate_time(sampled, np.eye(6), np.eye(6), 5.0), hc.discrete_conjugate_time(sampled, np.eye(6), np.eye(6), 1.0)
+    (nan, 7.6000000000000005)
+    """
 def filter_escape_time(trajectory: Trajectory, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: SolverOptions = ...) -> float:
     """
     The same for the filter Riccati equation (36) (forward from Sigma0, A = A_e(t)).
@@ -4751,6 +5534,36 @@ def gamma_star(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.ArrayLik
     >>> result = hc.gamma_star(trajectory, np.eye(6), np.eye(6))
     >>> round(result.gamma_star, 4), result.binding                  # below it, no design
     (1.3346, <GammaCondition.grde: 1>)
+    """
+def gamma_star_discrete(sampled: SampledLinearization, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: GammaStarOptions = ...) -> GammaStarResult:
+    """
+    The discrete gamma*_d of the digital design at the sampled linearization's period
+    (discrete_design.hpp): the smallest gamma that keeps gamma^2 T I - D_k' M_{k+1} D_k > 0 at every
+    sample. binding is Grde (the discrete conjugate point) and t_escape_lower the latest sample
+    time where the lower end fails. The recursion is exact: options.solver is not used.
+    
+    Parameters
+    ----------
+    sampled : SampledLinearization
+        The linearization sampled at the controller's period.
+    Q : array_like, shape (n, n)
+        Weight of the tracking error, as for solve_discrete_game.
+    Qf : array_like, shape (n, n)
+        M_N, as for solve_discrete_game.
+    options : GammaStarOptions, optional
+        The bracket, tolerance, evaluations and threads.
+    
+    Returns
+    -------
+    GammaStarResult
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> sampled = hc.SampledLinearization(trajectory, 0.1)
+    >>> round(hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6)).gamma_star, 4)
+    1.3992
     """
 def gamma_star_output_feedback(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: GammaStarOptions = ...) -> GammaStarResult:
     """
@@ -5417,6 +6230,75 @@ def simulate_state_feedback(trajectory: Trajectory, controller: Controller, dist
     >>> error = np.hypot(run.q_e()[:, 3], run.q_e()[:, 4])       # position error (m)
     >>> round(float(error[0]), 3), bool(error[-1] < 0.1)
     (1.414, True)
+    """
+def solve_discrete_game(trajectory: typing.Any, period: typing.SupportsFloat | typing.SupportsIndex, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex) -> DiscreteDesign:
+    """
+    Solves the game Riccati difference equation backward from M_N = Qf. Q (n x n) symmetric
+    positive semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf). InputError for
+    bad input; ConjugatePointError when gamma^2 T I - D_k' M_{k+1} D_k is not positive definite at
+    some k (its t_escape() is t_k, the latest such sample: gamma is below gamma*_d).
+    
+    The same, sampling the trajectory at `period` first.
+    
+    The digital design: the H-infinity tracking design for a computer that measures every T seconds
+    and holds its command until the next sample (zero-order hold). Basar & Bernhard, "H-infinity
+    optimal control and related minimax design problems", 2nd ed. 1995, ch. 3 (the discrete-time
+    game with perfect state measurements).
+    
+    Sampling the error dynamics along the desired trajectory (trajectory.hpp)
+        dq_e/dt = A_e(t) q_e + B_e(t) u_e + D_e(t) w,   u_e and w held over [t_k, t_k + T),
+    with t_k = t0 + k T, k = 0 .. N-1, gives exactly the linear recursion
+        x_{k+1} = A_k x_k + B_k u_k + D_k w_k,
+        A_k = Phi(t_{k+1}, t_k),  B_k = int_{t_k}^{t_{k+1}} Phi(t_{k+1}, s) B_e(s) ds,  D_k alike,
+    Phi the transition matrix of A_e. The game's cost, the sampled counterpart of the GRDE's (it
+    converges to it as T -> 0: weights T Q, T I and gamma^2 T),
+        |x_N|^2_Qf + sum_{k<N} ( T |x_k|^2_Q + T |u_k|^2 - gamma^2 T |w_k|^2 ),
+    has the game Riccati difference equation, solved backward from M_N = Qf:
+        Lambda_k = I + (B_k B_k' - gamma^-2 D_k D_k') M_{k+1} / T,
+        M_k = T Q + A_k' M_{k+1} Lambda_k^-1 A_k.
+    A saddle point exists if and only if (the discrete conjugate point condition)
+        gamma^2 T I - D_k' M_{k+1} D_k > 0   for every k;
+    the smallest gamma that keeps it is the discrete gamma*_d (gamma_star_discrete, analysis.hpp),
+    which tends to the continuous gamma* as T -> 0. The law and the worst-case disturbance are
+        u_k = u_d(t_k) - F_k q_e(t_k),   F_k = B_k' M_{k+1} Lambda_k^-1 A_k / T,
+        w_k = gamma^-2 D_k' M_{k+1} Lambda_k^-1 A_k q_e(t_k) / T.
+    N is the number of whole samples in [t0, tf]: the design ends at t_N = t0 + N T <= tf (a
+    remainder of the horizon shorter than T is not designed for). gamma = +inf is the discrete LQR.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory or SampledLinearization
+        The desired trajectory, or its linearization sampled before (then `period` is its own and
+        the argument is ignored; pass 0).
+    period : float
+        The sample period T (s).
+    Q : array_like, shape (n, n)
+        Weight of the tracking error, symmetric positive semidefinite (per second, as in the GRDE).
+    Qf : array_like, shape (n, n)
+        M_N, symmetric positive definite.
+    gamma : float
+        The attenuation level, > 0 (inf: the discrete LQR).
+    
+    Returns
+    -------
+    DiscreteDesign
+    
+    Raises
+    ------
+    ValueError
+        Bad weights, gamma or period.
+    ConjugatePointError
+        gamma^2 T I - D_k' M_{k+1} D_k is not positive definite at some sample: gamma is below
+        the discrete gamma* (its t_escape is that sample's time).
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+    >>> K = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0).gain(0.0)    # the continuous law's
+    >>> float(round(np.linalg.norm(design.gain(0) - K) / np.linalg.norm(K), 3))   # first order in T
+    0.059
     """
 def solve_filter_riccati(trajectory: Trajectory, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: SolverOptions = ...) -> FilterRiccatiSolution:
     """

@@ -49,11 +49,14 @@ class SampledLinearization {
 
   static constexpr double kMaxSubstep = 0.005;  // s
 
+  // The desired trajectory it samples.
   const Trajectory& trajectory() const { return *trajectory_; }
   const TrajectoryPtr& trajectory_ptr() const { return trajectory_; }
-  // The period T (s), the number of samples N, and t_k = t0 + k T (k = 0 .. N).
+  // The period T (s).
   double period() const { return period_; }
+  // The number of samples N.
   int steps() const { return static_cast<int>(A_.size()); }
+  // t_k = t0 + k T (s), k = 0 .. N.
   double time(int k) const { return trajectory_->t0() + k * period_; }
   // A_k (n x n), B_k (n x m), D_k (n x nw), k = 0 .. steps() - 1 (unchecked index).
   const Mat& A(int k) const { return A_[static_cast<std::size_t>(k)]; }
@@ -75,13 +78,19 @@ class DiscreteDesign {
   DiscreteDesign(SampledLinearizationPtr sampled, double gamma, std::vector<Mat> M, std::vector<Mat> F,
                  std::vector<Mat> W);
 
+  // The sampled linearization it was solved on, and its trajectory.
   const SampledLinearization& sampled() const { return *sampled_; }
   const SampledLinearizationPtr& sampled_ptr() const { return sampled_; }
   const Trajectory& trajectory() const { return sampled_->trajectory(); }
+  // The gamma of the game (+inf: the discrete LQR).
   double gamma() const { return gamma_; }
+  // The period T (s).
   double period() const { return sampled_->period(); }
+  // The number of samples N.
   int steps() const { return sampled_->steps(); }
+  // t_k = t0 + k T (s), k = 0 .. N.
   double time(int k) const { return sampled_->time(k); }
+  // The number of states n and of inputs m.
   int n() const { return trajectory().n(); }
   int m() const { return trajectory().m(); }
   // M_k (n x n, symmetric), k = 0 .. steps(); M_steps = Qf. InputError outside.

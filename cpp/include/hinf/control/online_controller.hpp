@@ -46,16 +46,20 @@ class SampledLaw {
   // The digital design: K_k = F_k of the discrete game (discrete_design.hpp), at its period.
   static std::shared_ptr<const SampledLaw> digital(DiscreteDesignPtr design);
 
+  // The desired trajectory of the design.
   const Trajectory& trajectory() const { return *trajectory_; }
   // "emulated" or "digital".
   const std::string& kind() const { return kind_; }
   // The gamma of the design (+inf: LQR).
   double gamma() const { return gamma_; }
+  // The period T (s).
   double period() const { return period_; }
+  // The number of states n and of inputs m.
   int n() const { return trajectory_->n(); }
   int m() const { return trajectory_->m(); }
-  // The number of samples N: the law is defined on [t0, t_end), t_end = t0 + N T <= tf.
+  // The number of samples N.
   int steps() const { return static_cast<int>(K_.size()); }
+  // The law is defined on [t0, t_end), t_end = t0 + N T <= tf (s).
   double t0() const { return trajectory_->t0(); }
   double t_end() const { return t0() + steps() * period_; }
   // K_k (m x n), and A_e(t_k) (n x n), B_e(t_k) (n x m); unchecked indices.
@@ -77,15 +81,16 @@ using SampledLawPtr = std::shared_ptr<const SampledLaw>;
 
 // The actuators' limits. Empty vectors: no limit of that kind.
 struct ActuatorLimits {
-  Vec u_min, u_max;  // bounds of the command (m numbers each; -inf / +inf for a free side)
-  Vec rate_max;      // largest |du/dt| per channel (units of u per second; +inf: free), > 0
+  Vec u_min;     // lower bounds of the command (m numbers; -inf: free)
+  Vec u_max;     // upper bounds of the command (m numbers; +inf: free)
+  Vec rate_max;  // largest |du/dt| per channel (units of u per second; +inf: free), > 0
   // InputError unless each vector is empty or has m numbers, u_min <= u_max, no NaN, rate_max > 0.
   void validate(int m) const;
 };
 
 // The choices of an online controller.
 struct OnlineOptions {
-  ActuatorLimits limits;
+  ActuatorLimits limits;         // bounds and rate limits of the command
   double max_age = 1e300;        // s: a measurement older than this at t_now is stale (not used)
   bool compensate_delay = true;  // predict a measurement from t_meas to t_now (false: the command
                                  // is the law's at t_meas, u_d(t_meas) - K q_e(t_meas), as if
@@ -136,8 +141,8 @@ struct EnumNames<MeasurementUse> {
 
 // The report of one step().
 struct StepReport {
-  StepStatus status = StepStatus::NotReset;
-  MeasurementUse measurement = MeasurementUse::Missing;
+  StepStatus status = StepStatus::NotReset;               // what step() did
+  MeasurementUse measurement = MeasurementUse::Missing;  // what became of the measurement
   bool saturated = false;     // a bound of u_min / u_max was active
   bool rate_limited = false;  // the rate limit was active
 };
@@ -160,8 +165,10 @@ class OnlineController {
   // InputError for a null law or bad options. Takes all the memory step() uses.
   OnlineController(SampledLawPtr law, const OnlineOptions& options = {});
 
+  // The law and the options it was made with.
   const SampledLaw& law() const { return *law_; }
   const OnlineOptions& options() const { return options_; }
+  // The number of states n (of q) and of inputs m (of u).
   int n() const { return law_->n(); }
   int m() const { return law_->m(); }
 
@@ -179,6 +186,7 @@ class OnlineController {
   double estimate_time() const { return t_x_; }
   const Vec& held_command() const { return u_held_; }
   double held_time() const { return t_held_; }
+  // The counts since reset().
   const OnlineCounts& counts() const { return counts_; }
 
  private:

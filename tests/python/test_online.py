@@ -1,0 +1,112 @@
+"""The digital design and the online controller through the Python API: the binding surface
+(types, shapes, errors, pickling) and the discrete game against SciPy's discrete algebraic Riccati
+equation with the indefinite weight (the numerics themselves are checked in
+tests/cpp/test_discrete_design.cpp and test_online_controller.cpp)."""
+
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+import scipy.linalg
+
+import hinf_cpp as hc
+
+
+@pytest.fixture(scope="module")
+def trajectory():
+    u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]
+    return hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+
+
+@pytest.fixture(scope="module")
+def design(trajectory):
+    return hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+
+
+def test_converged_recursion_equals_scipys_indefinite_dare():
+    # x' = A x + B u + D w, frozen (LTI): the sampled game over a long horizon converges to the
+    # stationary solution of M = T Q + A_d' M A_d - A_d' M [B_d D_d] (R + [B_d D_d]' M [B_d D_d])^-1
+    # [B_d D_d]' M A_d with R = blockdiag(T I, -gamma^2 T I); SciPy accepts the indefinite R.
+    A = np.array([[-0.5, 1.0, 0.2], [-1.0, -0.3, 0.4], [0.1, 0.0, 0.6]])
+    B = np.array([[0.0], [1.0], [0.5]])
+    D = np.array([[1.0, 0.0], [0.0, 0.3], [0.2, 1.0]])
+    T, gamma = 0.1, 4.0
+    trajectory = hc.Trajectory(hc.LinearModel(A, B, D), np.zeros(3), [0.0], 0.0, 80.0)
+    sampled = hc.SampledLinearization(trajectory, T)
+    design = hc.solve_discrete_game(sampled, 0, np.eye(3), np.eye(3), gamma)
+    BD = np.hstack([sampled.B(0), sampled.D(0)])
+    R = scipy.linalg.block_diag(T * np.eye(1), -gamma**2 * T * np.eye(2))
+    M = scipy.linalg.solve_discrete_are(sampled.A(0), BD, T * np.eye(3), R)
+    # 800 steps of a contraction: converged to round-off; SciPy's Schur method to about 1e-12 of |M|.
+    np.testing.assert_allclose(design.M(0), M, rtol=0, atol=1e-10 * np.abs(M).max())
+    # The gain: F = (R_u + B' M B - B' M D (D' M D - gamma^2 T)^-1 D' M B)^-1 (...) A, written as
+    # the first block of (R + BD' M BD)^-1 BD' M A.
+    F = np.linalg.solve(R + BD.T @ M @ BD, BD.T @ M @ sampled.A(0))[:1]
+    np.testing.assert_allclose(design.gain(0), F, rtol=0, atol=1e-9 * np.abs(F).max())
+
+
+def test_discrete_design_surface(trajectory):
+    sampled = hc.SampledLinearization(trajectory, 0.1)
+    assert sampled.steps() == 100 and sampled.period() == 0.1 and sampled.time(100) == pytest.approx(10.0)
+    assert sampled.A(0).shape == (6, 6) and sampled.B(99).shape == (6, 2) and sampled.D(0).shape == (6, 6)
+    with pytest.raises(ValueError, match="k = 0 .. 99"):
+        sampled.A(100)
+    with pytest.raises(ValueError, match="longer than the horizon"):
+        hc.SampledLinearization(trajectory, 20.0)
+    design = hc.solve_discrete_game(sampled, 0, np.eye(6), np.eye(6), 5.0)
+    assert design.gamma() == 5.0 and design.steps() == 100 and design.sample_index(0.25) == 2
+    np.testing.assert_array_equal(design.M(100), np.eye(6))
+    with pytest.raises(ValueError, match="Qf"):
+        hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.zeros((6, 6)), 5.0)
+    with pytest.raises(hc.ConjugatePointError, match="gamma_star_discrete") as error:
+        hc.solve_discrete_game(sampled, 0, np.eye(6), np.eye(6), 1.0)
+    assert error.value.t_escape == hc.discrete_conjugate_time(sampled, np.eye(6), np.eye(6), 1.0)
+    result = hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6))
+    assert result.binding == hc.GammaCondition.grde and result.converged
+    assert result.gamma_star > hc.gamma_star(trajectory, np.eye(6), np.eye(6)).gamma_star
+
+
+def test_online_controller_surface(design):
+    limits = hc.ActuatorLimits(u_min=[-2.0, -2.0], u_max=[2.0, 2.0], rate_max=[50.0, np.inf])
+    options = hc.OnlineOptions(limits=limits, max_age=0.3)
+    assert pickle.loads(pickle.dumps(options)) == options
+    law = hc.SampledLaw.emulated(design, 0.1)
+    assert (law.kind(), law.n(), law.m(), law.steps(), law.t_end()) == ("emulated", 6, 2, 100, 10.0)
+    controller = hc.OnlineController(law, options)
+    q0 = np.array([1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+    with pytest.raises(ValueError, match="before reset"):
+        controller.step(0.0, q0)
+    controller.reset(0.0, q0)
+    u, report = controller.step(0.1, q0, 0.05)
+    assert u.shape == (2,) and report.status == hc.StepStatus.ok and report.measurement == hc.MeasurementUse.used
+    assert np.all(np.abs(u) <= 2.0) and np.array_equal(u, controller.held_command())
+    u_back, report = controller.step(0.05, q0)
+    assert report.status == hc.StepStatus.refused and np.array_equal(u_back, u)
+    _, report = controller.step(0.2, None)
+    assert report.measurement == hc.MeasurementUse.missing and controller.estimate_time() == pytest.approx(0.2)
+    _, report = controller.step(0.3, q0 * np.nan, 0.3)
+    assert report.measurement == hc.MeasurementUse.not_finite
+    _, report = controller.step(10.0, q0)
+    assert report.status == hc.StepStatus.past_horizon
+    counts = controller.counts()
+    assert (counts.steps, counts.used, counts.predicted, counts.refused, counts.past_horizon) == (5, 1, 2, 1, 1)
+    with pytest.raises(ValueError, match="q must have shape"):
+        controller.step(0.4, np.zeros(3))
+    with pytest.raises(ValueError, match="shape"):
+        controller.step(0.4, np.zeros((2, 3)))
+    with pytest.raises(ValueError, match="u_min <= u_max"):
+        hc.OnlineController(law, hc.OnlineOptions(limits=hc.ActuatorLimits(u_min=[1.0, 1.0], u_max=[0.0, 0.0])))
+    with pytest.raises(ValueError, match="2 numbers"):
+        hc.OnlineController(law, hc.OnlineOptions(limits=hc.ActuatorLimits(u_max=[1.0])))
+
+
+def test_digital_law_runs_the_same_controller(trajectory):
+    law = hc.SampledLaw.digital(hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0))
+    controller = hc.OnlineController(law)
+    controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+    u, report = controller.step(0.1, np.array([1.0, 0.0, 0.0, -1.0, -1.0, 0.0]), 0.1)
+    # u = u_d(t) - F_k q_e with k the sample of t: F_1 of the design.
+    q_e = np.array([1.0, 0.0, 0.0, -1.0, -1.0, 0.0]) - trajectory.q_d(0.1)
+    np.testing.assert_allclose(u, trajectory.u_d(0.1) - law.gain(1) @ q_e, rtol=1e-12, atol=1e-12)  # two orders of the same sums
