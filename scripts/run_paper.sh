@@ -4,7 +4,9 @@
 # built-in vehicles' runs (docs/vehicles.md) in its subfolder vehicles/ and the planned
 # scenarios (docs/planning.md) in planned/ (a few seconds more each), and a small study (50 noise
 # seeds of Figure 2 per law, docs/studies.md) in studies/quick_monte_carlo/ (a few seconds; the
-# full shipped studies take minutes: scripts/run_studies.sh).
+# full shipped studies take minutes: scripts/run_studies.sh), and the sampled-data loops of
+# examples/online_loop.py (the online controller at 20 and 5 Hz, emulated and digital design, a
+# one-sample delay) in online_loop.txt (a few seconds).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -14,3 +16,6 @@ OUT="${1:-out/paper}"
 .venv/bin/hinf-cpp vehicles --out "$OUT/vehicles"
 .venv/bin/hinf-cpp planned --out "$OUT/planned"
 .venv/bin/hinf-cpp study studies/quick_monte_carlo.toml --out "$OUT/studies/quick_monte_carlo"
+# Written beside, then renamed: an interrupted run leaves the previous file whole.
+.venv/bin/python examples/online_loop.py >"$OUT/online_loop.txt.partial"
+mv "$OUT/online_loop.txt.partial" "$OUT/online_loop.txt"

@@ -520,6 +520,65 @@ Examples
 >>> u, report = controller.step(0.2, None)                      # no measurement: predicted
 >>> report.measurement
 <MeasurementUse.missing: 1>)").c_str())
+      .def("replay",
+           [](OnlineController& c, const Vec& t_now,
+              const py::array_t<double, py::array::c_style | py::array::forcecast>& q, const std::optional<Vec>& t_meas) {
+             const Eigen::Index k = t_now.size();
+             if (q.ndim() != 2 || q.shape(0) != k || q.shape(1) != c.n())
+               throw InputError(str_cat("q must have shape (", k, ", ", c.n(), "): one measured state per time of t_now"));
+             if (t_meas && t_meas->size() != k)
+               throw InputError(str_cat("t_meas must have ", k, " times, one per time of t_now, got ", t_meas->size()));
+             RowMat u(k, c.m());
+             std::vector<StepReport> reports(static_cast<std::size_t>(k));
+             const double* rows = q.data();
+             {
+               py::gil_scoped_release release;
+               Vec command(c.m());
+               for (Eigen::Index i = 0; i < k; ++i) {
+                 reports[static_cast<std::size_t>(i)] =
+                     c.step(t_now[i], rows + i * c.n(), t_meas ? (*t_meas)[i] : t_now[i], command.data());
+                 u.row(i) = command.transpose();
+               }
+             }
+             if (k > 0 && reports.front().status == StepStatus::NotReset)
+               throw InputError("replay() before reset(): call reset(t0, q0) first");
+             return py::make_tuple(u, reports);
+           },
+           py::arg("t_now"), py::arg("q"), py::arg("t_meas") = py::none(),
+           R"(The commands the controller would have sent for a log of measurements: step() for each row,
+in order, in one call (the GIL released for the whole log).
+
+Parameters
+----------
+t_now : array_like, shape (k,)
+    The times of the commands (s).
+q : array_like, shape (k, n)
+    The measured states, one row per time; a row with NaN is a non-finite measurement (the
+    estimate is predicted).
+t_meas : array_like, shape (k,), optional
+    The times of the measurements (s); default t_now.
+
+Returns
+-------
+u : numpy.ndarray, shape (k, m)
+    The commands, as step() returns them one by one.
+reports : list of StepReport
+
+Raises
+------
+ValueError
+    Shapes that do not match; replay() before reset().
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> ts = np.array([0.1, 0.2, 0.3])
+>>> log = np.tile([1.0, 0.0, 0.0, -1.0, -1.0, 0.0], (3, 1))
+>>> u, reports = controller.replay(ts, log)
+>>> u.shape, [r.measurement for r in reports][-1]
+((3, 2), <MeasurementUse.used: 0>))")
       .def("estimate", &OnlineController::estimate, doc({"OnlineController::estimate"}).c_str())
       .def("estimate_time", &OnlineController::estimate_time, doc({"OnlineController::estimate"}).c_str())
       .def("held_command", &OnlineController::held_command, doc({"OnlineController::estimate"}).c_str())

@@ -4393,6 +4393,45 @@ class OnlineController:
         """
         The law and the options it was made with.
         """
+    def replay(self, t_now: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], t_meas: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], list[StepReport]]:
+        """
+        The commands the controller would have sent for a log of measurements: step() for each row,
+        in order, in one call (the GIL released for the whole log).
+        
+        Parameters
+        ----------
+        t_now : array_like, shape (k,)
+            The times of the commands (s).
+        q : array_like, shape (k, n)
+            The measured states, one row per time; a row with NaN is a non-finite measurement (the
+            estimate is predicted).
+        t_meas : array_like, shape (k,), optional
+            The times of the measurements (s); default t_now.
+        
+        Returns
+        -------
+        u : numpy.ndarray, shape (k, m)
+            The commands, as step() returns them one by one.
+        reports : list of StepReport
+        
+        Raises
+        ------
+        ValueError
+            Shapes that do not match; replay() before reset().
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+        >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+        >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+        >>> ts = np.array([0.1, 0.2, 0.3])
+        >>> log = np.tile([1.0, 0.0, 0.0, -1.0, -1.0, 0.0], (3, 1))
+        >>> u, reports = controller.replay(ts, log)
+        >>> u.shape, [r.measurement for r in reports][-1]
+        ((3, 2), <MeasurementUse.used: 0>)
+        """
     def reset(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_held: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None) -> None:
         """
         Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and

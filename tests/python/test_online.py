@@ -1,17 +1,22 @@
 """The digital design and the online controller through the Python API: the binding surface
-(types, shapes, errors, pickling) and the discrete game against SciPy's discrete algebraic Riccati
-equation with the indefinite weight (the numerics themselves are checked in
-tests/cpp/test_discrete_design.cpp and test_online_controller.cpp)."""
+(types, shapes, errors, pickling), the discrete game against SciPy's discrete algebraic Riccati
+equation with the indefinite weight, the replay of a log against step() called one by one, and
+the fixed-rate loop of examples/online_loop.py against the continuous loop (the numerics
+themselves are checked in tests/cpp/test_discrete_design.cpp and test_online_controller.cpp)."""
 
 from __future__ import annotations
 
+import pathlib
 import pickle
+import runpy
 
 import numpy as np
 import pytest
 import scipy.linalg
 
 import hinf_cpp as hc
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")
@@ -110,3 +115,46 @@ def test_digital_law_runs_the_same_controller(trajectory):
     # u = u_d(t) - F_k q_e with k the sample of t: F_1 of the design.
     q_e = np.array([1.0, 0.0, 0.0, -1.0, -1.0, 0.0]) - trajectory.q_d(0.1)
     np.testing.assert_allclose(u, trajectory.u_d(0.1) - law.gain(1) @ q_e, rtol=1e-12, atol=1e-12)  # two orders of the same sums
+
+
+def test_replay_of_a_log_equals_the_steps_one_by_one(design):
+    # A log at 20 Hz with jitter, a missing row (NaN), a late measurement and a duplicate: replay()
+    # is the same code as step() called from Python, so the commands are equal bit for bit.
+    rng = np.random.default_rng(7)
+    t_now = np.arange(1, 61) * 0.05 + rng.uniform(0, 0.004, 60)
+    t_meas = t_now - rng.uniform(0, 0.02, 60)
+    t_meas[20] = t_meas[19]
+    q = np.array([1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4]) + 0.05 * rng.standard_normal((60, 6))
+    q[30] = np.nan
+    options = hc.OnlineOptions(limits=hc.ActuatorLimits(u_min=[-1.5, -1.5], u_max=[1.5, 1.5], rate_max=[5.0, 5.0]))
+    law = hc.SampledLaw.emulated(design, 0.05)
+    one_by_one = hc.OnlineController(law, options)
+    replayed = hc.OnlineController(law, options)
+    for controller in (one_by_one, replayed):
+        controller.reset(0.0, q[0])
+    u_steps, statuses = [], []
+    for i in range(60):
+        u, report = one_by_one.step(t_now[i], q[i], t_meas[i])
+        u_steps.append(u)
+        statuses.append(report.measurement)
+    u_replay, reports = replayed.replay(t_now, q, t_meas)
+    np.testing.assert_array_equal(u_replay, np.array(u_steps))
+    assert [r.measurement for r in reports] == statuses
+    assert statuses[20] == hc.MeasurementUse.duplicate and statuses[30] == hc.MeasurementUse.not_finite
+    assert replayed.counts() == one_by_one.counts()
+    with pytest.raises(ValueError, match="shape"):
+        replayed.replay(t_now, q[:, :3])
+    with pytest.raises(ValueError, match="before reset"):
+        hc.OnlineController(law).replay(t_now, q)
+
+
+@pytest.mark.slow
+def test_the_fixed_rate_loop_example_tracks_like_the_continuous_loop():
+    # examples/online_loop.py: the plant integrated in NumPy, the controller called at 20 Hz. The
+    # held command costs about 2% at T = 0.05 s (tests/cpp/test_online_controller.cpp measures the
+    # same in C++); within 5% of the continuous loop's RMS (run_scenario, CVODE).
+    example = runpy.run_path(str(ROOT / "examples" / "online_loop.py"), run_name="example")
+    trajectory, design = example["paper_design"]()
+    sampled = example["run_loop"](trajectory, hc.SampledLaw.emulated(design, 0.05), 0.05)
+    continuous = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1"))).metrics.rms_position_error_last_half
+    assert 1.0 <= sampled / continuous <= 1.05, (sampled, continuous)

@@ -1,0 +1,128 @@
+// The online controller's step() as a vehicle computer calls it, without Python:
+//   hinf-bench-online [--steps N]
+// The paper's Figure-1 design (ship, gamma = 5, [0, 40] s), its law emulated and its digital
+// design at T = 0.05 s (20 Hz), with bounds and rate limits. Each call of step() is timed alone
+// (steady_clock); printed: the median, the 99th percentile and the largest of N calls, for a
+// measurement of the same instant (no prediction), one 20 ms old (predicted over 20 ms) and a
+// missing sample (predicted over a whole period); beside them the straightforward alternative,
+// the continuous law's HinfStateFeedback::control(t, q, u) (no limits, no prediction, no time
+// checks), timed the same way.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "hinf/control/controller.hpp"
+#include "hinf/control/discrete_design.hpp"
+#include "hinf/control/online_controller.hpp"
+#include "hinf/control/riccati.hpp"
+#include "hinf/models/ship.hpp"
+
+using namespace hinf;
+
+namespace {
+
+struct Percentiles {
+  double median, p99, max;  // s
+};
+
+Percentiles percentiles(std::vector<double> seconds) {
+  std::sort(seconds.begin(), seconds.end());
+  const auto at = [&](double q) { return seconds[static_cast<std::size_t>(q * (seconds.size() - 1))]; };
+  return {at(0.5), at(0.99), seconds.back()};
+}
+
+// N calls of step(); `age` is how old the measurement is (s), or < 0 for none.
+void time_steps(const SampledLawPtr& law, long steps, double age, std::vector<double>& seconds) {
+  OnlineOptions options;
+  options.limits.u_min = Vec::Constant(2, -3.0);
+  options.limits.u_max = Vec::Constant(2, 3.0);
+  options.limits.rate_max = Vec::Constant(2, 20.0);
+  OnlineController controller(law, options);
+  Vec q0(6);
+  q0 << 1.0, 0.0, 0.0, -1.0, -1.0, M_PI / 4;
+  Vec q = q0, u(2);
+  const double T = law->period();
+  const long per_run = static_cast<long>(std::floor((law->t_end() - law->t0()) / T)) - 1;
+  long k = 0;
+  for (long i = 0; i < steps; ++i, ++k) {
+    if (k % per_run == 0) {
+      controller.reset(law->t0(), q0);
+      k = 0;
+    }
+    const double t = law->t0() + (k + 1) * T;
+    q(3) = q0(3) + 1e-3 * std::sin(0.01 * i);  // a measurement that changes
+    const auto start = std::chrono::steady_clock::now();
+    controller.step(t, age < 0 ? nullptr : q.data(), t - age, u.data());
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+}
+
+// N calls of the continuous law's control(), on the same sample times and states.
+void time_control(const RiccatiSolutionPtr& design, double T, long steps, std::vector<double>& seconds) {
+  HinfStateFeedback law(design);
+  Vec q0(6);
+  q0 << 1.0, 0.0, 0.0, -1.0, -1.0, M_PI / 4;
+  Vec q = q0, u(2);
+  const long per_run = static_cast<long>(std::floor((design->tf() - design->t0()) / T)) - 1;
+  for (long i = 0, k = 0; i < steps; ++i, k = (k + 1) % per_run) {
+    const double t = design->t0() + (k + 1) * T;
+    q(3) = q0(3) + 1e-3 * std::sin(0.01 * i);
+    const auto start = std::chrono::steady_clock::now();
+    law.control(t, q, u);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  long steps = 100000;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::strcmp(argv[i], "--steps") == 0) steps = std::max(1000L, std::atol(argv[i + 1]));
+  Vec q_d0 = Vec::Zero(6);
+  q_d0(0) = 1.0;
+  const VectorSignal u_d(std::vector<Signal>{Signal(1.0), Signal(0.0, {Harmonic{0.3, 0.2, 0.0, false}})});
+  const auto trajectory = std::make_shared<const Trajectory>(std::make_shared<const ShipModel>(), q_d0, u_d, 0.0, 40.0);
+  const double T = 0.05;
+  const RiccatiSolutionPtr design = solve_grde(trajectory, Mat::Identity(6, 6), Mat::Identity(6, 6), 5.0);
+  const SampledLawPtr laws[] = {
+      SampledLaw::emulated(design, T),
+      SampledLaw::digital(solve_discrete_game(trajectory, T, Mat::Identity(6, 6), Mat::Identity(6, 6), 5.0))};
+  double load[3] = {NAN, NAN, NAN};
+  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3) load[0] = NAN;
+    std::fclose(f);
+  }
+  std::printf("step() of the paper's ship (n = 6), T = %.2f s, %ld calls each; load average %.2f %.2f %.2f\n", T,
+              steps, load[0], load[1], load[2]);
+  std::printf("%-10s %-34s %10s %10s %10s\n", "law", "measurement", "median us", "p99 us", "max us");
+  const std::pair<const char*, double> cases[] = {
+      {"of the same instant", 0.0}, {"20 ms old (predicted 20 ms)", 0.02}, {"missing (predicted 50 ms)", -1.0}};
+  // Rounds: every case runs steps / rounds calls per round, the cases one after the other, so a
+  // change of the machine's load falls on all of them alike.
+  const int rounds = 10;
+  std::vector<std::vector<double>> seconds(7);
+  for (auto& s : seconds) s.reserve(static_cast<std::size_t>(steps));
+  for (int round = 0; round < rounds; ++round) {
+    int c = 0;
+    for (const SampledLawPtr& law : laws)
+      for (const auto& [what, age] : cases) time_steps(law, steps / rounds, age, seconds[c++]);
+    time_control(design, T, steps / rounds, seconds[c]);
+  }
+  int c = 0;
+  for (const SampledLawPtr& law : laws)
+    for (const auto& [what, age] : cases) {
+      const Percentiles p = percentiles(seconds[c++]);
+      std::printf("%-10s %-34s %10.3f %10.3f %10.3f\n", law->kind().c_str(), what, p.median * 1e6, p.p99 * 1e6,
+                  p.max * 1e6);
+    }
+  const Percentiles p = percentiles(seconds[c]);
+  std::printf("%-10s %-34s %10.3f %10.3f %10.3f\n", "control()", "HinfStateFeedback, of the instant", p.median * 1e6,
+              p.p99 * 1e6, p.max * 1e6);
+  return 0;
+}
