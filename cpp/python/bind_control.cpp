@@ -12,6 +12,7 @@
 #include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/riccati.hpp"
+#include "hinf/control/sampled_loop.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
 
@@ -584,6 +585,59 @@ Examples
       .def("held_command", &OnlineController::held_command, doc({"OnlineController::estimate"}).c_str())
       .def("held_time", &OnlineController::held_time, doc({"OnlineController::estimate"}).c_str())
       .def("counts", &OnlineController::counts, doc({"OnlineController::counts"}).c_str());
+}
+
+// The sampled loop (sampled_loop.hpp); after simulate_state_feedback, whose conversions it uses.
+void bind_sampled_loop(py::module_& m) {
+  bind_options<SampledLoopOptions>(m, "SampledLoopOptions", {"SampledLoopOptions"}, {}, R"(Examples
+--------
+>>> hc.SampledLoopOptions(delay=0.1).simulation.output_dt
+0.01)");
+  m.def("simulate_sampled",
+        [](const Trajectory& trajectory, OnlineController& controller, const py::object& disturbance, const Vec& q0,
+           const SampledLoopOptions& options, const std::optional<ModelPtr>& plant) {
+          const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
+          py::gil_scoped_release release;
+          return simulate_sampled(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
+        },
+        py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
+        py::arg("options") = SampledLoopOptions{}, py::arg("plant") = py::none(),
+        doc({"simulate_sampled", "control/sampled_loop.hpp"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory of the controller's law.
+controller : OnlineController
+    The controller, reset here at t0 with q0; its counts() tell afterwards what its steps did.
+disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+    The disturbance on the model's nw channels, as for simulate_state_feedback.
+q0 : array_like, shape (n,)
+    The initial state q(t0).
+options : SampledLoopOptions, optional
+    The computation delay (s), the output grid, divergence factor and tolerances.
+plant : Model or None, optional
+    The vehicle integrated, of the design model's structure; None: the trajectory's model.
+
+Returns
+-------
+SimulationResult
+    The series on the output grid (u: the command applied, piecewise constant).
+
+Raises
+------
+ValueError
+    Sizes that do not match, a controller of another trajectory, a delay outside [0, T].
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+>>> w = hc.Signal(0.0, [hc.Harmonic(0.1, 2 * np.pi * 0.2, cosine=True)])     # paper Fig. 1
+>>> q0 = [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4]
+>>> run = hc.simulate_sampled(trajectory, controller, [w, w, w, 0, 0, 0], q0, hc.SampledLoopOptions(delay=0.1))
+>>> run.status, controller.counts().steps
+(<RunStatus.completed: 0>, 100))").c_str());
 }
 }  // namespace
 
@@ -1538,6 +1592,7 @@ Examples
 >>> certificates.remainder_is_bound, certificates.decay_rate > 0      # the ship's analytic L
 (True, True))").c_str());
   bind_digital(m);
+  bind_sampled_loop(m);
 }
 
 #undef HINF_DESIGN_EXAMPLE

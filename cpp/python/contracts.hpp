@@ -574,6 +574,10 @@ not finite and > 0, or longer than the horizon.)contract"},
     {"SampledLinearization::steps", R"contract(The number of samples N.)contract"},
     {"SampledLinearization::time", R"contract(t_k = t0 + k T (s), k = 0 .. N.)contract"},
     {"SampledLinearization::trajectory", R"contract(The desired trajectory it samples.)contract"},
+    {"SampledLoopOptions", R"contract(The choices of the sampled loop.)contract"},
+    {"SampledLoopOptions::delay", R"contract(s, in [0, T]: the command computed from the measurement of
+t_k is applied from t_k + delay (T: one sample late))contract"},
+    {"SampledLoopOptions::simulation", R"contract(output grid, divergence bound, tolerances (method: erk always))contract"},
     {"Scenario", R"contract(A scenario: the model, the horizon, the desired trajectory, the law and its design, the
 disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
 empty take the defaults that resolved() fills in.)contract"},
@@ -868,6 +872,17 @@ which tends to the continuous gamma* as T -> 0. The law and the worst-case distu
     w_k = gamma^-2 D_k' M_{k+1} Lambda_k^-1 A_k q_e(t_k) / T.
 N is the number of whole samples in [t0, tf]: the design ends at t_N = t0 + N T <= tf (a
 remainder of the horizon shorter than T is not designed for). gamma = +inf is the discrete LQR.)contract"},
+    {"control/discrete_filter.hpp", R"contract(The discrete H-infinity filter, a-priori form (Simon, "Optimal state estimation", 2006, ch. 11;
+Shaked and Theodor, CDC 1992), for
+    x_{k+1} = F_k x_k + w_k,   y_k = H_k x_k + v_k,
+with Q the weight (covariance, for the Kalman limit) of w_k, R that of v_k (one measurement
+sample: sigma^2 per sample at the measurement period, as on a datasheet), S_bar_k = L' S_k L the
+weight of the estimation error and theta = gamma^-2:
+    K_k     = P_k [I - theta S_bar_k P_k + H' R^-1 H P_k]^-1 H' R^-1,
+    x_{k+1} = F x_k + F K_k (y_k - H x_k),
+    P_{k+1} = F P_k [I - theta S_bar_k P_k + H' R^-1 H P_k]^-1 F' + Q.
+The filter exists while P_k^-1 - theta S_bar_k + H' R^-1 H > 0. gamma = +inf (theta = 0) is the
+Kalman filter in its a-priori form (K_k = P_k H' (H P_k H' + R)^-1).)contract"},
     {"control/disturbance.hpp", R"contract(The disturbance w applied to the plant (all nw channels of the model):
     w(t, q) = signals(t) [+ w*(t, q)],
 where w* = gamma^-2 D_e(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
@@ -953,6 +968,17 @@ they are available at any t in [t0, tf] with the integrator's accuracy. A finite
 estimated escape time. A solution is immutable once solved (no caches; lookups take
 caller-owned cursors): several threads may evaluate one at once (run_scenarios shares one
 between runs, study.hpp).)contract"},
+    {"control/sampled_loop.hpp", R"contract(The sampled-data closed loop, as on a vehicle: the plant integrated continuously,
+    dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),
+its full state measured at t_k = t0 + k T (T the law's period), the measurement handed to the
+online controller (online_controller.hpp) at t_k + delay, and the command it returns applied
+from then on and held. The loop calls exactly the code a vehicle runs: OnlineController::step.
+Between events (samples, commands, output times) the plant is integrated by Dormand-Prince
+5(4) at the solver options' tolerances, restarted at each event (the command jumps there).
+The time series are those of simulate_state_feedback (simulation.hpp): u is the command
+applied; a run that leaves the neighbourhood of the desired trajectory stops as Diverged.
+Past the law's last sample (t_end <= tf) the controller answers PastHorizon and the last
+command stays held; controller.counts() tells.)contract"},
     {"control/simulation.hpp", R"contract(Closed-loop simulation of the nonlinear model under a tracking controller (paper eq. 7):
     dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),   u = controller(t, q),   q(t0) = q0,
 integrated with the chosen method; the time series are sampled on the output grid. f, G and
@@ -1007,6 +1033,11 @@ SolverError, ConjugatePointError and CouplingConditionError derive from HinfErro
     {"discrete_conjugate_time", R"contract(The latest sample time t_k at which the existence condition fails (the recursion stops there),
 or NaN when it holds for every k: the pass/fail test of the discrete gamma*. Nothing is
 stored; the same input checks as solve_discrete_game.)contract"},
+    {"discrete_hinf_filter_step", R"contract(One step of the recursion: the gain K_k (n x p) and P_{k+1} (n x n) from P_k. P_k symmetric
+positive definite (n x n), F (n x n), H (p x n), Q (n x n) symmetric positive semidefinite,
+R_inv = R^-1 (p x p) symmetric positive definite, S_bar (n x n) symmetric positive semidefinite,
+gamma > 0 (may be +inf). Returns false, leaving K and P_next unchanged, when the existence
+condition fails at this step. Checks nothing else: the caller checks its inputs once.)contract"},
     {"divergence_bound", R"contract(The divergence bound of the run from q0 along the trajectory (see above).)contract"},
     {"filter_escape_time", R"contract(The same for the filter Riccati equation (36) (forward from Sigma0, A = A_e(t)).)contract"},
     {"gamma_star", R"contract(gamma* of the state-feedback design (trajectory, Q, Qf, horizon).)contract"},
@@ -1378,6 +1409,10 @@ The measured heading (the row of C that picks the model's heading) and its innov
 angles, wrapped to (-pi, pi].
 The vehicle integrated is `plant` (null: the design's model), with y = C q of the plant; the
 estimator, the filter and the control stay those of the design (its model and trajectory).)contract"},
+    {"simulate_sampled", R"contract(The loop of `plant` (null: the trajectory's model) under `controller` (reset here at t0 with
+q0), from q0 at t0 to the trajectory's tf. InputError for sizes that do not match (as
+simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;
+SolverError when the integration fails.)contract"},
     {"simulate_state_feedback", R"contract(The closed loop of `plant` (null: the trajectory's model) under `controller`: the plant's f,
 G and D are integrated; the trajectory (of the design model) gives q_d and the divergence
 bound. A plant other than the design model is the model error of a robustness study.)contract"},

@@ -17,6 +17,7 @@
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
+#include "hinf/control/sampled_loop.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
 #include "hinf/models/ship.hpp"
@@ -100,6 +101,11 @@ struct Fields<OnlineOptions> {
   static constexpr auto list = std::make_tuple(
       field("limits", &OnlineOptions::limits), field("max_age", &OnlineOptions::max_age),
       field("compensate_delay", &OnlineOptions::compensate_delay), field("history", &OnlineOptions::history));
+};
+template <>
+struct Fields<SampledLoopOptions> {
+  static constexpr auto list = std::make_tuple(field("delay", &SampledLoopOptions::delay),
+                                               field("simulation", &SampledLoopOptions::simulation));
 };
 template <>
 struct Fields<StepReport> {

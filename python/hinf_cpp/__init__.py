@@ -94,6 +94,7 @@ from hinf_cpp._core import (
     RunStatus,
     SampledLaw,
     SampledLinearization,
+    SampledLoopOptions,
     Scenario,
     ShipModel,
     ShipParameters,
@@ -132,6 +133,7 @@ from hinf_cpp._core import (
     scenario_gamma_star_output_feedback,
     scenario_noise,
     simulate_output_feedback,
+    simulate_sampled,
     simulate_state_feedback,
     solve_discrete_game,
     solve_filter_riccati,
@@ -166,7 +168,7 @@ __all__ = [
     # on a vehicle: the digital design and the online controller
     "SampledLinearization", "solve_discrete_game", "DiscreteDesign", "discrete_conjugate_time", "gamma_star_discrete",
     "SampledLaw", "ActuatorLimits", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse",
-    "OnlineCounts",
+    "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
     # errors
     "HinfError", "SolverError", "ConjugatePointError", "CouplingConditionError",
     "__version__",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledLaw', 'SampledLinearization', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -4499,6 +4499,52 @@ class OnlineController:
         >>> report.measurement
         <MeasurementUse.missing: 1>
         """
+class SampledLoopOptions:
+    """
+    The choices of the sampled loop.
+    
+    Parameters
+    ----------
+    delay : float, default 0.0
+        s, in [0, T]: the command computed from the measurement of
+        t_k is applied from t_k + delay (T: one sample late)
+    simulation : SimulationOptions, optional
+        output grid, divergence bound, tolerances (method: erk always)
+    
+    Examples
+    --------
+    >>> hc.SampledLoopOptions(delay=0.1).simulation.output_dt
+    0.01
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('delay', 'simulation')
+    def __eq__(self, arg0: SampledLoopOptions) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, simulation: SimulationOptions = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def delay(self) -> float:
+        """
+        s, in [0, T]: the command computed from the measurement of
+        t_k is applied from t_k + delay (T: one sample late)
+        """
+    @delay.setter
+    def delay(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def simulation(self) -> SimulationOptions:
+        """
+        output grid, divergence bound, tolerances (method: erk always)
+        """
+    @simulation.setter
+    def simulation(self, arg0: SimulationOptions) -> None:
+        ...
 class Law:
     """
     The tracking law of a scenario ([controller] law).
@@ -6208,6 +6254,64 @@ def simulate_output_feedback(problem: OutputFeedbackProblem, controller: Control
     ...                                   [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
     >>> run.estimator.q_hat.shape, round(float(run.estimator.rho_sigma_z.max()), 2)  # < gamma^2 = 25
     ((1001, 6), 20.81)
+    """
+def simulate_sampled(trajectory: Trajectory, controller: OnlineController, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SampledLoopOptions = ..., plant: Model | None = None) -> SimulationResult:
+    """
+    The loop of `plant` (null: the trajectory's model) under `controller` (reset here at t0 with
+    q0), from q0 at t0 to the trajectory's tf. InputError for sizes that do not match (as
+    simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;
+    SolverError when the integration fails.
+    
+    The sampled-data closed loop, as on a vehicle: the plant integrated continuously,
+        dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),
+    its full state measured at t_k = t0 + k T (T the law's period), the measurement handed to the
+    online controller (online_controller.hpp) at t_k + delay, and the command it returns applied
+    from then on and held. The loop calls exactly the code a vehicle runs: OnlineController::step.
+    Between events (samples, commands, output times) the plant is integrated by Dormand-Prince
+    5(4) at the solver options' tolerances, restarted at each event (the command jumps there).
+    The time series are those of simulate_state_feedback (simulation.hpp): u is the command
+    applied; a run that leaves the neighbourhood of the desired trajectory stops as Diverged.
+    Past the law's last sample (t_end <= tf) the controller answers PastHorizon and the last
+    command stays held; controller.counts() tells.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The desired trajectory of the controller's law.
+    controller : OnlineController
+        The controller, reset here at t0 with q0; its counts() tell afterwards what its steps did.
+    disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+        The disturbance on the model's nw channels, as for simulate_state_feedback.
+    q0 : array_like, shape (n,)
+        The initial state q(t0).
+    options : SampledLoopOptions, optional
+        The computation delay (s), the output grid, divergence factor and tolerances.
+    plant : Model or None, optional
+        The vehicle integrated, of the design model's structure; None: the trajectory's model.
+    
+    Returns
+    -------
+    SimulationResult
+        The series on the output grid (u: the command applied, piecewise constant).
+    
+    Raises
+    ------
+    ValueError
+        Sizes that do not match, a controller of another trajectory, a delay outside [0, T].
+    SolverError
+        The integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+    >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+    >>> w = hc.Signal(0.0, [hc.Harmonic(0.1, 2 * np.pi * 0.2, cosine=True)])     # paper Fig. 1
+    >>> q0 = [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4]
+    >>> run = hc.simulate_sampled(trajectory, controller, [w, w, w, 0, 0, 0], q0, hc.SampledLoopOptions(delay=0.1))
+    >>> run.status, controller.counts().steps
+    (<RunStatus.completed: 0>, 100)
     """
 def simulate_state_feedback(trajectory: Trajectory, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SimulationOptions = ..., plant: Model | None = None) -> SimulationResult:
     """

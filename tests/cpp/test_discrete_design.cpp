@@ -5,7 +5,9 @@
 //   * the paper's ship: M_k against the continuous GRDE's Z(t_k) (first order in T), the discrete
 //     gamma*_d against the continuous gamma* (the measured oracles of the design notes: 0.46% at
 //     T = 0.01 s) and monotone in T;
-//   * errors: a gamma below gamma*_d names the failing sample; bad periods and indices.
+//   * errors: a gamma below gamma*_d names the failing sample; bad periods and indices;
+//   * the discrete H-infinity filter (discrete_filter.hpp): at gamma = inf the Kalman filter in its
+//     covariance form, approached at O(gamma^-2), above it, and its existence condition.
 #include <gtest/gtest.h>
 
 #include <unsupported/Eigen/MatrixFunctions>
@@ -18,6 +20,7 @@
 
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/discrete_design.hpp"
+#include "hinf/control/discrete_filter.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/models/model.hpp"
@@ -182,6 +185,81 @@ TEST(DiscreteGame, BadInputIsAnInputError) {
   EXPECT_EQ(design->sample_index(0.3), 3);  // 0.3 / 0.1 is 2.9999999999999996 in doubles
   EXPECT_EQ(design->sample_index(0.35), 3);
   EXPECT_TRUE(design->worst_case_gain(0).isZero());  // gamma = inf: LQR, no worst case
+}
+
+// A time-varying system of three states and two outputs, 40 steps: F_k, H constant, Q, R.
+struct FilterSystem {
+  std::vector<Mat> F;
+  Mat H, Q, R;
+};
+FilterSystem filter_system() {
+  FilterSystem s;
+  for (int k = 0; k < 40; ++k) {
+    Mat F(3, 3);
+    F << 1.0, 0.1, 0.0, -0.05 * std::cos(0.1 * k), 0.98, 0.1, 0.0, 0.02, 0.97;
+    s.F.push_back(F);
+  }
+  s.H = (Mat(2, 3) << 1.0, 0.0, 0.0, 0.0, 0.0, 1.0).finished();
+  s.Q = (Mat(3, 3) << 0.01, 0.0, 0.0, 0.0, 0.02, 0.005, 0.0, 0.005, 0.01).finished();
+  s.R = (Mat(2, 2) << 0.04, 0.01, 0.01, 0.09).finished();
+  return s;
+}
+
+// The covariance of a filter run of 40 steps from P_0 = I with S_bar = I.
+Mat filter_covariance(const FilterSystem& s, double gamma) {
+  Mat P = Mat::Identity(3, 3), K, P_next;
+  for (const Mat& F : s.F) {
+    if (!hinf::discrete_hinf_filter_step(P, F, s.H, s.Q, s.R.inverse(), Mat::Identity(3, 3), gamma, K, P_next))
+      return Mat();
+    P = P_next;
+  }
+  return P;
+}
+
+TEST(DiscreteFilter, AtGammaInfinityItIsTheKalmanFilter) {
+  const FilterSystem s = filter_system();
+  // The Kalman filter in its covariance form: K = P H' (H P H' + R)^-1,
+  // P+ = F (P - K H P) F' + Q; the H-infinity form inverts P^-1 + H' R^-1 H instead.
+  Mat P = Mat::Identity(3, 3), P_kalman = P, K, P_next;
+  for (const Mat& F : s.F) {
+    const Mat K_kalman = P_kalman * s.H.transpose() * (s.H * P_kalman * s.H.transpose() + s.R).inverse();
+    P_kalman = F * (P_kalman - K_kalman * s.H * P_kalman) * F.transpose() + s.Q;
+    ASSERT_TRUE(hinf::discrete_hinf_filter_step(P, F, s.H, s.Q, s.R.inverse(), Mat::Identity(3, 3), kInf, K, P_next));
+    // Two algebraically equal formulas with condition numbers near 100: 1e-12 relative.
+    EXPECT_LT((K - K_kalman).norm(), 1e-12 * K_kalman.norm());
+    EXPECT_LT((P_next - P_kalman).norm(), 1e-12 * P_kalman.norm());
+    P = P_next;
+  }
+}
+
+TEST(DiscreteFilter, ApproachesKalmanAtSecondOrderInOneOverGammaAndStaysAbove) {
+  const FilterSystem s = filter_system();
+  const Mat P_kalman = filter_covariance(s, kInf);
+  double previous = NAN;
+  for (double gamma : {5.0, 10.0, 20.0, 40.0}) {
+    const Mat P = filter_covariance(s, gamma);
+    ASSERT_EQ(P.rows(), 3) << "no filter at gamma = " << gamma;
+    // Guarding against the worst case costs covariance: P_gamma >= P_kalman.
+    EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat>(P - P_kalman).eigenvalues().minCoeff(), -1e-14);
+    const double difference = (P - P_kalman).norm();
+    // theta = gamma^-2 enters linearly to first order: halving theta's square root quarters it.
+    std::printf("[discrete filter] gamma = %4.0f: |P_gamma - P_kalman| = %.3e\n", gamma, difference);
+    if (!std::isnan(previous)) {
+      EXPECT_NEAR(previous / difference, 4.0, 0.5) << "gamma = " << gamma;
+    }
+    previous = difference;
+  }
+}
+
+TEST(DiscreteFilter, BelowItsLevelTheFilterDoesNotExist) {
+  const FilterSystem s = filter_system();
+  Mat K = Mat::Constant(3, 2, 7.0), P_next = Mat::Constant(3, 3, 7.0);
+  // P^-1 - theta S_bar + H' R^-1 H with P = I: the unmeasured state has 1 - theta, so gamma < 1 fails.
+  EXPECT_FALSE(hinf::discrete_hinf_filter_step(Mat::Identity(3, 3), s.F[0], s.H, s.Q, s.R.inverse(),
+                                               Mat::Identity(3, 3), 0.9, K, P_next));
+  EXPECT_TRUE((K.array() == 7.0).all() && (P_next.array() == 7.0).all()) << "outputs left as they were";
+  EXPECT_TRUE(hinf::discrete_hinf_filter_step(Mat::Identity(3, 3), s.F[0], s.H, s.Q, s.R.inverse(),
+                                              Mat::Identity(3, 3), 1.1, K, P_next));
 }
 
 }  // namespace

@@ -158,3 +158,23 @@ def test_the_fixed_rate_loop_example_tracks_like_the_continuous_loop():
     sampled = example["run_loop"](trajectory, hc.SampledLaw.emulated(design, 0.05), 0.05)
     continuous = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1"))).metrics.rms_position_error_last_half
     assert 1.0 <= sampled / continuous <= 1.05, (sampled, continuous)
+
+
+def test_simulate_sampled_surface(trajectory, design):
+    w = hc.Signal(0.0, [hc.Harmonic(0.1, 2 * np.pi * 0.2, cosine=True)])
+    q0 = [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4]
+    controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+    run = hc.simulate_sampled(trajectory, controller, [w, w, w, 0, 0, 0], q0)
+    assert run.status == hc.RunStatus.completed and run.q.shape == (1001, 6) and run.u.shape == (1001, 2)
+    # The command is held between samples: within each 0.1 s it takes one value.
+    np.testing.assert_array_equal(run.u[1:10], np.repeat(run.u[1:2], 9, axis=0))
+    assert controller.counts().steps == 100
+    metrics = hc.compute_metrics(trajectory.model(), run, np.eye(6))
+    assert 0 < metrics.rms_position_error_last_half < 0.2
+    options = hc.SampledLoopOptions(delay=0.1)
+    assert pickle.loads(pickle.dumps(options)) == options
+    with pytest.raises(ValueError, match=r"delay must be in \[0, T\]"):
+        hc.simulate_sampled(trajectory, controller, None, q0, hc.SampledLoopOptions(delay=0.2))
+    other = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], [1.0, 0.0], 0.0, 10.0)
+    with pytest.raises(ValueError, match="another trajectory"):
+        hc.simulate_sampled(other, controller, None, q0)

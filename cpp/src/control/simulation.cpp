@@ -9,6 +9,7 @@
 #include "hinf/core/resources.hpp"
 #include "hinf/numerics/sparse_matrix.hpp"
 #include "hinf/numerics/stepper.hpp"
+#include "control/run_series.hpp"
 
 namespace hinf {
 
@@ -93,18 +94,15 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   simulation.validate();
   const SolverOptions& options = simulation.solver;
   const double t0 = trajectory.t0(), tf = trajectory.tf();
-  const long count = output_count(t0, tf, simulation.output_dt);
-  check_memory(8.0 * static_cast<double>(count) * (1 + 2 * n + 2 * m + nw),
-               str_cat("the time series on the output grid of ", count, " points"),
-               "increase [output] dt (or shorten the horizon)");
-  const std::vector<double> grid = output_grid(t0, tf, simulation.output_dt);
+  const std::vector<double> grid = run_grid(trajectory, simulation.output_dt, nw);
+  const long count = static_cast<long>(grid.size());
   const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
   const bool constant_GD = model.constant_input_matrices();
   Mat G = model.G(t0, q0), D = model.D(t0, q0);
   const SparseMatrix G_sparse(G), D_sparse(D);
-  Vec u(m), w(nw), q_d(n), q_e(n);
+  Vec u(m), w(nw);
   Mat J(n, n), dudq(m, n);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
@@ -146,7 +144,7 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   result.q.row(0) = q0.transpose();
   Vec y = q0;
   long next = 1;  // the next output time to record
-  std::size_t cursor = 0;
+  DivergenceCheck divergence(trajectory, heading, bound);
   const StepStats stats = integrate(options, n, rhs, jacobian, t0, tf, y.data(), [&](const DensePiece& piece) {
     const double slack = 1e-12 * std::max(1.0, std::abs(piece.t_end));
     while (next < count && grid[static_cast<std::size_t>(next)] <= piece.t_end + slack) {
@@ -154,17 +152,10 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
       piece.eval(theta, result.q.row(next).data());
       ++next;
     }
-    trajectory.q_d(piece.t_end, q_d.data(), &cursor);
-    tracking_error(n, heading, y.data(), q_d.data(), q_e.data());
-    const double error = q_e.cwiseAbs().maxCoeff();
-    if (error <= bound) return StepAction::Continue;
-    result.status = RunStatus::Diverged;
-    result.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ",
-                                    bound, " at t = ", piece.t_end,
-                                    ": the closed loop left the neighbourhood of the desired trajectory where the"
-                                    " linearized design is meaningful (reduce the disturbance or the initial"
-                                    " error, or raise [solver] divergence_factor)");
-    return StepAction::Stop;
+    return divergence.within(piece.t_end, y.data(), "reduce the disturbance or the initial error, or raise [solver]"
+                                                    " divergence_factor", result)
+               ? StepAction::Continue
+               : StepAction::Stop;
   });
   result.integrator = stats.method;
   result.stats.steps = stats.steps;
@@ -174,21 +165,53 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
 
   // Signals on the recorded part of the grid.
   const long recorded = result.status == RunStatus::Completed ? count : next;
+  record_reference_series(trajectory, disturbance, grid, recorded, result);
+  result.u.resize(recorded, m);
+  for (long k = 0; k < recorded; ++k)
+    controller.control(result.t[k], result.q.row(k).transpose(), result.u.row(k).transpose());
+  return result;
+}
+
+std::vector<double> run_grid(const Trajectory& trajectory, double output_dt, int nw) {
+  const long count = output_count(trajectory.t0(), trajectory.tf(), output_dt);
+  check_memory(8.0 * static_cast<double>(count) * (1 + 2 * trajectory.n() + 2 * trajectory.m() + nw),
+               str_cat("the time series on the output grid of ", count, " points"),
+               "increase [output] dt (or shorten the horizon)");
+  return output_grid(trajectory.t0(), trajectory.tf(), output_dt);
+}
+
+void record_reference_series(const Trajectory& trajectory, const Disturbance& disturbance,
+                             const std::vector<double>& grid, long recorded, SimulationResult& result) {
+  const int n = trajectory.n(), m = trajectory.m();
   result.t = Eigen::Map<const Vec>(grid.data(), recorded);
   result.q.conservativeResize(recorded, n);
   result.q_d.resize(recorded, n);
-  result.u.resize(recorded, m);
   result.u_d.resize(recorded, m);
-  result.w.resize(recorded, nw);
-  cursor = 0;
+  result.w.resize(recorded, disturbance.dim());
+  std::size_t cursor = 0;
   for (long k = 0; k < recorded; ++k) {
     const double t = grid[static_cast<std::size_t>(k)];
     trajectory.q_d(t, result.q_d.row(k).data(), &cursor);
     trajectory.u_d(t, result.u_d.row(k).data());
-    controller.control(t, result.q.row(k).transpose(), result.u.row(k).transpose());
     disturbance.eval(t, result.q.row(k).data(), result.w.row(k).data());
   }
-  return result;
+}
+
+DivergenceCheck::DivergenceCheck(const Trajectory& trajectory, int heading, double bound)
+    : trajectory_(trajectory), heading_(heading), bound_(bound), q_d_(trajectory.n()), q_e_(trajectory.n()) {}
+
+bool DivergenceCheck::within(double t, const double* y, const char* advice, SimulationResult& result) {
+  trajectory_.q_d(t, q_d_.data(), &cursor_);
+  tracking_error(static_cast<int>(q_d_.size()), heading_, y, q_d_.data(), q_e_.data());
+  const double error = q_e_.cwiseAbs().maxCoeff();
+  if (error <= bound_) return true;
+  result.status = RunStatus::Diverged;
+  result.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ", bound_,
+                                  " at t = ", t,
+                                  ": the closed loop left the neighbourhood of the desired trajectory where the"
+                                  " linearized design is meaningful (",
+                                  advice, ")");
+  return false;
 }
 
 }  // namespace hinf

@@ -1,0 +1,116 @@
+#include "hinf/control/sampled_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/core/resources.hpp"
+#include "hinf/numerics/dopri5.hpp"
+#include "control/run_series.hpp"
+
+namespace hinf {
+
+void SampledLoopOptions::validate(double period) const {
+  require(std::isfinite(delay) && delay >= 0.0 && delay <= period * (1.0 + 1e-12),
+          "the computation delay must be in [0, T] = [0, ", period, "] s, got ", delay);
+  simulation.validate();
+}
+
+SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController& controller,
+                                  const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options,
+                                  const Model* plant) {
+  const Model& design_model = trajectory.model();
+  const Model& model = plant != nullptr ? *plant : design_model;
+  check_plant_sizes(design_model, model);
+  const int n = model.n(), m = model.m(), nw = model.nw();
+  require(&controller.law().trajectory() == &trajectory,
+          "the controller's law was designed along another trajectory than the one given");
+  check_size(q0, n, "the initial state q0");
+  check_finite(q0, "the initial state q0");
+  require(disturbance.dim() == nw, "the disturbance has ", disturbance.dim(), " channels, the model '", model.name(),
+          "' has ", nw);
+  const double T = controller.law().period();
+  options.validate(T);
+  const SimulationOptions& simulation = options.simulation;
+  const double t0 = trajectory.t0(), tf = trajectory.tf();
+  const std::vector<double> grid = run_grid(trajectory, simulation.output_dt, nw);
+  const long count = static_cast<long>(grid.size());
+  const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
+  const int heading = model.heading_index();
+
+  controller.reset(t0, q0);
+  Vec u = controller.held_command(), w(nw);
+  auto rhs = [&](double t, const double* y, double* dydt) {
+    Eigen::Map<const Vec> q(y, n);
+    Eigen::Map<Vec> out(dydt, n);
+    model.f(t, q, out);
+    disturbance.eval(t, y, w.data());
+    out.noalias() += model.G(t, q) * u + model.D(t, q) * w;
+  };
+  Dopri5 stepper(n, simulation.solver.rtol, simulation.solver.atol, simulation.solver.max_steps);
+
+  SimulationResult result;
+  result.heading_index = heading;
+  result.q.resize(count, n);
+  result.u.resize(count, m);
+  Vec y = q0, measured(n);
+  double t = t0, measured_at = t0, apply_at = t0;
+  bool pending = false;
+  long sample = 0, next_out = 0;
+  DivergenceCheck divergence(trajectory, heading, bound);
+  const auto due = [](double event, double now) { return event <= now + 1e-12 * std::max(1.0, std::abs(now)); };
+  const auto sample_time = [&](long k) { return t0 + static_cast<double>(k) * T; };
+  for (;;) {
+    // The events at t, in the order a vehicle sees them: a command computed earlier is applied,
+    // then the state is measured (and, without delay, answered at once), then the outputs.
+    if (pending && due(apply_at, t)) {
+      controller.step(apply_at, measured.data(), measured_at, u.data());
+      pending = false;
+    }
+    if (sample_time(sample) < tf && due(sample_time(sample), t)) {
+      measured = y;
+      measured_at = sample_time(sample);
+      ++sample;
+      if (options.delay == 0.0) {
+        controller.step(measured_at, measured.data(), measured_at, u.data());
+      } else {
+        pending = true;
+        apply_at = measured_at + options.delay;
+      }
+    }
+    while (next_out < count && due(grid[static_cast<std::size_t>(next_out)], t)) {
+      result.q.row(next_out) = y.transpose();
+      result.u.row(next_out) = u.transpose();
+      ++next_out;
+    }
+    if (next_out == count) break;
+    double t_next = grid[static_cast<std::size_t>(next_out)];
+    if (sample_time(sample) < tf) t_next = std::min(t_next, sample_time(sample));
+    if (pending) t_next = std::min(t_next, apply_at);
+    stepper.integrate(rhs, t, t_next, y.data(), [&](const DensePiece& piece) {
+      return divergence.within(piece.t_end, y.data(),
+                               "a shorter period, delay compensation, a smaller disturbance or initial error, or a"
+                               " larger divergence_factor",
+                               result)
+                 ? StepAction::Continue
+                 : StepAction::Stop;
+    });
+    if (result.status == RunStatus::Diverged) break;
+    t = t_next;
+  }
+  const StepStats& stats = stepper.stats();
+  result.integrator = str_cat("erk (Dormand-Prince, restarted at every event), sampled at T = ", T, " s");
+  result.stats.steps = stats.steps;
+  result.stats.rejected = stats.rejected;
+  result.stats.rhs_evals = stats.rhs_evals;
+  result.stats.method = "erk";
+
+  record_reference_series(trajectory, disturbance, grid, next_out, result);
+  result.u.conservativeResize(next_out, m);
+  return result;
+}
+
+}  // namespace hinf
