@@ -225,9 +225,10 @@ TEST(DiscreteFilter, AtGammaInfinityItIsTheKalmanFilter) {
     const Mat K_kalman = P_kalman * s.H.transpose() * (s.H * P_kalman * s.H.transpose() + s.R).inverse();
     P_kalman = F * (P_kalman - K_kalman * s.H * P_kalman) * F.transpose() + s.Q;
     ASSERT_TRUE(hinf::discrete_hinf_filter_step(P, F, s.H, s.Q, s.R.inverse(), Mat::Identity(3, 3), kInf, K, P_next));
-    // Two algebraically equal formulas with condition numbers near 100: 1e-12 relative.
-    EXPECT_LT((K - K_kalman).norm(), 1e-12 * K_kalman.norm());
-    EXPECT_LT((P_next - P_kalman).norm(), 1e-12 * P_kalman.norm());
+    // Two algebraically equal formulas with condition numbers near 100, over 40 steps: round-off
+    // of order 1e-14; 1e-10 relative leaves room for any CPU.
+    EXPECT_LT((K - K_kalman).norm(), 1e-10 * K_kalman.norm());
+    EXPECT_LT((P_next - P_kalman).norm(), 1e-10 * P_kalman.norm());
     P = P_next;
   }
 }
@@ -240,7 +241,7 @@ TEST(DiscreteFilter, ApproachesKalmanAtSecondOrderInOneOverGammaAndStaysAbove) {
     const Mat P = filter_covariance(s, gamma);
     ASSERT_EQ(P.rows(), 3) << "no filter at gamma = " << gamma;
     // Guarding against the worst case costs covariance: P_gamma >= P_kalman.
-    EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat>(P - P_kalman).eigenvalues().minCoeff(), -1e-14);
+    EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat>(P - P_kalman).eigenvalues().minCoeff(), -1e-10 * P_kalman.norm());
     const double difference = (P - P_kalman).norm();
     // theta = gamma^-2 enters linearly to first order: halving theta's square root quarters it.
     std::printf("[discrete filter] gamma = %4.0f: |P_gamma - P_kalman| = %.3e\n", gamma, difference);
