@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "hinf/control/controller.hpp"
@@ -36,9 +37,15 @@ Percentiles percentiles(std::vector<double> seconds) {
   return {at(0.5), at(0.99), seconds.back()};
 }
 
-// N calls of step(); `age` is how old the measurement is (s), or < 0 for none.
-void time_steps(const SampledLawPtr& law, long steps, double age, std::vector<double>& seconds) {
+// N calls of step(); `age` is how old the measurement is (s), or < 0 for none. Output feedback:
+// the filter of the paper's Figure 2, and y = (x, y, psi).
+void time_steps(const SampledLawPtr& law, bool output_feedback, long steps, double age, std::vector<double>& seconds) {
   OnlineOptions options;
+  if (output_feedback) {
+    options.filter.N = 0.25 * Mat::Identity(3, 3);
+    options.filter.Sigma0 = Mat::Identity(6, 6);
+    options.filter.Q = Mat::Identity(6, 6);
+  }
   options.limits.u_min = Vec::Constant(2, -3.0);
   options.limits.u_max = Vec::Constant(2, 3.0);
   options.limits.rate_max = Vec::Constant(2, 20.0);
@@ -57,7 +64,7 @@ void time_steps(const SampledLawPtr& law, long steps, double age, std::vector<do
     const double t = law->t0() + (k + 1) * T;
     q(3) = q0(3) + 1e-3 * std::sin(0.01 * i);  // a measurement that changes
     const auto start = std::chrono::steady_clock::now();
-    controller.step(t, age < 0 ? nullptr : q.data(), t - age, u.data());
+    controller.step(t, age < 0 ? nullptr : (output_feedback ? q.data() + 3 : q.data()), t - age, u.data());
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
 }
@@ -100,29 +107,33 @@ int main(int argc, char** argv) {
   }
   std::printf("step() of the paper's ship (n = 6), T = %.2f s, %ld calls each; load average %.2f %.2f %.2f\n", T,
               steps, load[0], load[1], load[2]);
-  std::printf("%-10s %-34s %10s %10s %10s\n", "law", "measurement", "median us", "p99 us", "max us");
+  std::printf("%-18s %-34s %10s %10s %10s\n", "law", "measurement", "median us", "p99 us", "max us");
   const std::pair<const char*, double> cases[] = {
       {"of the same instant", 0.0}, {"20 ms old (predicted 20 ms)", 0.02}, {"missing (predicted 50 ms)", -1.0}};
   // Rounds: every case runs steps / rounds calls per round, the cases one after the other, so a
   // change of the machine's load falls on all of them alike.
   const int rounds = 10;
-  std::vector<std::vector<double>> seconds(7);
+  // State feedback with both laws, then output feedback with both.
+  std::vector<std::vector<double>> seconds(13);
   for (auto& s : seconds) s.reserve(static_cast<std::size_t>(steps));
   for (int round = 0; round < rounds; ++round) {
     int c = 0;
-    for (const SampledLawPtr& law : laws)
-      for (const auto& [what, age] : cases) time_steps(law, steps / rounds, age, seconds[c++]);
+    for (bool output_feedback : {false, true})
+      for (const SampledLawPtr& law : laws)
+        for (const auto& [what, age] : cases) time_steps(law, output_feedback, steps / rounds, age, seconds[c++]);
     time_control(design, T, steps / rounds, seconds[c]);
   }
   int c = 0;
-  for (const SampledLawPtr& law : laws)
-    for (const auto& [what, age] : cases) {
-      const Percentiles p = percentiles(seconds[c++]);
-      std::printf("%-10s %-34s %10.3f %10.3f %10.3f\n", law->kind().c_str(), what, p.median * 1e6, p.p99 * 1e6,
-                  p.max * 1e6);
-    }
+  for (bool output_feedback : {false, true})
+    for (const SampledLawPtr& law : laws)
+      for (const auto& [what, age] : cases) {
+        const Percentiles p = percentiles(seconds[c++]);
+        const std::string name = law->kind() + (output_feedback ? ", output" : ", state");
+        std::printf("%-18s %-34s %10.3f %10.3f %10.3f\n", name.c_str(), what, p.median * 1e6, p.p99 * 1e6,
+                    p.max * 1e6);
+      }
   const Percentiles p = percentiles(seconds[c]);
-  std::printf("%-10s %-34s %10.3f %10.3f %10.3f\n", "control()", "HinfStateFeedback, of the instant", p.median * 1e6,
+  std::printf("%-18s %-34s %10.3f %10.3f %10.3f\n", "control()", "HinfStateFeedback, of the instant", p.median * 1e6,
               p.p99 * 1e6, p.max * 1e6);
   return 0;
 }

@@ -385,6 +385,14 @@ Examples
 >>> limits = hc.ActuatorLimits(u_min=[-2.0, -1.0], u_max=[2.0, 1.0], rate_max=[4.0, np.inf])
 >>> limits.u_max
 array([2., 1.]))");
+  bind_options<OnlineFilter>(m, "OnlineFilter", {"OnlineFilter"},
+                             {{"N", "array_like, shape (p, p) or (0, 0)"}, {"Sigma0", "array_like, shape (n, n)"},
+                              {"Q", "array_like, shape (n, n)"}},
+                             R"(Examples
+--------
+>>> f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))   # paper Fig. 2
+>>> f.hold
+0.0)");
   bind_options<OnlineOptions>(m, "OnlineOptions", {"OnlineOptions"}, {}, R"(Examples
 --------
 >>> hc.OnlineOptions(max_age=0.2).compensate_delay
@@ -403,7 +411,7 @@ True)");
 >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
 >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
 >>> controller.step(0.1, None)[1]
-StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False))", /*repr=*/true);
+StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False, rho_sigma_z=nan, coupling_violated=False))", /*repr=*/true);
   bind_result<OnlineCounts>(m, "OnlineCounts", {"OnlineCounts"}, {}, R"(Examples
 --------
 )" HINF_DESIGN_EXAMPLE R"(
@@ -419,16 +427,19 @@ StepReport(status='ok', measurement='missing', saturated=False, rate_limited=Fal
 law : SampledLaw
     The law (SampledLaw.emulated or SampledLaw.digital), shared by any number of controllers.
 options : OnlineOptions, optional
-    Actuator limits, the largest age of a measurement, delay compensation.
+    Actuator limits, the largest age of a measurement, delay compensation; a filter (its N
+    given) makes it an output-feedback controller, whose step() takes the measurement y = C q.
 
 Raises
 ------
 ValueError
-    Bad options.
+    Bad options (a filter whose shapes do not fit the model's measurement C).
 
 Notes
 -----
 One object per vehicle: its calls change it, so two threads must not call one object at once.
+With output feedback the estimator and the filter run along the desired trajectory's
+linearization (docs/online.md).
 
 Examples
 --------
@@ -446,6 +457,9 @@ Examples
       .def("options", &OnlineController::options, doc({"OnlineController::law"}).c_str())
       .def("n", &OnlineController::n, doc({"OnlineController::n"}).c_str())
       .def("m", &OnlineController::m, doc({"OnlineController::n"}).c_str())
+      .def("output_feedback", &OnlineController::output_feedback, doc({"OnlineController::output_feedback"}).c_str())
+      .def("measurement_size", &OnlineController::measurement_size,
+           doc({"OnlineController::measurement_size"}).c_str())
       .def("reset",
            [](OnlineController& c, double t, const Vec& q, const std::optional<Vec>& u_held) {
              c.reset(t, q, u_held ? *u_held : Vec());
@@ -455,7 +469,7 @@ Examples
 t : float
     The time (s), in [t0, t_end).
 q : array_like, shape (n,)
-    The full state at t.
+    The full state at t (output feedback: the initial estimate of the state).
 u_held : array_like, shape (m,), optional
     The command held before t (default: u_d(t) within the limits).
 
@@ -477,9 +491,10 @@ array([1., 0.]))").c_str())
            [](OnlineController& c, double t_now, const std::optional<py::array_t<double, py::array::c_style |
                                                                                     py::array::forcecast>>& q,
               const std::optional<double>& t_meas) {
-             if (q && (q->ndim() != 1 || q->shape(0) != c.n()))
-               throw InputError(str_cat("q must have shape (", c.n(), ",), got an array of ", q->size(),
-                                        " numbers in ", q->ndim(), " dimensions"));
+             if (q && (q->ndim() != 1 || q->shape(0) != c.measurement_size()))
+               throw InputError(str_cat("q must have shape (", c.measurement_size(), ",) (",
+                                        c.output_feedback() ? "the measured outputs y = C q" : "the full state",
+                                        "), got an array of ", q->size(), " numbers in ", q->ndim(), " dimensions"));
              const double* measurement = q ? q->data() : nullptr;
              Vec u(c.m());
              StepReport report;
@@ -496,8 +511,9 @@ array([1., 0.]))").c_str())
 ----------
 t_now : float
     The time of the command (s).
-q : array_like, shape (n,), optional
-    The full state measured at t_meas; None: no measurement this sample.
+q : array_like, shape (n,) or (p,), optional
+    The full state measured at t_meas (output feedback: the measurement y, p =
+    measurement_size()); None: no measurement this sample.
 t_meas : float, optional
     The time of the measurement (s), <= t_now; default t_now.
 
@@ -511,7 +527,8 @@ report : StepReport
 Raises
 ------
 ValueError
-    q of another size than n; step() before reset() (the C++ step() returns NotReset).
+    q of another size than measurement_size(); step() before reset() (the C++ step() returns
+    NotReset).
 
 Examples
 --------
@@ -525,8 +542,9 @@ Examples
            [](OnlineController& c, const Vec& t_now,
               const py::array_t<double, py::array::c_style | py::array::forcecast>& q, const std::optional<Vec>& t_meas) {
              const Eigen::Index k = t_now.size();
-             if (q.ndim() != 2 || q.shape(0) != k || q.shape(1) != c.n())
-               throw InputError(str_cat("q must have shape (", k, ", ", c.n(), "): one measured state per time of t_now"));
+             const int size = c.measurement_size();
+             if (q.ndim() != 2 || q.shape(0) != k || q.shape(1) != size)
+               throw InputError(str_cat("q must have shape (", k, ", ", size, "): one measurement per time of t_now"));
              if (t_meas && t_meas->size() != k)
                throw InputError(str_cat("t_meas must have ", k, " times, one per time of t_now, got ", t_meas->size()));
              RowMat u(k, c.m());
@@ -537,7 +555,7 @@ Examples
                Vec command(c.m());
                for (Eigen::Index i = 0; i < k; ++i) {
                  reports[static_cast<std::size_t>(i)] =
-                     c.step(t_now[i], rows + i * c.n(), t_meas ? (*t_meas)[i] : t_now[i], command.data());
+                     c.step(t_now[i], rows + i * size, t_meas ? (*t_meas)[i] : t_now[i], command.data());
                  u.row(i) = command.transpose();
                }
              }
@@ -553,9 +571,9 @@ Parameters
 ----------
 t_now : array_like, shape (k,)
     The times of the commands (s).
-q : array_like, shape (k, n)
-    The measured states, one row per time; a row with NaN is a non-finite measurement (the
-    estimate is predicted).
+q : array_like, shape (k, n) or (k, p)
+    The measured states (output feedback: the measurements y), one row per time; a row with NaN
+    is a non-finite measurement (the estimate is predicted).
 t_meas : array_like, shape (k,), optional
     The times of the measurements (s); default t_now.
 
@@ -582,6 +600,15 @@ Examples
 ((3, 2), <MeasurementUse.used: 0>))")
       .def("estimate", &OnlineController::estimate, doc({"OnlineController::estimate"}).c_str())
       .def("estimate_time", &OnlineController::estimate_time, doc({"OnlineController::estimate"}).c_str())
+      .def("sigma", &OnlineController::sigma, doc({"OnlineController::sigma"}, R"(Examples
+--------
+)" HINF_DESIGN_EXAMPLE R"(
+>>> f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+>>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1), hc.OnlineOptions(filter=f))
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0])   # the estimate: on the path
+>>> u, report = controller.step(0.1, [-1.0, -1.0, 0.8], 0.1)  # y = (x, y, psi)
+>>> controller.sigma().shape, bool(report.rho_sigma_z < 25.0)
+((6, 6), True))").c_str())
       .def("held_command", &OnlineController::held_command, doc({"OnlineController::estimate"}).c_str())
       .def("held_time", &OnlineController::held_time, doc({"OnlineController::estimate"}).c_str())
       .def("counts", &OnlineController::counts, doc({"OnlineController::counts"}).c_str());
@@ -589,7 +616,8 @@ Examples
 
 // The sampled loop (sampled_loop.hpp); after simulate_state_feedback, whose conversions it uses.
 void bind_sampled_loop(py::module_& m) {
-  bind_options<SampledLoopOptions>(m, "SampledLoopOptions", {"SampledLoopOptions"}, {}, R"(Examples
+  bind_options<SampledLoopOptions>(m, "SampledLoopOptions", {"SampledLoopOptions"},
+                                   {{"noise", "array_like, shape (k, p) or (0, 0)"}}, R"(Examples
 --------
 >>> hc.SampledLoopOptions(delay=0.1).simulation.output_dt
 0.01)");
@@ -613,7 +641,8 @@ disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or N
 q0 : array_like, shape (n,)
     The initial state q(t0).
 options : SampledLoopOptions, optional
-    The computation delay (s), the output grid, divergence factor and tolerances.
+    The computation delay (s), the output grid, divergence factor and tolerances; for an
+    output-feedback controller the noise's sigma and its samples (one row per sample).
 plant : Model or None, optional
     The vehicle integrated, of the design model's structure; None: the trajectory's model.
 

@@ -429,26 +429,43 @@ system is singular (the step is then retried with another step size).)contract"}
     {"NewtonSystems::auto", R"contract(densely up to kDenseNewtonMaxStates states, as Lyapunov equations beyond)contract"},
     {"NewtonSystems::dense", R"contract(the packed Jacobian (n(n+1)/2 unknowns) and LU: O(n^6) per factorization)contract"},
     {"NewtonSystems::lyapunov", R"contract(Schur form and Bartels-Stewart: O(n^3) per factorization and per solve)contract"},
-    {"OnlineController", R"contract(The state-feedback controller of one vehicle (see the top of this file).)contract"},
-    {"OnlineController::OnlineController", R"contract(InputError for a null law or bad options. Takes all the memory step() uses.)contract"},
+    {"OnlineController", R"contract(The controller of one vehicle, state or output feedback (see the top of this file).)contract"},
+    {"OnlineController::OnlineController", R"contract(InputError for a null law or bad options (a filter whose shapes do not fit the model's
+measurement). Takes all the memory step() uses.)contract"},
+    {"OnlineController::S_predict_", R"contract(gamma^-2 Q - C' N^-1 C, gamma^-2 Q: the quadratic term of (36))contract"},
     {"OnlineController::counts", R"contract(The counts since reset().)contract"},
-    {"OnlineController::derivative", R"contract(dx = A_e(t) x + B_e(t) (u - u_d(t)), A_e and B_e interpolated between samples (into A_t_, B_t_),
-u the command of history entry `entry`.)contract"},
+    {"OnlineController::coupling", R"contract(rho(Sigma_ Z(t)) (+inf when Sigma_ is not positive definite).)contract"},
+    {"OnlineController::derivative", R"contract(dx = A_e(t) x + B_e(t) (u - u_d(t)), u the command of history entry `entry`; with output
+feedback also the terms of (35) and dSigma of (36) (the innovation's with `innovate`).)contract"},
     {"OnlineController::entry_at", R"contract(The history entry whose command is applied at t (the latest entry with time <= t).)contract"},
     {"OnlineController::estimate", R"contract(The estimate of q_e at estimate_time() (n), the command held since held_time() (m).)contract"},
+    {"OnlineController::have_y_", R"contract(a measurement is held in the innovation ...)contract"},
     {"OnlineController::history_u_", R"contract(m x history)contract"},
+    {"OnlineController::interpolate", R"contract(A_e, B_e (and D_e D_e', Z) interpolated between samples at t, into A_t_, B_t_ (DDt_t_, Z_t_);
+nothing when they are already those of t.)contract"},
+    {"OnlineController::interpolated_at_", R"contract(the t of A_t_, B_t_, DDt_t_, Z_t_)contract"},
     {"OnlineController::law", R"contract(The law and the options it was made with.)contract"},
+    {"OnlineController::measurement_size", R"contract(The numbers step() takes: n (the state) or p (the measurement y = C q).)contract"},
     {"OnlineController::n", R"contract(The number of states n (of q) and of inputs m (of u).)contract"},
-    {"OnlineController::predict_to", R"contract(The estimate x_ predicted from t_x_ to t along the linearization with the applied commands.)contract"},
-    {"OnlineController::reset", R"contract(Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and
-the command held is u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q
-or u_held (reset() may allocate and throw; step() does neither).)contract"},
-    {"OnlineController::step", R"contract(One sample: the measurement q (n numbers, or null: none) taken at t_meas, the command for
-t_now into u (m numbers). Never throws, never allocates.)contract"},
+    {"OnlineController::output_feedback", R"contract(Output feedback (a filter in the options)?)contract"},
+    {"OnlineController::p_", R"contract(measured outputs; the row of C that measures the heading)contract"},
+    {"OnlineController::predict_to", R"contract(The estimate (x_, and Sigma_ with output feedback) predicted from t_x_ to t along the
+linearization with the applied commands (and the measurement held, while it is).)contract"},
+    {"OnlineController::reset", R"contract(Starts at time t (in [t0, t_end)) from the state q (n; with output feedback the initial
+estimate of the state, and Sigma = Sigma0): the estimate is q - q_d(t) and the command held is
+u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q or u_held (reset() may
+allocate and throw; step() does neither).)contract"},
+    {"OnlineController::sigma", R"contract(The filter's Sigma at estimate_time() (n x n; empty for state feedback).)contract"},
+    {"OnlineController::step", R"contract(One sample: the measurement (measurement_size() numbers: q, or y with output feedback; null:
+none) taken at t_meas, the command for t_now into u (m numbers). Never throws, never
+allocates.)contract"},
     {"OnlineController::t_last_", R"contract(the last call's t_now)contract"},
     {"OnlineController::t_meas_last_", R"contract(the last measurement used)contract"},
+    {"OnlineController::y_until_", R"contract(... until this time)contract"},
     {"OnlineCounts", R"contract(Counts since reset().)contract"},
+    {"OnlineCounts::coupling_violated", R"contract(output feedback: steps with rho(Sigma Z) >= gamma^2)contract"},
     {"OnlineCounts::largest_command", R"contract(max |u_i| over the commands computed)contract"},
+    {"OnlineCounts::largest_rho", R"contract(output feedback: max rho(Sigma Z) / gamma^2 over the steps)contract"},
     {"OnlineCounts::past_horizon", R"contract(StepStatus::PastHorizon)contract"},
     {"OnlineCounts::predicted", R"contract(commands computed without a measurement (MeasurementUse other than Used))contract"},
     {"OnlineCounts::rate_limited", R"contract(commands with the rate limit active)contract"},
@@ -456,10 +473,22 @@ t_now into u (m numbers). Never throws, never allocates.)contract"},
     {"OnlineCounts::saturated", R"contract(commands with a bound active)contract"},
     {"OnlineCounts::steps", R"contract(calls of step() (any status))contract"},
     {"OnlineCounts::used", R"contract(measurements used)contract"},
+    {"OnlineFilter", R"contract(The filter of an output-feedback controller (see the top of this file). An empty N: state
+feedback (step() takes the full state).)contract"},
+    {"OnlineFilter::N", R"contract(p x p, symmetric positive definite: the weight of the measurement noise
+in (36); for noise of standard deviation sigma per sample held over the
+sensor's period T_s, the continuous filter's intensity sigma^2 T_s)contract"},
+    {"OnlineFilter::Q", R"contract(n x n, symmetric positive semidefinite: the performance weight in (36))contract"},
+    {"OnlineFilter::Sigma0", R"contract(n x n, symmetric positive definite: Sigma at reset(), (Q0 - eta I)^-1)contract"},
+    {"OnlineFilter::hold", R"contract(s: how long a measurement stays in the innovation after its time
+(the sensor's period); 0: the law's period)contract"},
+    {"OnlineFilter::validate", R"contract(InputError naming the matrix, for shapes (p measured outputs, n states) or values that do
+not fit.)contract"},
     {"OnlineOptions", R"contract(The choices of an online controller.)contract"},
     {"OnlineOptions::compensate_delay", R"contract(predict a measurement from t_meas to t_now (false: the command
 is the law's at t_meas, u_d(t_meas) - K q_e(t_meas), as if
 computed then and applied late))contract"},
+    {"OnlineOptions::filter", R"contract(output feedback (empty N: state feedback))contract"},
     {"OnlineOptions::history", R"contract(applied commands remembered (>= 2): a measurement older than
 the oldest is stale)contract"},
     {"OnlineOptions::limits", R"contract(bounds and rate limits of the command)contract"},
@@ -547,8 +576,11 @@ feedback when no design exists at gamma (gamma <= gamma*))contract"},
     {"RunStatus::diverged", R"contract(stopped when the tracking error exceeded the divergence bound (see above):
 divergence_factor times the problem's scale)contract"},
     {"SampledLaw", R"contract(The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
-linearization A_e(t_k), B_e(t_k) (k = 0 .. steps()) for the prediction. Immutable.)contract"},
-    {"SampledLaw::SampledLaw", R"contract(The tables; use emulated() or digital().)contract"},
+linearization A_e(t_k), B_e(t_k), D_e(t_k) D_e(t_k)' and the game's value matrix Z_k (k = 0 .. steps())
+for the prediction and the estimator. Immutable.)contract"},
+    {"SampledLaw::DDt", R"contract(D_e(t_k) D_e(t_k)' (n x n) and Z_k (n x n: Z(t_k) of the continuous design, M_k of the
+digital one), k = 0 .. steps(); unchecked indices.)contract"},
+    {"SampledLaw::SampledLaw", R"contract(The tables (K: steps() gains; Z: steps() + 1 matrices); use emulated() or digital().)contract"},
     {"SampledLaw::digital", R"contract(The digital design: K_k = F_k of the discrete game (discrete_design.hpp), at its period.)contract"},
     {"SampledLaw::emulated", R"contract(The continuous design emulated: K_k = kappa(t_k) B_e(t_k)' Z(t_k), held over each sample of
 `period` (s). InputError for a period that is not > 0 or longer than the horizon, kappa not
@@ -577,6 +609,9 @@ not finite and > 0, or longer than the horizon.)contract"},
     {"SampledLoopOptions", R"contract(The choices of the sampled loop.)contract"},
     {"SampledLoopOptions::delay", R"contract(s, in [0, T]: the command computed from the measurement of
 t_k is applied from t_k + delay (T: one sample late))contract"},
+    {"SampledLoopOptions::noise", R"contract(output feedback: v, one row per sample, one column per output
+(empty when sigma = 0))contract"},
+    {"SampledLoopOptions::sigma", R"contract(output feedback: the noise's standard deviation per sample)contract"},
     {"SampledLoopOptions::simulation", R"contract(output grid, divergence bound, tolerances (method: erk always))contract"},
     {"Scenario", R"contract(A scenario: the model, the horizon, the desired trajectory, the law and its design, the
 disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
@@ -718,8 +753,12 @@ included), in [1, 1e9]; exceeding it is a SolverError)contract"},
     {"SparseMatrix::add_product", R"contract(y += M x)contract"},
     {"StepAction", R"contract(What a step callback asks the integrator to do next.)contract"},
     {"StepReport", R"contract(The report of one step().)contract"},
+    {"StepReport::coupling_violated", R"contract(output feedback: rho(Sigma Z) >= gamma^2 (the estimator's
+gain is singular))contract"},
     {"StepReport::measurement", R"contract(what became of the measurement)contract"},
     {"StepReport::rate_limited", R"contract(the rate limit was active)contract"},
+    {"StepReport::rho_sigma_z", R"contract(output feedback: rho(Sigma Z) at t_now, against gamma^2 (NaN: state
+feedback))contract"},
     {"StepReport::saturated", R"contract(a bound of u_min / u_max was active)contract"},
     {"StepReport::status", R"contract(what step() did)contract"},
     {"StepStats", R"contract(The counts of one integration (the desired trajectory's, Trajectory::stats()).)contract"},
@@ -917,7 +956,27 @@ from the last call in the same way. Then
     u = u_d(t_now) - K_k q_e(t_now),   k the sample that holds t_now
 (without delay compensation, u_d(t_meas) - K q_e(t_meas) with the sample of t_meas),
 limited: first the rate, |u - u_held| <= rate_max (t_now - t_held) per channel, then the bounds
-u_min <= u <= u_max. The command returned is the one applied, and the one the prediction uses.)contract"},
+u_min <= u <= u_max. The command returned is the one applied, and the one the prediction uses.
+
+Output feedback (OnlineOptions::filter with a weight N): the measurement is y = C q + noise
+(p numbers, C the model's), and the controller runs the estimator (35) and the filter (36) of
+output_feedback.hpp along the desired trajectory:
+    dq_hat/dt = A_e q_hat + B_e (u - u_d) + gamma^-2 D_e D_e' Z q_hat
+                + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat),
+    dSigma/dt = A_e Sigma + Sigma A_e' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D_e D_e',
+with A_e, B_e, D_e and Z (the design's Z(t_k), or M_k of the digital design) interpolated
+linearly between samples: the estimator's drift is the linearization, A(q_hat) q_hat + alpha
+of (35) less its second-order remainder, so that a step needs nothing of the model but its
+tables. A measurement y taken at t_meas enters as the measured error y_e = y - C q_d(t_meas)
+(the heading's component, and the innovation's, wrapped), held from t_meas for `hold` seconds
+(the sensor's period) and until a newer one is used (the error changes slowly where the
+vehicle's position does not, so holding it costs little);
+outside that the innovation terms are off (prediction: the estimator runs open loop and Sigma
+grows). A measurement that arrives late (t_meas earlier than the last call) is used from its
+own time: the estimate is integrated again from the last measurement's time, where it is kept.
+Then u = u_d(t_now) - K_k q_hat(t_now) as above. The coupling condition rho(Sigma Z) < gamma^2
+is evaluated at every step (StepReport::rho_sigma_z); where it fails the estimator's gain is
+singular: the step is still computed, flagged, and counted.)contract"},
     {"control/output_feedback.hpp", R"contract(Imperfect measurements (paper §4): the H-infinity filter, the estimator and the
 output-feedback tracking law, simulated together with the nonlinear plant.
 
@@ -978,7 +1037,12 @@ Between events (samples, commands, output times) the plant is integrated by Dorm
 The time series are those of simulate_state_feedback (simulation.hpp): u is the command
 applied; a run that leaves the neighbourhood of the desired trajectory stops as Diverged.
 Past the law's last sample (t_end <= tf) the controller answers PastHorizon and the last
-command stays held; controller.counts() tells.)contract"},
+command stays held; controller.counts() tells.
+An output-feedback controller (OnlineController::output_feedback()) is handed the measurement
+y_k = C q(t_k) + sigma v_k instead (C the plant's, v_k row k of the noise: standard normal
+samples, one per sample and measured output, as noise_sample_count and
+standard_normal_samples of output_feedback.hpp give them for the law's period), and starts
+from the estimate q_hat(t0) = 0 (the state q_d(t0)), as the paper's estimator.)contract"},
     {"control/simulation.hpp", R"contract(Closed-loop simulation of the nonlinear model under a tracking controller (paper eq. 7):
     dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),   u = controller(t, q),   q(t0) = q0,
 integrated with the chosen method; the time series are sampled on the output grid. f, G and

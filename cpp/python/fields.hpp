@@ -97,21 +97,31 @@ struct Fields<ActuatorLimits> {
                                                field("rate_max", &ActuatorLimits::rate_max));
 };
 template <>
+struct Fields<OnlineFilter> {
+  static constexpr auto list = std::make_tuple(field("N", &OnlineFilter::N), field("Sigma0", &OnlineFilter::Sigma0),
+                                               field("Q", &OnlineFilter::Q), field("hold", &OnlineFilter::hold));
+};
+template <>
 struct Fields<OnlineOptions> {
   static constexpr auto list = std::make_tuple(
-      field("limits", &OnlineOptions::limits), field("max_age", &OnlineOptions::max_age),
+      field("filter", &OnlineOptions::filter), field("limits", &OnlineOptions::limits),
+      field("max_age", &OnlineOptions::max_age),
       field("compensate_delay", &OnlineOptions::compensate_delay), field("history", &OnlineOptions::history));
 };
 template <>
 struct Fields<SampledLoopOptions> {
   static constexpr auto list = std::make_tuple(field("delay", &SampledLoopOptions::delay),
-                                               field("simulation", &SampledLoopOptions::simulation));
+                                               field("simulation", &SampledLoopOptions::simulation),
+                                               field("sigma", &SampledLoopOptions::sigma),
+                                               field("noise", &SampledLoopOptions::noise));
 };
 template <>
 struct Fields<StepReport> {
   static constexpr auto list =
       std::make_tuple(field("status", &StepReport::status), field("measurement", &StepReport::measurement),
-                      field("saturated", &StepReport::saturated), field("rate_limited", &StepReport::rate_limited));
+                      field("saturated", &StepReport::saturated), field("rate_limited", &StepReport::rate_limited),
+                      field("rho_sigma_z", &StepReport::rho_sigma_z),
+                      field("coupling_violated", &StepReport::coupling_violated));
 };
 template <>
 struct Fields<OnlineCounts> {
@@ -119,7 +129,8 @@ struct Fields<OnlineCounts> {
       field("steps", &OnlineCounts::steps), field("used", &OnlineCounts::used),
       field("predicted", &OnlineCounts::predicted), field("refused", &OnlineCounts::refused),
       field("past_horizon", &OnlineCounts::past_horizon), field("saturated", &OnlineCounts::saturated),
-      field("rate_limited", &OnlineCounts::rate_limited), field("largest_command", &OnlineCounts::largest_command));
+      field("rate_limited", &OnlineCounts::rate_limited), field("largest_command", &OnlineCounts::largest_command),
+      field("coupling_violated", &OnlineCounts::coupling_violated), field("largest_rho", &OnlineCounts::largest_rho));
 };
 template <>
 struct Fields<SolverOptions> {

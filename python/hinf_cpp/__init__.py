@@ -82,6 +82,7 @@ from hinf_cpp._core import (
     NewtonSystems,
     OnlineController,
     OnlineCounts,
+    OnlineFilter,
     OnlineOptions,
     OutputFeedbackOptions,
     OutputFeedbackProblem,
@@ -167,7 +168,7 @@ __all__ = [
     "Metrics", "MetricDefinition", "metric_table", "compute_metrics",
     # on a vehicle: the digital design and the online controller
     "SampledLinearization", "solve_discrete_game", "DiscreteDesign", "discrete_conjugate_time", "gamma_star_discrete",
-    "SampledLaw", "ActuatorLimits", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse",
+    "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse",
     "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
     # errors
     "HinfError", "SolverError", "ConjugatePointError", "CouplingConditionError",

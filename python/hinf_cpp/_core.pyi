@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -3822,7 +3822,8 @@ class DiscreteDesign:
 class SampledLaw:
     """
     The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
-    linearization A_e(t_k), B_e(t_k) (k = 0 .. steps()) for the prediction. Immutable.
+    linearization A_e(t_k), B_e(t_k), D_e(t_k) D_e(t_k)' and the game's value matrix Z_k (k = 0 .. steps())
+    for the prediction and the estimator. Immutable.
     
     Examples
     --------
@@ -3975,12 +3976,86 @@ class ActuatorLimits:
     @u_min.setter
     def u_min(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> None:
         ...
+class OnlineFilter:
+    """
+    The filter of an output-feedback controller (see the top of this file). An empty N: state
+    feedback (step() takes the full state).
+    
+    Parameters
+    ----------
+    N : array_like, shape (p, p) or (0, 0), optional
+        p x p, symmetric positive definite: the weight of the measurement noise
+        in (36); for noise of standard deviation sigma per sample held over the
+        sensor's period T_s, the continuous filter's intensity sigma^2 T_s
+    Sigma0 : array_like, shape (n, n), optional
+        n x n, symmetric positive definite: Sigma at reset(), (Q0 - eta I)^-1
+    Q : array_like, shape (n, n), optional
+        n x n, symmetric positive semidefinite: the performance weight in (36)
+    hold : float, default 0.0
+        s: how long a measurement stays in the innovation after its time
+        (the sensor's period); 0: the law's period
+    
+    Examples
+    --------
+    >>> f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))   # paper Fig. 2
+    >>> f.hold
+    0.0
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('N', 'Sigma0', 'Q', 'hold')
+    def __eq__(self, arg0: OnlineFilter) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., hold: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def N(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        p x p, symmetric positive definite: the weight of the measurement noise
+        in (36); for noise of standard deviation sigma per sample held over the
+        sensor's period T_s, the continuous filter's intensity sigma^2 T_s
+        """
+    @N.setter
+    def N(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def Q(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        n x n, symmetric positive semidefinite: the performance weight in (36)
+        """
+    @Q.setter
+    def Q(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def Sigma0(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        n x n, symmetric positive definite: Sigma at reset(), (Q0 - eta I)^-1
+        """
+    @Sigma0.setter
+    def Sigma0(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def hold(self) -> float:
+        """
+        s: how long a measurement stays in the innovation after its time
+        (the sensor's period); 0: the law's period
+        """
+    @hold.setter
+    def hold(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
 class OnlineOptions:
     """
     The choices of an online controller.
     
     Parameters
     ----------
+    filter : OnlineFilter, optional
+        output feedback (empty N: state feedback)
     limits : ActuatorLimits, optional
         bounds and rate limits of the command
     max_age : float, default 1e+300
@@ -3999,12 +4074,12 @@ class OnlineOptions:
     True
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('limits', 'max_age', 'compensate_delay', 'history')
+    __match_args__: typing.ClassVar[tuple] = ('filter', 'limits', 'max_age', 'compensate_delay', 'history')
     def __eq__(self, arg0: OnlineOptions) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, limits: ActuatorLimits = ..., max_age: typing.SupportsFloat | typing.SupportsIndex = 1e+300, compensate_delay: bool = True, history: typing.SupportsInt | typing.SupportsIndex = 64) -> None:
+    def __init__(self, filter: OnlineFilter = ..., limits: ActuatorLimits = ..., max_age: typing.SupportsFloat | typing.SupportsIndex = 1e+300, compensate_delay: bool = True, history: typing.SupportsInt | typing.SupportsIndex = 64) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4019,6 +4094,14 @@ class OnlineOptions:
         """
     @compensate_delay.setter
     def compensate_delay(self, arg0: bool) -> None:
+        ...
+    @property
+    def filter(self) -> OnlineFilter:
+        """
+        output feedback (empty N: state feedback)
+        """
+    @filter.setter
+    def filter(self, arg0: OnlineFilter) -> None:
         ...
     @property
     def history(self) -> int:
@@ -4195,6 +4278,12 @@ class StepReport:
         a bound of u_min / u_max was active
     rate_limited : bool
         the rate limit was active
+    rho_sigma_z : float
+        output feedback: rho(Sigma Z) at t_now, against gamma^2 (NaN: state
+        feedback)
+    coupling_violated : bool
+        output feedback: rho(Sigma Z) >= gamma^2 (the estimator's
+        gain is singular)
     
     Examples
     --------
@@ -4204,10 +4293,10 @@ class StepReport:
     >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
     >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
     >>> controller.step(0.1, None)[1]
-    StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False)
+    StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False, rho_sigma_z=nan, coupling_violated=False)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('status', 'measurement', 'saturated', 'rate_limited')
+    __match_args__: typing.ClassVar[tuple] = ('status', 'measurement', 'saturated', 'rate_limited', 'rho_sigma_z', 'coupling_violated')
     def __eq__(self, arg0: StepReport) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -4217,6 +4306,12 @@ class StepReport:
     def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
+    def coupling_violated(self) -> bool:
+        """
+        output feedback: rho(Sigma Z) >= gamma^2 (the estimator's
+        gain is singular)
+        """
+    @property
     def measurement(self) -> MeasurementUse:
         """
         what became of the measurement
@@ -4225,6 +4320,12 @@ class StepReport:
     def rate_limited(self) -> bool:
         """
         the rate limit was active
+        """
+    @property
+    def rho_sigma_z(self) -> float:
+        """
+        output feedback: rho(Sigma Z) at t_now, against gamma^2 (NaN: state
+        feedback)
         """
     @property
     def saturated(self) -> bool:
@@ -4258,6 +4359,10 @@ class OnlineCounts:
         commands with the rate limit active
     largest_command : float
         max |u_i| over the commands computed
+    coupling_violated : int
+        output feedback: steps with rho(Sigma Z) >= gamma^2
+    largest_rho : float
+        output feedback: max rho(Sigma Z) / gamma^2 over the steps
     
     Examples
     --------
@@ -4271,7 +4376,7 @@ class OnlineCounts:
     (1, 1)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'saturated', 'rate_limited', 'largest_command')
+    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'saturated', 'rate_limited', 'largest_command', 'coupling_violated', 'largest_rho')
     def __eq__(self, arg0: OnlineCounts) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -4281,9 +4386,19 @@ class OnlineCounts:
     def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
+    def coupling_violated(self) -> int:
+        """
+        output feedback: steps with rho(Sigma Z) >= gamma^2
+        """
+    @property
     def largest_command(self) -> float:
         """
         max |u_i| over the commands computed
+        """
+    @property
+    def largest_rho(self) -> float:
+        """
+        output feedback: max rho(Sigma Z) / gamma^2 over the steps
         """
     @property
     def past_horizon(self) -> int:
@@ -4322,25 +4437,29 @@ class OnlineCounts:
         """
 class OnlineController:
     """
-    The state-feedback controller of one vehicle (see the top of this file).
+    The controller of one vehicle, state or output feedback (see the top of this file).
     
-    InputError for a null law or bad options. Takes all the memory step() uses.
+    InputError for a null law or bad options (a filter whose shapes do not fit the model's
+    measurement). Takes all the memory step() uses.
     
     Parameters
     ----------
     law : SampledLaw
         The law (SampledLaw.emulated or SampledLaw.digital), shared by any number of controllers.
     options : OnlineOptions, optional
-        Actuator limits, the largest age of a measurement, delay compensation.
+        Actuator limits, the largest age of a measurement, delay compensation; a filter (its N
+        given) makes it an output-feedback controller, whose step() takes the measurement y = C q.
     
     Raises
     ------
     ValueError
-        Bad options.
+        Bad options (a filter whose shapes do not fit the model's measurement C).
     
     Notes
     -----
     One object per vehicle: its calls change it, so two threads must not call one object at once.
+    With output feedback the estimator and the filter run along the desired trajectory's
+    linearization (docs/online.md).
     
     Examples
     --------
@@ -4385,6 +4504,10 @@ class OnlineController:
         """
         The number of states n (of q) and of inputs m (of u).
         """
+    def measurement_size(self) -> int:
+        """
+        The numbers step() takes: n (the state) or p (the measurement y = C q).
+        """
     def n(self) -> int:
         """
         The number of states n (of q) and of inputs m (of u).
@@ -4392,6 +4515,10 @@ class OnlineController:
     def options(self) -> OnlineOptions:
         """
         The law and the options it was made with.
+        """
+    def output_feedback(self) -> bool:
+        """
+        Output feedback (a filter in the options)?
         """
     def replay(self, t_now: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], t_meas: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"], list[StepReport]]:
         """
@@ -4402,9 +4529,9 @@ class OnlineController:
         ----------
         t_now : array_like, shape (k,)
             The times of the commands (s).
-        q : array_like, shape (k, n)
-            The measured states, one row per time; a row with NaN is a non-finite measurement (the
-            estimate is predicted).
+        q : array_like, shape (k, n) or (k, p)
+            The measured states (output feedback: the measurements y), one row per time; a row with NaN
+            is a non-finite measurement (the estimate is predicted).
         t_meas : array_like, shape (k,), optional
             The times of the measurements (s); default t_now.
         
@@ -4434,16 +4561,17 @@ class OnlineController:
         """
     def reset(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_held: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None) -> None:
         """
-        Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and
-        the command held is u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q
-        or u_held (reset() may allocate and throw; step() does neither).
+        Starts at time t (in [t0, t_end)) from the state q (n; with output feedback the initial
+        estimate of the state, and Sigma = Sigma0): the estimate is q - q_d(t) and the command held is
+        u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q or u_held (reset() may
+        allocate and throw; step() does neither).
         
         Parameters
         ----------
         t : float
             The time (s), in [t0, t_end).
         q : array_like, shape (n,)
-            The full state at t.
+            The full state at t (output feedback: the initial estimate of the state).
         u_held : array_like, shape (m,), optional
             The command held before t (default: u_d(t) within the limits).
         
@@ -4462,17 +4590,35 @@ class OnlineController:
         >>> controller.held_command()
         array([1., 0.])
         """
+    def sigma(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        The filter's Sigma at estimate_time() (n x n; empty for state feedback).
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> design = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+        >>> f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+        >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1), hc.OnlineOptions(filter=f))
+        >>> controller.reset(0.0, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0])   # the estimate: on the path
+        >>> u, report = controller.step(0.1, [-1.0, -1.0, 0.8], 0.1)  # y = (x, y, psi)
+        >>> controller.sigma().shape, bool(report.rho_sigma_z < 25.0)
+        ((6, 6), True)
+        """
     def step(self, t_now: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None, t_meas: typing.SupportsFloat | typing.SupportsIndex | None = None) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], StepReport]:
         """
-        One sample: the measurement q (n numbers, or null: none) taken at t_meas, the command for
-        t_now into u (m numbers). Never throws, never allocates.
+        One sample: the measurement (measurement_size() numbers: q, or y with output feedback; null:
+        none) taken at t_meas, the command for t_now into u (m numbers). Never throws, never
+        allocates.
         
         Parameters
         ----------
         t_now : float
             The time of the command (s).
-        q : array_like, shape (n,), optional
-            The full state measured at t_meas; None: no measurement this sample.
+        q : array_like, shape (n,) or (p,), optional
+            The full state measured at t_meas (output feedback: the measurement y, p =
+            measurement_size()); None: no measurement this sample.
         t_meas : float, optional
             The time of the measurement (s), <= t_now; default t_now.
         
@@ -4486,7 +4632,8 @@ class OnlineController:
         Raises
         ------
         ValueError
-            q of another size than n; step() before reset() (the C++ step() returns NotReset).
+            q of another size than measurement_size(); step() before reset() (the C++ step() returns
+            NotReset).
         
         Examples
         --------
@@ -4510,6 +4657,11 @@ class SampledLoopOptions:
         t_k is applied from t_k + delay (T: one sample late)
     simulation : SimulationOptions, optional
         output grid, divergence bound, tolerances (method: erk always)
+    sigma : float, default 0.0
+        output feedback: the noise's standard deviation per sample
+    noise : array_like, shape (k, p) or (0, 0), optional
+        output feedback: v, one row per sample, one column per output
+        (empty when sigma = 0)
     
     Examples
     --------
@@ -4517,12 +4669,12 @@ class SampledLoopOptions:
     0.01
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('delay', 'simulation')
+    __match_args__: typing.ClassVar[tuple] = ('delay', 'simulation', 'sigma', 'noise')
     def __eq__(self, arg0: SampledLoopOptions) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, simulation: SimulationOptions = ...) -> None:
+    def __init__(self, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, simulation: SimulationOptions = ..., sigma: typing.SupportsFloat | typing.SupportsIndex = 0.0, noise: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4536,6 +4688,23 @@ class SampledLoopOptions:
         """
     @delay.setter
     def delay(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def noise(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        output feedback: v, one row per sample, one column per output
+        (empty when sigma = 0)
+        """
+    @noise.setter
+    def noise(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def sigma(self) -> float:
+        """
+        output feedback: the noise's standard deviation per sample
+        """
+    @sigma.setter
+    def sigma(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def simulation(self) -> SimulationOptions:
@@ -6273,6 +6442,11 @@ def simulate_sampled(trajectory: Trajectory, controller: OnlineController, distu
     applied; a run that leaves the neighbourhood of the desired trajectory stops as Diverged.
     Past the law's last sample (t_end <= tf) the controller answers PastHorizon and the last
     command stays held; controller.counts() tells.
+    An output-feedback controller (OnlineController::output_feedback()) is handed the measurement
+    y_k = C q(t_k) + sigma v_k instead (C the plant's, v_k row k of the noise: standard normal
+    samples, one per sample and measured output, as noise_sample_count and
+    standard_normal_samples of output_feedback.hpp give them for the law's period), and starts
+    from the estimate q_hat(t0) = 0 (the state q_d(t0)), as the paper's estimator.
     
     Parameters
     ----------
@@ -6285,7 +6459,8 @@ def simulate_sampled(trajectory: Trajectory, controller: OnlineController, distu
     q0 : array_like, shape (n,)
         The initial state q(t0).
     options : SampledLoopOptions, optional
-        The computation delay (s), the output grid, divergence factor and tolerances.
+        The computation delay (s), the output grid, divergence factor and tolerances; for an
+        output-feedback controller the noise's sigma and its samples (one row per sample).
     plant : Model or None, optional
         The vehicle integrated, of the design model's structure; None: the trajectory's model.
     

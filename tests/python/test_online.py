@@ -178,3 +178,45 @@ def test_simulate_sampled_surface(trajectory, design):
     other = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], [1.0, 0.0], 0.0, 10.0)
     with pytest.raises(ValueError, match="another trajectory"):
         hc.simulate_sampled(other, controller, None, q0)
+
+
+def test_output_feedback_controller_surface(trajectory, design):
+    # The filter of the paper's Figure 2: y = (x, y, psi) with sigma = 0.5, N = sigma^2 I.
+    f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+    law = hc.SampledLaw.emulated(design, 0.05)
+    options = hc.OnlineOptions(filter=f, limits=hc.ActuatorLimits(u_min=[-3.0, -3.0], u_max=[3.0, 3.0]))
+    assert pickle.loads(pickle.dumps(options)) == options
+    one_by_one, replayed = hc.OnlineController(law, options), hc.OnlineController(law, options)
+    assert one_by_one.output_feedback() and one_by_one.measurement_size() == 3
+    rng = np.random.default_rng(11)
+    t_now = np.arange(0, 60) * 0.05
+    y = np.array([-1.0, -1.0, np.pi / 4]) + 0.5 * rng.standard_normal((60, 3))
+    y[25] = np.nan
+    for controller in (one_by_one, replayed):
+        controller.reset(0.0, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+    u_steps = np.array([one_by_one.step(t, row, t)[0] for t, row in zip(t_now, y)])
+    u_replay, reports = replayed.replay(t_now, y)
+    np.testing.assert_array_equal(u_replay, u_steps)
+    np.testing.assert_array_equal(replayed.sigma(), one_by_one.sigma())
+    assert reports[25].measurement == hc.MeasurementUse.not_finite
+    assert all(0.0 < r.rho_sigma_z < 25.0 and not r.coupling_violated for r in reports)
+    assert replayed.counts().used == 59 and 0.0 < replayed.counts().largest_rho < 1.0
+    with pytest.raises(ValueError, match=r"shape \(3,\) \(the measured outputs"):
+        one_by_one.step(3.0, np.zeros(6))
+    with pytest.raises(ValueError, match="N"):
+        hc.OnlineController(law, hc.OnlineOptions(filter=hc.OnlineFilter(N=np.eye(2), Sigma0=np.eye(6), Q=np.eye(6))))
+
+
+def test_simulate_sampled_with_output_feedback(trajectory, design):
+    w = hc.Signal(0.0, [hc.Harmonic(0.1, 2 * np.pi * 0.2, cosine=True)])
+    f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+    controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1), hc.OnlineOptions(filter=f))
+    noise = hc._core.standard_normal_samples(5, hc._core.noise_sample_count(0.0, 10.0, 0.1), 3)
+    options = hc.SampledLoopOptions(sigma=0.5, noise=noise)
+    run = hc.simulate_sampled(trajectory, controller, [w, w, w, 0, 0, 0], [1.0, 0.0, 0.0, -1.0, -1.0, 0.0], options)
+    assert run.status == hc.RunStatus.completed and controller.counts().used == 100
+    with pytest.raises(ValueError, match="rows"):
+        hc.simulate_sampled(trajectory, controller, None, np.zeros(6), hc.SampledLoopOptions(sigma=0.5, noise=noise[:5]))
+    state_feedback = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
+    with pytest.raises(ValueError, match="output-feedback controller"):
+        hc.simulate_sampled(trajectory, state_feedback, None, np.zeros(6), options)

@@ -25,22 +25,30 @@ void check_limit_vector(const Vec& v, int m, const char* name) {
 
 }  // namespace
 
-SampledLaw::SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K)
-    : trajectory_(std::move(trajectory)), kind_(std::move(kind)), gamma_(gamma), period_(period), K_(std::move(K)) {
+SampledLaw::SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K,
+                       std::vector<Mat> Z)
+    : trajectory_(std::move(trajectory)), kind_(std::move(kind)), gamma_(gamma), period_(period), K_(std::move(K)),
+      Z_(std::move(Z)) {
   require(trajectory_ != nullptr, "a sampled law needs its trajectory");
   require(!trajectory_->u_d_signal().is_function(),
           "the online controller needs u_d as signals (constants, harmonics or tables), not a function of t: a "
           "function may allocate and throw, which step() must not");
   const int N = sample_count(trajectory_->t0(), trajectory_->tf(), period_);
-  require(static_cast<int>(K_.size()) == N, "a sampled law of ", N, " samples needs ", N, " gains, got ", K_.size());
-  check_memory(8.0 * (N + 1.0) * trajectory_->n() * (2.0 * trajectory_->n() + 2.0 * trajectory_->m()),
+  require(static_cast<int>(K_.size()) == N && static_cast<int>(Z_.size()) == N + 1, "a sampled law of ", N,
+          " samples needs ", N, " gains and ", N + 1, " matrices Z_k, got ", K_.size(), " and ", Z_.size());
+  const Model& model = trajectory_->model();
+  check_memory(8.0 * (N + 1.0) * model.n() * (3.0 * model.n() + 2.0 * model.m() + model.nw()),
                str_cat("a sampled law of ", N, " samples"), "choose a longer period (or a shorter horizon)");
-  A_.reserve(static_cast<std::size_t>(N) + 1);
-  B_.reserve(static_cast<std::size_t>(N) + 1);
+  for (auto* table : {&A_, &B_, &DDt_}) table->reserve(static_cast<std::size_t>(N) + 1);
+  Vec q_d(model.n());
+  Mat D;
   for (int k = 0; k <= N; ++k) {
     const double t = std::min(trajectory_->t0() + k * period_, trajectory_->tf());
     A_.push_back(trajectory_->A_e(t));
     B_.push_back(trajectory_->B_e(t));
+    trajectory_->q_d(t, q_d.data());
+    D = model.D(t, q_d);
+    DDt_.push_back(D * D.transpose());
   }
 }
 
@@ -48,24 +56,30 @@ std::shared_ptr<const SampledLaw> SampledLaw::emulated(RiccatiSolutionPtr design
   require(design != nullptr, "the emulated law needs a design (a solution of the GRDE)");
   const Trajectory& trajectory = design->trajectory();
   const int N = sample_count(trajectory.t0(), trajectory.tf(), period);
-  std::vector<Mat> K;
+  std::vector<Mat> K, Z;
   K.reserve(static_cast<std::size_t>(N));
-  for (int k = 0; k < N; ++k) {
-    const double t = trajectory.t0() + k * period;
+  Z.reserve(static_cast<std::size_t>(N) + 1);
+  for (int k = 0; k <= N; ++k) {
+    const double t = std::min(trajectory.t0() + k * period, trajectory.tf());
+    Z.push_back(design->Z(t));
+    if (k == N) break;
     const double kappa_k = kappa(t);
     require(std::isfinite(kappa_k) && kappa_k > 0.0, "the gain scaling kappa must be > 0, got ", kappa_k, " at t = ", t);
     K.push_back(kappa_k * design->gain(t));
   }
-  return std::make_shared<const SampledLaw>(design->trajectory_ptr(), "emulated", design->gamma(), period, std::move(K));
+  return std::make_shared<const SampledLaw>(design->trajectory_ptr(), "emulated", design->gamma(), period, std::move(K),
+                                            std::move(Z));
 }
 
 std::shared_ptr<const SampledLaw> SampledLaw::digital(DiscreteDesignPtr design) {
   require(design != nullptr, "the digital law needs a discrete design");
-  std::vector<Mat> K;
+  std::vector<Mat> K, Z;
   K.reserve(static_cast<std::size_t>(design->steps()));
+  Z.reserve(static_cast<std::size_t>(design->steps()) + 1);
   for (int k = 0; k < design->steps(); ++k) K.push_back(design->gain(k));
+  for (int k = 0; k <= design->steps(); ++k) Z.push_back(design->M(k));
   return std::make_shared<const SampledLaw>(design->sampled().trajectory_ptr(), "digital", design->gamma(),
-                                            design->period(), std::move(K));
+                                            design->period(), std::move(K), std::move(Z));
 }
 
 void ActuatorLimits::validate(int m) const {
@@ -80,7 +94,16 @@ void ActuatorLimits::validate(int m) const {
     require(rate_max[i] > 0.0, "the rate limit rate_max[", i, "] must be > 0 (+inf: none), got ", rate_max[i]);
 }
 
-void OnlineOptions::validate(int m) const {
+void OnlineFilter::validate(int n, int p) const {
+  if (!enabled()) return;
+  check_symmetric_weight(N, p, "the filter's N", true);
+  check_symmetric_weight(Sigma0, n, "the filter's Sigma0", true);
+  check_symmetric_weight(Q, n, "the filter's Q", false);
+  require(std::isfinite(hold) && hold >= 0.0, "the filter's hold must be >= 0 s (0: the law's period), got ", hold);
+}
+
+void OnlineOptions::validate(int n, int m, int p) const {
+  filter.validate(n, p);
   limits.validate(m);
   require(!std::isnan(max_age) && max_age > 0.0, "max_age must be > 0 s, got ", max_age);
   require(history >= 2 && history <= 1000000, "history must be in [2, 1e6] commands, got ", history);
@@ -90,14 +113,38 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
     : law_(std::move(law)), options_(options) {
   require(law_ != nullptr, "an online controller needs a sampled law");
   const int n = law_->n(), m = law_->m();
-  options_.validate(m);
-  heading_ = law_->trajectory().model().heading_index();
+  const Model& model = law_->trajectory().model();
+  filter_ = options_.filter.enabled();
+  if (filter_) {
+    C_ = model.C(law_->t0());
+    p_ = static_cast<int>(C_.rows());
+  }
+  options_.validate(n, m, p_);
+  heading_ = model.heading_index();
   for (Vec* v : {&x_, &q_d_, &k1_, &k2_, &k3_, &k4_, &x_stage_}) v->setZero(n);
   for (Vec* v : {&u_held_, &u_, &u_ff_, &u_d_, &ue_}) v->setZero(m);
   A_t_.setZero(n, n);
   B_t_.setZero(n, m);
   history_t_.assign(static_cast<std::size_t>(options_.history), 0.0);
   history_u_.setZero(m, options_.history);
+  if (!filter_) return;
+  const OnlineFilter& filter = options_.filter;
+  CtNinv_ = C_.transpose() * filter.N.inverse();
+  hold_ = filter.hold > 0.0 ? filter.hold : law_->period();
+  inv_gamma2_ = std::isinf(law_->gamma()) ? 0.0 : 1.0 / (law_->gamma() * law_->gamma());
+  S_predict_ = inv_gamma2_ * filter.Q;
+  S_innovate_ = S_predict_ - CtNinv_ * C_;
+  // The measurement of the heading: the row of C that is the heading's unit row, if any; its
+  // innovation is an angle (as in the batch loop, output_feedback.cpp).
+  for (int row = 0; heading_ >= 0 && row < p_; ++row)
+    if (C_(row, heading_) == 1.0 && C_.row(row).squaredNorm() == 1.0) heading_row_ = row;
+  for (Mat* M : {&Sigma_, &S1_, &S2_, &S3_, &S4_, &S_stage_, &DDt_t_, &Z_t_, &NN_, &gain_lhs_, &L_, &Sigma_anchor_})
+    M->setZero(n, n);
+  for (Vec* v : {&r_, &n_tmp_, &x_anchor_}) v->setZero(n);
+  for (Vec* v : {&y_, &innovation_, &y_anchor_}) v->setZero(p_);
+  lu_ = Eigen::PartialPivLU<Mat>(n);
+  llt_ = Eigen::LLT<Mat>(n);
+  eigen_ = Eigen::SelfAdjointEigenSolver<Mat>(n);
 }
 
 void OnlineController::reset(double t, const ConstVecRef& q, const ConstVecRef& u_held) {
@@ -119,6 +166,14 @@ void OnlineController::reset(double t, const ConstVecRef& q, const ConstVecRef& 
   }
   t_x_ = t_held_ = t_last_ = t_meas_last_ = t;
   history_start_ = history_size_ = 0;
+  if (filter_) {
+    // The state given is an estimate, not a measurement: a measurement at t itself is new.
+    t_meas_last_ = -INFINITY;
+    Sigma_ = options_.filter.Sigma0;
+    have_y_ = have_y_anchor_ = false;
+    x_anchor_ = x_;
+    Sigma_anchor_ = Sigma_;
+  }
   remember(t, u_held_);
   counts_ = OnlineCounts();
   reset_ = true;
@@ -154,52 +209,110 @@ int OnlineController::entry_at(double t) const noexcept {
   return history_start_;
 }
 
-void OnlineController::derivative(double t, const Vec& x, int entry, Vec& dx) noexcept {
+void OnlineController::interpolate(double t) noexcept {
+  if (t == interpolated_at_) return;  // RK4 asks twice for the midpoint, and for each step's end
+  interpolated_at_ = t;
   const SampledLaw& law = *law_;
   const double position = (t - law.t0()) / law.period();
   const int k = std::clamp(static_cast<int>(std::floor(position)), 0, law.steps() - 1);
   const double theta = std::clamp(position - k, 0.0, 1.0);
   A_t_ = (1.0 - theta) * law.A(k) + theta * law.A(k + 1);
   B_t_ = (1.0 - theta) * law.B(k) + theta * law.B(k + 1);
-  law.trajectory().u_d(t, u_d_.data());
+  if (!filter_) return;
+  DDt_t_ = (1.0 - theta) * law.DDt(k) + theta * law.DDt(k + 1);
+  Z_t_ = (1.0 - theta) * law.Z(k) + theta * law.Z(k + 1);
+}
+
+void OnlineController::derivative(double t, const Vec& x, const Mat& Sigma, int entry, bool innovate, Vec& dx,
+                                  Mat& dSigma) noexcept {
+  interpolate(t);
+  law_->trajectory().u_d(t, u_d_.data());
   ue_ = history_u_.col(entry) - u_d_;
   dx.noalias() = A_t_ * x;
   dx.noalias() += B_t_ * ue_;
+  if (!filter_) return;
+  // (35): + gamma^-2 D_e D_e' Z q_hat (the worst-case disturbance the design assumes) ...
+  n_tmp_.noalias() = Z_t_ * x;
+  dx.noalias() += inv_gamma2_ * (DDt_t_ * n_tmp_);
+  // (36): A Sigma + Sigma A' + D D' + Sigma (gamma^-2 Q - C' N^-1 C) Sigma.
+  // (Products of small matrices: lazyProduct, Eigen's coefficient loop, without the size dispatch
+  // of its general product.)
+  NN_.noalias() = A_t_.lazyProduct(Sigma);
+  dSigma = NN_;
+  dSigma.noalias() += NN_.transpose();
+  dSigma += DDt_t_;
+  NN_.noalias() = (innovate ? S_innovate_ : S_predict_).lazyProduct(Sigma);
+  dSigma.noalias() += Sigma.lazyProduct(NN_);
+  if (!innovate) return;
+  // ... + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat), y_e the measured error held.
+  innovation_ = y_;
+  innovation_.noalias() -= C_ * x;
+  if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+  n_tmp_.noalias() = CtNinv_ * innovation_;
+  r_.noalias() = Sigma * n_tmp_;
+  gain_lhs_.setIdentity();
+  gain_lhs_.noalias() -= inv_gamma2_ * Sigma.lazyProduct(Z_t_);
+  lu_.compute(gain_lhs_);
+  n_tmp_ = lu_.solve(r_);
+  dx += n_tmp_;
+}
+
+double OnlineController::coupling(double t) noexcept {
+  interpolate(t);
+  // rho(Sigma Z) = the largest eigenvalue of L' Z L, Sigma = L L'.
+  llt_.compute(Sigma_);
+  if (llt_.info() != Eigen::Success) return INFINITY;
+  L_ = llt_.matrixL();
+  NN_.noalias() = Z_t_ * L_;
+  gain_lhs_.noalias() = L_.transpose() * NN_;
+  eigen_.compute(gain_lhs_, Eigen::EigenvaluesOnly);
+  return eigen_.eigenvalues()[eigen_.eigenvalues().size() - 1];
 }
 
 void OnlineController::predict_to(double t) noexcept {
   const int capacity = options_.history;
   double s = t_x_;
   while (s < t) {
-    // The command applied from s on, until the next one (or t).
+    // The command applied from s on, until the next one (or t); the measurement held, until it
+    // is no longer.
     const int entry = entry_at(s);
     const int next = (entry - history_start_ + capacity) % capacity + 1;
     double end = t;
     if (next < history_size_) end = std::min(t, history_t_[static_cast<std::size_t>((history_start_ + next) % capacity)]);
+    const bool innovate = filter_ && have_y_ && s < y_until_;
+    if (innovate) end = std::min(end, y_until_);
     const int substeps = std::max(1, static_cast<int>(std::ceil((end - s) / kMaxSubstep - 1e-9)));
     const double h = (end - s) / substeps;
     for (int i = 0; i < substeps; ++i) {
       const double a = s + i * h, mid = a + 0.5 * h, b = i + 1 == substeps ? end : a + h;
       const double dt = b - a;
-      derivative(a, x_, entry, k1_);
+      derivative(a, x_, Sigma_, entry, innovate, k1_, S1_);
       x_stage_ = x_ + 0.5 * dt * k1_;
-      derivative(mid, x_stage_, entry, k2_);
+      if (filter_) S_stage_ = Sigma_ + 0.5 * dt * S1_;
+      derivative(mid, x_stage_, S_stage_, entry, innovate, k2_, S2_);
       x_stage_ = x_ + 0.5 * dt * k2_;
-      derivative(mid, x_stage_, entry, k3_);
+      if (filter_) S_stage_ = Sigma_ + 0.5 * dt * S2_;
+      derivative(mid, x_stage_, S_stage_, entry, innovate, k3_, S3_);
       x_stage_ = x_ + dt * k3_;
-      derivative(b, x_stage_, entry, k4_);
+      if (filter_) S_stage_ = Sigma_ + dt * S3_;
+      derivative(b, x_stage_, S_stage_, entry, innovate, k4_, S4_);
       x_ += (dt / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+      if (filter_) {
+        Sigma_ += (dt / 6.0) * (S1_ + 2.0 * S2_ + 2.0 * S3_ + S4_);
+        S_stage_ = Sigma_.transpose();  // keeps Sigma symmetric against round-off
+        Sigma_ = 0.5 * (Sigma_ + S_stage_);
+      }
     }
     s = end;
   }
   t_x_ = std::max(t_x_, t);
 }
 
-StepReport OnlineController::step(double t_now, const double* q, double t_meas, double* u) noexcept {
+StepReport OnlineController::step(double t_now, const double* measurement, double t_meas, double* u) noexcept {
   StepReport report;
   if (!reset_) return report;
   ++counts_.steps;
-  const int n = this->n(), m = this->m();
+  const int n = this->n(), m = this->m(), size = measurement_size();
   auto hold = [&](StepStatus status) {
     for (int i = 0; i < m; ++i) u[i] = u_held_[i];
     report.status = status;
@@ -216,18 +329,20 @@ StepReport OnlineController::step(double t_now, const double* q, double t_meas, 
 
   // The measurement.
   MeasurementUse use = MeasurementUse::Used;
-  if (q == nullptr) {
+  const double oldest_command = history_t_[static_cast<std::size_t>(history_start_)];
+  if (measurement == nullptr) {
     use = MeasurementUse::Missing;
   } else {
     bool finite = std::isfinite(t_meas);
-    for (int i = 0; i < n && finite; ++i) finite = std::isfinite(q[i]);
+    for (int i = 0; i < size && finite; ++i) finite = std::isfinite(measurement[i]);
     if (!finite)
       use = MeasurementUse::NotFinite;
     else if (t_meas > t_now)
       use = MeasurementUse::Future;
     else if (t_meas <= t_meas_last_)
       use = MeasurementUse::Duplicate;
-    else if (t_now - t_meas > options_.max_age || t_meas < history_t_[static_cast<std::size_t>(history_start_)])
+    else if (t_now - t_meas > options_.max_age || t_meas < oldest_command ||
+             (filter_ && t_meas < t_x_ && t_meas_last_ < oldest_command))
       use = MeasurementUse::Stale;
   }
   report.measurement = use;
@@ -240,10 +355,37 @@ StepReport OnlineController::step(double t_now, const double* q, double t_meas, 
   const double t_law = late ? t_meas : t_now;
   const int k = std::clamp(static_cast<int>(std::floor((t_law - law.t0()) / law.period() + 1e-9)), 0, law.steps() - 1);
   law.trajectory().u_d(t_law, u_ff_.data());
-  if (use == MeasurementUse::Used) {
+  if (use == MeasurementUse::Used && !filter_) {
     law.trajectory().q_d(t_meas, q_d_.data(), &q_cursor_);
-    tracking_error(n, heading_, q, q_d_.data(), x_.data());
+    tracking_error(n, heading_, measurement, q_d_.data(), x_.data());
     t_x_ = t_meas;
+  } else if (use == MeasurementUse::Used) {
+    // The estimator to t_meas with the measurement held before, from the last measurement's
+    // estimate when t_meas is earlier than the estimate's time; then this measurement is held.
+    if (t_meas < t_x_) {
+      x_ = x_anchor_;
+      Sigma_ = Sigma_anchor_;
+      t_x_ = t_meas_last_;
+      have_y_ = have_y_anchor_;
+      y_ = y_anchor_;
+      y_until_ = y_until_anchor_;
+    }
+    predict_to(t_meas);
+    // The measured error y_e = y - C q_d(t_meas) is held: the error changes slowly where the
+    // vehicle's position does not (a held position would lag the moving vehicle).
+    law.trajectory().q_d(t_meas, q_d_.data(), &q_cursor_);
+    for (int i = 0; i < p_; ++i) y_[i] = measurement[i];
+    y_.noalias() -= C_ * q_d_;
+    if (heading_row_ >= 0) y_[heading_row_] = wrap_angle(y_[heading_row_]);
+    have_y_ = true;
+    y_until_ = t_meas + hold_;
+    x_anchor_ = x_;
+    Sigma_anchor_ = Sigma_;
+    y_anchor_ = y_;
+    have_y_anchor_ = true;
+    y_until_anchor_ = y_until_;
+  }
+  if (use == MeasurementUse::Used) {
     t_meas_last_ = t_meas;
     ++counts_.used;
   } else {
@@ -253,6 +395,13 @@ StepReport OnlineController::step(double t_now, const double* q, double t_meas, 
   predict_to(t_now);
   if (!late) u_.noalias() = -law.gain(k) * x_;
   u_ += u_ff_;
+  if (filter_) {
+    const double gamma2 = law.gamma() * law.gamma();
+    report.rho_sigma_z = coupling(t_now);
+    report.coupling_violated = !(report.rho_sigma_z < gamma2);
+    counts_.coupling_violated += report.coupling_violated;
+    if (std::isfinite(gamma2)) counts_.largest_rho = std::max(counts_.largest_rho, report.rho_sigma_z / gamma2);
+  }
 
   // The limits: the rate from the command held, then the bounds.
   const ActuatorLimits& limits = options_.limits;

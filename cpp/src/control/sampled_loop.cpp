@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "hinf/control/output_feedback.hpp"
 #include "hinf/core/angles.hpp"
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
@@ -16,6 +17,7 @@ namespace hinf {
 void SampledLoopOptions::validate(double period) const {
   require(std::isfinite(delay) && delay >= 0.0 && delay <= period * (1.0 + 1e-12),
           "the computation delay must be in [0, T] = [0, ", period, "] s, got ", delay);
+  require(std::isfinite(sigma) && sigma >= 0.0, "the noise's standard deviation sigma must be >= 0, got ", sigma);
   simulation.validate();
 }
 
@@ -34,14 +36,32 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
           "' has ", nw);
   const double T = controller.law().period();
   options.validate(T);
-  const SimulationOptions& simulation = options.simulation;
   const double t0 = trajectory.t0(), tf = trajectory.tf();
+  const bool output_feedback = controller.output_feedback();
+  Mat C;
+  if (output_feedback) {
+    C = model.C(t0);
+    const int p = controller.measurement_size();
+    require(C.rows() == p && C.cols() == n, "the plant '", model.name(), "' measures C of shape (", C.rows(), ", ",
+            C.cols(), "), the controller's filter expects (", p, ", ", n, ")");
+    const long samples = noise_sample_count(t0, tf, T);
+    if (options.sigma > 0.0 || options.noise.size() > 0)
+      require(options.noise.rows() == samples && options.noise.cols() == p, "the noise must have ", samples,
+              " rows (one per sample of ", T, " s) and ", p, " columns (one per measured output), got (",
+              options.noise.rows(), ", ", options.noise.cols(), ")");
+    check_finite(options.noise, "noise");
+  } else {
+    require(options.sigma == 0.0 && options.noise.size() == 0,
+            "measurement noise needs an output-feedback controller (a filter in its options): a state-feedback"
+            " controller measures the state itself");
+  }
+  const SimulationOptions& simulation = options.simulation;
   const std::vector<double> grid = run_grid(trajectory, simulation.output_dt, nw);
   const long count = static_cast<long>(grid.size());
   const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
-  controller.reset(t0, q0);
+  controller.reset(t0, output_feedback ? trajectory.q_d0() : q0);
   Vec u = controller.held_command(), w(nw);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
@@ -56,7 +76,7 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
   result.heading_index = heading;
   result.q.resize(count, n);
   result.u.resize(count, m);
-  Vec y = q0, measured(n);
+  Vec y = q0, measured(controller.measurement_size());
   double t = t0, measured_at = t0, apply_at = t0;
   bool pending = false;
   long sample = 0, next_out = 0;
@@ -71,7 +91,12 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
       pending = false;
     }
     if (sample_time(sample) < tf && due(sample_time(sample), t)) {
-      measured = y;
+      if (output_feedback) {
+        measured.noalias() = C * y;
+        if (options.sigma > 0.0) measured += options.sigma * options.noise.row(sample).transpose();
+      } else {
+        measured = y;
+      }
       measured_at = sample_time(sample);
       ++sample;
       if (options.delay == 0.0) {

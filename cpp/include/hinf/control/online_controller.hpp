@@ -20,11 +20,36 @@
 // (without delay compensation, u_d(t_meas) - K q_e(t_meas) with the sample of t_meas),
 // limited: first the rate, |u - u_held| <= rate_max (t_now - t_held) per channel, then the bounds
 // u_min <= u <= u_max. The command returned is the one applied, and the one the prediction uses.
+//
+// Output feedback (OnlineOptions::filter with a weight N): the measurement is y = C q + noise
+// (p numbers, C the model's), and the controller runs the estimator (35) and the filter (36) of
+// output_feedback.hpp along the desired trajectory:
+//     dq_hat/dt = A_e q_hat + B_e (u - u_d) + gamma^-2 D_e D_e' Z q_hat
+//                 + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat),
+//     dSigma/dt = A_e Sigma + Sigma A_e' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D_e D_e',
+// with A_e, B_e, D_e and Z (the design's Z(t_k), or M_k of the digital design) interpolated
+// linearly between samples: the estimator's drift is the linearization, A(q_hat) q_hat + alpha
+// of (35) less its second-order remainder, so that a step needs nothing of the model but its
+// tables. A measurement y taken at t_meas enters as the measured error y_e = y - C q_d(t_meas)
+// (the heading's component, and the innovation's, wrapped), held from t_meas for `hold` seconds
+// (the sensor's period) and until a newer one is used (the error changes slowly where the
+// vehicle's position does not, so holding it costs little);
+// outside that the innovation terms are off (prediction: the estimator runs open loop and Sigma
+// grows). A measurement that arrives late (t_meas earlier than the last call) is used from its
+// own time: the estimate is integrated again from the last measurement's time, where it is kept.
+// Then u = u_d(t_now) - K_k q_hat(t_now) as above. The coupling condition rho(Sigma Z) < gamma^2
+// is evaluated at every step (StepReport::rho_sigma_z); where it fails the estimator's gain is
+// singular: the step is still computed, flagged, and counted.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 
 #include "hinf/control/discrete_design.hpp"
 #include "hinf/control/riccati.hpp"
@@ -34,7 +59,8 @@
 namespace hinf {
 
 // The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
-// linearization A_e(t_k), B_e(t_k) (k = 0 .. steps()) for the prediction. Immutable.
+// linearization A_e(t_k), B_e(t_k), D_e(t_k) D_e(t_k)' and the game's value matrix Z_k (k = 0 .. steps())
+// for the prediction and the estimator. Immutable.
 class SampledLaw {
  public:
   // The continuous design emulated: K_k = kappa(t_k) B_e(t_k)' Z(t_k), held over each sample of
@@ -66,15 +92,20 @@ class SampledLaw {
   const Mat& gain(int k) const { return K_[static_cast<std::size_t>(k)]; }
   const Mat& A(int k) const { return A_[static_cast<std::size_t>(k)]; }
   const Mat& B(int k) const { return B_[static_cast<std::size_t>(k)]; }
+  // D_e(t_k) D_e(t_k)' (n x n) and Z_k (n x n: Z(t_k) of the continuous design, M_k of the
+  // digital one), k = 0 .. steps(); unchecked indices.
+  const Mat& DDt(int k) const { return DDt_[static_cast<std::size_t>(k)]; }
+  const Mat& Z(int k) const { return Z_[static_cast<std::size_t>(k)]; }
 
-  // The tables; use emulated() or digital().
-  SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K);
+  // The tables (K: steps() gains; Z: steps() + 1 matrices); use emulated() or digital().
+  SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K,
+             std::vector<Mat> Z);
 
  private:
   TrajectoryPtr trajectory_;
   std::string kind_;
   double gamma_, period_;
-  std::vector<Mat> K_, A_, B_;
+  std::vector<Mat> K_, A_, B_, DDt_, Z_;
 };
 
 using SampledLawPtr = std::shared_ptr<const SampledLaw>;
@@ -88,8 +119,25 @@ struct ActuatorLimits {
   void validate(int m) const;
 };
 
+// The filter of an output-feedback controller (see the top of this file). An empty N: state
+// feedback (step() takes the full state).
+struct OnlineFilter {
+  Mat N;              // p x p, symmetric positive definite: the weight of the measurement noise
+                      // in (36); for noise of standard deviation sigma per sample held over the
+                      // sensor's period T_s, the continuous filter's intensity sigma^2 T_s
+  Mat Sigma0;         // n x n, symmetric positive definite: Sigma at reset(), (Q0 - eta I)^-1
+  Mat Q;              // n x n, symmetric positive semidefinite: the performance weight in (36)
+  double hold = 0.0;  // s: how long a measurement stays in the innovation after its time
+                      // (the sensor's period); 0: the law's period
+  bool enabled() const { return N.size() > 0; }
+  // InputError naming the matrix, for shapes (p measured outputs, n states) or values that do
+  // not fit.
+  void validate(int n, int p) const;
+};
+
 // The choices of an online controller.
 struct OnlineOptions {
+  OnlineFilter filter;           // output feedback (empty N: state feedback)
   ActuatorLimits limits;         // bounds and rate limits of the command
   double max_age = 1e300;        // s: a measurement older than this at t_now is stale (not used)
   bool compensate_delay = true;  // predict a measurement from t_meas to t_now (false: the command
@@ -97,7 +145,7 @@ struct OnlineOptions {
                                  // computed then and applied late)
   int history = 64;              // applied commands remembered (>= 2): a measurement older than
                                  // the oldest is stale
-  void validate(int m) const;    // InputError naming the option
+  void validate(int n, int m, int p) const;  // InputError naming the option (p: measured outputs)
 };
 
 // What step() did.
@@ -145,6 +193,10 @@ struct StepReport {
   MeasurementUse measurement = MeasurementUse::Missing;  // what became of the measurement
   bool saturated = false;     // a bound of u_min / u_max was active
   bool rate_limited = false;  // the rate limit was active
+  double rho_sigma_z = NAN;   // output feedback: rho(Sigma Z) at t_now, against gamma^2 (NaN: state
+                              // feedback)
+  bool coupling_violated = false;  // output feedback: rho(Sigma Z) >= gamma^2 (the estimator's
+                                   // gain is singular)
 };
 
 // Counts since reset().
@@ -157,12 +209,15 @@ struct OnlineCounts {
   long saturated = 0;     // commands with a bound active
   long rate_limited = 0;  // commands with the rate limit active
   double largest_command = 0.0;  // max |u_i| over the commands computed
+  long coupling_violated = 0;    // output feedback: steps with rho(Sigma Z) >= gamma^2
+  double largest_rho = 0.0;      // output feedback: max rho(Sigma Z) / gamma^2 over the steps
 };
 
-// The state-feedback controller of one vehicle (see the top of this file).
+// The controller of one vehicle, state or output feedback (see the top of this file).
 class OnlineController {
  public:
-  // InputError for a null law or bad options. Takes all the memory step() uses.
+  // InputError for a null law or bad options (a filter whose shapes do not fit the model's
+  // measurement). Takes all the memory step() uses.
   OnlineController(SampledLawPtr law, const OnlineOptions& options = {});
 
   // The law and the options it was made with.
@@ -171,30 +226,44 @@ class OnlineController {
   // The number of states n (of q) and of inputs m (of u).
   int n() const { return law_->n(); }
   int m() const { return law_->m(); }
+  // Output feedback (a filter in the options)?
+  bool output_feedback() const { return filter_; }
+  // The numbers step() takes: n (the state) or p (the measurement y = C q).
+  int measurement_size() const { return filter_ ? p_ : n(); }
 
-  // Starts at time t (in [t0, t_end)) from the full state q (n): the estimate is q - q_d(t) and
-  // the command held is u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q
-  // or u_held (reset() may allocate and throw; step() does neither).
+  // Starts at time t (in [t0, t_end)) from the state q (n; with output feedback the initial
+  // estimate of the state, and Sigma = Sigma0): the estimate is q - q_d(t) and the command held is
+  // u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q or u_held (reset() may
+  // allocate and throw; step() does neither).
   void reset(double t, const ConstVecRef& q, const ConstVecRef& u_held = Vec());
 
-  // One sample: the measurement q (n numbers, or null: none) taken at t_meas, the command for
-  // t_now into u (m numbers). Never throws, never allocates.
-  StepReport step(double t_now, const double* q, double t_meas, double* u) noexcept;
+  // One sample: the measurement (measurement_size() numbers: q, or y with output feedback; null:
+  // none) taken at t_meas, the command for t_now into u (m numbers). Never throws, never
+  // allocates.
+  StepReport step(double t_now, const double* measurement, double t_meas, double* u) noexcept;
 
   // The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
   const Vec& estimate() const { return x_; }
   double estimate_time() const { return t_x_; }
+  // The filter's Sigma at estimate_time() (n x n; empty for state feedback).
+  const Mat& sigma() const { return Sigma_; }
   const Vec& held_command() const { return u_held_; }
   double held_time() const { return t_held_; }
   // The counts since reset().
   const OnlineCounts& counts() const { return counts_; }
 
  private:
-  // The estimate x_ predicted from t_x_ to t along the linearization with the applied commands.
+  // The estimate (x_, and Sigma_ with output feedback) predicted from t_x_ to t along the
+  // linearization with the applied commands (and the measurement held, while it is).
   void predict_to(double t) noexcept;
-  // dx = A_e(t) x + B_e(t) (u - u_d(t)), A_e and B_e interpolated between samples (into A_t_, B_t_),
-  // u the command of history entry `entry`.
-  void derivative(double t, const Vec& x, int entry, Vec& dx) noexcept;
+  // A_e, B_e (and D_e D_e', Z) interpolated between samples at t, into A_t_, B_t_ (DDt_t_, Z_t_);
+  // nothing when they are already those of t.
+  void interpolate(double t) noexcept;
+  // dx = A_e(t) x + B_e(t) (u - u_d(t)), u the command of history entry `entry`; with output
+  // feedback also the terms of (35) and dSigma of (36) (the innovation's with `innovate`).
+  void derivative(double t, const Vec& x, const Mat& Sigma, int entry, bool innovate, Vec& dx, Mat& dSigma) noexcept;
+  // rho(Sigma_ Z(t)) (+inf when Sigma_ is not positive definite).
+  double coupling(double t) noexcept;
   // The history entry whose command is applied at t (the latest entry with time <= t).
   int entry_at(double t) const noexcept;
   void remember(double t, const Vec& u) noexcept;
@@ -215,6 +284,27 @@ class OnlineController {
   int history_start_ = 0, history_size_ = 0;
   std::size_t q_cursor_ = 0;
   OnlineCounts counts_;
+
+  // Output feedback.
+  bool filter_ = false;
+  int p_ = 0, heading_row_ = -1;  // measured outputs; the row of C that measures the heading
+  double inv_gamma2_ = 0.0, hold_ = 0.0;
+  Mat C_, CtNinv_;
+  Mat Sigma_, S1_, S2_, S3_, S4_, S_stage_, DDt_t_, Z_t_, NN_, gain_lhs_, L_;
+  Mat S_innovate_, S_predict_;  // gamma^-2 Q - C' N^-1 C, gamma^-2 Q: the quadratic term of (36)
+  double interpolated_at_ = NAN;  // the t of A_t_, B_t_, DDt_t_, Z_t_
+  Vec y_, innovation_, r_, n_tmp_;
+  bool have_y_ = false;       // a measurement is held in the innovation ...
+  double y_until_ = 0.0;      // ... until this time
+  // The estimate at the last measurement used (its time t_meas_last_), and the measurement then,
+  // for a later measurement with an earlier time.
+  Vec x_anchor_, y_anchor_;
+  Mat Sigma_anchor_;
+  bool have_y_anchor_ = false;
+  double y_until_anchor_ = 0.0;
+  Eigen::PartialPivLU<Mat> lu_;
+  Eigen::LLT<Mat> llt_;
+  Eigen::SelfAdjointEigenSolver<Mat> eigen_;
 };
 
 }  // namespace hinf

@@ -9,6 +9,11 @@
 // applied; a run that leaves the neighbourhood of the desired trajectory stops as Diverged.
 // Past the law's last sample (t_end <= tf) the controller answers PastHorizon and the last
 // command stays held; controller.counts() tells.
+// An output-feedback controller (OnlineController::output_feedback()) is handed the measurement
+// y_k = C q(t_k) + sigma v_k instead (C the plant's, v_k row k of the noise: standard normal
+// samples, one per sample and measured output, as noise_sample_count and
+// standard_normal_samples of output_feedback.hpp give them for the law's period), and starts
+// from the estimate q_hat(t0) = 0 (the state q_d(t0)), as the paper's estimator.
 #pragma once
 
 #include "hinf/control/disturbance.hpp"
@@ -22,6 +27,9 @@ struct SampledLoopOptions {
   double delay = 0.0;             // s, in [0, T]: the command computed from the measurement of
                                   // t_k is applied from t_k + delay (T: one sample late)
   SimulationOptions simulation;   // output grid, divergence bound, tolerances (method: erk always)
+  double sigma = 0.0;             // output feedback: the noise's standard deviation per sample
+  RowMat noise;                   // output feedback: v, one row per sample, one column per output
+                                  // (empty when sigma = 0)
   void validate(double period) const;  // InputError naming the option
 };
 
