@@ -128,7 +128,7 @@ struct Fields<OnlineCounts> {
   static constexpr auto list = std::make_tuple(
       field("steps", &OnlineCounts::steps), field("used", &OnlineCounts::used),
       field("predicted", &OnlineCounts::predicted), field("refused", &OnlineCounts::refused),
-      field("past_horizon", &OnlineCounts::past_horizon), field("saturated", &OnlineCounts::saturated),
+      field("past_horizon", &OnlineCounts::past_horizon), field("lost", &OnlineCounts::lost), field("saturated", &OnlineCounts::saturated),
       field("rate_limited", &OnlineCounts::rate_limited), field("largest_command", &OnlineCounts::largest_command),
       field("coupling_violated", &OnlineCounts::coupling_violated), field("largest_rho", &OnlineCounts::largest_rho));
 };

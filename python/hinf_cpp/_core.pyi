@@ -4151,6 +4151,11 @@ class StepStatus:
         new design to continue
     not_reset
         step() before reset(): u is left as it is
+    lost
+        the estimate is not finite (output feedback: the filter's Sigma escaped, as the
+        H-infinity filter's does in a long enough time without measurements, or the
+        estimator's gain became singular at a coupling violation): u is the command held,
+        and every step answers Lost until reset()
     
     Examples
     --------
@@ -4158,6 +4163,7 @@ class StepStatus:
     <StepStatus.refused: 1>
     """
     __members__: typing.ClassVar[dict[str, StepStatus]]
+    lost: typing.ClassVar[StepStatus]
     not_reset: typing.ClassVar[StepStatus]
     ok: typing.ClassVar[StepStatus]
     past_horizon: typing.ClassVar[StepStatus]
@@ -4353,6 +4359,8 @@ class OnlineCounts:
         StepStatus::Refused
     past_horizon : int
         StepStatus::PastHorizon
+    lost : int
+        StepStatus::Lost
     saturated : int
         commands with a bound active
     rate_limited : int
@@ -4376,7 +4384,7 @@ class OnlineCounts:
     (1, 1)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'saturated', 'rate_limited', 'largest_command', 'coupling_violated', 'largest_rho')
+    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'lost', 'saturated', 'rate_limited', 'largest_command', 'coupling_violated', 'largest_rho')
     def __eq__(self, arg0: OnlineCounts) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -4399,6 +4407,11 @@ class OnlineCounts:
     def largest_rho(self) -> float:
         """
         output feedback: max rho(Sigma Z) / gamma^2 over the steps
+        """
+    @property
+    def lost(self) -> int:
+        """
+        StepStatus::Lost
         """
     @property
     def past_horizon(self) -> int:

@@ -586,6 +586,34 @@ TEST(OutputFeedback, ALateMeasurementIsUsedFromItsOwnTime) {
   EXPECT_GT((without.estimate() - on_time.estimate()).norm(), 1e-3);
 }
 
+TEST(OutputFeedback, ALongOutageLosesTheEstimateAndSaysSo) {
+  // Without measurements the H-infinity filter's Sigma grows by Sigma gamma^-2 Q Sigma and escapes
+  // in finite time (here within 5 s): the controller says Lost and holds its last finite command
+  // instead of sending NaN, until reset().
+  const auto law = hinf::SampledLaw::emulated(paper().design, 0.05);
+  hinf::OnlineOptions options;
+  options.filter = paper_filter();
+  hinf::OnlineController controller(law, options);
+  controller.reset(0.0, paper_q0());
+  Vec u(2), y = paper_q0().tail(3);
+  bool violated = false;
+  double t = 0.0;
+  hinf::StepReport r;
+  for (int k = 1; k <= 200 && r.status != StepStatus::Lost; ++k) {
+    t = 0.05 * k;
+    r = controller.step(t, nullptr, t, u.data());
+    violated = violated || r.coupling_violated;
+  }
+  ASSERT_EQ(r.status, StepStatus::Lost) << "t = " << t;
+  EXPECT_TRUE(violated) << "the coupling condition fails before the estimate is lost";
+  EXPECT_TRUE(u.allFinite());
+  EXPECT_EQ(u, controller.held_command());
+  EXPECT_EQ(controller.step(t + 0.05, y.data(), t + 0.05, u.data()).status, StepStatus::Lost);
+  EXPECT_EQ(controller.counts().lost, 2);
+  controller.reset(t + 0.1, paper_q0());
+  EXPECT_EQ(controller.step(t + 0.15, y.data(), t + 0.15, u.data()).status, StepStatus::Ok);
+}
+
 TEST(OutputFeedback, BadFilterIsAnInputError) {
   const auto law = hinf::SampledLaw::emulated(paper().design, 0.1);
   auto with = [&](auto edit) {

@@ -7,6 +7,7 @@
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/core/resources.hpp"
+#include "control/online_estimator.hpp"
 
 namespace hinf {
 
@@ -128,24 +129,21 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
   history_t_.assign(static_cast<std::size_t>(options_.history), 0.0);
   history_u_.setZero(m, options_.history);
   if (!filter_) return;
-  const OnlineFilter& filter = options_.filter;
-  CtNinv_ = C_.transpose() * filter.N.inverse();
-  hold_ = filter.hold > 0.0 ? filter.hold : law_->period();
-  inv_gamma2_ = std::isinf(law_->gamma()) ? 0.0 : 1.0 / (law_->gamma() * law_->gamma());
-  S_predict_ = inv_gamma2_ * filter.Q;
-  S_innovate_ = S_predict_ - CtNinv_ * C_;
+  hold_ = options_.filter.hold > 0.0 ? options_.filter.hold : law_->period();
   // The measurement of the heading: the row of C that is the heading's unit row, if any; its
   // innovation is an angle (as in the batch loop, output_feedback.cpp).
   for (int row = 0; heading_ >= 0 && row < p_; ++row)
     if (C_(row, heading_) == 1.0 && C_.row(row).squaredNorm() == 1.0) heading_row_ = row;
-  for (Mat* M : {&Sigma_, &S1_, &S2_, &S3_, &S4_, &S_stage_, &DDt_t_, &Z_t_, &NN_, &gain_lhs_, &L_, &Sigma_anchor_})
-    M->setZero(n, n);
-  for (Vec* v : {&r_, &n_tmp_, &x_anchor_}) v->setZero(n);
-  for (Vec* v : {&y_, &innovation_, &y_anchor_}) v->setZero(p_);
-  lu_ = Eigen::PartialPivLU<Mat>(n);
-  llt_ = Eigen::LLT<Mat>(n);
-  eigen_ = Eigen::SelfAdjointEigenSolver<Mat>(n);
+  for (Mat* M : {&Sigma_, &Sigma_anchor_}) M->setZero(n, n);
+  x_anchor_.setZero(n);
+  for (Vec* v : {&y_, &y_anchor_}) v->setZero(p_);
+  u_entry_.setZero(m);
+  estimator_ = detail::make_online_estimator(*law_, options_.filter, C_, heading_row_);
 }
+
+OnlineController::~OnlineController() = default;
+OnlineController::OnlineController(OnlineController&&) noexcept = default;
+OnlineController& OnlineController::operator=(OnlineController&&) noexcept = default;
 
 void OnlineController::reset(double t, const ConstVecRef& q, const ConstVecRef& u_held) {
   require(std::isfinite(t) && t >= law_->t0() && t < law_->t_end(), "reset at t = ", t, " outside the law's samples [",
@@ -177,6 +175,7 @@ void OnlineController::reset(double t, const ConstVecRef& q, const ConstVecRef& 
   remember(t, u_held_);
   counts_ = OnlineCounts();
   reset_ = true;
+  lost_ = false;
 }
 
 void OnlineController::remember(double t, const Vec& u) noexcept {
@@ -209,64 +208,17 @@ int OnlineController::entry_at(double t) const noexcept {
   return history_start_;
 }
 
-void OnlineController::interpolate(double t) noexcept {
-  if (t == interpolated_at_) return;  // RK4 asks twice for the midpoint, and for each step's end
-  interpolated_at_ = t;
+void OnlineController::derivative(double t, const Vec& x, int entry, Vec& dx) noexcept {
   const SampledLaw& law = *law_;
   const double position = (t - law.t0()) / law.period();
   const int k = std::clamp(static_cast<int>(std::floor(position)), 0, law.steps() - 1);
   const double theta = std::clamp(position - k, 0.0, 1.0);
   A_t_ = (1.0 - theta) * law.A(k) + theta * law.A(k + 1);
   B_t_ = (1.0 - theta) * law.B(k) + theta * law.B(k + 1);
-  if (!filter_) return;
-  DDt_t_ = (1.0 - theta) * law.DDt(k) + theta * law.DDt(k + 1);
-  Z_t_ = (1.0 - theta) * law.Z(k) + theta * law.Z(k + 1);
-}
-
-void OnlineController::derivative(double t, const Vec& x, const Mat& Sigma, int entry, bool innovate, Vec& dx,
-                                  Mat& dSigma) noexcept {
-  interpolate(t);
-  law_->trajectory().u_d(t, u_d_.data());
+  law.trajectory().u_d(t, u_d_.data());
   ue_ = history_u_.col(entry) - u_d_;
   dx.noalias() = A_t_ * x;
   dx.noalias() += B_t_ * ue_;
-  if (!filter_) return;
-  // (35): + gamma^-2 D_e D_e' Z q_hat (the worst-case disturbance the design assumes) ...
-  n_tmp_.noalias() = Z_t_ * x;
-  dx.noalias() += inv_gamma2_ * (DDt_t_ * n_tmp_);
-  // (36): A Sigma + Sigma A' + D D' + Sigma (gamma^-2 Q - C' N^-1 C) Sigma.
-  // (Products of small matrices: lazyProduct, Eigen's coefficient loop, without the size dispatch
-  // of its general product.)
-  NN_.noalias() = A_t_.lazyProduct(Sigma);
-  dSigma = NN_;
-  dSigma.noalias() += NN_.transpose();
-  dSigma += DDt_t_;
-  NN_.noalias() = (innovate ? S_innovate_ : S_predict_).lazyProduct(Sigma);
-  dSigma.noalias() += Sigma.lazyProduct(NN_);
-  if (!innovate) return;
-  // ... + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat), y_e the measured error held.
-  innovation_ = y_;
-  innovation_.noalias() -= C_ * x;
-  if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
-  n_tmp_.noalias() = CtNinv_ * innovation_;
-  r_.noalias() = Sigma * n_tmp_;
-  gain_lhs_.setIdentity();
-  gain_lhs_.noalias() -= inv_gamma2_ * Sigma.lazyProduct(Z_t_);
-  lu_.compute(gain_lhs_);
-  n_tmp_ = lu_.solve(r_);
-  dx += n_tmp_;
-}
-
-double OnlineController::coupling(double t) noexcept {
-  interpolate(t);
-  // rho(Sigma Z) = the largest eigenvalue of L' Z L, Sigma = L L'.
-  llt_.compute(Sigma_);
-  if (llt_.info() != Eigen::Success) return INFINITY;
-  L_ = llt_.matrixL();
-  NN_.noalias() = Z_t_ * L_;
-  gain_lhs_.noalias() = L_.transpose() * NN_;
-  eigen_.compute(gain_lhs_, Eigen::EigenvaluesOnly);
-  return eigen_.eigenvalues()[eigen_.eigenvalues().size() - 1];
 }
 
 void OnlineController::predict_to(double t) noexcept {
@@ -282,26 +234,24 @@ void OnlineController::predict_to(double t) noexcept {
     const bool innovate = filter_ && have_y_ && s < y_until_;
     if (innovate) end = std::min(end, y_until_);
     const int substeps = std::max(1, static_cast<int>(std::ceil((end - s) / kMaxSubstep - 1e-9)));
+    if (filter_) {
+      u_entry_ = history_u_.col(entry);
+      estimator_->integrate(s, end, substeps, u_entry_, y_, innovate, x_, Sigma_);
+      s = end;
+      continue;
+    }
     const double h = (end - s) / substeps;
     for (int i = 0; i < substeps; ++i) {
       const double a = s + i * h, mid = a + 0.5 * h, b = i + 1 == substeps ? end : a + h;
       const double dt = b - a;
-      derivative(a, x_, Sigma_, entry, innovate, k1_, S1_);
+      derivative(a, x_, entry, k1_);
       x_stage_ = x_ + 0.5 * dt * k1_;
-      if (filter_) S_stage_ = Sigma_ + 0.5 * dt * S1_;
-      derivative(mid, x_stage_, S_stage_, entry, innovate, k2_, S2_);
+      derivative(mid, x_stage_, entry, k2_);
       x_stage_ = x_ + 0.5 * dt * k2_;
-      if (filter_) S_stage_ = Sigma_ + 0.5 * dt * S2_;
-      derivative(mid, x_stage_, S_stage_, entry, innovate, k3_, S3_);
+      derivative(mid, x_stage_, entry, k3_);
       x_stage_ = x_ + dt * k3_;
-      if (filter_) S_stage_ = Sigma_ + dt * S3_;
-      derivative(b, x_stage_, S_stage_, entry, innovate, k4_, S4_);
+      derivative(b, x_stage_, entry, k4_);
       x_ += (dt / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
-      if (filter_) {
-        Sigma_ += (dt / 6.0) * (S1_ + 2.0 * S2_ + 2.0 * S3_ + S4_);
-        S_stage_ = Sigma_.transpose();  // keeps Sigma symmetric against round-off
-        Sigma_ = 0.5 * (Sigma_ + S_stage_);
-      }
     }
     s = end;
   }
@@ -318,6 +268,10 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
     report.status = status;
     return report;
   };
+  if (lost_) {
+    ++counts_.lost;
+    return hold(StepStatus::Lost);
+  }
   if (!std::isfinite(t_now) || t_now < t_last_) {
     ++counts_.refused;
     return hold(StepStatus::Refused);
@@ -395,9 +349,14 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
   predict_to(t_now);
   if (!late) u_.noalias() = -law.gain(k) * x_;
   u_ += u_ff_;
+  if (!u_.allFinite() || (filter_ && !Sigma_.allFinite())) {
+    lost_ = true;
+    ++counts_.lost;
+    return hold(StepStatus::Lost);
+  }
   if (filter_) {
     const double gamma2 = law.gamma() * law.gamma();
-    report.rho_sigma_z = coupling(t_now);
+    report.rho_sigma_z = estimator_->coupling(t_now, Sigma_);
     report.coupling_violated = !(report.rho_sigma_z < gamma2);
     counts_.coupling_violated += report.coupling_violated;
     if (std::isfinite(gamma2)) counts_.largest_rho = std::max(counts_.largest_rho, report.rho_sigma_z / gamma2);

@@ -47,16 +47,16 @@
 #include <memory>
 #include <vector>
 
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
-
 #include "hinf/control/discrete_design.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/core/enum_names.hpp"
 #include "hinf/numerics/signal.hpp"
 
 namespace hinf {
+
+namespace detail {
+class OnlineEstimator;  // the output-feedback arithmetic (private: cpp/src/control/online_estimator.hpp)
+}
 
 // The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
 // linearization A_e(t_k), B_e(t_k), D_e(t_k) D_e(t_k)' and the game's value matrix Z_k (k = 0 .. steps())
@@ -155,15 +155,20 @@ enum class StepStatus {
                 // command held
   PastHorizon,  // t_now >= t_end, where the design ends: u is the command held; reset() with a
                 // new design to continue
-  NotReset      // step() before reset(): u is left as it is
+  NotReset,     // step() before reset(): u is left as it is
+  Lost          // the estimate is not finite (output feedback: the filter's Sigma escaped, as the
+                // H-infinity filter's does in a long enough time without measurements, or the
+                // estimator's gain became singular at a coupling violation): u is the command held,
+                // and every step answers Lost until reset()
 };
 template <>
 struct EnumNames<StepStatus> {
   static constexpr const char* what = "step status";
-  static constexpr std::array<std::pair<StepStatus, const char*>, 4> names{{{StepStatus::Ok, "ok"},
+  static constexpr std::array<std::pair<StepStatus, const char*>, 5> names{{{StepStatus::Ok, "ok"},
                                                                             {StepStatus::Refused, "refused"},
                                                                             {StepStatus::PastHorizon, "past_horizon"},
-                                                                            {StepStatus::NotReset, "not_reset"}}};
+                                                                            {StepStatus::NotReset, "not_reset"},
+                                                                            {StepStatus::Lost, "lost"}}};
 };
 
 // What became of the measurement given to step(). Anything but Used: the estimate was predicted.
@@ -206,6 +211,7 @@ struct OnlineCounts {
   long predicted = 0;     // commands computed without a measurement (MeasurementUse other than Used)
   long refused = 0;       // StepStatus::Refused
   long past_horizon = 0;  // StepStatus::PastHorizon
+  long lost = 0;          // StepStatus::Lost
   long saturated = 0;     // commands with a bound active
   long rate_limited = 0;  // commands with the rate limit active
   double largest_command = 0.0;  // max |u_i| over the commands computed
@@ -219,6 +225,9 @@ class OnlineController {
   // InputError for a null law or bad options (a filter whose shapes do not fit the model's
   // measurement). Takes all the memory step() uses.
   OnlineController(SampledLawPtr law, const OnlineOptions& options = {});
+  ~OnlineController();
+  OnlineController(OnlineController&&) noexcept;
+  OnlineController& operator=(OnlineController&&) noexcept;
 
   // The law and the options it was made with.
   const SampledLaw& law() const { return *law_; }
@@ -256,14 +265,9 @@ class OnlineController {
   // The estimate (x_, and Sigma_ with output feedback) predicted from t_x_ to t along the
   // linearization with the applied commands (and the measurement held, while it is).
   void predict_to(double t) noexcept;
-  // A_e, B_e (and D_e D_e', Z) interpolated between samples at t, into A_t_, B_t_ (DDt_t_, Z_t_);
-  // nothing when they are already those of t.
-  void interpolate(double t) noexcept;
-  // dx = A_e(t) x + B_e(t) (u - u_d(t)), u the command of history entry `entry`; with output
-  // feedback also the terms of (35) and dSigma of (36) (the innovation's with `innovate`).
-  void derivative(double t, const Vec& x, const Mat& Sigma, int entry, bool innovate, Vec& dx, Mat& dSigma) noexcept;
-  // rho(Sigma_ Z(t)) (+inf when Sigma_ is not positive definite).
-  double coupling(double t) noexcept;
+  // dx = A_e(t) x + B_e(t) (u - u_d(t)), A_e and B_e interpolated between samples (into A_t_, B_t_),
+  // u the command of history entry `entry` (state feedback).
+  void derivative(double t, const Vec& x, int entry, Vec& dx) noexcept;
   // The history entry whose command is applied at t (the latest entry with time <= t).
   int entry_at(double t) const noexcept;
   void remember(double t, const Vec& u) noexcept;
@@ -272,6 +276,7 @@ class OnlineController {
   OnlineOptions options_;
   int heading_;
   bool reset_ = false;
+  bool lost_ = false;  // the estimate is not finite: every step answers Lost until reset()
   double t_last_ = 0.0;       // the last call's t_now
   double t_meas_last_ = 0.0;  // the last measurement used
   double t_x_ = 0.0, t_held_ = 0.0;
@@ -288,12 +293,9 @@ class OnlineController {
   // Output feedback.
   bool filter_ = false;
   int p_ = 0, heading_row_ = -1;  // measured outputs; the row of C that measures the heading
-  double inv_gamma2_ = 0.0, hold_ = 0.0;
-  Mat C_, CtNinv_;
-  Mat Sigma_, S1_, S2_, S3_, S4_, S_stage_, DDt_t_, Z_t_, NN_, gain_lhs_, L_;
-  Mat S_innovate_, S_predict_;  // gamma^-2 Q - C' N^-1 C, gamma^-2 Q: the quadratic term of (36)
-  double interpolated_at_ = NAN;  // the t of A_t_, B_t_, DDt_t_, Z_t_
-  Vec y_, innovation_, r_, n_tmp_;
+  double hold_ = 0.0;
+  Mat C_, Sigma_;
+  Vec y_, u_entry_;           // the measured error y - C q_d(t_meas) held; a command of the history
   bool have_y_ = false;       // a measurement is held in the innovation ...
   double y_until_ = 0.0;      // ... until this time
   // The estimate at the last measurement used (its time t_meas_last_), and the measurement then,
@@ -302,9 +304,7 @@ class OnlineController {
   Mat Sigma_anchor_;
   bool have_y_anchor_ = false;
   double y_until_anchor_ = 0.0;
-  Eigen::PartialPivLU<Mat> lu_;
-  Eigen::LLT<Mat> llt_;
-  Eigen::SelfAdjointEigenSolver<Mat> eigen_;
+  std::unique_ptr<detail::OnlineEstimator> estimator_;
 };
 
 }  // namespace hinf

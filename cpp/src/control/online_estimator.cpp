@@ -1,0 +1,154 @@
+#include "control/online_estimator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include "hinf/core/angles.hpp"
+#include "numerics/size_dispatch.hpp"
+
+namespace hinf::detail {
+
+namespace {
+
+template <int N>
+class Estimator final : public OnlineEstimator {
+ public:
+  using MatN = Eigen::Matrix<double, N, N>;
+  using VecN = Eigen::Matrix<double, N, 1>;
+  using MatPN = Eigen::Matrix<double, Eigen::Dynamic, N>;  // p x n
+  using MatNP = Eigen::Matrix<double, N, Eigen::Dynamic>;  // n x p
+
+  Estimator(const SampledLaw& law, const OnlineFilter& filter, const Mat& C, int heading_row)
+      : law_(law), heading_row_(heading_row),
+        inv_gamma2_(std::isinf(law.gamma()) ? 0.0 : 1.0 / (law.gamma() * law.gamma())) {
+    const int n = law.n(), m = law.m();
+    C_ = C;
+    CtNinv_ = C.transpose() * filter.N.inverse();
+    S_predict_ = inv_gamma2_ * filter.Q;
+    S_innovate_ = S_predict_ - CtNinv_ * C_;
+    for (MatN* M : {&A_, &DDt_, &Z_, &NN_, &gain_lhs_, &L_, &Sigma_, &S1_, &S2_, &S3_, &S4_, &S_stage_}) M->setZero(n, n);
+    for (VecN* v : {&x_, &k1_, &k2_, &k3_, &k4_, &x_stage_, &n_tmp_, &r_}) v->setZero(n);
+    B_.setZero(n, m);
+    u_d_.setZero(m);
+    ue_.setZero(m);
+    innovation_.setZero(C.rows());
+    lu_ = Eigen::PartialPivLU<MatN>(n);
+    llt_ = Eigen::LLT<MatN>(n);
+    eigen_ = Eigen::SelfAdjointEigenSolver<MatN>(n);
+  }
+
+  void integrate(double s, double end, int substeps, const Vec& u, const Vec& y_e, bool innovate, Vec& x,
+                 Mat& Sigma) noexcept override {
+    x_ = x;
+    Sigma_ = Sigma;
+    const double h = (end - s) / substeps;
+    for (int i = 0; i < substeps; ++i) {
+      const double a = s + i * h, mid = a + 0.5 * h, b = i + 1 == substeps ? end : a + h;
+      const double dt = b - a;
+      derivative(a, x_, Sigma_, u, y_e, innovate, k1_, S1_);
+      x_stage_ = x_ + 0.5 * dt * k1_;
+      S_stage_ = Sigma_ + 0.5 * dt * S1_;
+      derivative(mid, x_stage_, S_stage_, u, y_e, innovate, k2_, S2_);
+      x_stage_ = x_ + 0.5 * dt * k2_;
+      S_stage_ = Sigma_ + 0.5 * dt * S2_;
+      derivative(mid, x_stage_, S_stage_, u, y_e, innovate, k3_, S3_);
+      x_stage_ = x_ + dt * k3_;
+      S_stage_ = Sigma_ + dt * S3_;
+      derivative(b, x_stage_, S_stage_, u, y_e, innovate, k4_, S4_);
+      x_ += (dt / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+      Sigma_ += (dt / 6.0) * (S1_ + 2.0 * S2_ + 2.0 * S3_ + S4_);
+      S_stage_ = Sigma_.transpose();  // keeps Sigma symmetric against round-off
+      Sigma_ = 0.5 * (Sigma_ + S_stage_);
+    }
+    x = x_;
+    Sigma = Sigma_;
+  }
+
+  double coupling(double t, const Mat& Sigma) noexcept override {
+    interpolate(t);
+    // rho(Sigma Z) = the largest eigenvalue of L' Z L, Sigma = L L'.
+    Sigma_ = Sigma;
+    llt_.compute(Sigma_);
+    if (llt_.info() != Eigen::Success) return INFINITY;
+    L_ = llt_.matrixL();
+    NN_.noalias() = Z_ * L_;
+    gain_lhs_.noalias() = L_.transpose() * NN_;
+    eigen_.compute(gain_lhs_, Eigen::EigenvaluesOnly);
+    return eigen_.eigenvalues()[eigen_.eigenvalues().size() - 1];
+  }
+
+ private:
+  // A_e, B_e, D_e D_e' and Z interpolated linearly between the samples around t; nothing when
+  // they are already those of t (RK4 asks twice for the midpoint, and for each step's end).
+  void interpolate(double t) noexcept {
+    if (t == interpolated_at_) return;
+    interpolated_at_ = t;
+    const double position = (t - law_.t0()) / law_.period();
+    const int k = std::clamp(static_cast<int>(std::floor(position)), 0, law_.steps() - 1);
+    const double theta = std::clamp(position - k, 0.0, 1.0);
+    A_ = (1.0 - theta) * law_.A(k) + theta * law_.A(k + 1);
+    B_ = (1.0 - theta) * law_.B(k) + theta * law_.B(k + 1);
+    DDt_ = (1.0 - theta) * law_.DDt(k) + theta * law_.DDt(k + 1);
+    Z_ = (1.0 - theta) * law_.Z(k) + theta * law_.Z(k + 1);
+  }
+
+  // (35) and (36) at t (see online_controller.hpp).
+  void derivative(double t, const VecN& x, const MatN& Sigma, const Vec& u, const Vec& y_e, bool innovate, VecN& dx,
+                  MatN& dSigma) noexcept {
+    interpolate(t);
+    law_.trajectory().u_d(t, u_d_.data());
+    ue_ = u - u_d_;
+    dx.noalias() = A_ * x;
+    dx.noalias() += B_ * ue_;
+    // + gamma^-2 D_e D_e' Z q_hat (the worst-case disturbance the design assumes)
+    n_tmp_.noalias() = Z_ * x;
+    dx.noalias() += inv_gamma2_ * (DDt_ * n_tmp_);
+    // dSigma = A Sigma + Sigma A' + D D' + Sigma (gamma^-2 Q - C' N^-1 C) Sigma
+    NN_.noalias() = A_ * Sigma;
+    dSigma = NN_ + NN_.transpose() + DDt_;
+    NN_.noalias() = (innovate ? S_innovate_ : S_predict_) * Sigma;
+    dSigma.noalias() += Sigma * NN_;
+    if (!innovate) return;
+    // + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat), the heading's component wrapped
+    innovation_ = y_e;
+    innovation_.noalias() -= C_ * x;
+    if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+    n_tmp_.noalias() = CtNinv_ * innovation_;
+    r_.noalias() = Sigma * n_tmp_;
+    gain_lhs_.setIdentity();
+    gain_lhs_.noalias() -= inv_gamma2_ * (Sigma * Z_);
+    lu_.compute(gain_lhs_);
+    n_tmp_ = lu_.solve(r_);
+    dx += n_tmp_;
+  }
+
+  const SampledLaw& law_;
+  int heading_row_;
+  double inv_gamma2_;
+  double interpolated_at_ = NAN;
+  MatPN C_;
+  MatNP CtNinv_;
+  MatN S_predict_, S_innovate_;  // gamma^-2 Q and gamma^-2 Q - C' N^-1 C
+  MatN A_, DDt_, Z_, NN_, gain_lhs_, L_, Sigma_, S1_, S2_, S3_, S4_, S_stage_;
+  Mat B_;
+  VecN x_, k1_, k2_, k3_, k4_, x_stage_, n_tmp_, r_;
+  Vec u_d_, ue_, innovation_;
+  Eigen::PartialPivLU<MatN> lu_;
+  Eigen::LLT<MatN> llt_;
+  Eigen::SelfAdjointEigenSolver<MatN> eigen_;
+};
+
+}  // namespace
+
+std::unique_ptr<OnlineEstimator> make_online_estimator(const SampledLaw& law, const OnlineFilter& filter, const Mat& C,
+                                                       int heading_row) {
+  return with_state_size(law.n(), [&](auto size) -> std::unique_ptr<OnlineEstimator> {
+    return std::make_unique<Estimator<decltype(size)::value>>(law, filter, C, heading_row);
+  });
+}
+
+}  // namespace hinf::detail
