@@ -6,7 +6,8 @@
 # seeds of Figure 2 per law, docs/studies.md) in studies/quick_monte_carlo/ (a few seconds; the
 # full shipped studies take minutes: scripts/run_studies.sh), and the sampled-data loops of
 # examples/online_loop.py (the online controller at 20 and 5 Hz, emulated and digital design, a
-# one-sample delay) in online_loop.txt (a few seconds).
+# one-sample delay) in online_loop.txt, and Figure 2 on a 20 Hz vehicle computer
+# (scenarios/paper_fig2_sampled.toml: delay, actuator limits) in sampled/ (a few seconds).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -19,3 +20,5 @@ OUT="${1:-out/paper}"
 # Written beside, then renamed: an interrupted run leaves the previous file whole.
 .venv/bin/python examples/online_loop.py >"$OUT/online_loop.txt.partial"
 mv "$OUT/online_loop.txt.partial" "$OUT/online_loop.txt"
+.venv/bin/hinf-cpp run scenarios/paper_fig2_sampled.toml --json "$OUT/sampled/paper_fig2_sampled.json" \
+  --csv "$OUT/sampled/paper_fig2_sampled.csv" --plot "$OUT/sampled/paper_fig2_sampled.png"

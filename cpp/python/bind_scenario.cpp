@@ -45,6 +45,24 @@ Examples
 >>> measurement.sigma, measurement.sample_period, measurement.filter_A
 (0.5, 0.01, <FilterLinearization.estimate: 0>))");
 
+  bind_enum<SampledDesign>(m, "SampledDesign", R"(Examples
+--------
+>>> hc.SamplingSpec(period=0.05, design="digital").design
+<SampledDesign.digital: 1>)");
+  bind_options<SamplingSpec>(m, "SamplingSpec", {"SamplingSpec"}, {}, R"(Notes
+-----
+The values are checked with the scenario (Scenario.validate()); docs/scenarios.md has the
+[sampling] table.
+
+Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.sampling = hc.SamplingSpec(period=0.1, delay=0.02)
+>>> scenario.tf = 10.0
+>>> result = hc.run_scenario(scenario)
+>>> result.online.steps, result.online.saturated
+(100, 0))");
+
   const std::string scenario_fields = members_section(
       "Scenario", "Attributes",
       {{"name", "str"}, {"description", "str"}, {"model", "Model"}, {"plant", "Model or None"},
@@ -54,7 +72,7 @@ Examples
        {"law", "Law (set: also its name)"}, {"cascade", "CascadeGains"},
        {"disturbance", "VectorSignal (set: also a callable, a list of Signal or float, or None)"},
        {"worst_case", "bool"}, {"initial_q0", "ndarray, shape (n,)"}, {"measurement", "MeasurementSpec or None"},
-       {"solver", "SolverOptions"}, {"output_dt", "float"}, {"divergence_factor", "float"}});
+       {"sampling", "SamplingSpec or None"}, {"solver", "SolverOptions"}, {"output_dt", "float"}, {"divergence_factor", "float"}});
   const auto member = [](const char* name) { return std::string(contract(str_cat("Scenario::", name))); };
   py::class_<Scenario>(m, "Scenario", doc({"Scenario", "scenario/scenario.hpp"}, scenario_fields + R"(
 
@@ -105,6 +123,7 @@ Examples
       .def_readwrite("worst_case", &Scenario::worst_case, member("worst_case").c_str())
       .def_readwrite("initial_q0", &Scenario::initial_q0, member("initial_q0").c_str())
       .def_readwrite("measurement", &Scenario::measurement, member("measurement").c_str())
+      .def_readwrite("sampling", &Scenario::sampling, member("sampling").c_str())
       .def_readwrite("solver", &Scenario::solver, member("solver").c_str())
       .def_readwrite("output_dt", &Scenario::output_dt, member("output_dt").c_str())
       .def_readwrite("divergence_factor", &Scenario::divergence_factor, member("divergence_factor").c_str())
@@ -125,7 +144,8 @@ True)", /*repr=*/true);
 
   bind_result<RunResult>(m, "RunResult", {"RunResult"},
                          {{"Z0", "ndarray, shape (n, n)"}, {"plant", "Model or None"},
-                          {"solution", "RiccatiSolution or None"}},
+                          {"solution", "RiccatiSolution or None"}, {"sampling", "SamplingSpec or None"},
+                          {"online", "OnlineCounts or None"}},
                          R"(Notes
 -----
 gamma_star may be set (a float or None), as for the results file; the other attributes are

@@ -55,7 +55,10 @@ enum class RunStatus;             // control/simulation.hpp
 enum class FilterLinearization;   // control/output_feedback.hpp
 enum class CouplingPolicy;        // control/output_feedback.hpp
 enum class GammaCondition;        // control/analysis.hpp
+enum class StepStatus;            // control/online_controller.hpp
+enum class MeasurementUse;        // control/online_controller.hpp
 enum class Law;                   // scenario/scenario.hpp
+enum class SampledDesign;         // scenario/scenario.hpp
 enum class RunOutcome;            // scenario/study.hpp
 }  // namespace hinf
 
@@ -93,7 +96,10 @@ HINF_ENUM_CASTER(RunStatus);
 HINF_ENUM_CASTER(FilterLinearization);
 HINF_ENUM_CASTER(CouplingPolicy);
 HINF_ENUM_CASTER(GammaCondition);
+HINF_ENUM_CASTER(StepStatus);
+HINF_ENUM_CASTER(MeasurementUse);
 HINF_ENUM_CASTER(Law);
+HINF_ENUM_CASTER(SampledDesign);
 HINF_ENUM_CASTER(RunOutcome);
 #undef HINF_ENUM_CASTER
 

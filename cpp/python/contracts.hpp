@@ -461,6 +461,7 @@ allocates.)contract"},
     {"OnlineController::y_until_", R"contract(... until this time)contract"},
     {"OnlineCounts", R"contract(Counts since reset().)contract"},
     {"OnlineCounts::coupling_violated", R"contract(output feedback: steps with rho(Sigma Z) >= gamma^2)contract"},
+    {"OnlineCounts::coupling_violation_t", R"contract(output feedback: the t_now of the first such step)contract"},
     {"OnlineCounts::largest_command", R"contract(max |u_i| over the commands computed)contract"},
     {"OnlineCounts::largest_rho", R"contract(output feedback: max rho(Sigma Z) / gamma^2 over the steps)contract"},
     {"OnlineCounts::lost", R"contract(StepStatus::Lost)contract"},
@@ -561,8 +562,10 @@ acceleration (the slightly non-minimum-phase effect).)contract"},
 the results file (scenario_gamma_star))contract"},
     {"RunResult::law", R"contract(the scenario's law)contract"},
     {"RunResult::metrics", R"contract(of the closed loop (metrics.hpp))contract"},
+    {"RunResult::online", R"contract(with [sampling]: what the online controller's steps did)contract"},
     {"RunResult::output_feedback", R"contract(true with [measurement])contract"},
     {"RunResult::plant", R"contract(the scenario's plant; null when the closed loop integrated the design model)contract"},
+    {"RunResult::sampling", R"contract(the scenario's [sampling])contract"},
     {"RunResult::scenario_name", R"contract(the scenario's name)contract"},
     {"RunResult::simulation", R"contract(the closed loop's time series)contract"},
     {"RunResult::solution", R"contract(the law's design; null only for the cascade law with state
@@ -573,6 +576,9 @@ feedback when no design exists at gamma (gamma <= gamma*))contract"},
     {"RunStatus::completed", R"contract(integrated over the whole horizon)contract"},
     {"RunStatus::diverged", R"contract(stopped when the tracking error exceeded the divergence bound (see above):
 divergence_factor times the problem's scale)contract"},
+    {"SampledDesign", R"contract(Which design a sampled loop runs ([sampling] design).)contract"},
+    {"SampledDesign::digital", R"contract(the discrete game at the period (SampledLaw::digital, solve_discrete_game))contract"},
+    {"SampledDesign::emulated", R"contract(the continuous design held over each sample (SampledLaw::emulated))contract"},
     {"SampledLaw", R"contract(The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
 linearization A_e(t_k), B_e(t_k), D_e(t_k) D_e(t_k)' and the game's value matrix Z_k (k = 0 .. steps())
 for the prediction and the estimator. Immutable.)contract"},
@@ -607,10 +613,22 @@ not finite and > 0, or longer than the horizon.)contract"},
     {"SampledLoopOptions", R"contract(The choices of the sampled loop.)contract"},
     {"SampledLoopOptions::delay", R"contract(s, in [0, T]: the command computed from the measurement of
 t_k is applied from t_k + delay (T: one sample late))contract"},
+    {"SampledLoopOptions::measurement_every", R"contract(the sensor is read at every this many-th sample (k = 0, e,
+2e, ...); the other samples are steps without a measurement)contract"},
     {"SampledLoopOptions::noise", R"contract(output feedback: v, one row per sample, one column per output
 (empty when sigma = 0))contract"},
     {"SampledLoopOptions::sigma", R"contract(output feedback: the noise's standard deviation per sample)contract"},
     {"SampledLoopOptions::simulation", R"contract(output grid, divergence bound, tolerances (method: erk always))contract"},
+    {"SamplingSpec", R"contract([sampling]: the closed loop as on a vehicle (sampled_loop.hpp): the online controller called
+every `period`, its command held, with a computation delay and actuator limits.)contract"},
+    {"SamplingSpec::compensate_delay", R"contract(predict the measurement over the delay)contract"},
+    {"SamplingSpec::delay", R"contract(s, in [0, T]: the command is applied this late)contract"},
+    {"SamplingSpec::design", R"contract(the law it runs)contract"},
+    {"SamplingSpec::limits", R"contract(u_min, u_max, rate_max (empty: none))contract"},
+    {"SamplingSpec::max_age", R"contract(s: an older measurement is stale)contract"},
+    {"SamplingSpec::measurement_every", R"contract(The sensor's period in samples of T (>= 1).)contract"},
+    {"SamplingSpec::measurement_period", R"contract(s: the sensor's period, a multiple of T (0: T))contract"},
+    {"SamplingSpec::period", R"contract(s: the controller's period T, > 0)contract"},
     {"Scenario", R"contract(A scenario: the model, the horizon, the desired trajectory, the law and its design, the
 disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
 empty take the defaults that resolved() fills in.)contract"},
@@ -635,6 +653,8 @@ when it differs from the design model; null: the design model.
 Same structure as the model (check_plant).)contract"},
     {"Scenario::resolved", R"contract(A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I (a 1 x 1
 N is that many times I), Q0 = 2 I).)contract"},
+    {"Scenario::sampling", R"contract(a sampled loop through the online controller;
+none: the continuous loop)contract"},
     {"Scenario::simulation_options", R"contract(output_dt, divergence_factor and solver, for the closed loop.)contract"},
     {"Scenario::solver", R"contract(every integration: the Riccati equations and the closed loop)contract"},
     {"Scenario::t0", R"contract([horizon] t0 (s))contract"},
@@ -1458,7 +1478,9 @@ rethrown to the caller of run_scenarios.)contract"},
     {"scenario_gamma_star", R"contract(gamma* (eq. 14) of the scenario's state-feedback design (trajectory, Q, Qf, horizon; also
 for a scenario with [measurement]). options.solver is replaced by the scenario's [solver].)contract"},
     {"scenario_gamma_star_output_feedback", R"contract(The smallest gamma of the scenario's output-feedback design (needs [measurement]).)contract"},
-    {"scenario_noise", R"contract(The standard normal noise samples of a scenario with [measurement] (from its seed).)contract"},
+    {"scenario_noise", R"contract(The standard normal noise samples of a scenario with [measurement] (from its seed): one row
+per hold interval of [measurement] sample_period, or with [sampling] one per sample of its
+period (a measurement's noise is that of its sample).)contract"},
     {"scenario_toml", R"contract(The inverse of parse_scenario_toml: the scenario as a scenario file that reads back to an
 equal scenario (numbers written exactly). A model or signal that has no file form (a model
 or a signal implemented in Python) is an InputError naming it.)contract"},

@@ -130,7 +130,8 @@ struct Fields<OnlineCounts> {
       field("predicted", &OnlineCounts::predicted), field("refused", &OnlineCounts::refused),
       field("past_horizon", &OnlineCounts::past_horizon), field("lost", &OnlineCounts::lost), field("saturated", &OnlineCounts::saturated),
       field("rate_limited", &OnlineCounts::rate_limited), field("largest_command", &OnlineCounts::largest_command),
-      field("coupling_violated", &OnlineCounts::coupling_violated), field("largest_rho", &OnlineCounts::largest_rho));
+      field("coupling_violated", &OnlineCounts::coupling_violated),
+      field("coupling_violation_t", &OnlineCounts::coupling_violation_t), field("largest_rho", &OnlineCounts::largest_rho));
 };
 template <>
 struct Fields<SolverOptions> {
@@ -180,6 +181,14 @@ struct Fields<MeasurementSpec> {
       field("seed", &MeasurementSpec::seed), field("N", &MeasurementSpec::N), field("Q0", &MeasurementSpec::Q0),
       field("eta", &MeasurementSpec::eta), field("filter_A", &MeasurementSpec::filter_A),
       field("on_coupling_violation", &MeasurementSpec::on_coupling_violation));
+};
+template <>
+struct Fields<SamplingSpec> {
+  static constexpr auto list = std::make_tuple(
+      field("period", &SamplingSpec::period), field("design", &SamplingSpec::design),
+      field("delay", &SamplingSpec::delay), field("compensate_delay", &SamplingSpec::compensate_delay),
+      field("limits", &SamplingSpec::limits), field("max_age", &SamplingSpec::max_age),
+      field("measurement_period", &SamplingSpec::measurement_period));
 };
 template <>
 struct Fields<StepStats> {
@@ -252,6 +261,7 @@ struct Fields<RunResult> {
       field("Z0", &RunResult::Z0), field("Z_min_eig", &RunResult::Z_min_eig),
       field("Z_max_eig", &RunResult::Z_max_eig, "Z_min_eig"),
       field("gamma_star", &RunResult::gamma_star), field("simulation", &RunResult::simulation),
+      field("sampling", &RunResult::sampling), field("online", &RunResult::online),
       field("metrics", &RunResult::metrics), field("timing", &RunResult::timing));
 };
 template <>

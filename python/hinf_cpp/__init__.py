@@ -93,9 +93,11 @@ from hinf_cpp._core import (
     RunOutcome,
     RunResult,
     RunStatus,
+    SampledDesign,
     SampledLaw,
     SampledLinearization,
     SampledLoopOptions,
+    SamplingSpec,
     Scenario,
     ShipModel,
     ShipParameters,
@@ -145,7 +147,7 @@ from hinf_cpp.scenario import load_scenario, scenario_from_dict, scenario_path, 
 
 __all__ = [
     # scenarios
-    "Scenario", "MeasurementSpec", "Law", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec",
+    "Scenario", "MeasurementSpec", "SamplingSpec", "SampledDesign", "Law", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec",
     "run_scenario", "run_scenario_with_noise", "RunResult", "Timing", "scenario_gamma_star",
     "scenario_gamma_star_output_feedback", "scenario_certificates", "scenario_noise", "run_scenarios",
     "StudyOptions", "StudyRun", "RunOutcome",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -4168,13 +4168,13 @@ class StepStatus:
     ok: typing.ClassVar[StepStatus]
     past_horizon: typing.ClassVar[StepStatus]
     refused: typing.ClassVar[StepStatus]
-    def __eq__(self, other: typing.Any) -> bool:
+    def __eq__(self: StepStatus | str, other: typing.Any) -> bool:
         ...
     def __getstate__(self) -> int:
         ...
     def __hash__(self) -> int:
         ...
-    def __index__(self) -> int:
+    def __index__(self: StepStatus | str) -> int:
         ...
     @typing.overload
     def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
@@ -4184,9 +4184,9 @@ class StepStatus:
         """
         The member of that name (ValueError listing the names for another).
         """
-    def __int__(self) -> int:
+    def __int__(self: StepStatus | str) -> int:
         ...
-    def __ne__(self, other: typing.Any) -> bool:
+    def __ne__(self: StepStatus | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
@@ -4238,13 +4238,13 @@ class MeasurementUse:
     not_finite: typing.ClassVar[MeasurementUse]
     stale: typing.ClassVar[MeasurementUse]
     used: typing.ClassVar[MeasurementUse]
-    def __eq__(self, other: typing.Any) -> bool:
+    def __eq__(self: MeasurementUse | str, other: typing.Any) -> bool:
         ...
     def __getstate__(self) -> int:
         ...
     def __hash__(self) -> int:
         ...
-    def __index__(self) -> int:
+    def __index__(self: MeasurementUse | str) -> int:
         ...
     @typing.overload
     def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
@@ -4254,9 +4254,9 @@ class MeasurementUse:
         """
         The member of that name (ValueError listing the names for another).
         """
-    def __int__(self) -> int:
+    def __int__(self: MeasurementUse | str) -> int:
         ...
-    def __ne__(self, other: typing.Any) -> bool:
+    def __ne__(self: MeasurementUse | str, other: typing.Any) -> bool:
         ...
     def __repr__(self) -> str:
         ...
@@ -4369,6 +4369,8 @@ class OnlineCounts:
         max |u_i| over the commands computed
     coupling_violated : int
         output feedback: steps with rho(Sigma Z) >= gamma^2
+    coupling_violation_t : float
+        output feedback: the t_now of the first such step
     largest_rho : float
         output feedback: max rho(Sigma Z) / gamma^2 over the steps
     
@@ -4384,7 +4386,7 @@ class OnlineCounts:
     (1, 1)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'lost', 'saturated', 'rate_limited', 'largest_command', 'coupling_violated', 'largest_rho')
+    __match_args__: typing.ClassVar[tuple] = ('steps', 'used', 'predicted', 'refused', 'past_horizon', 'lost', 'saturated', 'rate_limited', 'largest_command', 'coupling_violated', 'coupling_violation_t', 'largest_rho')
     def __eq__(self, arg0: OnlineCounts) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -4397,6 +4399,11 @@ class OnlineCounts:
     def coupling_violated(self) -> int:
         """
         output feedback: steps with rho(Sigma Z) >= gamma^2
+        """
+    @property
+    def coupling_violation_t(self) -> float:
+        """
+        output feedback: the t_now of the first such step
         """
     @property
     def largest_command(self) -> float:
@@ -4979,6 +4986,168 @@ class MeasurementSpec:
     @sigma.setter
     def sigma(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+class SampledDesign:
+    """
+    Which design a sampled loop runs ([sampling] design).
+    
+    Parameters
+    ----------
+    value : int
+        The member's number, as its repr shows it.
+    name : str
+        The member's name, one of those below.
+    
+    Attributes
+    ----------
+    emulated
+        the continuous design held over each sample (SampledLaw::emulated)
+    digital
+        the discrete game at the period (SampledLaw::digital, solve_discrete_game)
+    
+    Examples
+    --------
+    >>> hc.SamplingSpec(period=0.05, design="digital").design
+    <SampledDesign.digital: 1>
+    """
+    __members__: typing.ClassVar[dict[str, SampledDesign]]
+    digital: typing.ClassVar[SampledDesign]
+    emulated: typing.ClassVar[SampledDesign]
+    def __eq__(self: SampledDesign | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: SampledDesign | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        """
+        The member of that name (ValueError listing the names for another).
+        """
+    def __int__(self: SampledDesign | str) -> int:
+        ...
+    def __ne__(self: SampledDesign | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
+class SamplingSpec:
+    """
+    [sampling]: the closed loop as on a vehicle (sampled_loop.hpp): the online controller called
+    every `period`, its command held, with a computation delay and actuator limits.
+    
+    Parameters
+    ----------
+    period : float, default 0.0
+        s: the controller's period T, > 0
+    design : SampledDesign or str, default 'emulated'
+        the law it runs
+    delay : float, default 0.0
+        s, in [0, T]: the command is applied this late
+    compensate_delay : bool, default True
+        predict the measurement over the delay
+    limits : ActuatorLimits, optional
+        u_min, u_max, rate_max (empty: none)
+    max_age : float, default inf
+        s: an older measurement is stale
+    measurement_period : float, default 0.0
+        s: the sensor's period, a multiple of T (0: T)
+    
+    Notes
+    -----
+    The values are checked with the scenario (Scenario.validate()); docs/scenarios.md has the
+    [sampling] table.
+    
+    Examples
+    --------
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.sampling = hc.SamplingSpec(period=0.1, delay=0.02)
+    >>> scenario.tf = 10.0
+    >>> result = hc.run_scenario(scenario)
+    >>> result.online.steps, result.online.saturated
+    (100, 0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('period', 'design', 'delay', 'compensate_delay', 'limits', 'max_age', 'measurement_period')
+    def __eq__(self, arg0: SamplingSpec) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, period: typing.SupportsFloat | typing.SupportsIndex = 0.0, design: SampledDesign | str = SampledDesign.emulated, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, compensate_delay: bool = True, limits: ActuatorLimits = ..., max_age: typing.SupportsFloat | typing.SupportsIndex = ..., measurement_period: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def compensate_delay(self) -> bool:
+        """
+        predict the measurement over the delay
+        """
+    @compensate_delay.setter
+    def compensate_delay(self, arg0: bool) -> None:
+        ...
+    @property
+    def delay(self) -> float:
+        """
+        s, in [0, T]: the command is applied this late
+        """
+    @delay.setter
+    def delay(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def design(self) -> SampledDesign:
+        """
+        the law it runs
+        """
+    @design.setter
+    def design(self, arg1: SampledDesign | str) -> None:
+        ...
+    @property
+    def limits(self) -> ActuatorLimits:
+        """
+        u_min, u_max, rate_max (empty: none)
+        """
+    @limits.setter
+    def limits(self, arg0: ActuatorLimits) -> None:
+        ...
+    @property
+    def max_age(self) -> float:
+        """
+        s: an older measurement is stale
+        """
+    @max_age.setter
+    def max_age(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def measurement_period(self) -> float:
+        """
+        s: the sensor's period, a multiple of T (0: T)
+        """
+    @measurement_period.setter
+    def measurement_period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def period(self) -> float:
+        """
+        s: the controller's period T, > 0
+        """
+    @period.setter
+    def period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
 class Scenario:
     """
     A scenario: the model, the horizon, the desired trajectory, the law and its design, the
@@ -5031,6 +5200,9 @@ class Scenario:
         q(t0)
     measurement : MeasurementSpec or None
         imperfect measurements; none: state feedback
+    sampling : SamplingSpec or None
+        a sampled loop through the online controller;
+        none: the continuous loop
     solver : SolverOptions
         every integration: the Riccati equations and the closed loop
     output_dt : float
@@ -5220,6 +5392,15 @@ class Scenario:
     def plant(self, arg1: Model | None) -> None:
         ...
     @property
+    def sampling(self) -> SamplingSpec | None:
+        """
+        a sampled loop through the online controller;
+        none: the continuous loop
+        """
+    @sampling.setter
+    def sampling(self, arg0: SamplingSpec | None) -> None:
+        ...
+    @property
     def solver(self) -> SolverOptions:
         """
         every integration: the Riccati equations and the closed loop
@@ -5338,6 +5519,10 @@ class RunResult:
         the results file (scenario_gamma_star)
     simulation : SimulationResult
         the closed loop's time series
+    sampling : SamplingSpec or None
+        the scenario's [sampling]
+    online : OnlineCounts or None
+        with [sampling]: what the online controller's steps did
     metrics : Metrics
         of the closed loop (metrics.hpp)
     timing : Timing
@@ -5359,7 +5544,7 @@ class RunResult:
     >>> round(result.metrics.final_position_error, 3), result.simulation.q.shape
     (0.084, (1001, 6))
     """
-    __match_args__: typing.ClassVar[tuple] = ('scenario_name', 'law', 'output_feedback', 'gamma', 'trajectory', 'plant', 'solution', 'Z0', 'Z_min_eig', 'Z_max_eig', 'gamma_star', 'simulation', 'metrics', 'timing')
+    __match_args__: typing.ClassVar[tuple] = ('scenario_name', 'law', 'output_feedback', 'gamma', 'trajectory', 'plant', 'solution', 'Z0', 'Z_min_eig', 'Z_max_eig', 'gamma_star', 'simulation', 'sampling', 'online', 'metrics', 'timing')
     def __getstate__(self) -> tuple:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -5415,6 +5600,11 @@ class RunResult:
         of the closed loop (metrics.hpp)
         """
     @property
+    def online(self) -> OnlineCounts | None:
+        """
+        with [sampling]: what the online controller's steps did
+        """
+    @property
     def output_feedback(self) -> bool:
         """
         true with [measurement]
@@ -5423,6 +5613,11 @@ class RunResult:
     def plant(self) -> Model | None:
         """
         the scenario's plant; null when the closed loop integrated the design model
+        """
+    @property
+    def sampling(self) -> SamplingSpec | None:
+        """
+        the scenario's [sampling]
         """
     @property
     def scenario_name(self) -> str:
@@ -6278,7 +6473,9 @@ def scenario_gamma_star_output_feedback(scenario: Scenario, options: GammaStarOp
     """
 def scenario_noise(scenario: Scenario) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
     """
-    The standard normal noise samples of a scenario with [measurement] (from its seed).
+    The standard normal noise samples of a scenario with [measurement] (from its seed): one row
+    per hold interval of [measurement] sample_period, or with [sampling] one per sample of its
+    period (a measurement's noise is that of its sample).
     
     Parameters
     ----------

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "hinf/control/sampled_loop.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/io/files.hpp"
@@ -924,6 +925,19 @@ void expect_same_scenario(const hinf::Scenario& a, const hinf::Scenario& b) {
     EXPECT_EQ(ma.on_coupling_violation, mb.on_coupling_violation);
     EXPECT_EQ(a.model->C(a.t0), b.model->C(b.t0));
   }
+  ASSERT_EQ(a.sampling.has_value(), b.sampling.has_value());
+  if (a.sampling) {
+    const hinf::SamplingSpec &sa = *a.sampling, &sb = *b.sampling;
+    EXPECT_EQ(sa.period, sb.period);
+    EXPECT_EQ(sa.design, sb.design);
+    EXPECT_EQ(sa.delay, sb.delay);
+    EXPECT_EQ(sa.compensate_delay, sb.compensate_delay);
+    EXPECT_EQ(sa.max_age, sb.max_age);
+    EXPECT_EQ(sa.measurement_period, sb.measurement_period);
+    EXPECT_EQ(sa.limits.u_min, sb.limits.u_min);
+    EXPECT_EQ(sa.limits.u_max, sb.limits.u_max);
+    EXPECT_EQ(sa.limits.rate_max, sb.limits.rate_max);
+  }
 }
 
 }  // namespace
@@ -1044,3 +1058,108 @@ TEST(ScenarioWriter, WhatHasNoFileFormIsAnInputError) {
   s.desired_u = hinf::VectorSignal(2, [](double) { return Vec::Zero(2); });
   EXPECT_THROW(hinf::scenario_toml(s), hinf::InputError);
 }
+
+// ======================================================================= [sampling]
+
+namespace {
+
+const char* kSampling = R"(
+[sampling]
+period = 0.1
+design = "digital"
+delay = 0.05
+compensate_delay = false
+u_min = [-2.0, -inf]
+u_max = [2.0, inf]
+rate_max = [10.0, inf]
+max_age = 0.3
+measurement_period = 0.2
+)";
+
+TEST(ScenarioSampling, ReadWrittenAndReadAgain) {
+  const Scenario s = parse(std::string(kMinimal) + kSampling);
+  ASSERT_TRUE(s.sampling.has_value());
+  const hinf::SamplingSpec& sp = *s.sampling;
+  EXPECT_EQ(sp.period, 0.1);
+  EXPECT_EQ(sp.design, hinf::SampledDesign::Digital);
+  EXPECT_EQ(sp.delay, 0.05);
+  EXPECT_FALSE(sp.compensate_delay);
+  EXPECT_EQ(sp.limits.u_min[1], -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(sp.limits.rate_max[0], 10.0);
+  EXPECT_EQ(sp.max_age, 0.3);
+  EXPECT_EQ(sp.measurement_every(), 2);
+  s.resolved().validate();
+  expect_same_scenario(s, parse(hinf::scenario_toml(s), "written.toml"));
+  // The defaults.
+  const Scenario d = parse(std::string(kMinimal) + "[sampling]\nperiod = 0.05\n");
+  EXPECT_EQ(d.sampling->design, hinf::SampledDesign::Emulated);
+  EXPECT_EQ(d.sampling->delay, 0.0);
+  EXPECT_TRUE(d.sampling->compensate_delay);
+  EXPECT_EQ(d.sampling->limits.u_min.size(), 0);
+  EXPECT_EQ(d.sampling->measurement_every(), 1);
+}
+
+TEST(ScenarioSampling, ErrorsNameTheKey) {
+  const std::string base = std::string(kMinimal) + "[sampling]\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"delay = 0.1\n", "[sampling] period"},  // required
+      {"period = 0.0\n", "[sampling] period must be > 0"},
+      {"period = 100.0\n", "at most the horizon"},
+      {"period = 0.1\ndelay = 0.2\n", "[sampling] delay must be in [0, period]"},
+      {"period = 0.1\nmeasurement_period = 0.15\n", "whole multiple of period"},
+      {"period = 0.1\nmeasurement_period = 0.05\n", "whole multiple of period"},
+      {"period = 0.1\nu_min = [1.0]\n", "u_min"},
+      {"period = 0.1\nu_min = [1.0, 1.0]\nu_max = [0.0, 2.0]\n", "u_min <= u_max"},
+      {"period = 0.1\nrate_max = [0.0, 1.0]\n", "rate_max"},
+      {"period = 0.1\nmax_age = 0.0\n", "[sampling] max_age"},
+      {"period = 0.1\ndesign = \"fast\"\n", "design"},
+      {"period = 0.1\nperoid = 0.1\n", "peroid"},
+      {"period = nan\n", "period"},
+  };
+  for (const auto& [text, piece] : cases)
+    EXPECT_TRUE(contains(error_of(base + text), piece)) << text << " -> " << error_of(base + text);
+  // The cascade law has no sampled form; kappa belongs to the emulated design.
+  EXPECT_TRUE(contains(error_of(replace(base + "period = 0.1\n", "gamma = 5.0", "gamma = 5.0\nlaw = \"cascade\"")),
+                       "no sampled form"));
+  EXPECT_TRUE(contains(
+      error_of(replace(base + "period = 0.1\ndesign = \"digital\"\n", "gamma = 5.0", "gamma = 5.0\nkappa = 2.0")),
+      "kappa"));
+}
+
+TEST(ScenarioSampling, TheRunIsTheSampledLoopOfTheOnlineController) {
+  // run_scenario with [sampling] against the same loop assembled from the control layer: the same
+  // code on the same input, so the same numbers bit for bit; and a sensor read every second sample.
+  Scenario s = parse(std::string(kMinimal) +
+                     "[sampling]\nperiod = 0.1\ndelay = 0.05\nu_max = [1.05, 0.2]\nmeasurement_period = 0.2\n");
+  s.tf = 10.0;
+  const hinf::RunResult run = hinf::run_scenario(s);
+  ASSERT_TRUE(run.online.has_value());
+  const Scenario r = s.resolved();
+  hinf::OnlineOptions options;
+  options.limits = r.sampling->limits;
+  hinf::OnlineController controller(hinf::SampledLaw::emulated(run.solution, 0.1), options);
+  hinf::SampledLoopOptions loop;
+  loop.delay = 0.05;
+  loop.measurement_every = 2;
+  loop.simulation = r.simulation_options();
+  const hinf::SimulationResult direct =
+      hinf::simulate_sampled(*run.trajectory, controller, hinf::Disturbance(r.disturbance), r.initial_q0, loop);
+  EXPECT_EQ(run.simulation.q, direct.q);
+  EXPECT_EQ(run.simulation.u, direct.u);
+  // 50 measurements (t = 0, 0.2, ...); the first is the state of reset(): a duplicate.
+  EXPECT_EQ(run.online->steps, 100);
+  EXPECT_EQ(run.online->used, 49);
+  EXPECT_EQ(run.online->predicted, 51);
+  EXPECT_GT(run.online->saturated, 0);
+  EXPECT_LE(run.simulation.u.col(1).maxCoeff(), 0.2);
+  // The results file says so.
+  const nlohmann::json j = nlohmann::json::parse(hinf::results_json(run));
+  EXPECT_EQ(j["sampling"]["period"], 0.1);
+  EXPECT_EQ(j["sampling"]["measurement_period"], 0.2);
+  EXPECT_EQ(j["online"]["steps"], 100);
+  EXPECT_EQ(j["online"]["measurements_used"], 49);
+  EXPECT_DOUBLE_EQ(j["online"]["saturated_share"].get<double>(), run.online->saturated / 100.0);
+  EXPECT_TRUE(j["online"]["largest_rho_over_gamma2"].is_null());
+}
+
+}  // namespace

@@ -76,6 +76,23 @@ def test_same_results_file(paper_outputs):
     assert a["metrics"]["max_position_error"] == pytest.approx(math.sqrt(2.0), rel=ROUNDOFF)  # hypot(-1, -1)
 
 
+def test_sampled_loop_same_results_file(tmp_path, warm_python_cli):
+    # [sampling]: both programs run the online controller in the same loop; their results files
+    # are equal but for the wall-clock times.
+    scenario = hc.scenario_path("paper_fig2_sampled")
+    sim = run(HINF_SIM, scenario, "--json", tmp_path / "sim.json")
+    cpp = run(HINF_CPP, "run", scenario, "--json", tmp_path / "cpp.json")
+    assert sim.returncode == 0 and cpp.returncode == 0, sim.stderr + cpp.stderr
+    a, b = (json.loads((tmp_path / name).read_text()) for name in ("sim.json", "cpp.json"))
+    a.pop("timing_s"), b.pop("timing_s")
+    assert a == b
+    assert a["sampling"] == {"period": 0.05, "design": "emulated", "delay": 0.02, "compensate_delay": True,
+                             "measurement_period": 0.05}
+    online = a["online"]
+    assert online["steps"] == 800 and online["measurements_used"] == 800 and online["lost"] == 0
+    assert online["largest_command"] <= 3.0 and 0.0 < online["largest_rho_over_gamma2"] < 1.0
+
+
 def test_csv_time_series(paper_outputs):
     out, _, _ = paper_outputs
     with open(out / "sim.csv", newline="") as f:

@@ -359,6 +359,7 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
     report.rho_sigma_z = estimator_->coupling(t_now, Sigma_);
     report.coupling_violated = !(report.rho_sigma_z < gamma2);
     counts_.coupling_violated += report.coupling_violated;
+    if (report.coupling_violated && std::isnan(counts_.coupling_violation_t)) counts_.coupling_violation_t = t_now;
     if (std::isfinite(gamma2)) counts_.largest_rho = std::max(counts_.largest_rho, report.rho_sigma_z / gamma2);
   }
 

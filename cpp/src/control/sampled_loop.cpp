@@ -18,6 +18,8 @@ void SampledLoopOptions::validate(double period) const {
   require(std::isfinite(delay) && delay >= 0.0 && delay <= period * (1.0 + 1e-12),
           "the computation delay must be in [0, T] = [0, ", period, "] s, got ", delay);
   require(std::isfinite(sigma) && sigma >= 0.0, "the noise's standard deviation sigma must be >= 0, got ", sigma);
+  require(measurement_every >= 1, "measurement_every must be >= 1 (a measurement every that many samples), got ",
+          measurement_every);
   simulation.validate();
 }
 
@@ -78,7 +80,7 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
   result.u.resize(count, m);
   Vec y = q0, measured(controller.measurement_size());
   double t = t0, measured_at = t0, apply_at = t0;
-  bool pending = false;
+  bool pending = false, pending_measured = false;
   long sample = 0, next_out = 0;
   DivergenceCheck divergence(trajectory, heading, bound);
   const auto due = [](double event, double now) { return event <= now + 1e-12 * std::max(1.0, std::abs(now)); };
@@ -87,11 +89,14 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
     // The events at t, in the order a vehicle sees them: a command computed earlier is applied,
     // then the state is measured (and, without delay, answered at once), then the outputs.
     if (pending && due(apply_at, t)) {
-      controller.step(apply_at, measured.data(), measured_at, u.data());
+      controller.step(apply_at, pending_measured ? measured.data() : nullptr, measured_at, u.data());
       pending = false;
     }
     if (sample_time(sample) < tf && due(sample_time(sample), t)) {
-      if (output_feedback) {
+      const bool measuring = sample % options.measurement_every == 0;
+      if (!measuring) {
+        // no measurement at this sample: the step predicts
+      } else if (output_feedback) {
         measured.noalias() = C * y;
         if (options.sigma > 0.0) measured += options.sigma * options.noise.row(sample).transpose();
       } else {
@@ -100,9 +105,10 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
       measured_at = sample_time(sample);
       ++sample;
       if (options.delay == 0.0) {
-        controller.step(measured_at, measured.data(), measured_at, u.data());
+        controller.step(measured_at, measuring ? measured.data() : nullptr, measured_at, u.data());
       } else {
         pending = true;
+        pending_measured = measuring;
         apply_at = measured_at + options.delay;
       }
     }

@@ -49,6 +49,31 @@ std::string results_json(const RunResult& r, int indent) {
       number(r.simulation.estimator ? r.simulation.estimator->coupling_violation_t : NAN);
   j["status"] = to_string(r.simulation.status);
   j["status_message"] = r.simulation.status_message;
+  if (r.sampling) {
+    const SamplingSpec& sp = *r.sampling;
+    j["sampling"] = {{"period", sp.period},
+                     {"design", to_string(sp.design)},
+                     {"delay", sp.delay},
+                     {"compensate_delay", sp.compensate_delay},
+                     {"measurement_period", sp.measurement_every() * sp.period}};
+  }
+  if (r.online) {
+    // What the online controller's steps did (online_controller.hpp, OnlineCounts).
+    const OnlineCounts& c = *r.online;
+    j["online"] = {{"steps", c.steps},
+                   {"measurements_used", c.used},
+                   {"predicted", c.predicted},
+                   {"refused", c.refused},
+                   {"past_horizon", c.past_horizon},
+                   {"lost", c.lost},
+                   {"saturated", c.saturated},
+                   {"rate_limited", c.rate_limited},
+                   {"saturated_share", number(c.steps > 0 ? static_cast<double>(c.saturated) / c.steps : NAN)},
+                   {"largest_command", number(c.largest_command)},
+                   {"coupling_violated", c.coupling_violated},
+                   {"largest_rho_over_gamma2", number(r.output_feedback ? c.largest_rho : NAN)}};
+    if (r.output_feedback) j["coupling_violation_t"] = number(c.coupling_violation_t);
+  }
   j["metrics"] = nlohmann::json::object();
   for (const MetricDefinition& metric : metric_table()) j["metrics"][metric.name] = number(mt.*metric.value);
 

@@ -49,7 +49,7 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   const toml::table root = detail::parse_toml(text, source);
   TableReader top(root, "top level", source,
                   {"name", "description", "model", "plant", "horizon", "desired", "controller",
-                   "disturbance", "initial", "measurement", "solver", "output"});
+                   "disturbance", "initial", "measurement", "sampling", "solver", "output"});
   Scenario s;
   s.name = top.string_or("name", file_stem(source));
   s.description = top.string_or("description", "");
@@ -161,6 +161,23 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
     ms.filter_A = r.enum_or("filter_A", ms.filter_A);
     ms.on_coupling_violation = r.enum_or("on_coupling_violation", ms.on_coupling_violation);
     s.measurement = ms;
+  }
+  if (const toml::table* table = section(root, "sampling", source, false)) {
+    TableReader r(*table, "[sampling]", source,
+                  {"period", "design", "delay", "compensate_delay", "u_min", "u_max", "rate_max", "max_age",
+                   "measurement_period"});
+    SamplingSpec sp;
+    sp.period = r.number("period");
+    sp.design = r.enum_or("design", sp.design);
+    sp.delay = r.number_or("delay", sp.delay);
+    sp.compensate_delay = r.boolean_or("compensate_delay", sp.compensate_delay);
+    // Limits per input; inf (TOML's inf, -inf) leaves a channel free.
+    if (r.has("u_min")) sp.limits.u_min = r.vector("u_min", m, true);
+    if (r.has("u_max")) sp.limits.u_max = r.vector("u_max", m, true);
+    if (r.has("rate_max")) sp.limits.rate_max = r.vector("rate_max", m, true);
+    if (const toml::node* node = r.get("max_age")) sp.max_age = r.as_number(*node, "max_age", true);
+    sp.measurement_period = r.number_or("measurement_period", sp.measurement_period);
+    s.sampling = sp;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
     TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});

@@ -69,6 +69,19 @@ std::string scenario_toml(const Scenario& s) {
     if (ms.Q0.size() > 0) measurement.insert("Q0", matrix_toml(ms.Q0));
     root.insert("measurement", std::move(measurement));
   }
+  if (s.sampling) {
+    const SamplingSpec& sp = *s.sampling;
+    toml::table sampling{{"period", sp.period},
+                         {"design", to_string(sp.design)},
+                         {"delay", sp.delay},
+                         {"compensate_delay", sp.compensate_delay},
+                         {"max_age", sp.max_age},
+                         {"measurement_period", sp.measurement_period}};
+    if (sp.limits.u_min.size() > 0) sampling.insert("u_min", vector_toml(sp.limits.u_min));
+    if (sp.limits.u_max.size() > 0) sampling.insert("u_max", vector_toml(sp.limits.u_max));
+    if (sp.limits.rate_max.size() > 0) sampling.insert("rate_max", vector_toml(sp.limits.rate_max));
+    root.insert("sampling", std::move(sampling));
+  }
   root.insert("solver", toml::table{{"method", to_string(s.solver.method)},
                                     {"newton_systems", to_string(s.solver.newton_systems)},
                                     {"rtol", s.solver.rtol},

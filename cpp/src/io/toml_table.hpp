@@ -111,12 +111,12 @@ class TableReader {
     if (const auto* b = node->as_boolean()) return b->get();
     fail(key, "expected true or false, got " + type_name(*node));
   }
-  Vec vector(const std::string& key, int size) {
+  Vec vector(const std::string& key, int size, bool allow_infinite = false) {
     const toml::node* node = get(key);
     if (node == nullptr) fail(key, "is required");
-    return as_vector(*node, key, size);
+    return as_vector(*node, key, size, allow_infinite);
   }
-  Vec as_vector(const toml::node& node, const std::string& key, int size) const {
+  Vec as_vector(const toml::node& node, const std::string& key, int size, bool allow_infinite = false) const {
     const toml::array* array = node.as_array();
     const std::string expected = size >= 0 ? str_cat(size, " numbers") : "an array of numbers";
     if (array == nullptr) fail(key, str_cat("expected ", expected, ", got ", type_name(node)));
@@ -125,7 +125,7 @@ class TableReader {
       fail(key, str_cat("expected ", size, " numbers, got ", array->size()));
     Vec v(static_cast<Eigen::Index>(array->size()));
     for (std::size_t i = 0; i < array->size(); ++i)
-      v[static_cast<Eigen::Index>(i)] = as_number(*array->get(i), str_cat(key, "[", i, "]"));
+      v[static_cast<Eigen::Index>(i)] = as_number(*array->get(i), str_cat(key, "[", i, "]"), allow_infinite);
     return v;
   }
   // A number (that many times the identity) or a nested list (a full matrix).

@@ -7,13 +7,20 @@
 #include <memory>
 
 #include "hinf/control/controller.hpp"
+#include "hinf/control/discrete_design.hpp"
 #include "hinf/control/output_feedback.hpp"
+#include "hinf/control/sampled_loop.hpp"
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/models/ship.hpp"
 #include "scenario/scenario_run.hpp"
 
 namespace hinf {
+
+int SamplingSpec::measurement_every() const {
+  if (!(measurement_period > 0.0) || !(period > 0.0)) return 1;
+  return std::max(1, static_cast<int>(std::lround(measurement_period / period)));
+}
 
 SimulationOptions Scenario::simulation_options() const {
   SimulationOptions options;
@@ -149,13 +156,38 @@ void Scenario::validate() const {
     require(static_cast<int>(model->noise_channels().size()) == p, "the model '", model->name(),
             "' has no noise channel for each of its ", p, " measured outputs");
   }
+  if (sampling) {
+    const SamplingSpec& sp = *sampling;
+    require(std::isfinite(sp.period) && sp.period > 0.0 && sp.period <= tf - t0,
+            "[sampling] period must be > 0 s and at most the horizon tf - t0 = ", tf - t0, " s, got ", sp.period);
+    require(std::isfinite(sp.delay) && sp.delay >= 0.0 && sp.delay <= sp.period * (1.0 + 1e-12),
+            "[sampling] delay must be in [0, period] = [0, ", sp.period, "] s, got ", sp.delay);
+    require(!std::isnan(sp.max_age) && sp.max_age > 0.0, "[sampling] max_age must be > 0 s, got ", sp.max_age);
+    try {
+      sp.limits.validate(m);
+    } catch (const InputError& e) {
+      throw InputError(str_cat("[sampling] ", e.what()));
+    }
+    if (sp.measurement_period != 0.0) {
+      const double ratio = sp.measurement_period / sp.period;
+      require(std::isfinite(ratio) && ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio,
+              "[sampling] measurement_period must be a whole multiple of period = ", sp.period, " s (the sensor"
+              " is read at controller samples), got ", sp.measurement_period);
+    }
+    require(law != Law::Cascade, "[sampling] runs the online controller of the H-infinity or LQR design; the"
+            " cascade law has no sampled form: remove [sampling] or choose law = \"hinf\" or \"lqr\"");
+    require(sp.design == SampledDesign::Emulated || (kappa.is_constant() && kappa.offset() == 1.0),
+            "[controller] kappa scales the continuous law's gain; the digital design ([sampling] design ="
+            " \"digital\") has its own gains: remove kappa or use design = \"emulated\"");
+  }
 }
 
 RowMat scenario_noise(const Scenario& scenario) {
   require(scenario.measurement.has_value(), "the scenario has no [measurement]");
   require(scenario.model != nullptr, "the scenario has no model");
   const MeasurementSpec& ms = *scenario.measurement;
-  const long samples = noise_sample_count(scenario.t0, scenario.tf, ms.sample_period);
+  const double period = scenario.sampling ? scenario.sampling->period : ms.sample_period;
+  const long samples = noise_sample_count(scenario.t0, scenario.tf, period);
   const int p = static_cast<int>(scenario.model->C(scenario.t0).rows());
   return standard_normal_samples(ms.seed, samples, p);
 }
@@ -249,6 +281,51 @@ std::size_t design_hash(const Scenario& s) {
   return seed;
 }
 
+namespace {
+
+// The loop of [sampling]: the online controller of the law's design (emulated, or the discrete
+// game at the period), with the filter of [measurement] when there is one.
+SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& result, const Disturbance& disturbance,
+                                           const RowMat* noise, OnlineCounts& counts) {
+  const SamplingSpec& sp = *s.sampling;
+  const SampledLawPtr law =
+      sp.design == SampledDesign::Emulated
+          ? SampledLaw::emulated(result.solution, sp.period, s.kappa)
+          : SampledLaw::digital(solve_discrete_game(result.trajectory, sp.period, s.Q, s.Qf, design_gamma(s)));
+  OnlineOptions options;
+  options.limits = sp.limits;
+  options.max_age = sp.max_age;
+  options.compensate_delay = sp.compensate_delay;
+  SampledLoopOptions loop;
+  loop.delay = sp.delay;
+  loop.simulation = s.simulation_options();
+  loop.measurement_every = sp.measurement_every();
+  if (s.measurement) {
+    const MeasurementSpec& ms = *s.measurement;
+    options.filter.N = ms.N;
+    options.filter.Sigma0 = initial_sigma(s);
+    options.filter.Q = s.Q;
+    options.filter.hold = sp.measurement_every() * sp.period;
+    loop.sigma = ms.sigma;
+    loop.noise = noise == nullptr ? scenario_noise(s) : *noise;
+  }
+  OnlineController controller(law, options);
+  SimulationResult r = simulate_sampled(*result.trajectory, controller, disturbance, s.initial_q0, loop, s.plant.get());
+  counts = controller.counts();
+  if (s.measurement && s.measurement->on_coupling_violation == CouplingPolicy::Error && counts.coupling_violated > 0) {
+    const double gamma = law->gamma();
+    throw CouplingConditionError(
+        str_cat("coupling condition violated at t = ", counts.coupling_violation_t, " in the sampled loop: rho(Sigma Z)"
+                " >= gamma^2 = ", gamma * gamma, " at ", counts.coupling_violated, " of ", counts.steps, " steps (paper"
+                " §4: I - gamma^-2 Sigma Z must stay invertible). Increase gamma, or make Sigma(t0) = (Q0 - eta I)^-1"
+                " smaller (larger Q0 - eta I); or ask to continue and only flag it"),
+        counts.coupling_violation_t, counts.largest_rho * gamma * gamma, gamma);
+  }
+  return r;
+}
+
+}  // namespace
+
 RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, const RowMat* noise,
                             bool sigma_eigenvalues) {
   // The cascade law with state feedback does not use the law's design: there it is only
@@ -272,7 +349,10 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   if (s.law == Law::Cascade) controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
   else controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
   const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
-  if (s.measurement) {
+  if (s.sampling) {
+    result.sampling = s.sampling;
+    result.simulation = simulate_sampled_scenario(s, result, disturbance, noise, result.online.emplace());
+  } else if (s.measurement) {
     const MeasurementSpec& ms = *s.measurement;
     OutputFeedbackProblem problem;
     problem.design = result.solution;

@@ -216,6 +216,7 @@ struct OnlineCounts {
   long rate_limited = 0;  // commands with the rate limit active
   double largest_command = 0.0;  // max |u_i| over the commands computed
   long coupling_violated = 0;    // output feedback: steps with rho(Sigma Z) >= gamma^2
+  double coupling_violation_t = NAN;  // output feedback: the t_now of the first such step
   double largest_rho = 0.0;      // output feedback: max rho(Sigma Z) / gamma^2 over the steps
 };
 

@@ -27,6 +27,8 @@ struct SampledLoopOptions {
   double delay = 0.0;             // s, in [0, T]: the command computed from the measurement of
                                   // t_k is applied from t_k + delay (T: one sample late)
   SimulationOptions simulation;   // output grid, divergence bound, tolerances (method: erk always)
+  int measurement_every = 1;      // the sensor is read at every this many-th sample (k = 0, e,
+                                  // 2e, ...); the other samples are steps without a measurement
   double sigma = 0.0;             // output feedback: the noise's standard deviation per sample
   RowMat noise;                   // output feedback: v, one row per sample, one column per output
                                   // (empty when sigma = 0)

@@ -10,6 +10,7 @@
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/metrics.hpp"
+#include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/simulation.hpp"
@@ -28,6 +29,32 @@ struct MeasurementSpec {
   double eta = 1.0;             // > 0, with Q0 - eta I positive definite
   FilterLinearization filter_A = FilterLinearization::Estimate;  // the A of the filter (36)
   CouplingPolicy on_coupling_violation = CouplingPolicy::Error;   // what a violation does
+};
+
+// Which design a sampled loop runs ([sampling] design).
+enum class SampledDesign {
+  Emulated,  // the continuous design held over each sample (SampledLaw::emulated)
+  Digital    // the discrete game at the period (SampledLaw::digital, solve_discrete_game)
+};
+template <>
+struct EnumNames<SampledDesign> {
+  static constexpr const char* what = "design";
+  static constexpr std::array<std::pair<SampledDesign, const char*>, 2> names{
+      {{SampledDesign::Emulated, "emulated"}, {SampledDesign::Digital, "digital"}}};
+};
+
+// [sampling]: the closed loop as on a vehicle (sampled_loop.hpp): the online controller called
+// every `period`, its command held, with a computation delay and actuator limits.
+struct SamplingSpec {
+  double period = 0.0;                            // s: the controller's period T, > 0
+  SampledDesign design = SampledDesign::Emulated;  // the law it runs
+  double delay = 0.0;                             // s, in [0, T]: the command is applied this late
+  bool compensate_delay = true;                   // predict the measurement over the delay
+  ActuatorLimits limits;                          // u_min, u_max, rate_max (empty: none)
+  double max_age = INFINITY;                      // s: an older measurement is stale
+  double measurement_period = 0.0;                // s: the sensor's period, a multiple of T (0: T)
+  // The sensor's period in samples of T (>= 1).
+  int measurement_every() const;
 };
 
 // The tracking law of a scenario ([controller] law).
@@ -69,6 +96,8 @@ struct Scenario {
                               // law) to the disturbance signals
   Vec initial_q0;             // q(t0)
   std::optional<MeasurementSpec> measurement;  // imperfect measurements; none: state feedback
+  std::optional<SamplingSpec> sampling;        // a sampled loop through the online controller;
+                                               // none: the continuous loop
   SolverOptions solver;             // every integration: the Riccati equations and the closed loop
   double output_dt = 0.01;          // [output] dt
   double divergence_factor = 1e3;   // [solver] divergence_factor (simulation.hpp)
@@ -110,6 +139,8 @@ struct RunResult {
   std::optional<double> gamma_star;  // not computed by run_scenario; set by the caller for
                                      // the results file (scenario_gamma_star)
   SimulationResult simulation;  // the closed loop's time series
+  std::optional<SamplingSpec> sampling;  // the scenario's [sampling]
+  std::optional<OnlineCounts> online;    // with [sampling]: what the online controller's steps did
   Metrics metrics;              // of the closed loop (metrics.hpp)
   Timing timing;                // the wall-clock time of its parts
 };
@@ -134,7 +165,9 @@ GammaStarResult scenario_gamma_star_output_feedback(const Scenario& scenario, Ga
 // The certificates of paper §3 for the scenario's design (gamma, Q, Qf, kappa).
 Certificates scenario_certificates(const Scenario& scenario);
 
-// The standard normal noise samples of a scenario with [measurement] (from its seed).
+// The standard normal noise samples of a scenario with [measurement] (from its seed): one row
+// per hold interval of [measurement] sample_period, or with [sampling] one per sample of its
+// period (a measurement's noise is that of its sample).
 RowMat scenario_noise(const Scenario& scenario);
 // As run_scenario, with explicit noise samples (one row per hold interval, one column per
 // measured output; see output_feedback.hpp) instead of the seeded ones.
