@@ -87,6 +87,9 @@ int main(int argc, char** argv) {
               << ", RMS position error (last half) = " << m.rms_position_error_last_half
               << ", L2 gain = " << m.l2_gain;
     if (result.gamma_star) std::cout << ", gamma* = " << *result.gamma_star;
+    if (result.online)
+      std::cout << ", sampled every " << result.sampling->period << " s: " << result.online->steps << " steps, "
+                << result.online->saturated << " saturated, largest |u| = " << result.online->largest_command;
     std::cout << " (total " << result.timing.total * 1e3 << " ms)\n";
     // Warnings after a success only: a failure is one line on stderr with nothing before it.
     for (const std::string& warning : hinf::scenario_warnings(scenario))

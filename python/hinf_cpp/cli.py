@@ -66,6 +66,14 @@ def summary(result: _core.RunResult) -> str:
                    if design.get(name) != value]
         lines.append(f"  plant: {result.plant.name()}"
                      + (f" ({', '.join(changed)})" if changed else " (the design model's parameters)"))
+    if result.sampling is not None:
+        # [sampling]: the loop ran through the online controller; what its steps did.
+        online, sampling = result.online, result.sampling
+        lines.append(f"  sampled: {sampling.design.name} law every {sampling.period:g} s, delay {sampling.delay:g} s; "
+                     f"{online.steps} steps, {online.used} measurements used, {online.saturated} saturated, "
+                     f"largest |u| {online.largest_command:.4g}"
+                     + (f", {online.lost} lost" if online.lost else "")
+                     + (f", coupling violated at {online.coupling_violated} steps" if online.coupling_violated else ""))
     estimator = result.simulation.estimator
     if estimator is not None and math.isfinite(estimator.coupling_violation_t):
         lines.append(f"  coupling condition rho(Sigma Z) < gamma^2 violated from "
