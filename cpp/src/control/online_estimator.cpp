@@ -24,7 +24,10 @@ class Estimator final : public OnlineEstimator {
 
   Estimator(const SampledLaw& law, const OnlineFilter& filter, const Mat& C, int heading_row)
       : law_(law), heading_row_(heading_row),
-        inv_gamma2_(std::isinf(law.gamma()) ? 0.0 : 1.0 / (law.gamma() * law.gamma())) {
+        inv_gamma2_(std::isinf(law.gamma()) ? 0.0 : 1.0 / (law.gamma() * law.gamma())),
+        // Sized here, not assigned later: Eigen's sized constructors leave the status fields
+        // unset, and a copy of them is undefined behaviour.
+        lu_(law.n()), llt_(law.n()), eigen_(law.n()) {
     const int n = law.n(), m = law.m();
     C_ = C;
     CtNinv_ = C.transpose() * filter.N.inverse();
@@ -36,9 +39,6 @@ class Estimator final : public OnlineEstimator {
     u_d_.setZero(m);
     ue_.setZero(m);
     innovation_.setZero(C.rows());
-    lu_ = Eigen::PartialPivLU<MatN>(n);
-    llt_ = Eigen::LLT<MatN>(n);
-    eigen_ = Eigen::SelfAdjointEigenSolver<MatN>(n);
   }
 
   void integrate(double s, double end, int substeps, const Vec& u, const Vec& y_e, bool innovate, Vec& x,
