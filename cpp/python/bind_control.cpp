@@ -375,7 +375,23 @@ Examples
       .def("gain", [](const SampledLaw& law, int k) {
              require(k >= 0 && k < law.steps(), "the gain K_k is defined for k = 0 .. ", law.steps() - 1, ", got k = ", k);
              return law.gain(k);
-           }, py::arg("k"), doc({"SampledLaw::gain"}).c_str());
+           }, py::arg("k"), doc({"SampledLaw::gain"}).c_str())
+      // Pickled as its trajectory and tables (K_k, Z_k); the linearization's tables are computed
+      // again from the trajectory when it is read, as the factories compute them.
+      .def(py::pickle(
+          [](const SampledLaw& law) {
+            py::list K, Z;
+            for (int k = 0; k < law.steps(); ++k) K.append(law.gain(k));
+            for (int k = 0; k <= law.steps(); ++k) Z.append(law.Z(k));
+            return py::make_tuple(law.trajectory_ptr(), law.kind(), law.gamma(), law.period(), K, Z);
+          },
+          [](const py::tuple& state) {
+            check_state(state, 6, "SampledLaw");
+            return std::make_shared<const SampledLaw>(state[0].cast<TrajectoryPtr>(), state[1].cast<std::string>(),
+                                                      state[2].cast<double>(), state[3].cast<double>(),
+                                                      state[4].cast<std::vector<Mat>>(),
+                                                      state[5].cast<std::vector<Mat>>());
+          }));
 
   bind_options<ActuatorLimits>(m, "ActuatorLimits", {"ActuatorLimits"},
                                {{"u_min", "array_like, shape (m,) or (0,)"}, {"u_max", "array_like, shape (m,) or (0,)"},

@@ -3885,6 +3885,10 @@ class SampledLaw:
         >>> hc.SampledLaw.emulated(design, 0.05).period()
         0.05
         """
+    def __getstate__(self) -> tuple[Trajectory, str, float, float, list, list]:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
     def gain(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
         """
         K_k (m x n), and A_e(t_k) (n x n), B_e(t_k) (n x m); unchecked indices.

@@ -220,3 +220,26 @@ def test_simulate_sampled_with_output_feedback(trajectory, design):
     state_feedback = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
     with pytest.raises(ValueError, match="output-feedback controller"):
         hc.simulate_sampled(trajectory, state_feedback, None, np.zeros(6), options)
+
+
+def test_a_sampled_law_pickles_to_the_same_controller(trajectory, design):
+    # A law shipped to another process (a Dask worker, say) runs the same steps bit for bit.
+    for law in (hc.SampledLaw.emulated(design, 0.1),
+                hc.SampledLaw.digital(hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0))):
+        copy = pickle.loads(pickle.dumps(law))
+        assert (copy.kind(), copy.gamma(), copy.period(), copy.steps()) == (law.kind(), law.gamma(), law.period(),
+                                                                          law.steps())
+        f = hc.OnlineFilter(N=0.25 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+        controllers = [hc.OnlineController(x, hc.OnlineOptions(filter=f)) for x in (law, copy)]
+        y = np.tile([-1.0, -1.0, 0.5], (20, 1))
+        results = []
+        for controller in controllers:
+            controller.reset(0.0, [1.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+            results.append(controller.replay(np.arange(20) * 0.1 + 0.05, y)[0])
+        np.testing.assert_array_equal(results[0], results[1])
+    # A damaged state is an error naming what is wrong, not a crash.
+    state = hc.SampledLaw.emulated(design, 0.1).__getstate__()
+    with pytest.raises(ValueError, match="gains"):
+        hc.SampledLaw.__new__(hc.SampledLaw).__setstate__((*state[:4], state[4][:3], state[5]))
+    with pytest.raises(ValueError, match="emulated"):
+        hc.SampledLaw.__new__(hc.SampledLaw).__setstate__((state[0], "analog", *state[2:]))

@@ -34,9 +34,20 @@ SampledLaw::SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma,
   require(!trajectory_->u_d_signal().is_function(),
           "the online controller needs u_d as signals (constants, harmonics or tables), not a function of t: a "
           "function may allocate and throw, which step() must not");
+  require(kind_ == "emulated" || kind_ == "digital", "a sampled law is \"emulated\" or \"digital\", got \"", kind_,
+          "\"");
+  require(!std::isnan(gamma_) && gamma_ > 0.0, "a sampled law's gamma must be > 0 (or inf), got ", gamma_);
   const int N = sample_count(trajectory_->t0(), trajectory_->tf(), period_);
   require(static_cast<int>(K_.size()) == N && static_cast<int>(Z_.size()) == N + 1, "a sampled law of ", N,
           " samples needs ", N, " gains and ", N + 1, " matrices Z_k, got ", K_.size(), " and ", Z_.size());
+  // Tables made elsewhere (a pickle, say) are checked as any input.
+  const int n = trajectory_->n(), m = trajectory_->m();
+  for (std::size_t k = 0; k < K_.size(); ++k)
+    require(K_[k].rows() == m && K_[k].cols() == n && K_[k].allFinite(), "the gain K_", k, " must be a finite ", m,
+            " x ", n, " matrix");
+  for (std::size_t k = 0; k < Z_.size(); ++k)
+    require(Z_[k].rows() == n && Z_[k].cols() == n && Z_[k].allFinite(), "Z_", k, " must be a finite ", n, " x ", n,
+            " matrix");
   const Model& model = trajectory_->model();
   check_memory(8.0 * (N + 1.0) * model.n() * (3.0 * model.n() + 2.0 * model.m() + model.nw()),
                str_cat("a sampled law of ", N, " samples"), "choose a longer period (or a shorter horizon)");
@@ -122,13 +133,14 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
   }
   options_.validate(n, m, p_);
   heading_ = model.heading_index();
-  for (Vec* v : {&x_, &q_d_, &k1_, &k2_, &k3_, &k4_, &x_stage_}) v->setZero(n);
-  for (Vec* v : {&u_held_, &u_, &u_ff_, &u_d_, &ue_}) v->setZero(m);
-  A_t_.setZero(n, n);
-  B_t_.setZero(n, m);
+  for (Vec* v : {&x_, &q_d_}) v->setZero(n);
+  for (Vec* v : {&u_held_, &u_, &u_ff_, &u_entry_}) v->setZero(m);
   history_t_.assign(static_cast<std::size_t>(options_.history), 0.0);
   history_u_.setZero(m, options_.history);
-  if (!filter_) return;
+  if (!filter_) {
+    estimator_ = detail::make_online_estimator(*law_, options_.filter, Mat(), -1);
+    return;
+  }
   hold_ = options_.filter.hold > 0.0 ? options_.filter.hold : law_->period();
   // The measurement of the heading: the row of C that is the heading's unit row, if any; its
   // innovation is an angle (as in the batch loop, output_feedback.cpp).
@@ -137,7 +149,6 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
   for (Mat* M : {&Sigma_, &Sigma_anchor_}) M->setZero(n, n);
   x_anchor_.setZero(n);
   for (Vec* v : {&y_, &y_anchor_}) v->setZero(p_);
-  u_entry_.setZero(m);
   estimator_ = detail::make_online_estimator(*law_, options_.filter, C_, heading_row_);
 }
 
@@ -208,19 +219,6 @@ int OnlineController::entry_at(double t) const noexcept {
   return history_start_;
 }
 
-void OnlineController::derivative(double t, const Vec& x, int entry, Vec& dx) noexcept {
-  const SampledLaw& law = *law_;
-  const double position = (t - law.t0()) / law.period();
-  const int k = std::clamp(static_cast<int>(std::floor(position)), 0, law.steps() - 1);
-  const double theta = std::clamp(position - k, 0.0, 1.0);
-  A_t_ = (1.0 - theta) * law.A(k) + theta * law.A(k + 1);
-  B_t_ = (1.0 - theta) * law.B(k) + theta * law.B(k + 1);
-  law.trajectory().u_d(t, u_d_.data());
-  ue_ = history_u_.col(entry) - u_d_;
-  dx.noalias() = A_t_ * x;
-  dx.noalias() += B_t_ * ue_;
-}
-
 void OnlineController::predict_to(double t) noexcept {
   const int capacity = options_.history;
   double s = t_x_;
@@ -234,25 +232,8 @@ void OnlineController::predict_to(double t) noexcept {
     const bool innovate = filter_ && have_y_ && s < y_until_;
     if (innovate) end = std::min(end, y_until_);
     const int substeps = std::max(1, static_cast<int>(std::ceil((end - s) / kMaxSubstep - 1e-9)));
-    if (filter_) {
-      u_entry_ = history_u_.col(entry);
-      estimator_->integrate(s, end, substeps, u_entry_, y_, innovate, x_, Sigma_);
-      s = end;
-      continue;
-    }
-    const double h = (end - s) / substeps;
-    for (int i = 0; i < substeps; ++i) {
-      const double a = s + i * h, mid = a + 0.5 * h, b = i + 1 == substeps ? end : a + h;
-      const double dt = b - a;
-      derivative(a, x_, entry, k1_);
-      x_stage_ = x_ + 0.5 * dt * k1_;
-      derivative(mid, x_stage_, entry, k2_);
-      x_stage_ = x_ + 0.5 * dt * k2_;
-      derivative(mid, x_stage_, entry, k3_);
-      x_stage_ = x_ + dt * k3_;
-      derivative(b, x_stage_, entry, k4_);
-      x_ += (dt / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
-    }
+    u_entry_ = history_u_.col(entry);
+    estimator_->integrate(s, end, substeps, u_entry_, y_, innovate, x_, Sigma_);
     s = end;
   }
   t_x_ = std::max(t_x_, t);

@@ -23,49 +23,52 @@ class Estimator final : public OnlineEstimator {
   using MatNP = Eigen::Matrix<double, N, Eigen::Dynamic>;  // n x p
 
   Estimator(const SampledLaw& law, const OnlineFilter& filter, const Mat& C, int heading_row)
-      : law_(law), heading_row_(heading_row),
+      : law_(law), filter_(filter.enabled()), heading_row_(heading_row),
         inv_gamma2_(std::isinf(law.gamma()) ? 0.0 : 1.0 / (law.gamma() * law.gamma())),
         // Sized here, not assigned later: Eigen's sized constructors leave the status fields
         // unset, and a copy of them is undefined behaviour.
         lu_(law.n()), llt_(law.n()), eigen_(law.n()) {
     const int n = law.n(), m = law.m();
-    C_ = C;
-    CtNinv_ = C.transpose() * filter.N.inverse();
-    S_predict_ = inv_gamma2_ * filter.Q;
-    S_innovate_ = S_predict_ - CtNinv_ * C_;
+    if (filter_) {
+      C_ = C;
+      CtNinv_ = C.transpose() * filter.N.inverse();
+      S_predict_ = inv_gamma2_ * filter.Q;
+      S_innovate_ = S_predict_ - CtNinv_ * C_;
+      innovation_.setZero(C.rows());
+    }
     for (MatN* M : {&A_, &DDt_, &Z_, &NN_, &gain_lhs_, &L_, &Sigma_, &S1_, &S2_, &S3_, &S4_, &S_stage_}) M->setZero(n, n);
     for (VecN* v : {&x_, &k1_, &k2_, &k3_, &k4_, &x_stage_, &n_tmp_, &r_}) v->setZero(n);
     B_.setZero(n, m);
     u_d_.setZero(m);
     ue_.setZero(m);
-    innovation_.setZero(C.rows());
   }
 
   void integrate(double s, double end, int substeps, const Vec& u, const Vec& y_e, bool innovate, Vec& x,
                  Mat& Sigma) noexcept override {
     x_ = x;
-    Sigma_ = Sigma;
+    if (filter_) Sigma_ = Sigma;
     const double h = (end - s) / substeps;
     for (int i = 0; i < substeps; ++i) {
       const double a = s + i * h, mid = a + 0.5 * h, b = i + 1 == substeps ? end : a + h;
       const double dt = b - a;
       derivative(a, x_, Sigma_, u, y_e, innovate, k1_, S1_);
       x_stage_ = x_ + 0.5 * dt * k1_;
-      S_stage_ = Sigma_ + 0.5 * dt * S1_;
+      if (filter_) S_stage_ = Sigma_ + 0.5 * dt * S1_;
       derivative(mid, x_stage_, S_stage_, u, y_e, innovate, k2_, S2_);
       x_stage_ = x_ + 0.5 * dt * k2_;
-      S_stage_ = Sigma_ + 0.5 * dt * S2_;
+      if (filter_) S_stage_ = Sigma_ + 0.5 * dt * S2_;
       derivative(mid, x_stage_, S_stage_, u, y_e, innovate, k3_, S3_);
       x_stage_ = x_ + dt * k3_;
-      S_stage_ = Sigma_ + dt * S3_;
+      if (filter_) S_stage_ = Sigma_ + dt * S3_;
       derivative(b, x_stage_, S_stage_, u, y_e, innovate, k4_, S4_);
       x_ += (dt / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+      if (!filter_) continue;
       Sigma_ += (dt / 6.0) * (S1_ + 2.0 * S2_ + 2.0 * S3_ + S4_);
       S_stage_ = Sigma_.transpose();  // keeps Sigma symmetric against round-off
       Sigma_ = 0.5 * (Sigma_ + S_stage_);
     }
     x = x_;
-    Sigma = Sigma_;
+    if (filter_) Sigma = Sigma_;
   }
 
   double coupling(double t, const Mat& Sigma) noexcept override {
@@ -82,8 +85,9 @@ class Estimator final : public OnlineEstimator {
   }
 
  private:
-  // A_e, B_e, D_e D_e' and Z interpolated linearly between the samples around t; nothing when
-  // they are already those of t (RK4 asks twice for the midpoint, and for each step's end).
+  // A_e, B_e (and with the filter D_e D_e' and Z) interpolated linearly between the samples around
+  // t; nothing when they are already those of t (RK4 asks twice for the midpoint, and for each
+  // step's end).
   void interpolate(double t) noexcept {
     if (t == interpolated_at_) return;
     interpolated_at_ = t;
@@ -92,11 +96,13 @@ class Estimator final : public OnlineEstimator {
     const double theta = std::clamp(position - k, 0.0, 1.0);
     A_ = (1.0 - theta) * law_.A(k) + theta * law_.A(k + 1);
     B_ = (1.0 - theta) * law_.B(k) + theta * law_.B(k + 1);
+    if (!filter_) return;
     DDt_ = (1.0 - theta) * law_.DDt(k) + theta * law_.DDt(k + 1);
     Z_ = (1.0 - theta) * law_.Z(k) + theta * law_.Z(k + 1);
   }
 
-  // (35) and (36) at t (see online_controller.hpp).
+  // The prediction of the error (state feedback), or (35) and (36) (output feedback), at t (see
+  // online_controller.hpp).
   void derivative(double t, const VecN& x, const MatN& Sigma, const Vec& u, const Vec& y_e, bool innovate, VecN& dx,
                   MatN& dSigma) noexcept {
     interpolate(t);
@@ -104,6 +110,7 @@ class Estimator final : public OnlineEstimator {
     ue_ = u - u_d_;
     dx.noalias() = A_ * x;
     dx.noalias() += B_ * ue_;
+    if (!filter_) return;
     // + gamma^-2 D_e D_e' Z q_hat (the worst-case disturbance the design assumes)
     n_tmp_.noalias() = Z_ * x;
     dx.noalias() += inv_gamma2_ * (DDt_ * n_tmp_);
@@ -127,6 +134,7 @@ class Estimator final : public OnlineEstimator {
   }
 
   const SampledLaw& law_;
+  bool filter_;  // output feedback
   int heading_row_;
   double inv_gamma2_;
   double interpolated_at_ = NAN;

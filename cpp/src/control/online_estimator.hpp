@@ -1,8 +1,9 @@
-// Private: the arithmetic of the output-feedback online controller (online_controller.hpp): the
-// estimator (35) and the filter (36) along the sampled law's tables, integrated by classical
-// Runge-Kutta steps, and the coupling condition's rho(Sigma Z). Fixed-size matrices for the
-// paper's 6 states (numerics/size_dispatch.hpp), dynamic ones otherwise; all memory is taken at
-// construction, and nothing here allocates, locks or throws afterwards.
+// Private: the arithmetic of the online controller (online_controller.hpp) between its calls: the
+// prediction of the tracking error along the sampled law's tables (state feedback), or the
+// estimator (35) and the filter (36) (output feedback), integrated by classical Runge-Kutta
+// steps, and the coupling condition's rho(Sigma Z). Fixed-size matrices for the paper's 6 states
+// (numerics/size_dispatch.hpp), dynamic ones otherwise; all memory is taken at construction, and
+// nothing here allocates, locks or throws afterwards.
 #pragma once
 
 #include <memory>
@@ -14,17 +15,19 @@ namespace hinf::detail {
 class OnlineEstimator {
  public:
   virtual ~OnlineEstimator() = default;
-  // `substeps` equal Runge-Kutta steps of (35)-(36) from s to end, the command u applied (m), the
-  // measured error y_e (p) held in the innovation when `innovate`; x (n) and Sigma (n x n) in and
-  // out.
+  // `substeps` equal Runge-Kutta steps from s to end with the command u applied (m): of
+  // dx/dt = A_e x + B_e (u - u_d) for state feedback (Sigma and y_e unused), of (35)-(36) for
+  // output feedback, the measured error y_e (p) held in the innovation when `innovate`; x (n) and
+  // Sigma (n x n) in and out.
   virtual void integrate(double s, double end, int substeps, const Vec& u, const Vec& y_e, bool innovate, Vec& x,
                          Mat& Sigma) noexcept = 0;
   // rho(Sigma Z(t)) (+inf when Sigma is not positive definite).
   virtual double coupling(double t, const Mat& Sigma) noexcept = 0;
 };
 
-// The estimator of `law` with the filter's weights (validated by the caller); C the model's
-// measurement matrix, heading_row the row of C that measures the heading (or -1).
+// The arithmetic for `law`: state feedback when filter.enabled() is false, else output feedback
+// with the filter's weights (validated by the caller), C the model's measurement matrix and
+// heading_row the row of C that measures the heading (or -1).
 std::unique_ptr<OnlineEstimator> make_online_estimator(const SampledLaw& law, const OnlineFilter& filter, const Mat& C,
                                                        int heading_row);
 

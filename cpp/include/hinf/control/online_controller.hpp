@@ -74,6 +74,7 @@ class SampledLaw {
 
   // The desired trajectory of the design.
   const Trajectory& trajectory() const { return *trajectory_; }
+  const TrajectoryPtr& trajectory_ptr() const { return trajectory_; }
   // "emulated" or "digital".
   const std::string& kind() const { return kind_; }
   // The gamma of the design (+inf: LQR).
@@ -266,9 +267,6 @@ class OnlineController {
   // The estimate (x_, and Sigma_ with output feedback) predicted from t_x_ to t along the
   // linearization with the applied commands (and the measurement held, while it is).
   void predict_to(double t) noexcept;
-  // dx = A_e(t) x + B_e(t) (u - u_d(t)), A_e and B_e interpolated between samples (into A_t_, B_t_),
-  // u the command of history entry `entry` (state feedback).
-  void derivative(double t, const Vec& x, int entry, Vec& dx) noexcept;
   // The history entry whose command is applied at t (the latest entry with time <= t).
   int entry_at(double t) const noexcept;
   void remember(double t, const Vec& u) noexcept;
@@ -281,8 +279,8 @@ class OnlineController {
   double t_last_ = 0.0;       // the last call's t_now
   double t_meas_last_ = 0.0;  // the last measurement used
   double t_x_ = 0.0, t_held_ = 0.0;
-  Vec x_, u_held_, u_, u_ff_, q_d_, u_d_, ue_, k1_, k2_, k3_, k4_, x_stage_;
-  Mat A_t_, B_t_;
+  Vec x_, u_held_, u_, u_ff_, q_d_;
+  Vec u_entry_;  // a command of the history, for the prediction
   // The applied commands: a ring of options_.history entries (time, command), oldest first from
   // history_start_.
   std::vector<double> history_t_;
@@ -290,13 +288,14 @@ class OnlineController {
   int history_start_ = 0, history_size_ = 0;
   std::size_t q_cursor_ = 0;
   OnlineCounts counts_;
+  std::unique_ptr<detail::OnlineEstimator> estimator_;  // the arithmetic between calls (private)
 
   // Output feedback.
   bool filter_ = false;
   int p_ = 0, heading_row_ = -1;  // measured outputs; the row of C that measures the heading
   double hold_ = 0.0;
   Mat C_, Sigma_;
-  Vec y_, u_entry_;           // the measured error y - C q_d(t_meas) held; a command of the history
+  Vec y_;                     // the measured error y - C q_d(t_meas) held
   bool have_y_ = false;       // a measurement is held in the innovation ...
   double y_until_ = 0.0;      // ... until this time
   // The estimate at the last measurement used (its time t_meas_last_), and the measurement then,
@@ -305,7 +304,6 @@ class OnlineController {
   Mat Sigma_anchor_;
   bool have_y_anchor_ = false;
   double y_until_anchor_ = 0.0;
-  std::unique_ptr<detail::OnlineEstimator> estimator_;
 };
 
 }  // namespace hinf
