@@ -494,7 +494,7 @@ TEST(ScenarioReader, NumbersMustBeFiniteExceptGamma) {
       {replace(kMinimal, "u1 = { offset = 1.0 }", "u1 = nan"), "[desired] u1: expected a finite number, got nan"},
       {measured + "eta = inf\n", "[measurement] eta: expected a finite number, got inf"},
       {kMinimal + "\n[solver]\nrtol = nan\n", "[solver] rtol: expected a finite number, got nan"},
-      {replace(kMinimal, "gamma = 5.0", "gamma = nan"), "[controller] gamma: expected a finite number, got nan"},
+      {replace(kMinimal, "gamma = 5.0", "gamma = nan"), "[controller] gamma: expected a number (inf allowed), got nan"},
   };
   for (const auto& [text, piece] : cases) {
     const std::string message = error_of(text);
@@ -1108,6 +1108,8 @@ TEST(ScenarioSampling, ErrorsNameTheKey) {
       {"period = 0.1\ndelay = 0.2\n", "[sampling] delay must be in [0, period]"},
       {"period = 0.1\nmeasurement_period = 0.15\n", "whole multiple of period"},
       {"period = 0.1\nmeasurement_period = 0.05\n", "whole multiple of period"},
+      {"period = 0.1\nmeasurement_period = 1e301\n", "at most the horizon"},
+      {"period = 0.1\nu_max = [nan, 1.0]\n", "u_max[0]: expected a number (inf allowed), got nan"},
       {"period = 0.1\nu_min = [1.0]\n", "u_min"},
       {"period = 0.1\nu_min = [1.0, 1.0]\nu_max = [0.0, 2.0]\n", "u_min <= u_max"},
       {"period = 0.1\nrate_max = [0.0, 1.0]\n", "rate_max"},

@@ -75,7 +75,8 @@ class TableReader {
     else if (const auto* f = node.as_floating_point()) value = f->get();
     else fail(key, "expected a number, got " + type_name(node));
     if (std::isnan(value) || (std::isinf(value) && !allow_infinite))
-      fail(key, str_cat("expected a finite number, got ", value));
+      fail(key, str_cat(allow_infinite ? "expected a number (inf allowed), got " : "expected a finite number, got ",
+                        value));
     return value;
   }
   std::string string_or(const std::string& key, const std::string& fallback) {

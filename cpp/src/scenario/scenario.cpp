@@ -169,6 +169,9 @@ void Scenario::validate() const {
       throw InputError(str_cat("[sampling] ", e.what()));
     }
     if (sp.measurement_period != 0.0) {
+      require(std::isfinite(sp.measurement_period) && sp.measurement_period <= tf - t0,
+              "[sampling] measurement_period must be at most the horizon tf - t0 = ", tf - t0, " s, got ",
+              sp.measurement_period);
       const double ratio = sp.measurement_period / sp.period;
       require(std::isfinite(ratio) && ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio,
               "[sampling] measurement_period must be a whole multiple of period = ", sp.period, " s (the sensor"
