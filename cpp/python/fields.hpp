@@ -112,6 +112,7 @@ template <>
 struct Fields<SampledLoopOptions> {
   static constexpr auto list = std::make_tuple(field("delay", &SampledLoopOptions::delay),
                                                field("simulation", &SampledLoopOptions::simulation),
+                                               field("measurement_every", &SampledLoopOptions::measurement_every),
                                                field("sigma", &SampledLoopOptions::sigma),
                                                field("noise", &SampledLoopOptions::noise));
 };

@@ -4681,6 +4681,9 @@ class SampledLoopOptions:
         t_k is applied from t_k + delay (T: one sample late)
     simulation : SimulationOptions, optional
         output grid, divergence bound, tolerances (method: erk always)
+    measurement_every : int, default 1
+        the sensor is read at every this many-th sample (k = 0, e,
+        2e, ...); the other samples are steps without a measurement
     sigma : float, default 0.0
         output feedback: the noise's standard deviation per sample
     noise : array_like, shape (k, p) or (0, 0), optional
@@ -4693,12 +4696,12 @@ class SampledLoopOptions:
     0.01
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('delay', 'simulation', 'sigma', 'noise')
+    __match_args__: typing.ClassVar[tuple] = ('delay', 'simulation', 'measurement_every', 'sigma', 'noise')
     def __eq__(self, arg0: SampledLoopOptions) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, simulation: SimulationOptions = ..., sigma: typing.SupportsFloat | typing.SupportsIndex = 0.0, noise: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ...) -> None:
+    def __init__(self, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, simulation: SimulationOptions = ..., measurement_every: typing.SupportsInt | typing.SupportsIndex = 1, sigma: typing.SupportsFloat | typing.SupportsIndex = 0.0, noise: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4712,6 +4715,15 @@ class SampledLoopOptions:
         """
     @delay.setter
     def delay(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def measurement_every(self) -> int:
+        """
+        the sensor is read at every this many-th sample (k = 0, e,
+        2e, ...); the other samples are steps without a measurement
+        """
+    @measurement_every.setter
+    def measurement_every(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
         ...
     @property
     def noise(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:

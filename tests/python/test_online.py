@@ -215,6 +215,12 @@ def test_simulate_sampled_with_output_feedback(trajectory, design):
     options = hc.SampledLoopOptions(sigma=0.5, noise=noise)
     run = hc.simulate_sampled(trajectory, controller, [w, w, w, 0, 0, 0], [1.0, 0.0, 0.0, -1.0, -1.0, 0.0], options)
     assert run.status == hc.RunStatus.completed and controller.counts().used == 100
+    # A sensor read every second sample: half the steps predict.
+    hc.simulate_sampled(trajectory, controller, None, np.zeros(6),
+                        hc.SampledLoopOptions(sigma=0.5, noise=noise, measurement_every=2))
+    assert controller.counts().used == 50 and controller.counts().predicted == 50
+    with pytest.raises(ValueError, match="measurement_every must be >= 1"):
+        hc.simulate_sampled(trajectory, controller, None, np.zeros(6), hc.SampledLoopOptions(measurement_every=0))
     with pytest.raises(ValueError, match="rows"):
         hc.simulate_sampled(trajectory, controller, None, np.zeros(6), hc.SampledLoopOptions(sigma=0.5, noise=noise[:5]))
     state_feedback = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
