@@ -137,18 +137,16 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
   for (Vec* v : {&u_held_, &u_, &u_ff_, &u_entry_}) v->setZero(m);
   history_t_.assign(static_cast<std::size_t>(options_.history), 0.0);
   history_u_.setZero(m, options_.history);
-  if (!filter_) {
-    estimator_ = detail::make_online_estimator(*law_, options_.filter, Mat(), -1);
-    return;
+  if (filter_) {
+    hold_ = options_.filter.hold > 0.0 ? options_.filter.hold : law_->period();
+    // The measurement of the heading: the row of C that is the heading's unit row, if any; its
+    // innovation is an angle (as in the batch loop, output_feedback.cpp).
+    for (int row = 0; heading_ >= 0 && row < p_; ++row)
+      if (C_(row, heading_) == 1.0 && C_.row(row).squaredNorm() == 1.0) heading_row_ = row;
+    for (Mat* M : {&Sigma_, &Sigma_anchor_}) M->setZero(n, n);
+    x_anchor_.setZero(n);
+    for (Vec* v : {&y_, &y_anchor_}) v->setZero(p_);
   }
-  hold_ = options_.filter.hold > 0.0 ? options_.filter.hold : law_->period();
-  // The measurement of the heading: the row of C that is the heading's unit row, if any; its
-  // innovation is an angle (as in the batch loop, output_feedback.cpp).
-  for (int row = 0; heading_ >= 0 && row < p_; ++row)
-    if (C_(row, heading_) == 1.0 && C_.row(row).squaredNorm() == 1.0) heading_row_ = row;
-  for (Mat* M : {&Sigma_, &Sigma_anchor_}) M->setZero(n, n);
-  x_anchor_.setZero(n);
-  for (Vec* v : {&y_, &y_anchor_}) v->setZero(p_);
   estimator_ = detail::make_online_estimator(*law_, options_.filter, C_, heading_row_);
 }
 
