@@ -4,6 +4,7 @@ Every library is compiled into a temporary cache folder, never the user's."""
 
 from __future__ import annotations
 
+import hashlib
 import os
 import pathlib
 import stat
@@ -180,14 +181,17 @@ def test_second_compile_is_a_cache_hit(compiled, cache):
     assert again.path == compiled.path and again.path.parent == cache
     assert again.compile_seconds == 0.0 and compiled.compile_seconds > 0.0
     assert again.path.name.startswith("examples-") and again.path.suffix == ".so"
-    # Only finished files in the cache: libraries and their sources, no temporary files.
+    # Only finished files in the cache: libraries, their sources and SHA-256 (sha256sum's
+    # format), no temporary files.
     assert again.path.with_suffix(".c").exists()
-    assert all(p.suffix in (".so", ".c") and not p.name.startswith(".") for p in cache.iterdir())
+    assert all(p.suffix in (".so", ".c", ".sha256") and not p.name.startswith(".") for p in cache.iterdir())
+    digest = hashlib.sha256(again.path.read_bytes()).hexdigest()
+    assert (cache / f"{again.path.name}.sha256").read_text() == f"{digest}  {again.path.name}\n"
 
 
 def test_cached_files_have_the_permissions_of_new_files(tmp_path):
-    """A cache folder may be shared: the library and its source are readable by whoever the
-    umask lets read new files (not private to the user, as temporary files would be)."""
+    """The library and its source are readable by whoever the umask lets read new files (not
+    private to the user, as temporary files would be); the folder is private (next test)."""
     previous = os.umask(0o022)
     try:
         library = codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "shared", cache_dir=tmp_path)
@@ -195,6 +199,109 @@ def test_cached_files_have_the_permissions_of_new_files(tmp_path):
         os.umask(previous)
     assert stat.S_IMODE(library.path.with_suffix(".c").stat().st_mode) == 0o644
     assert stat.S_IMODE(library.path.stat().st_mode) & 0o755 == 0o755  # readable and executable by all
+
+
+def test_the_cache_folder_is_private_whatever_the_umask(tmp_path):
+    """The folders made for the cache are 0700 (mkdir, then chmod), and no file in them can be
+    written by group or others, even under umask 0."""
+    folder = tmp_path / "made" / "cache"
+    previous = os.umask(0)
+    try:
+        library = codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "private", cache_dir=folder)
+    finally:
+        os.umask(previous)
+    assert stat.S_IMODE(folder.stat().st_mode) == 0o700
+    assert stat.S_IMODE(folder.parent.stat().st_mode) == 0o700
+    for path in folder.iterdir():
+        assert stat.S_IMODE(path.stat().st_mode) & 0o022 == 0, path
+
+
+def private_folder(path: pathlib.Path) -> pathlib.Path:
+    path.mkdir()
+    path.chmod(0o700)
+    return path
+
+
+def expected_library_name(tmp_path, functions, name) -> str:
+    """The file name compile_casadi_functions gives these functions (anyone with the same
+    compiler can compute it: found here by compiling them elsewhere)."""
+    return codegen.compile_casadi_functions(functions, name, cache_dir=tmp_path / "elsewhere").path.name
+
+
+PLANTED_C = r"""
+#include <stdio.h>
+__attribute__((constructor)) static void planted(void) {
+    FILE* f = fopen(MARKER, "w");
+    if (f) { fputs("the planted library was loaded\n", f); fclose(f); }
+}
+double scalar(double x) { return x; }
+"""
+
+
+@pytest.mark.parametrize("planted", ["library", "library with a wrong hash", "garbage", "library with its hash"])
+def test_a_planted_library_is_not_loaded_and_is_rebuilt(tmp_path, planted):
+    """A file put in the cache folder under the computed name is not loaded (its code would run
+    at load: here a constructor that writes a file), unless its SHA-256 is recorded beside it;
+    it is compiled anew. Recorded beside it (the user's own entry) but not loading with the
+    function asked for, it is compiled anew too."""
+    functions = [FUNCTIONS["scalar"]]
+    name = expected_library_name(tmp_path, functions, "planted")
+    cache = private_folder(tmp_path / "cache")
+    marker = tmp_path / "marker"
+    target = cache / name
+    if planted == "garbage":
+        target.write_bytes(b"\x7fELF" + os.urandom(4000))
+    else:
+        source = tmp_path / "planted.c"
+        source.write_text(PLANTED_C)
+        subprocess.run(["cc", "-shared", "-fPIC", f'-DMARKER="{marker}"', "-o", str(target), str(source)], check=True)
+    if planted == "library with a wrong hash":
+        (cache / f"{name}.sha256").write_text(f"{'0' * 64}  {name}\n")
+    if planted == "library with its hash":  # loads, but has none of CasADi's symbols: not usable
+        (cache / f"{name}.sha256").write_text(f"{hashlib.sha256(target.read_bytes()).hexdigest()}  {name}\n")
+    library = codegen.compile_casadi_functions(functions, "planted", cache_dir=cache)
+    if planted != "library with its hash":
+        assert not marker.exists(), "the planted library was loaded"
+    assert not library.cache_hit and library.path == target
+    assert library.function("scalar")(2.0)[0][0, 0] == 5.0  # 2^3 - 2*2 + 1: the real one
+    assert (cache / f"{name}.sha256").read_text().split()[0] == hashlib.sha256(target.read_bytes()).hexdigest()
+    assert codegen.compile_casadi_functions(functions, "planted", cache_dir=cache).cache_hit
+
+
+@pytest.mark.parametrize("damage", ["truncated", "hash removed"])
+def test_a_damaged_entry_is_rebuilt(tmp_path, damage):
+    first = codegen.compile_casadi_functions([FUNCTIONS["vector"]], "damaged", cache_dir=tmp_path)
+    if damage == "truncated":
+        data = first.path.read_bytes()
+        first.path.write_bytes(data[:len(data) // 2])
+    else:
+        (tmp_path / f"{first.path.name}.sha256").unlink()
+    again = codegen.compile_casadi_functions([FUNCTIONS["vector"]], "damaged", cache_dir=tmp_path)
+    assert not again.cache_hit and again.path == first.path
+    np.testing.assert_array_equal(again.function("vector")([1.0, 2.0, 3.0])[0].ravel(), [2.0, 2.0, 6.0])
+
+
+@pytest.mark.parametrize("mode, who", [(0o777, "group and others"), (0o720, "group"), (0o702, "others")],
+                         ids=["0777", "0720", "0702"])
+def test_a_cache_folder_others_can_write_is_refused(tmp_path, mode, who):
+    """Refused also when it holds a good entry: who can write the folder could have put it there."""
+    cache = tmp_path / "shared"
+    codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "shared", cache_dir=cache)
+    cache.chmod(mode)
+    with pytest.raises(codegen.CacheDirectoryError,
+                       match=rf"refusing the cache folder {cache} .*: {who} can write it \(mode 0{mode:o}\).*"
+                             rf"chmod 700 {cache}.*HINF_CPP_CACHE"):
+        codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "shared", cache_dir=cache)
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0, reason="chown to another user needs root")
+def test_a_cache_folder_of_another_user_is_refused(tmp_path):
+    cache = tmp_path / "theirs"
+    codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "theirs", cache_dir=cache)
+    os.chown(cache, 65534, -1)
+    with pytest.raises(codegen.CacheDirectoryError,
+                       match=rf"refusing the cache folder {cache} .*owned by another user \(uid 65534"):
+        codegen.compile_casadi_functions([FUNCTIONS["scalar"]], "theirs", cache_dir=cache)
 
 
 def test_another_expression_is_another_library(compiled, cache):
@@ -251,7 +358,7 @@ def test_concurrent_compiles_of_the_same_functions_both_succeed(tmp_path):
         assert p.returncode == 0, err
     paths = {out.split()[0] for out, _ in outputs}
     assert len(paths) == 1
-    assert sorted(p.suffix for p in tmp_path.iterdir()) == [".c", ".so"]  # no temporary files left
+    assert sorted(p.suffix for p in tmp_path.iterdir()) == [".c", ".sha256", ".so"]  # no temporary files left
 
 
 # ---- errors ----

@@ -21,6 +21,14 @@ once per machine and compiler; a changed expression is another file. The cache f
 Each file is written under a temporary name and renamed into place, so processes compiling the
 same functions at once each end with a complete library.
 
+A file name can be computed by anyone with the same compiler, so the name alone is not trusted:
+the cache folder is made private (mode 0700, whatever the umask), a folder that another user
+owns or that group or others can write is refused (:class:`CacheDirectoryError`, saying what to
+do), and each library's SHA-256 is recorded beside it (``<library>.sha256``) and checked before
+the library is loaded. An entry whose hash is missing or wrong, or that does not load, is
+compiled anew under the same name. :func:`check_cache_folder` and :func:`make_cache_folder` apply
+the same rules to the plan cache (``hinf_cpp.planning``).
+
 The generated code is pinned to the ABI the C++ loader reads: ``casadi_real = double`` and
 ``casadi_int = long long int``; the library also reports both sizes
 (``hinf_casadi_int_size()``, ``hinf_casadi_real_size()``), which the loader checks.
@@ -37,6 +45,7 @@ import re
 import secrets
 import shlex
 import shutil
+import stat
 import subprocess
 import tempfile
 import time
@@ -77,7 +86,8 @@ class CompilationError(RuntimeError):
 
 
 class CacheDirectoryError(OSError):
-    """The cache folder cannot be created or written."""
+    """The cache folder cannot be created or written, or is refused: another user owns it, or
+    group or others can write it."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -167,25 +177,112 @@ def _compiler_identity(command: tuple[str, ...]) -> str:
     return f"{os.path.realpath(command[0])} {' '.join(command[1:])}\n{version}"
 
 
-def _prepare_cache_dir(cache_dir: pathlib.Path) -> None:
+# What compile_casadi_functions writes, and what to do when its cache folder cannot be used.
+WHAT = "compiled CasADi functions"
+HINT = "Set HINF_CPP_CACHE to a writable folder, or pass cache_dir="
+# A library is not loaded from a folder or file whose mode has one of these bits.
+WRITABLE_BY_OTHERS = stat.S_IWGRP | stat.S_IWOTH
+
+
+def check_cache_folder(folder: pathlib.Path, what: str, hint: str) -> bool:
+    """Whether the cache folder exists; raises CacheDirectoryError for one that is not the
+    user's own and private: owned by another user, or writable by group or others (whoever can
+    write it can put a file under a name this package computes, and have it loaded or read).
+
+    `what` says what the folder keeps and `hint` where else to keep it, for the message."""
+    folder = pathlib.Path(folder)
     try:
-        cache_dir.mkdir(parents=True, exist_ok=True)
-        probe = tempfile.NamedTemporaryFile(dir=cache_dir, prefix=".probe-", delete=True)
-        probe.close()
+        info = folder.stat()
+    except (FileNotFoundError, NotADirectoryError):
+        return False
     except OSError as error:
+        raise CacheDirectoryError(f"cannot use the cache folder {folder} for {what}: {error.strerror or error}. "
+                                  f"{hint}") from error
+    if not stat.S_ISDIR(info.st_mode):
+        raise CacheDirectoryError(f"the cache folder {folder} for {what} is not a folder. {hint}")
+    if info.st_uid != os.geteuid():
         raise CacheDirectoryError(
-            f"cannot write compiled CasADi functions to the cache folder {cache_dir}: "
-            f"{error.strerror or error}. Set HINF_CPP_CACHE to a writable folder, or pass cache_dir=") from error
+            f"refusing the cache folder {folder} for {what}: it is owned by another user (uid {info.st_uid}, "
+            f"this process runs as uid {os.geteuid()}), who could have put files in it under the names this "
+            f"package looks for. Remove it (or have its owner do so), or use a folder of your own: {hint}")
+    if info.st_mode & WRITABLE_BY_OTHERS:
+        who = " and ".join(name for bit, name in ((stat.S_IWGRP, "group"), (stat.S_IWOTH, "others"))
+                           if info.st_mode & bit)
+        raise CacheDirectoryError(
+            f"refusing the cache folder {folder} for {what}: {who} can write it (mode "
+            f"{stat.S_IMODE(info.st_mode):04o}), so anyone could have put files in it under the names this "
+            f"package looks for. If its content is yours, make it private: chmod 700 {folder}; else remove "
+            f"it, or use another folder: {hint}")
+    return True
+
+
+def make_cache_folder(folder: pathlib.Path, what: str, hint: str) -> None:
+    """Creates the cache folder, and the missing folders above it, with mode 0700 whatever the
+    umask (mkdir, then chmod); checks it (:func:`check_cache_folder`) and that a file can be
+    written in it. Raises CacheDirectoryError otherwise."""
+    folder = pathlib.Path(folder)
+    missing = []
+    for parent in (folder, *folder.parents):
+        if os.path.lexists(parent):
+            break
+        missing.append(parent)
+    try:
+        for made in reversed(missing):
+            try:
+                os.mkdir(made, 0o700)
+            except FileExistsError:  # made by another process meanwhile: checked below
+                continue
+            os.chmod(made, 0o700)
+        check_cache_folder(folder, what, hint)
+        probe = tempfile.NamedTemporaryFile(dir=folder, prefix=".probe-", delete=True)
+        probe.close()
+    except CacheDirectoryError:
+        raise
+    except OSError as error:
+        raise CacheDirectoryError(f"cannot write {what} to the cache folder {folder}: {error.strerror or error}. "
+                                  f"{hint}") from error
+
+
+def _hash_path(library: pathlib.Path) -> pathlib.Path:
+    """Where the library's SHA-256 is recorded (sha256sum's format: digest, two spaces, name)."""
+    return library.with_name(library.name + ".sha256")
+
+
+def _sha256(path: pathlib.Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _usable_entry(library: pathlib.Path, symbol: str) -> bool:
+    """Whether a cached library may be used: a regular file of this user that group and others
+    cannot write, whose SHA-256 is the one recorded beside it, and that loads (with `symbol`)."""
+    try:
+        info = os.lstat(library)
+        if not stat.S_ISREG(info.st_mode) or info.st_uid != os.geteuid() or info.st_mode & WRITABLE_BY_OTHERS:
+            return False
+        recorded = _hash_path(library).read_text().split()
+        if not recorded or recorded[0] != _sha256(library):
+            return False
+    except (OSError, UnicodeDecodeError):
+        return False
+    from hinf_cpp._core import GeneratedFunction
+
+    try:
+        GeneratedFunction(str(library), symbol)
+    except (ValueError, RuntimeError):
+        return False
+    return True
 
 
 def _write_atomically(path: pathlib.Path, write) -> None:
     """Writes through write(temporary path) and renames the result into place: readers see the
     old file or the new one, never a part. The temporary name is unique to this call (process
     id and random digits) and write() creates the file, so its permissions follow the umask
-    like any new file's (mkstemp would make it private to the user)."""
+    like any new file's (mkstemp would make it private to the user), less write permission for
+    group and others (a cache entry they could write is not used)."""
     temporary = path.with_name(f".{path.name}.{os.getpid()}.{secrets.token_hex(8)}.tmp")
     try:
         write(temporary)
+        os.chmod(temporary, stat.S_IMODE(os.stat(temporary).st_mode) & ~WRITABLE_BY_OTHERS)
         os.replace(temporary, path)
     finally:
         temporary.unlink(missing_ok=True)
@@ -201,6 +298,8 @@ def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
     with ``-O2 -fPIC -shared`` into the cache folder. The file name carries a SHA-256 of the
     C source, the compiler's identity and the flags: the same functions compile once per
     machine and compiler. Files are written under a temporary name and renamed into place.
+    The cache folder is made with mode 0700; a cached library is used only if its SHA-256 is
+    the one recorded beside it (``<library>.sha256``) and it loads, else it is compiled anew.
 
     Parameters
     ----------
@@ -230,7 +329,8 @@ def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
     hinf_cpp.models.codegen.CompilationError
         The compiler is missing or fails (with the end of its error output).
     hinf_cpp.models.codegen.CacheDirectoryError
-        The cache folder cannot be created or written (an OSError).
+        The cache folder cannot be created or written, or is refused: another user owns it, or
+        group or others can write it (an OSError; the message says what to do).
 
     Examples
     --------
@@ -258,10 +358,11 @@ def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
     key = hashlib.sha256(key_text.encode()).hexdigest()[:32]
     folder = pathlib.Path(cache_dir) if cache_dir is not None else default_cache_dir()
     library = folder / f"{name}-{key}.so"
-    if library.exists():
+    if check_cache_folder(folder, WHAT, HINT) and _usable_entry(library, functions[0].name()):
         return CompiledLibrary(library, True, generate_seconds, 0.0)
 
-    _prepare_cache_dir(folder)
+    # Absent, damaged, planted or unloadable: compiled anew under the same name.
+    make_cache_folder(folder, WHAT, HINT)
     started = time.perf_counter()
     # The source is kept beside the library (same key), for reading and debugging.
     c_file = library.with_suffix(".c")
@@ -280,4 +381,6 @@ def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
                 f"({c_file}):\n$ {shlex.join(arguments)}\n{tail or '(no output)'}")
 
     _write_atomically(library, compile_to)
+    digest = _sha256(library)
+    _write_atomically(_hash_path(library), lambda temporary: temporary.write_text(f"{digest}  {library.name}\n"))
     return CompiledLibrary(library, False, generate_seconds, time.perf_counter() - started)
