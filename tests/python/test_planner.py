@@ -6,7 +6,12 @@ error, fast; bad arguments."""
 
 from __future__ import annotations
 
+import json
 import math
+import os
+import pathlib
+import shutil
+import stat
 
 import numpy as np
 import pytest
@@ -20,6 +25,7 @@ ca = pytest.importorskip("casadi")
 from hinf_cpp.planning.planner import (PlanOptions, UnreachableWaypointError, Waypoint, plan,  # noqa: E402
                               time_grid, waypoints_from_path)
 from hinf_cpp.models.builtin import symbolic_model  # noqa: E402
+from hinf_cpp.models.codegen import CacheDirectoryError  # noqa: E402
 
 BUILT_IN = {
     "ship": hc.ShipModel(hc.ShipParameters(m_u=0.6, m_v=-1.5, m_r=0.4, d_u=1.1, d_v=2.5, d_r=0.9)),
@@ -169,6 +175,114 @@ def test_unreachable_waypoint_is_a_clear_error_fast():
     # The closest a ship at full speed gets: at least 200 - 2 * 40 = 120 m short.
     assert caught.value.miss * options.tolerance > 100.0
     assert isinstance(caught.value, ValueError)
+
+
+# ---- the plan cache ----
+
+CACHED_WAYPOINTS = [Waypoint(10.0, 0.0, t=10.0), Waypoint(20.0, 2.0, t=20.0)]
+CACHED_OPTIONS = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), interval=1.0)
+
+
+def cached_plan(cache_dir):
+    return plan(hc.ShipModel(), CACHED_WAYPOINTS, q0=[1.0, 0, 0, 0, 0, 0], options=CACHED_OPTIONS, cache_dir=cache_dir)
+
+
+@pytest.fixture(scope="module")
+def good_entry(tmp_path_factory):
+    """A plan cache with one good entry: (the plan, the entry's file)."""
+    folder = tmp_path_factory.mktemp("plans") / "plans"
+    first = cached_plan(folder)
+    (entry,) = folder.glob("*.json")
+    return first, entry
+
+
+def without_stats(data):
+    del data["stats"]
+
+
+def stats_of_another_type(data):
+    data["stats"]["iterations"] = "many"
+
+
+def one_input_missing(data):
+    data["u"] = [row[:1] for row in data["u"]]
+
+
+def not_a_number(data):
+    data["q"][3][0] = None
+
+
+def another_document(data):
+    data.clear()
+    data["plan"] = "elsewhere"
+
+
+@pytest.mark.ipopt
+@pytest.mark.parametrize("damage", [without_stats, stats_of_another_type, one_input_missing, not_a_number,
+                                    another_document, "truncated", "not UTF-8", "a folder"],
+                         ids=lambda d: d if isinstance(d, str) else d.__name__)
+def test_a_damaged_plan_cache_entry_is_planned_anew_and_replaced(good_entry, tmp_path, damage):
+    """An entry that cannot be read, or fails a check, is planned anew (never an error): valid
+    JSON without the key 'stats' used to fail every run with KeyError."""
+    first, good = good_entry
+    folder = tmp_path / "plans"
+    folder.mkdir(mode=0o700)
+    entry = folder / good.name
+    if damage == "truncated":
+        entry.write_text(good.read_text()[:200])
+    elif damage == "not UTF-8":
+        entry.write_bytes(b"\xff\xfe" + good.read_bytes())
+    elif damage == "a folder":
+        entry.mkdir()
+    else:
+        data = json.loads(good.read_text())
+        damage(data)
+        entry.write_text(json.dumps(data))
+    if damage == "a folder":  # planned, and not cached: a folder is not replaced by a file
+        with pytest.warns(UserWarning, match=rf"the plan could not be cached in {folder}: Is a directory"):
+            again = cached_plan(folder)
+    else:
+        again = cached_plan(folder)
+    assert not again.report.cache_hit
+    np.testing.assert_allclose(again.u, first.u, atol=1e-8)
+    if damage != "a folder":  # replaced by a good entry
+        assert json.loads(entry.read_text())["stats"]["status"] == "Solve_Succeeded"
+        assert cached_plan(folder).report.cache_hit
+
+
+@pytest.mark.ipopt
+def test_the_plan_cache_folder_is_private_whatever_the_umask(good_entry, tmp_path):
+    folder = tmp_path / "made" / "plans"
+    previous = os.umask(0)
+    try:
+        cached_plan(folder)
+    finally:
+        os.umask(previous)
+    assert stat.S_IMODE(folder.stat().st_mode) == 0o700
+    assert stat.S_IMODE(folder.parent.stat().st_mode) == 0o700
+    (entry,) = folder.glob("*.json")
+    assert stat.S_IMODE(entry.stat().st_mode) & 0o022 == 0
+
+
+def test_a_plan_cache_folder_others_can_write_is_refused(good_entry, tmp_path):
+    """Refused before anything is read from it (its entry is good: a cache hit otherwise)."""
+    folder = tmp_path / "plans"
+    folder.mkdir()
+    shutil.copy(good_entry[1], folder)
+    folder.chmod(0o777)
+    with pytest.raises(CacheDirectoryError, match=rf"refusing the cache folder {folder} for planned trajectories: "
+                                                  rf"group and others can write it.*chmod 700 {folder}.*HINF_CPP_CACHE"):
+        cached_plan(folder)
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0, reason="chown to another user needs root")
+def test_a_plan_cache_folder_of_another_user_is_refused(good_entry, tmp_path):
+    folder = tmp_path / "plans"
+    folder.mkdir(mode=0o700)
+    shutil.copy(good_entry[1], folder)
+    os.chown(folder, 65534, -1)
+    with pytest.raises(CacheDirectoryError, match=rf"refusing the cache folder {folder} .*owned by another user"):
+        cached_plan(folder)
 
 
 def test_path_with_a_speed_profile_and_grid():

@@ -45,12 +45,16 @@ from collections.abc import Sequence
 import numpy as np
 
 from hinf_cpp import _core
+from hinf_cpp.models.codegen import CacheDirectoryError, _write_atomically, check_cache_folder, make_cache_folder
 from hinf_cpp.models.symbolic import SymbolicModel, _casadi
 from hinf_cpp.models.builtin import symbolic_model
 
 __all__ = ["FeasibilityReport", "Plan", "PlanOptions", "PlanningError", "UnreachableWaypointError", "Waypoint",
            "default_cache_dir", "plan", "waypoints_from_path"]
 
+# What the plan cache keeps, and where else to keep it, for the messages about its folder.
+CACHE_WHAT = "planned trajectories"
+CACHE_HINT = "Set HINF_CPP_CACHE to a folder of your own (plans go to $HINF_CPP_CACHE/plans), or pass cache_dir="
 # Part of every cache key (planned_scenario.py): a change to the formulation changes it.
 PLANNER_VERSION = 1
 # Weights of a waypoint condition's slack (per tolerance). An exact penalty meets every
@@ -585,7 +589,8 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
         A folder (e.g. :func:`default_cache_dir`) where plans are kept by the content of
         what they depend on (the model's equations, q0, the horizon, the waypoints, the
         options, the planner's version): the same request again is read back, re-simulated
-        and checked instead of optimized. None (default): no cache.
+        and checked instead of optimized; an entry that cannot be read or fails its checks is
+        planned anew and replaced. The folder is made with mode 0700. None (default): no cache.
 
     Returns
     -------
@@ -597,6 +602,9 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     ValueError
         Bad arguments (q0 not n finite numbers, a model without two position components or
         without a CasADi form, bad waypoints or options, times that do not increase).
+    hinf_cpp.models.codegen.CacheDirectoryError
+        An OSError: `cache_dir` is owned by another user, or group or others can write it
+        (the message says what to do).
     UnreachableWaypointError
         A ValueError: a waypoint cannot be met with the input bounds and the time given.
     PlanningError
@@ -643,9 +651,10 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     cache_path = None
     if cache_dir is not None:
         cache_path = pathlib.Path(cache_dir) / f"{_cache_key(dynamics, cpp_model, q0, t0, tf, waypoints, options)}.json"
-        cached = _read_cached(cache_path, cpp_model, waypoints, nodes, t, q0, options, started)
-        if cached is not None:
-            return cached
+        if check_cache_folder(cache_path.parent, CACHE_WHAT, CACHE_HINT):
+            cached = _read_cached(cache_path, cpp_model, waypoints, nodes, t, q0, options, started)
+            if cached is not None:
+                return cached
     iterate = _Iterate(*_initial_guess(dynamics, symbolic, q0, t, waypoints, nodes, options))
     # A first solve with a quarter of the substeps finds the solution (or the unreachable
     # waypoint) at a quarter of the cost per iteration; each solve after it starts from the
@@ -696,7 +705,9 @@ def default_cache_dir() -> pathlib.Path:
     """The folder where scenario files' plans are cached.
 
     ``$HINF_CPP_CACHE/plans``, else ``$XDG_CACHE_HOME/hinf_cpp/plans`` or
-    ``~/.cache/hinf_cpp/plans``; it is created when a plan is written.
+    ``~/.cache/hinf_cpp/plans``; it is created (mode 0700) when a plan is written. A folder
+    that another user owns or that group or others can write is refused, as the compile
+    cache's (:func:`hinf_cpp.models.codegen.check_cache_folder`).
 
     Returns
     -------
@@ -725,45 +736,47 @@ def _cache_key(F, cpp_model, q0, t0, tf, waypoints, options) -> str:
 
 
 def _read_cached(path: pathlib.Path, cpp_model, waypoints, nodes, t, q0, options, started) -> Plan | None:
-    """The cached plan, re-simulated and checked again; None if absent, unreadable or failing
-    its checks (then it is planned anew)."""
+    """The cached plan, re-simulated and checked again; None if absent, unreadable, damaged or
+    failing its checks (then it is planned anew and the entry replaced): an entry never makes
+    planning fail."""
     try:
         data = json.loads(path.read_text())
         q, u = np.array(data["q"], dtype=float), np.array(data["u"], dtype=float)
-        if not (np.array_equal(np.array(data["t"]), t) and q.shape == (len(t), len(q0)) and u.shape[0] == len(t)):
+        stats = data["stats"]
+        iterations, solve_seconds = int(stats["iterations"]), float(stats["solve_seconds"])
+        substeps, status = int(stats["substeps"]), str(stats["status"])
+        if not (np.array_equal(np.array(data["t"]), t) and q.shape == (len(t), len(q0))
+                and u.shape == (len(t), cpp_model.m()) and np.all(np.isfinite(q)) and np.all(np.isfinite(u))):
             return None
-    except (OSError, ValueError, KeyError, TypeError):
-        return None
-    trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, u), float(t[0]), float(t[-1]))
-    mismatch = _mismatch(trajectory, t, q, list(cpp_model.position_indices()))
-    if mismatch[0] > options.max_mismatch:
-        return None
-    stats = data["stats"]
-    report = FeasibilityReport(
-        position_mismatch=mismatch[0], position_mismatch_t=mismatch[1], state_mismatch=mismatch[2],
-        waypoint_errors=[], heading_errors=[], speed_errors=[], iterations=int(stats["iterations"]),
-        solve_seconds=float(stats["solve_seconds"]), seconds=0.0, substeps=int(stats["substeps"]),
-        intervals=len(t) - 1, status=str(stats["status"]), cache_hit=True)
-    result = Plan(cpp_model, waypoints, nodes, t, q, u, trajectory, report)
-    try:
+        trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, u), float(t[0]), float(t[-1]))
+        mismatch = _mismatch(trajectory, t, q, list(cpp_model.position_indices()))
+        if not mismatch[0] <= options.max_mismatch:  # NaN too
+            return None
+        report = FeasibilityReport(
+            position_mismatch=mismatch[0], position_mismatch_t=mismatch[1], state_mismatch=mismatch[2],
+            waypoint_errors=[], heading_errors=[], speed_errors=[], iterations=iterations,
+            solve_seconds=solve_seconds, seconds=0.0, substeps=substeps, intervals=len(t) - 1, status=status,
+            cache_hit=True)
+        result = Plan(cpp_model, waypoints, nodes, t, q, u, trajectory, report)
         _check_waypoints(result, options)
-    except PlanningError:
+    except Exception:  # noqa: BLE001 - whatever is wrong with an entry (its file, its JSON, its numbers), plan anew
         return None
     report.seconds = time.perf_counter() - started
     return result
 
 
 def _write_cached(path: pathlib.Path, result: Plan) -> None:
-    """Keeps the plan (written whole or not at all); a cache that cannot be written is a warning."""
+    """Keeps the plan (written whole or not at all, replacing a damaged entry) in a folder made
+    private (0700); a cache that cannot be written is a warning."""
     r = result.report
     data = {"t": result.t.tolist(), "q": result.q.tolist(), "u": result.u.tolist(),
             "stats": {"iterations": r.iterations, "solve_seconds": r.solve_seconds, "substeps": r.substeps,
                       "status": r.status}}
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        temporary = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-        temporary.write_text(json.dumps(data))
-        os.replace(temporary, path)
+        make_cache_folder(path.parent, CACHE_WHAT, CACHE_HINT)
+        _write_atomically(path, lambda temporary: temporary.write_text(json.dumps(data)))
+    except CacheDirectoryError as error:  # its message names the folder and says what to do
+        warnings.warn(f"the plan could not be cached: {error}", UserWarning, stacklevel=3)
     except OSError as error:
         warnings.warn(f"the plan could not be cached in {path.parent}: {error.strerror or error} (set HINF_CPP_CACHE "
                       "to a writable folder)", UserWarning, stacklevel=3)
