@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import tomllib
@@ -20,7 +21,7 @@ from _support import numbers_close
 
 pytest.importorskip("casadi")
 
-from hinf_cpp.scenario.planned import load_planned, plan_scenario  # noqa: E402
+from hinf_cpp.scenario.planned import load_planned, plan_scenario, planned_scenario_toml  # noqa: E402
 from hinf_cpp.planning.planner import UnreachableWaypointError  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -192,3 +193,35 @@ def test_a_symbolic_model_named_by_a_python_callable(tmp_path):
     # The same statement, one route compiled from CasADi at run time: the same optimum to IPOPT's
     # tolerance (1e-9 relative), far below the inputs' size (~1).
     np.testing.assert_allclose(planned.plan.u, builtin.plan.u, atol=1e-6)
+
+
+@pytest.mark.ipopt
+def test_a_written_planned_file_does_not_point_into_the_cache(tmp_path, monkeypatch):
+    """A SymbolicModel named by kind = "python" is compiled into the compile cache; the planned
+    file written for hinf-sim must not name it there (deleting the cache is always safe): the
+    model is copied beside the file and named relative to it."""
+    cache = tmp_path / "cache"  # this test's own: deleted below
+    monkeypatch.setenv("HINF_CPP_CACHE", str(cache))
+    path = tmp_path / "lane.toml"
+    path.write_text(mutate(LANE, 'kind = "ship"', 'kind = "python"\ncallable = "hinf_cpp.models.builtin:ship"'))
+    planned = load_planned(path)
+    assert pathlib.Path(planned.scenario.model.metadata_path()).parent == cache
+    out = tmp_path / "out" / "planned.toml"
+    out.parent.mkdir()
+    text = planned_scenario_toml(planned, out)
+    out.write_text(text)
+    assert str(cache) not in text
+    written = tomllib.loads(text)["model"]
+    assert written["kind"] == "casadi" and written["file"].startswith("planned.models/")
+    copied = sorted(p.suffix for p in (out.parent / "planned.models").iterdir())
+    assert copied == [".c", ".json", ".so"]
+    expected = hc.run_scenario(planned.scenario)
+    shutil.rmtree(cache)
+    moved = tmp_path / "moved"  # the folder moves with the file
+    shutil.move(out.parent, moved)
+    result = hc.run_scenario(hc.load_scenario(moved / "planned.toml"))
+    assert result.metrics.final_position_error == expected.metrics.final_position_error
+    # A built-in model: written as hinf_cpp.scenario_toml writes it, nothing copied.
+    builtin = plan_scenario(tomllib.loads(LANE), "lane.toml")
+    assert planned_scenario_toml(builtin, tmp_path / "builtin.toml") == hc._core.scenario_toml(builtin.scenario)
+    assert not (tmp_path / "builtin.models").exists()

@@ -5,7 +5,9 @@ the planning keys in [desired] as tables with interpolation = "linear"; the scen
 through the one C++ reader like any other. Plans are cached by the content of what they depend
 on (``hinf_cpp.planning.planner.default_cache_dir``), so running a file again does not optimize again.
 ``hinf-sim`` does not plan: it refuses these keys and says to run ``hinf-cpp run`` or to write
-the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml``. For example::
+the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml`` (:func:`planned_scenario_toml`:
+a model compiled from CasADi is copied beside the written file, which never points into a
+cache). For example::
 
     [desired]
     q0 = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
@@ -21,18 +23,23 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import json
 import math
 import os
 import pathlib
 import re
+import shutil
 import tomllib
 
 from hinf_cpp import _core
+from hinf_cpp.models.codegen import _write_atomically
+from hinf_cpp.models.codegen import default_cache_dir as compile_cache_dir
 from hinf_cpp.planning.planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
                       waypoints_from_path)
 from hinf_cpp.scenario.documents import resolve_callable, toml_text
 
-__all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario"]
+__all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario",
+           "planned_scenario_toml"]
 
 #: The keys of [desired] that ask for planning (docs/planning.md).
 PLANNING_KEYS = ("waypoints", "path", "plan")
@@ -251,6 +258,81 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> Pla
     document["desired"] = dict(skeleton["desired"], **result.input_tables())
     scenario = _core.parse_scenario_toml(toml_text(document, source), source)
     return PlannedScenario(scenario, result, document, source)
+
+
+def planned_scenario_toml(planned: PlannedScenario, output: str | os.PathLike) -> str:
+    """The planned scenario as the text of a scenario file to be written at `output`, which does
+    not depend on any cache.
+
+    ``hinf_cpp.scenario.scenario_toml`` writes a model compiled from CasADi (``[model] kind =
+    "python"`` naming a SymbolicModel, or the same in [plant]) as ``kind = "casadi"`` with the
+    absolute path of its description in the compile cache, which may be deleted at any time.
+    Such a model's description, library and C source are copied here into the folder
+    ``<output's stem>.models`` beside `output`, and the file names them relative to itself
+    (the folder moves with the file). Other models are written as
+    ``hinf_cpp.scenario.scenario_toml`` writes them.
+
+    Parameters
+    ----------
+    planned : PlannedScenario
+        What :func:`plan_scenario` or :func:`load_planned` returned.
+    output : str or os.PathLike
+        Where the text will be written (a device such as ``/dev/stdout`` too: then the folder
+        is made in the working directory and named by its absolute path).
+
+    Returns
+    -------
+    str
+        The scenario file's text (TOML), which ``hinf-sim`` runs.
+
+    Raises
+    ------
+    OSError
+        The folder beside `output` cannot be written.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.planned import load_planned, planned_scenario_toml
+    >>> planned = load_planned(hc.scenario_path("planned/ship_lane_change"), cache=False)
+    >>> text = planned_scenario_toml(planned, "lane_change.toml")  # a built-in ship: nothing copied
+    >>> 'kind = "ship"' in text
+    True
+    """
+    output = pathlib.Path(output)
+    text = _core.scenario_toml(planned.scenario)
+    cache = os.path.realpath(compile_cache_dir())
+    cached = {}  # the description's path as written -> its copy
+    for model in (planned.scenario.model, planned.scenario.plant):
+        if not isinstance(model, _core.GeneratedModel):
+            continue
+        description = os.path.normpath(os.path.abspath(model.metadata_path()))
+        if os.path.commonpath([os.path.realpath(description), cache]) == cache:
+            cached[description] = pathlib.Path(description)
+    if not cached:
+        return text
+    device = output.exists() and not output.is_file()
+    folder = (pathlib.Path.cwd() / f"{planned.scenario.name or 'planned'}.models" if device
+              else output.parent / f"{output.stem}.models")
+    folder.mkdir(parents=True, exist_ok=True)
+    written = {}
+    for description, path in cached.items():
+        library = path.parent / json.loads(path.read_text())["library"]
+        c_source = library.with_suffix(".c")  # for reading: copied when there
+        for source in (path, library, *([c_source] if c_source.exists() else [])):
+            _write_atomically(folder / source.name, lambda temporary, source=source: shutil.copyfile(source, temporary))
+        written[description] = str((folder / path.name).resolve()) if device else f"{folder.name}/{path.name}"
+    lines = text.splitlines(keepends=True)
+    for i, line in enumerate(lines):
+        match = re.fullmatch(r"(\s*file\s*=\s*)(\".*\")(\s*)", line)
+        if match is None:
+            continue
+        try:
+            value = tomllib.loads(f"v = {match.group(2)}")["v"]
+        except tomllib.TOMLDecodeError:
+            continue
+        if value in written:
+            lines[i] = match.group(1) + json.dumps(written[value]) + match.group(3)
+    return "".join(lines)
 
 
 def _planner_model(table: dict, model: _core.Model, source: str):
