@@ -275,6 +275,19 @@ def test_a_pickled_and_a_rewritten_scenario_run_to_the_same_result(mc_study):
     ("[study]\nscenario = 'fig2.toml'\n[[random]]\nkey = 'model.nope'\ndistribution = 'uniform'\n"
      "low = 0.5\nhigh = 1.5\nrelative = true\n", "no parameter 'nope'"),
     ("[study]\nscenario = 'fig2.toml'\nseeds = 3\n", "unknown key 'seeds'"),
+    ("[study]\nscenario = 'fig2.toml'\n" + ".".join(["a"] * 30) + " = 1\n",
+     "study.toml:3: the key '" + "a." * 20 + "...' has more than 16 dotted parts"),
+    ("[study]\nscenario = 'fig2.toml'\n[[grid]]\nkey = 'controller.gamma'\nvalues = [5.0, 'x']\n",
+     "[[grid]] 1: controller.gamma values must be numbers"),
+    ("[study]\nscenario = 'fig2.toml'\n[report]\nheading_tol = 'x'\n", "[report]: 'heading_tol' must be a finite number"),
+    ("[study]\nscenario = 'fig2.toml'\n[report]\nposition_tol = -1\n", "[report]: 'position_tol' must be > 0"),
+    ("[study]\nscenario = 'fig2.toml'\n[report]\nmetrics = 'final_position_error'\n",
+     "[report] metrics must be a list of metric names"),
+    ("[study]\nscenario = 'fig2.toml'\n[[grid]]\nkey = 'initial.q0[5]'\nvalues = [0.0, '1']\n"
+     "[[grid]]\nkey = 'initial.q0[4]'\nvalues = [0.0]\n[report]\nroa = ['initial.q0[5]', 'initial.q0[4]']\n",
+     "[report] roa: the values of 'initial.q0[5]' must be numbers"),
+    ("[study]\nscenario = 'fig2.toml'\nsamples = 1000000000000\n[[random]]\nkey = 'measurement.seed'\n"
+     "distribution = 'seed'\n", "1000000000000 runs, more than the 10000000"),
 ])
 def test_bad_study_files_are_refused_naming_the_problem(tmp_path, body, message):
     with pytest.raises(ValueError, match=message.replace("[", r"\[")):

@@ -23,6 +23,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import shutil
 import threading
 import time
@@ -56,6 +57,11 @@ METRIC_NAMES = [definition.name for definition in _core.metric_table()]
 SEED_KEY = "measurement.seed"
 DISTRIBUTIONS = ("seed", "uniform", "normal")
 DEFAULT_CHUNK = 100
+#: The most runs a study may have (its table alone would take gigabytes beyond it).
+MAX_RUNS = 10 ** 7
+#: The most parts of a dotted key in a study or base scenario file, as the C++ scenario reader
+#: (cpp/src/io/toml_table.cpp, kMaxKeyParts): Python's TOML reader takes memory quadratic in them.
+MAX_KEY_PARTS = 16
 _SEED_LIMIT = 2 ** 63
 
 
@@ -93,6 +99,11 @@ class GridAxis:
         if len(self.keys) == 1:
             return [(self.keys[0], value)]
         return list(zip(self.keys, value))
+
+    def column(self, key: str) -> list:
+        """The values of one of its keys, point by point."""
+        j = self.keys.index(key)
+        return [v if len(self.keys) == 1 else v[j] for v in self.values]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -311,6 +322,37 @@ def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> flo
     raise ValueError(f"relative = true needs a base value: '{key}' is not in the scenario")
 
 
+# A token of TOML text: a part of a key (a string, basic or literal, single- or multi-line, or a
+# bare word), a dot, blanks and comments, or any other character (a line break, "=", ...).
+_TOML_TOKEN = re.compile(r'(?P<part>"""[\s\S]*?(?:"""|\Z)|\'\'\'[\s\S]*?(?:\'\'\'|\Z)|"(?:[^"\\\n]|\\.)*"?'
+                         r"|'[^'\n]*'?|[A-Za-z0-9_-]+)|(?P<dot>\.)|(?P<blank>[ \t]+|#[^\n]*)|(?P<other>[\s\S])")
+
+
+def _read_toml(path: pathlib.Path, what: str = "") -> dict:
+    """read_toml_file, after refusing a key of more than MAX_KEY_PARTS dotted parts (outside
+    strings and comments) as the C++ reader does: tomllib takes memory quadratic in them (2.4 GB
+    for 20 000)."""
+    try:
+        text = path.read_bytes().decode("utf-8", "replace")
+    except OSError:
+        text = ""  # read_toml_file says why it cannot be read
+    parts, after_dot, line, start = 0, False, 1, 0
+    for token in _TOML_TOKEN.finditer(text):
+        kind = token.lastgroup
+        if kind == "part":
+            start = start if after_dot else token.start()
+            parts, after_dot = (parts + 1 if after_dot else 1), False
+            if parts > MAX_KEY_PARTS:
+                raise ValueError(f"{path}:{line}: the key '{text[start:start + 40]}...' has more than "
+                                 f"{MAX_KEY_PARTS} dotted parts (tables nested too deeply for a study)")
+        elif kind == "dot" and parts and not after_dot:
+            after_dot = True
+        elif kind != "blank":
+            parts, after_dot = 0, False
+        line += token.group().count("\n")
+    return read_toml_file(path, what)
+
+
 def _number(table: dict, name: str, where: str, default: float | None = None) -> float:
     value = table.get(name, default)
     if value is None:
@@ -384,7 +426,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
             raise ValueError(f"{where}: [study] scenario (the base scenario file) is required")
         path = pathlib.Path(folder or ".") / head["scenario"]
         try:
-            base = read_toml_file(path)
+            base = _read_toml(path)
         except ValueError as error:
             raise ValueError(f"{where}: [study] scenario: {error}") from None
         scenario_source = os.fspath(path)
@@ -418,7 +460,10 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
             if key in seen:
                 raise ValueError(f"{at}: key '{key}' is varied twice")
             seen.add(key)
-        grid.append(GridAxis(keys, tuple(values)))
+        axis = GridAxis(keys, tuple(values))
+        if "controller.gamma" in keys and not _numbers(axis.column("controller.gamma")):
+            raise ValueError(f"{at}: controller.gamma values must be numbers (gamma.png draws them)")
+        grid.append(axis)
 
     base_scenario = None
     random = []
@@ -469,26 +514,50 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
     if samples > 1 and not random:
         raise ValueError(f"{where}: [study] samples = {samples} but no [[random]] axis: every sample would be "
                          "the same run")
-    report = definition.get("report", {})
-    if not isinstance(report, dict):
-        raise ValueError(f"{where}: [report] must be a table")
-    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric", "group_by"},
-          f"{where}: [report]")
-    group_by = report.get("group_by", [])
-    if not (isinstance(group_by, list) and all(k in seen for k in group_by)):
-        raise ValueError(f"{where}: [report] group_by must list grid or random keys of the study")
-    for name in list(report.get("metrics", [])) + [report.get("distribution"), report.get("gamma_metric")]:
-        if name is not None and name not in METRIC_NAMES:
-            raise ValueError(f"{where}: [report]: no metric '{name}' (metrics: {', '.join(METRIC_NAMES)})")
-    roa = report.get("roa")
-    if roa is not None and not (isinstance(roa, list) and len(roa) == 2 and all(k in seen for k in roa)):
-        raise ValueError(f"{where}: [report] roa must name two grid keys [x, y]")
+    runs = math.prod(len(axis.values) for axis in grid) * samples
+    if runs > MAX_RUNS:
+        raise ValueError(f"{where}: the study has {runs} runs, more than the {MAX_RUNS} a study may have: "
+                         "split it into studies of fewer grid points or samples")
+    report = _check_report(definition.get("report", {}), grid, seen, f"{where}: [report]")
 
     study = Study(name=str(head.get("name", pathlib.Path(source).stem)), description=str(head.get("description", "")),
                   source=scenario_source, base=base, seed=seed, samples=samples, grid=tuple(grid),
                   random=tuple(random), chunk=chunk, definition=definition, report=report)
     study.scenario(0)  # a key the reader refuses, or a value it cannot take, is an error here
     return study
+
+
+def _numbers(values: list) -> bool:
+    return all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values)
+
+
+def _check_report(report: Any, grid: list[GridAxis], keys: set[str], where: str) -> dict:
+    """[report] checked as the study is read (hinf_cpp.studies.report uses it after the runs)."""
+    if not isinstance(report, dict):
+        raise ValueError(f"{where} must be a table")
+    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric", "group_by"},
+          where)
+    group_by = report.get("group_by", [])
+    if not (isinstance(group_by, list) and all(isinstance(k, str) and k in keys for k in group_by)):
+        raise ValueError(f"{where} group_by must list grid or random keys of the study")
+    metrics = report.get("metrics", [])
+    if not (isinstance(metrics, list) and all(isinstance(name, str) for name in metrics)):
+        raise ValueError(f"{where} metrics must be a list of metric names, got {metrics!r}")
+    for name in metrics + [report.get("distribution"), report.get("gamma_metric")]:
+        if name is not None and name not in METRIC_NAMES:
+            raise ValueError(f"{where}: no metric {name!r} (metrics: {', '.join(METRIC_NAMES)})")
+    for name in ("position_tol", "heading_tol"):
+        if name in report and _number(report, name, where) <= 0:
+            raise ValueError(f"{where}: '{name}' must be > 0, got {report[name]!r}")
+    roa = report.get("roa")
+    if roa is not None:
+        if not (isinstance(roa, list) and len(roa) == 2 and all(isinstance(k, str) and k in keys for k in roa)):
+            raise ValueError(f"{where} roa must name two grid keys [x, y]")
+        for key in roa:
+            values = next((axis.column(key) for axis in grid if key in axis.keys), [])
+            if not _numbers(values):
+                raise ValueError(f"{where} roa: the values of '{key}' must be numbers (roa.png draws them)")
+    return report
 
 
 def load_study(path: str | os.PathLike) -> Study:
@@ -527,7 +596,7 @@ def load_study(path: str | os.PathLike) -> Study:
     ValueError: cannot read the study 'missing.toml': No such file or directory
     """
     path = pathlib.Path(path)
-    return study_from_dict(read_toml_file(path, "the study "), os.fspath(path), path.parent)
+    return study_from_dict(_read_toml(path, "the study "), os.fspath(path), path.parent)
 
 
 # --------------------------------------------------------------------------------------------
@@ -581,16 +650,15 @@ def study_table_schema(study: Study):
             return pa.bool_()
         if all(isinstance(v, int) and not isinstance(v, bool) for v in values):
             return pa.int64()
-        if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
+        if _numbers(values):
             return pa.float64()
         return pa.string()  # strings; arrays are written as TOML text
 
     fields = [pa.field("run", pa.int64()), pa.field("grid_point", pa.int64()), pa.field("sample", pa.int64()),
               pa.field("seed", pa.int64())]
     for axis in study.grid:
-        for j, key in enumerate(axis.keys):
-            values = [v if len(axis.keys) == 1 else v[j] for v in axis.values]
-            fields.append(pa.field(key, grid_type(values)))
+        for key in axis.keys:
+            fields.append(pa.field(key, grid_type(axis.column(key))))
     for axis in study.random:
         fields.append(pa.field(axis.key, pa.int64() if axis.distribution == "seed" else pa.float64()))
     fields += [pa.field("law", pa.string()), pa.field("output_feedback", pa.bool_()), pa.field("gamma", pa.float64()),
