@@ -566,6 +566,9 @@ def cmd_study(args: argparse.Namespace) -> int:
     if table.attrs.get("restarted"):
         print(f"note: {args.out}/partial held runs of another version of this study (the study, its scenario "
               "or the library changed): started over")
+    if table.attrs.get("reused_chunks"):
+        print(f"resumed: reused {table.attrs['reused_chunks']} of {table.attrs['chunks']} chunks saved in "
+              f"{args.out}/partial")
     counts = status_counts(table)
     statuses = ", ".join(f"{name} {int(counts[name].sum())}" for name in counts.columns
                          if name != "runs" and counts[name].sum() > 0)

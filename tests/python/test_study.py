@@ -254,6 +254,88 @@ def test_a_changed_study_starts_over(mc_study, tmp_path):
     assert len(seen) == 3 and seen[-1] == mc_study.runs and table.attrs["restarted"]
 
 
+# ---- the output folder: only the study's own files, one study at a time ----
+
+def small_study(tmp_path, seed=0):
+    """6 runs in 2 chunks (the Monte Carlo with 2 samples)."""
+    body = MONTE_CARLO.replace("samples = 4", "samples = 2").replace("seed = 20261124", f"seed = {seed}")
+    return hs.load_study(write_study(tmp_path, body, f"study{seed}.toml"))
+
+
+def test_a_folder_partial_that_is_not_a_studys_is_refused_and_kept(tmp_path):
+    study = small_study(tmp_path)
+    out = tmp_path / "out"
+    (out / "partial" / "mine").mkdir(parents=True)
+    (out / "partial" / "notes.txt").write_text("my notes")
+    (out / "partial" / "mine" / "data.csv").write_text("1,2")
+    with pytest.raises(ValueError, match=r"out/partial.* not the partial folder of a hinf_cpp study"):
+        hs.run_study(study, workers=1, out=out, progress=False)
+    assert (out / "partial" / "notes.txt").read_text() == "my notes"
+    assert (out / "partial" / "mine" / "data.csv").read_text() == "1,2"
+    # The folder of an earlier hinf_cpp (without the marker, with its study.json) is a study's.
+    (out / "partial" / "study.json").write_text('{"study": "mc", "hash": "0", "runs": 6, "chunk": 5}')
+    assert hs.run_study(study, workers=1, out=out, progress=False).attrs["reused_chunks"] == 0
+    assert (out / "partial" / "notes.txt").read_text() == "my notes"
+
+
+def test_a_changed_study_deletes_only_its_own_chunks(tmp_path):
+    out = tmp_path / "out"
+    first = hs.run_study(small_study(tmp_path, seed=0), workers=1, out=out, progress=False)
+    (out / "partial" / "notes.txt").write_text("my notes")
+    (out / "partial" / "mine").mkdir()
+    (out / "partial" / "chunk-00009.parquet").write_text("a stale chunk of an older study")
+    second = hs.run_study(small_study(tmp_path, seed=1), workers=1, out=out, progress=False)
+    assert second.attrs["restarted"] and second.attrs["reused_chunks"] == 0
+    assert not second["seed"].equals(first["seed"])
+    assert (out / "partial" / "notes.txt").read_text() == "my notes" and (out / "partial" / "mine").is_dir()
+    assert sorted(p.name for p in (out / "partial").glob("chunk-*")) == ["chunk-00000.parquet", "chunk-00001.parquet"]
+
+
+def test_a_second_study_on_the_same_folder_is_refused_while_the_first_writes(tmp_path):
+    first, second = small_study(tmp_path, seed=0), small_study(tmp_path, seed=1)
+    out = tmp_path / "out"
+    errors = []
+
+    def start_the_second(done, total, message):
+        with pytest.raises(ValueError, match="another study is writing") as error:
+            hs.run_study(second, workers=1, out=out, progress=False)
+        errors.append(str(error.value))
+
+    table = hs.run_study(first, workers=1, out=out, progress=start_the_second)
+    assert len(errors) == 2 and str(out) in errors[0]
+    assert (table["seed"].to_numpy() == hs.run_study(first, workers=1, progress=False)["seed"].to_numpy()).all()
+    # Once the first has ended, the folder is free again.
+    assert hs.run_study(second, workers=1, out=out, progress=False).attrs["restarted"]
+
+
+def test_a_chunk_of_another_study_is_run_again_not_mixed_in(tmp_path):
+    mine, other = small_study(tmp_path, seed=0), small_study(tmp_path, seed=1)
+    expected = hs.run_study(mine, workers=1, out=tmp_path / "mine", progress=False)
+    hs.run_study(other, workers=1, out=tmp_path / "other", progress=False)
+    chunk = "partial/chunk-00000.parquet"
+    (tmp_path / "mine" / chunk).write_bytes((tmp_path / "other" / chunk).read_bytes())
+    resumed = hs.run_study(mine, workers=1, out=tmp_path / "mine", progress=False)
+    pdt.assert_frame_equal(resumed, expected, check_exact=True)
+    assert resumed.attrs["reused_chunks"] == 1 and resumed.attrs["chunks"] == 2
+
+
+def test_a_chunk_with_a_failed_row_is_run_again_on_resume(tmp_path):
+    """status "failed" (an exception that is not about the run's values: out of memory, a bug)
+    is not kept: the chunk runs again."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    study = small_study(tmp_path)
+    expected = hs.run_study(study, workers=1, out=tmp_path, progress=False)
+    path = tmp_path / "partial" / "chunk-00001.parquet"
+    table = pq.read_table(path)
+    status = pa.array(["failed"] + table["status"].to_pylist()[1:])
+    pq.write_table(table.set_column(table.schema.get_field_index("status"), "status", status), path)
+    resumed = hs.run_study(study, workers=1, out=tmp_path, progress=False)
+    pdt.assert_frame_equal(resumed, expected, check_exact=True)
+    assert resumed.attrs["reused_chunks"] == 1 and not resumed.attrs["restarted"]
+
+
 # ---- round trips ----
 
 def test_a_pickled_and_a_rewritten_scenario_run_to_the_same_result(mc_study):
@@ -327,7 +409,25 @@ def test_cli_study_writes_the_table_summary_and_figures(tmp_path):
     csv = pd.read_csv(out / "runs.csv")
     np.testing.assert_array_equal(csv["rms_position_error_last_half"], df["rms_position_error_last_half"])
     assert "rms_position_error_last_half" in (out / "summary.md").read_text()
-    assert "6 runs (completed 6)" in done.stdout
+    assert "6 runs (completed 6)" in done.stdout and "resumed" not in done.stdout
+    again = cli("study", path, "--out", out, "--quiet")
+    assert again.returncode == 0 and "resumed: reused 2 of 2 chunks" in again.stdout, again.stderr
+
+
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+def test_cli_study_whose_runs_all_failed_exits_with_status_1(tmp_path):
+    path = write_study(tmp_path, """\
+        [study]
+        scenario = "fig2.toml"
+        [[grid]]
+        key = "controller.gamma"
+        values = [0.5, 1.0]
+        """)
+    done = cli("study", path, "--out", tmp_path / "out", "--quiet")
+    assert done.returncode == 1
+    assert done.stderr.count("\n") == 1 and "all 2 runs of the study failed" in done.stderr, done.stderr
+    assert f"{tmp_path / 'out' / 'runs.parquet'}" in done.stderr
+    assert len(pd.read_parquet(tmp_path / "out" / "runs.parquet")) == 2
 
 
 @pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")

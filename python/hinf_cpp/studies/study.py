@@ -16,6 +16,7 @@ points in row-major order of the [[grid]] axes, samples fastest.
 from __future__ import annotations
 
 import concurrent.futures
+import contextlib
 import dataclasses
 import functools
 import hashlib
@@ -24,10 +25,10 @@ import math
 import os
 import pathlib
 import re
-import shutil
+import tempfile
 import threading
 import time
-from typing import Any, Callable
+from typing import Any, Callable, Self
 
 import numpy as np
 
@@ -726,35 +727,103 @@ def _to_pandas(table):
     return table.to_pandas(types_mapper={pa.int64(): pd.Int64Dtype()}.get)
 
 
+_MARKER_TEXT = ("The saved runs of a hinf_cpp study (hinf-cpp study --out, docs/studies.md). A study deletes "
+                "and rewrites its chunk files here.\n")
+
+
 class _Partial:
-    """DIR/partial: finished chunks (chunk-NNNNN.parquet) of the study whose content hash is in
-    DIR/partial/study.json. A different hash (the study, its scenario or the library changed)
-    clears the folder: the study starts over."""
+    """DIR/partial: the saved chunks of a study, so that an interrupted study resumes.
+
+    Its files: MARKER, written as the folder is made (a folder "partial" without it is not a
+    study's: it is refused, nothing in it is touched); "lock", held (flock) while a study
+    writes, so that a second study on the same folder is refused; "study.json", the content
+    hash of the study that wrote last (another hash: its chunks are deleted, the study starts
+    over); chunk-NNNNN.parquet, each with its study's content hash in its metadata (a chunk
+    with another hash is run again, never mixed in). A study deletes only its chunk files.
+    Used with `with`: the lock is held inside."""
+
+    MARKER = "HINF_CPP_STUDY"
+    _CHUNK = re.compile(r"chunk-\d{5,}\.parquet")
+    _HASH = b"hinf_cpp_study_hash"
 
     def __init__(self, out: pathlib.Path, study: Study):
         self.folder = out / "partial"
         self.study = study
         self.hash = study.content_hash()
         self.restarted = False
-        manifest = self.folder / "study.json"
-        if self.folder.exists():
+        self._lock = None
+
+    def __enter__(self) -> Self:
+        import fcntl
+
+        from hinf_cpp.output.files import write_text
+
+        if not self.folder.exists():
+            self._create()
+        if self._made_before_the_marker():
+            write_text(self.folder / self.MARKER, _MARKER_TEXT)
+        if not (self.folder / self.MARKER).is_file():
+            raise ValueError(f"{self.folder} is not the partial folder of a hinf_cpp study (it has no file "
+                             f"{self.MARKER}); a study saves its runs there and deletes them: move it away or "
+                             "choose another output folder")
+        self._lock = open(self.folder / "lock", "a")
+        try:
+            try:
+                fcntl.flock(self._lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                raise ValueError(f"another study is writing {self.folder.parent} (it holds "
+                                 f"{self.folder / 'lock'}): wait for it to end or choose another output "
+                                 "folder") from None
+            manifest = self.folder / "study.json"
             try:
                 same = json.loads(manifest.read_text())["hash"] == self.hash
             except (OSError, ValueError, KeyError, TypeError):
                 same = False
             if not same:
-                self.restarted = any(self.folder.glob("chunk-*.parquet"))
-                shutil.rmtree(self.folder)
-        self.folder.mkdir(parents=True, exist_ok=True)
-        from hinf_cpp.output.files import write_text
+                for path in self.folder.iterdir():
+                    if self._CHUNK.fullmatch(path.name) and path.is_file():
+                        path.unlink()
+                        self.restarted = True
+            write_text(manifest, json.dumps({"study": self.study.name, "hash": self.hash, "runs": self.study.runs,
+                                             "chunk": self.study.chunk}, indent=2) + "\n")
+        except BaseException:
+            self._lock.close()
+            raise
+        return self
 
-        write_text(manifest, json.dumps({"study": study.name, "hash": self.hash, "runs": study.runs,
-                                         "chunk": study.chunk}, indent=2) + "\n")
+    def __exit__(self, *exception) -> None:
+        self._lock.close()  # releases the lock (the file stays: deleting it would race)
+
+    def _made_before_the_marker(self) -> bool:
+        """A folder of an earlier hinf_cpp, made before the marker: its study.json as they wrote it."""
+        try:
+            manifest = json.loads((self.folder / "study.json").read_text())
+        except (OSError, ValueError):
+            return False
+        return not (self.folder / self.MARKER).exists() and isinstance(manifest, dict) and \
+            set(manifest) == {"study", "hash", "runs", "chunk"}
+
+    def _create(self) -> None:
+        """Makes the folder with its marker in one step (made aside, then renamed), so that
+        another study never sees it without the marker."""
+        self.folder.parent.mkdir(parents=True, exist_ok=True)
+        made = pathlib.Path(tempfile.mkdtemp(prefix=".partial-", dir=self.folder.parent))
+        (made / self.MARKER).write_text(_MARKER_TEXT)
+        try:
+            made.rename(self.folder)
+        except OSError:  # made meanwhile (by another study), or cannot be
+            (made / self.MARKER).unlink()
+            made.rmdir()
+            if not self.folder.exists():
+                raise
 
     def path(self, chunk: int) -> pathlib.Path:
         return self.folder / f"chunk-{chunk:05d}.parquet"
 
     def load(self, chunk: int):
+        """The saved table of a chunk, or None (not saved, unreadable, of another study, or with
+        a row of status "failed": an exception that is not about the run's values, which
+        may not happen again)."""
         import pyarrow.parquet as pq
 
         path = self.path(chunk)
@@ -764,8 +833,11 @@ class _Partial:
             table = pq.read_table(path)
         except Exception:  # noqa: BLE001 - an unreadable chunk is run again
             return None
-        schema = study_table_schema(self.study)
-        return table.cast(schema) if table.schema.equals(schema) else None
+        if (table.schema.metadata or {}).get(self._HASH) != self.hash.encode():
+            return None
+        if not table.schema.equals(study_table_schema(self.study)) or "failed" in table["status"].to_pylist():
+            return None
+        return table.replace_schema_metadata(None)
 
     def save(self, chunk: int, table) -> None:
         import pyarrow.parquet as pq
@@ -773,7 +845,7 @@ class _Partial:
         from hinf_cpp.output.files import atomic_output
 
         with atomic_output(self.path(chunk)) as f:
-            pq.write_table(table, f)
+            pq.write_table(table.replace_schema_metadata({self._HASH: self.hash.encode()}), f)
 
 
 def local_cores() -> int:
@@ -836,7 +908,8 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     The runs are cut into chunks of ``study.chunk`` runs; each chunk runs through
     ``hc.run_scenarios`` (the C++ batch runner), locally or on a Dask cluster. A run that
     fails is a row with its status (:data:`STATUSES`) and reason and NaN metrics; a run
-    whose scenario the reader refuses is "invalid_input".
+    whose scenario the reader refuses is "invalid_input". A study whose runs all failed still
+    returns its table (the command line then exits with status 1).
 
     Parameters
     ----------
@@ -849,7 +922,9 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
         Runs the chunks on this Dask cluster instead (the same table, bit for bit).
     out : str or os.PathLike, optional
         Keeps finished chunks in out/partial/ so that an interrupted study resumes where it
-        stopped (a study that changed starts over).
+        stopped (a study that changed starts over; a chunk of another study, or with a row of
+        status "failed", runs again). The folder is locked while the study runs; an
+        out/partial that this function did not make is refused, not deleted.
     progress : bool or callable, optional
         True (default): a progress line on a terminal; False: none; a callable is called as
         ``progress(done, total, message)`` after every chunk.
@@ -859,13 +934,14 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     pandas.DataFrame
         The columns of :func:`study_table_schema` (integers as nullable Int64).
         ``attrs["restarted"]`` is True when saved chunks in `out` were of another study and
-        were deleted.
+        were deleted; ``attrs["reused_chunks"]`` is the number of saved chunks used, of
+        ``attrs["chunks"]``.
 
     Raises
     ------
     ValueError
-        `workers` with `client`, `workers` not an integer >= 1; as :func:`load_study` for a
-        path.
+        `workers` with `client`, `workers` not an integer >= 1; out/partial not a study's
+        folder, or in use by another study; as :func:`load_study` for a path.
 
     Examples
     --------
@@ -891,87 +967,90 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
     chunks = [(start, min(start + study.chunk, study.runs)) for start in range(0, study.runs, study.chunk)]
-    partial = _Partial(pathlib.Path(out), study) if out is not None else None
-    tables: dict[int, Any] = {}
-    if partial is not None:
-        for index in range(len(chunks)):
-            table = partial.load(index)
-            if table is not None:
+    with _Partial(pathlib.Path(out), study) if out is not None else contextlib.nullcontext() as partial:
+        tables: dict[int, Any] = {}
+        if partial is not None:
+            for index in range(len(chunks)):
+                table = partial.load(index)
+                if table is not None:
+                    tables[index] = table
+        todo = [index for index in range(len(chunks)) if index not in tables]
+        reused_chunks = len(tables)
+        callback, close = _progress_callback(progress)
+        started, resumed = time.perf_counter(), sum(chunks[i][1] - chunks[i][0] for i in tables)
+        lock = threading.Lock()
+
+        def done_runs() -> int:
+            return sum(chunks[i][1] - chunks[i][0] for i in tables)
+
+        def show(done: int) -> None:
+            callback(done, study.runs, f"study {study.name}: runs done" + _eta(started, done, done - resumed, study.runs))
+
+        def finished(index: int, table) -> None:
+            with lock:
+                if partial is not None:
+                    partial.save(index, table)
                 tables[index] = table
-    todo = [index for index in range(len(chunks)) if index not in tables]
-    callback, close = _progress_callback(progress)
-    started, resumed = time.perf_counter(), sum(chunks[i][1] - chunks[i][0] for i in tables)
-    lock = threading.Lock()
+                show(done_runs())
 
-    def done_runs() -> int:
-        return sum(chunks[i][1] - chunks[i][0] for i in tables)
+        try:
+            if client is None:
+                # The chunks are tasks, as on Dask: each of `workers` threads runs one chunk at a time
+                # through hc.run_scenarios on one C++ thread (which releases the GIL), so that building a
+                # chunk's scenarios in Python overlaps the other threads' runs and no core idles at
+                # the end of a chunk. After an interruption, chunks still running are not saved.
+                running: dict[int, int] = {}  # runs done in the chunks being run (terminal line)
 
-    def show(done: int) -> None:
-        callback(done, study.runs, f"study {study.name}: runs done" + _eta(started, done, done - resumed, study.runs))
+                def inner_progress(index: int):
+                    if callable(progress) or not progress:
+                        return None  # a callable is called per chunk
 
-    def finished(index: int, table) -> None:
-        with lock:
-            if partial is not None:
-                partial.save(index, table)
-            tables[index] = table
-            show(done_runs())
-
-    try:
-        if client is None:
-            # The chunks are tasks, as on Dask: each of `workers` threads runs one chunk at a time
-            # through hc.run_scenarios on one C++ thread (which releases the GIL), so that building a
-            # chunk's scenarios in Python overlaps the other threads' runs and no core idles at
-            # the end of a chunk. After an interruption, chunks still running are not saved.
-            running: dict[int, int] = {}  # runs done in the chunks being run (terminal line)
-
-            def inner_progress(index: int):
-                if callable(progress) or not progress:
-                    return None  # a callable is called per chunk
-
-                def inner(done: int, total: int) -> None:
-                    with lock:
-                        running[index] = done
-                        show(done_runs() + sum(running.values()))
-                return inner
-
-            threads = min(workers or local_cores(), max(1, len(todo)))
-            with concurrent.futures.ThreadPoolExecutor(max_workers=threads) as pool:
-                tasks = {pool.submit(run_chunk, study, *chunks[index], 1, inner_progress(index)): index
-                         for index in todo}
-                try:
-                    for task in concurrent.futures.as_completed(tasks):
-                        index = tasks[task]
-                        table = task.result()
+                    def inner(done: int, total: int) -> None:
                         with lock:
-                            running.pop(index, None)
-                        finished(index, table)
+                            running[index] = done
+                            show(done_runs() + sum(running.values()))
+                    return inner
+
+                threads = min(workers or local_cores(), max(1, len(todo)))
+                with concurrent.futures.ThreadPoolExecutor(max_workers=threads) as pool:
+                    tasks = {pool.submit(run_chunk, study, *chunks[index], 1, inner_progress(index)): index
+                             for index in todo}
+                    try:
+                        for task in concurrent.futures.as_completed(tasks):
+                            index = tasks[task]
+                            table = task.result()
+                            with lock:
+                                running.pop(index, None)
+                            finished(index, table)
+                    except BaseException:
+                        for task in tasks:
+                            task.cancel()
+                        raise
+            else:
+                from dask.distributed import as_completed
+
+                import uuid
+
+                # Keys unique to this call: a second run of the same study on the same client must
+                # not meet the first one's futures while the scheduler releases them.
+                remote = client.scatter(study, broadcast=True, hash=False)
+                key = f"study-{study.content_hash()[:12]}-{uuid.uuid4().hex[:8]}"
+                futures = {client.submit(_dask_chunk, remote, *chunks[index], key=f"{key}-{index}", pure=False): index
+                           for index in todo}
+                try:
+                    for future in as_completed(futures):
+                        finished(futures[future], future.result())
                 except BaseException:
-                    for task in tasks:
-                        task.cancel()
+                    client.cancel(list(futures))
                     raise
-        else:
-            from dask.distributed import as_completed
-
-            import uuid
-
-            # Keys unique to this call: a second run of the same study on the same client must
-            # not meet the first one's futures while the scheduler releases them.
-            remote = client.scatter(study, broadcast=True, hash=False)
-            key = f"study-{study.content_hash()[:12]}-{uuid.uuid4().hex[:8]}"
-            futures = {client.submit(_dask_chunk, remote, *chunks[index], key=f"{key}-{index}", pure=False): index
-                       for index in todo}
-            try:
-                for future in as_completed(futures):
-                    finished(futures[future], future.result())
-            except BaseException:
-                client.cancel(list(futures))
-                raise
-    finally:
-        close()
+        finally:
+            close()
     table = pa.concat_tables([tables[i] for i in range(len(chunks))]) if chunks else \
         study_table_schema(study).empty_table()
     frame = _to_pandas(table)
     frame.attrs["restarted"] = bool(partial is not None and partial.restarted)
+    frame.attrs["reused_chunks"] = reused_chunks
+    frame.attrs["chunks"] = len(chunks)
     return frame
 
 
