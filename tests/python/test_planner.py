@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import pathlib
 import shutil
 import stat
 
@@ -271,7 +270,7 @@ def test_a_plan_cache_folder_others_can_write_is_refused(good_entry, tmp_path):
     shutil.copy(good_entry[1], folder)
     folder.chmod(0o777)
     with pytest.raises(CacheDirectoryError, match=rf"refusing the cache folder {folder} for planned trajectories: "
-                                                  rf"group and others can write it.*chmod 700 {folder}.*HINF_CPP_CACHE"):
+                       rf"group and others can write it.*chmod 700 {folder}.*HINF_CPP_CACHE"):
         cached_plan(folder)
 
 
