@@ -576,6 +576,9 @@ def cmd_study(args: argparse.Namespace) -> int:
         f"{args.workers or local_cores()} local threads"
     print(f"study {study.name}: {study.runs} runs ({statuses}) in {seconds:.1f} s on {where}")
     print(f"wrote {args.out}/: " + ", ".join(sorted(p.name for p in written)))
+    if not (table["status"] == "completed").any():
+        return _fail(f"all {study.runs} runs of the study failed (none completed): their statuses and reasons "
+                     f"are in {pathlib.Path(args.out) / 'runs.parquet'}", 1)
     return 0
 
 
