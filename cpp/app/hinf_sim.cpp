@@ -1,8 +1,10 @@
 // hinf-sim: runs a scenario file without Python and writes the results file.
 //
-//   hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]
+//   hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star] [--trust-code]
 //   hinf-sim --version
 //
+// --trust-code (or HINF_TRUST_CODE=1) lets the scenario load the compiled library of a
+// [model] kind = "casadi": a scenario file is data and runs no code without it.
 // --gamma-star also computes gamma* (paper eq. 14) of the state-feedback design and puts it in
 // the results file.
 // Exit status: 0 success, 2 bad input or usage (unusable output paths and runs too large for
@@ -21,7 +23,7 @@
 
 namespace {
 
-const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star]";
+const char* kUsage = "usage: hinf-sim SCENARIO.toml [--json OUT.json] [--csv OUT.csv] [--gamma-star] [--trust-code]";
 // The same words as hinf-cpp's.
 const char* kOutOfMemory =
     "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables";
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
   std::string scenario_path;
   std::optional<std::string> json_path, csv_path;
   bool with_gamma_star = false;
+  bool trust_code = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&](const char* option) -> std::optional<std::string> {
@@ -60,6 +63,8 @@ int main(int argc, char** argv) {
         csv_path = value("--csv");
       } else if (arg == "--gamma-star") {
         with_gamma_star = true;
+      } else if (arg == "--trust-code") {
+        trust_code = true;
       } else if (!arg.empty() && arg[0] == '-') {
         return fail(2, "unknown option '" + arg + "'; " + kUsage);
       } else if (scenario_path.empty()) {
@@ -76,7 +81,8 @@ int main(int argc, char** argv) {
   try {
     for (const std::optional<std::string>& path : {json_path, csv_path})
       if (path) hinf::check_output_path(*path);
-    const hinf::Scenario scenario = hinf::load_scenario_toml(scenario_path);
+    const hinf::Scenario scenario =
+        hinf::load_scenario_toml(scenario_path, trust_code || hinf::code_trusted_by_environment());
     hinf::RunResult result = hinf::run_scenario(scenario);
     if (with_gamma_star) result.gamma_star = hinf::scenario_gamma_star(scenario).gamma_star;
     if (json_path) hinf::write_text_file(*json_path, hinf::results_json(result) + "\n");

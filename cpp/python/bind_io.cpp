@@ -15,7 +15,9 @@ namespace {
 std::string scenario_text(const Scenario& s) {
   try {
     std::string text = scenario_toml(s);
-    parse_scenario_toml(text, "<pickle>");  // what cannot be read back is an error now, not on load
+    // What cannot be read back is an error now, not on load. A pickle is a program anyway (its
+    // reader runs what it says), so its model section may load code.
+    parse_scenario_toml(text, "<pickle>", true);
     return text;
   } catch (const InputError& e) {
     cannot_pickle(str_cat("the scenario '", s.name, "'"), e.what());
@@ -26,12 +28,15 @@ std::string scenario_text(const Scenario& s) {
 
 void bind_io(py::module_& m) {
   // ---- scenario and results files (io/scenario_file.hpp, io/results.hpp) ----
-  m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"),
+  m.def("parse_scenario_toml", &parse_scenario_toml, py::arg("text"), py::arg("source"), py::arg("allow_code") = false,
         doc({"parse_scenario_toml"}).c_str());
-  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), doc({"load_scenario_toml"}).c_str());
+  m.def("load_scenario_toml", &load_scenario_toml, py::arg("path"), py::arg("allow_code") = false,
+        doc({"load_scenario_toml"}).c_str());
+  m.def("code_trusted_by_environment", &code_trusted_by_environment, doc({"code_trusted_by_environment"}).c_str());
   m.def("needs_planning_toml", &needs_planning_toml, py::arg("text"), py::arg("source"),
         doc({"needs_planning_toml"}).c_str());
-  m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"), doc({"parse_model_toml"}).c_str());
+  m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"), py::arg("allow_code") = false,
+        doc({"parse_model_toml"}).c_str());
   m.def("scenario_toml", &scenario_toml, py::arg("scenario"), doc({"scenario_toml", "io/scenario_file.hpp"}, R"(
 Parameters
 ----------
@@ -93,7 +98,7 @@ Examples
           [](const Scenario& s) { return py::make_tuple(scenario_text(s), s.solver.escape_norm); },
           [](const py::tuple& state) {
             check_state(state, 2, "Scenario");
-            Scenario s = parse_scenario_toml(state[0].cast<std::string>(), "<pickle>");
+            Scenario s = parse_scenario_toml(state[0].cast<std::string>(), "<pickle>", true);
             s.solver.escape_norm = state[1].cast<double>();
             return s;
           }));

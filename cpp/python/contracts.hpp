@@ -270,12 +270,15 @@ of its entry points.)contract"},
     {"GeneratedLibrary::compiled_in", R"contract(Code compiled into the program: `symbols` maps each entry point's name to its address;
 `label` stands for the path in messages.)contract"},
     {"GeneratedLibrary::handle_", R"contract(dlopen's, or null for compiled-in code)contract"},
-    {"GeneratedLibrary::open", R"contract(InputError when the file is missing or dlopen refuses it (with dlerror()'s reason), or
-when the library reports another casadi_int or casadi_real size than this loader's.)contract"},
+    {"GeneratedLibrary::open", R"contract(InputError when the file is missing, is not a whole ELF shared library of this machine's
+kind (checked before dlopen, which would map a truncated file and die of SIGBUS on its
+missing pages), when dlopen refuses it (with dlerror()'s reason), or when the library
+reports another casadi_int or casadi_real size than this loader's.)contract"},
     {"GeneratedLibrary::symbol", R"contract(The address of an exported symbol, or nullptr when there is none.)contract"},
     {"GeneratedLibrary::symbols_", R"contract(compiled-in code's entry points)contract"},
-    {"GeneratedModel::GeneratedModel", R"contract(Reads model.json at metadata_path and loads its library (a path relative to model.json's
-folder). `parameters` sets parameter values by name (the others keep their defaults).
+    {"GeneratedModel::GeneratedModel", R"contract(Reads model.json at metadata_path and loads its library (a file name: the library lies beside
+model.json; a path is refused), after checking that it is a whole shared library of this
+machine's kind (GeneratedLibrary::open). `parameters` sets parameter values by name (the others keep their defaults).
 InputError, naming the file and what to do, when the file is missing or not a model
 description, a function is missing or has other sizes than the description says, the
 structure is invalid (check_structure), or a parameter is unknown or not finite.
@@ -892,6 +895,8 @@ check when they are the same object). Scenario files check more (check_plant, sc
 index -1 or in [0, n), noise channels distinct and in [0, nw), and not both constant and
 state-dependent input matrices. InputError naming the first fault.)contract"},
     {"check_symmetric_weight", R"contract(Symmetric to 1e-10 relative and positive semidefinite (definite = false) or definite.)contract"},
+    {"code_trusted_by_environment", R"contract(The environment's answer to "may files run code": HINF_TRUST_CODE = 1 yes, unset, empty or 0
+no, anything else an InputError. The front ends use it as the default of their --trust-code.)contract"},
     {"compute_metrics", R"contract(The metrics of a closed-loop run of `model` (whose position and heading indices they use),
 with Q (n x n, symmetric positive semidefinite) weighting q_e in the L2 gain.
 InputError when the run's series do not fit the model or Q is not such a weight.)contract"},
@@ -1398,7 +1403,12 @@ InputError naming the source, and the key where there is one: unknown keys, wron
 integers beyond 64 bits, non-finite numbers (only gamma may be inf), empty arrays, noise
 channels of the model in [disturbance], keys nested too deeply, text that is not UTF-8.
 source names the text in messages (usually the file path); the scenario name defaults to
-the file's stem.)contract"},
+the file's stem.
+
+Trust: a file is data. A model section whose kind loads or runs a program (kind = "casadi"
+loads the compiled library its model.json names; kind = "python" imports and calls Python
+code) is read only with allow_code; otherwise it is an InputError naming the key and how to
+allow it (hinf-sim and hinf-cpp --trust-code, trust_code=True in Python, HINF_TRUST_CODE=1).)contract"},
     {"parse_signal_toml", R"contract(A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 scenario), e.g. "kappa = { offset = 1.0 }".)contract"},
     {"physical_memory_bytes", R"contract(Bytes of physical memory of this machine (0 if unknown).)contract"},

@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -365,6 +366,54 @@ std::string error_of(const std::string& text, const std::string& source = "tests
     return e.what();
   }
   return "(accepted)";
+}
+
+// A file is data: a model section that loads a library (casadi) or runs Python (python) is
+// refused without allow_code, naming the key and how to allow it, before anything is loaded;
+// the same section with another problem (gamma = -1) is still refused for trust first.
+TEST(ScenarioReader, CodeInAFileIsReadOnlyWhenAllowed) {
+  std::string casadi = kMinimal;
+  casadi.replace(casadi.find("kind = \"ship\""), 13, "kind = \"casadi\"\nfile = \"nowhere/model.json\"");
+  const std::string refused = error_of(casadi);
+  EXPECT_NE(refused.find("tests/my_case.toml: [model] file: kind = \"casadi\" loads and runs a program "
+                         "(nowhere/model.json)"),
+            std::string::npos)
+      << refused;
+  for (const char* how : {"--trust-code", "trust_code=True", "HINF_TRUST_CODE=1"})
+    EXPECT_NE(refused.find(how), std::string::npos) << refused;
+  std::string invalid = casadi;
+  invalid.replace(invalid.find("gamma = 5.0"), 11, "gamma = -1.0");
+  EXPECT_EQ(error_of(invalid), refused);
+  // Allowed: the reader goes on to load the file (which is not there).
+  try {
+    hinf::parse_scenario_toml(casadi, "tests/my_case.toml", true);
+    ADD_FAILURE() << "a missing model.json was accepted";
+  } catch (const hinf::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot be read"), std::string::npos) << e.what();
+  }
+  std::string python = kMinimal;
+  python.replace(python.find("kind = \"ship\""), 13, "kind = \"python\"\ncallable = \"model.py:make\"");
+  const std::string python_refused = error_of(python);
+  EXPECT_NE(python_refused.find("[model] callable: kind = \"python\" loads and runs a program (model.py:make)"),
+            std::string::npos)
+      << python_refused;
+  // [plant] is a model section too.
+  const std::string plant = error_of(kMinimal + "\n[plant]\nkind = \"casadi\"\nfile = \"m.json\"\n");
+  EXPECT_NE(plant.find("[plant] file: kind = \"casadi\" loads and runs a program"), std::string::npos) << plant;
+}
+
+TEST(ScenarioReader, TrustFromTheEnvironment) {
+  const char* before = std::getenv("HINF_TRUST_CODE");
+  const std::string saved = before == nullptr ? "" : before;
+  for (const auto& [value, trusted] : std::vector<std::pair<const char*, bool>>{{"1", true}, {"0", false}, {"", false}}) {
+    setenv("HINF_TRUST_CODE", value, 1);
+    EXPECT_EQ(hinf::code_trusted_by_environment(), trusted) << value;
+  }
+  setenv("HINF_TRUST_CODE", "yes", 1);
+  EXPECT_THROW(hinf::code_trusted_by_environment(), hinf::InputError);
+  unsetenv("HINF_TRUST_CODE");
+  EXPECT_FALSE(hinf::code_trusted_by_environment());
+  if (before != nullptr) setenv("HINF_TRUST_CODE", saved.c_str(), 1);
 }
 
 TEST(ScenarioReader, ByteOrderMarkIsSkipped) {

@@ -69,7 +69,7 @@ PythonModelHook& python_model_hook() {
 // kind = "linear": A, B and D set the model's dimensions (n = rows of A, m = columns of B,
 // nw = columns of D, D = I by default); C (p x n) adds one noise channel per output.
 ModelKind linear_kind() {
-  ModelKind kind{"linear", {"A", "B", "D", "C"}, nullptr, nullptr};
+  ModelKind kind{"linear", {"A", "B", "D", "C"}, nullptr, nullptr, ""};
   kind.read = [](const SectionReader& section) -> ModelPtr {
     detail::TableReader& r = detail::table_of(section);
     auto dimensions = [&r](const char* key, const char* shape) {
@@ -108,7 +108,7 @@ ModelKind linear_kind() {
 // hinf_cpp.models.SymbolicModel.export), relative to the scenario file's folder; parameters
 // sets parameter values by name.
 ModelKind casadi_kind() {
-  ModelKind kind{"casadi", {"file", "parameters"}, nullptr, nullptr};
+  ModelKind kind{"casadi", {"file", "parameters"}, nullptr, nullptr, "file"};
   kind.read = [](const SectionReader& section) -> ModelPtr {
     std::filesystem::path file = section.string("file");
     std::error_code ec;
@@ -133,7 +133,7 @@ ModelKind casadi_kind() {
 
 // kind = "python": callable names a model made by Python code (the hook); no file form.
 ModelKind python_kind() {
-  ModelKind kind{"python", {"callable"}, nullptr, nullptr};
+  ModelKind kind{"python", {"callable"}, nullptr, nullptr, "callable"};
   kind.read = [](const SectionReader& section) -> ModelPtr {
     const std::string callable = section.string("callable");
     if (!python_model_hook())
@@ -150,7 +150,7 @@ ModelKind python_kind() {
 // kind = "fossen_vessel": the mass and damping matrices M and D (3 x 3), the supply vessel by
 // default (preset = "supply_vessel").
 ModelKind fossen_vessel_kind() {
-  ModelKind kind{"fossen_vessel", {"preset", "M", "D"}, nullptr, nullptr};
+  ModelKind kind{"fossen_vessel", {"preset", "M", "D"}, nullptr, nullptr, ""};
   kind.read = [](const SectionReader& section) -> ModelPtr {
     detail::check_preset(section, "fossen_vessel", "supply_vessel");
     FossenVesselParameters p = FossenVesselParameters::supply_vessel();
@@ -230,7 +230,8 @@ void set_python_model_hook(PythonModelHook hook) { python_model_hook() = std::mo
 
 namespace detail {
 
-ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where) {
+ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where,
+                            bool allow_code) {
   const auto fail = [&source, &where](const std::string& key, const std::string& problem) {
     return InputError(str_cat(source, ": ", where, " ", key, ": ", problem));
   };
@@ -260,6 +261,13 @@ ModelPtr read_model_section(const toml::table& table, const std::string& source,
   known.insert(known.end(), kind->keys.begin(), kind->keys.end());
   TableReader reader(table, where, source, known);
   const SectionReader section(reader, source, where);
+  if (!kind->code_key.empty() && !allow_code) {
+    const std::string program = reader.has(kind->code_key) ? str_cat(" (", reader.string(kind->code_key), ")") : "";
+    section.fail(kind->code_key, str_cat("kind = \"", name, "\" loads and runs a program", program,
+                                         ", and reading a file runs no code unless you allow it: if you trust this "
+                                         "file, pass --trust-code (hinf-sim, hinf-cpp), trust_code=True (Python) or "
+                                         "set HINF_TRUST_CODE=1"));
+  }
   ModelPtr model = kind->read(section);
   if (model == nullptr) section.fail_section(str_cat("kind = \"", name, "\" made no model"));
   return model;

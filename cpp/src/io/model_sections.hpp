@@ -11,8 +11,10 @@ namespace hinf::detail {
 
 // The model of a model section by its kind: [model], or (where = "[plant]") the [plant] table
 // merged with [model]. InputError naming the source, the section and the key for anything
-// wrong: no or an unknown kind, a key of another kind or of none, a value the kind refuses.
-ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where);
+// wrong: no or an unknown kind, a key of another kind or of none, a value the kind refuses, a
+// kind that runs code (ModelKind::code_key) without allow_code.
+ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where,
+                            bool allow_code);
 
 // The section of a model (kind and every parameter). InputError when no kind writes it (a
 // model implemented in Python, a model of a program's own that registered no kind).

@@ -1,6 +1,7 @@
 #include "hinf/io/scenario_file.hpp"
 
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 
 #include "hinf/core/errors.hpp"
@@ -20,11 +21,11 @@ namespace {
 // same kind, a key not given is [model]'s (for kind = "casadi", each name of [plant.parameters]
 // not given is [model.parameters]'), so only what differs need be written; with another kind,
 // a key not given is that kind's default. Messages name [plant].
-ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const std::string& source) {
+ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const std::string& source, bool allow_code) {
   const toml::node* kind = plant.get("kind");
   const bool same_kind = kind == nullptr || (kind->is_string() && model.get("kind")->is_string() &&
                                              kind->as_string()->get() == model.get("kind")->as_string()->get());
-  if (!same_kind) return detail::read_model_section(plant, source, "[plant]");
+  if (!same_kind) return detail::read_model_section(plant, source, "[plant]", allow_code);
   toml::table merged = model;
   for (auto&& [key, value] : plant) {
     toml::table* base_parameters = merged.get_as<toml::table>("parameters");
@@ -34,7 +35,7 @@ ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const s
       merged.insert_or_assign(key, value);
     }
   }
-  return detail::read_model_section(merged, source, "[plant]");
+  return detail::read_model_section(merged, source, "[plant]", allow_code);
 }
 
 std::string file_stem(const std::string& path) {
@@ -45,7 +46,7 @@ std::string file_stem(const std::string& path) {
 
 }  // namespace
 
-Scenario parse_scenario_toml(const std::string& text, const std::string& source) {
+Scenario parse_scenario_toml(const std::string& text, const std::string& source, bool allow_code) {
   const toml::table root = detail::parse_toml(text, source);
   TableReader top(root, "top level", source,
                   {"name", "description", "model", "plant", "horizon", "desired", "controller",
@@ -55,9 +56,9 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source)
   s.description = top.string_or("description", "");
 
   const toml::table& model = *section(root, "model", source, true);
-  s.model = detail::read_model_section(model, source, "[model]");
+  s.model = detail::read_model_section(model, source, "[model]", allow_code);
   const int n = s.model->n(), m = s.model->m(), nw = s.model->nw();
-  if (const toml::table* plant = section(root, "plant", source, false)) s.plant = parse_plant(*plant, model, source);
+  if (const toml::table* plant = section(root, "plant", source, false)) s.plant = parse_plant(*plant, model, source, allow_code);
 
   {
     TableReader r(*section(root, "horizon", source, true), "[horizon]", source, {"t0", "tf"});
@@ -209,9 +210,9 @@ bool needs_planning_toml(const std::string& text, const std::string& source) {
   return false;
 }
 
-ModelPtr parse_model_toml(const std::string& text, const std::string& source) {
+ModelPtr parse_model_toml(const std::string& text, const std::string& source, bool allow_code) {
   const toml::table root = detail::parse_toml(text, source);
-  return detail::read_model_section(*section(root, "model", source, true), source, "[model]");
+  return detail::read_model_section(*section(root, "model", source, true), source, "[model]", allow_code);
 }
 
 Signal parse_signal_toml(const std::string& text, const std::string& key, const std::string& source) {
@@ -220,8 +221,16 @@ Signal parse_signal_toml(const std::string& text, const std::string& key, const 
   return r.signal(key);
 }
 
-Scenario load_scenario_toml(const std::string& path) {
-  return parse_scenario_toml(read_text_file(path, "scenario file"), path);
+Scenario load_scenario_toml(const std::string& path, bool allow_code) {
+  return parse_scenario_toml(read_text_file(path, "scenario file"), path, allow_code);
+}
+
+bool code_trusted_by_environment() {
+  const char* value = std::getenv("HINF_TRUST_CODE");
+  const std::string text = value == nullptr ? "" : value;
+  if (text.empty() || text == "0") return false;
+  if (text == "1") return true;
+  throw InputError(str_cat("HINF_TRUST_CODE = '", text, "': set it to 1 (files may run code) or 0 (they may not)"));
 }
 
 }  // namespace hinf

@@ -101,9 +101,15 @@ GeneratedModel::GeneratedModel(const std::string& metadata_path, const std::map<
   }
   p_ = Eigen::Map<const Vec>(values.data(), static_cast<Eigen::Index>(values.size()));
 
-  // The library, beside model.json unless the path is absolute.
-  fs::path library = read_key<std::string>(j, "library", source);
-  if (library.is_relative()) library = fs::path(metadata_path).parent_path() / library;
+  // The library: a file beside model.json, never a path elsewhere (a description file must not
+  // be able to point at any library on the machine).
+  const std::string library_name = read_key<std::string>(j, "library", source);
+  if (library_name.empty() || library_name.find('/') != std::string::npos || library_name == "." ||
+      library_name == "..")
+    throw InputError(str_cat(source, ": \"library\" = \"", library_name,
+                             "\" must be the file name of a library beside model.json, without a folder (export the "
+                             "model again with SymbolicModel.export)"));
+  const fs::path library = fs::path(metadata_path).parent_path() / library_name;
   load_functions(GeneratedLibrary::open(library.string()), has_measurement, has_split, "", source);
 }
 

@@ -1,9 +1,12 @@
 #include "hinf/numerics/generated_function.hpp"
 
 #include <dlfcn.h>
+#include <elf.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <utility>
 
@@ -38,6 +41,73 @@ std::string last_dl_error() {
   return message ? message : "no reason given";
 }
 
+// ELF types of this machine's word size, and its machine number (0: not checked).
+#if UINTPTR_MAX == 0xffffffffffffffffu
+using ElfHeader = Elf64_Ehdr;
+using ElfProgramHeader = Elf64_Phdr;
+constexpr unsigned char kElfClass = ELFCLASS64;
+#else
+using ElfHeader = Elf32_Ehdr;
+using ElfProgramHeader = Elf32_Phdr;
+constexpr unsigned char kElfClass = ELFCLASS32;
+#endif
+#if defined(__x86_64__)
+constexpr std::uint16_t kElfMachine = EM_X86_64;
+#elif defined(__aarch64__)
+constexpr std::uint16_t kElfMachine = EM_AARCH64;
+#elif defined(__i386__)
+constexpr std::uint16_t kElfMachine = EM_386;
+#elif defined(__arm__)
+constexpr std::uint16_t kElfMachine = EM_ARM;
+#else
+constexpr std::uint16_t kElfMachine = 0;
+#endif
+#if __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+constexpr unsigned char kElfData = ELFDATA2LSB;
+#else
+constexpr unsigned char kElfData = ELFDATA2MSB;
+#endif
+
+// Why the file at path is not a whole shared library of this machine's kind, or "" when it is.
+// dlopen maps the file's segments: a truncated library would be mapped past its end and the
+// first access to the missing pages is a SIGBUS, so every segment and table must lie inside it.
+std::string elf_problem(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return "it cannot be opened";
+  file.seekg(0, std::ios::end);
+  const std::uint64_t size = static_cast<std::uint64_t>(file.tellg());
+  file.seekg(0);
+  ElfHeader header{};
+  if (size < sizeof header || !file.read(reinterpret_cast<char*>(&header), sizeof header))
+    return str_cat("it has ", size, " bytes, fewer than an ELF header");
+  if (header.e_ident[EI_MAG0] != ELFMAG0 || header.e_ident[EI_MAG1] != ELFMAG1 ||
+      header.e_ident[EI_MAG2] != ELFMAG2 || header.e_ident[EI_MAG3] != ELFMAG3)
+    return "it is not an ELF file";
+  if (header.e_ident[EI_CLASS] != kElfClass || header.e_ident[EI_DATA] != kElfData)
+    return "it is an ELF file for another word size or byte order";
+  if (kElfMachine != 0 && header.e_machine != kElfMachine)
+    return str_cat("it is for another processor (ELF machine ", header.e_machine, ", this one is ", kElfMachine, ")");
+  if (header.e_type != ET_DYN) return "it is an ELF file but not a shared library";
+  const auto inside = [size](std::uint64_t offset, std::uint64_t length) {
+    return offset <= size && length <= size - offset;
+  };
+  if (header.e_phentsize != sizeof(ElfProgramHeader) ||
+      !inside(header.e_phoff, std::uint64_t{header.e_phnum} * header.e_phentsize))
+    return "its program headers are damaged or cut off";
+  if (header.e_shoff != 0 && !inside(header.e_shoff, std::uint64_t{header.e_shnum} * header.e_shentsize))
+    return str_cat("it is cut off (", size, " bytes; its section table ends at byte ",
+                   header.e_shoff + std::uint64_t{header.e_shnum} * header.e_shentsize, ")");
+  file.seekg(static_cast<std::streamoff>(header.e_phoff));
+  for (int i = 0; i < header.e_phnum; ++i) {
+    ElfProgramHeader segment{};
+    if (!file.read(reinterpret_cast<char*>(&segment), sizeof segment)) return "its program headers cannot be read";
+    if (segment.p_type == PT_LOAD && !inside(segment.p_offset, segment.p_filesz))
+      return str_cat("it is cut off (", size, " bytes; a segment ends at byte ", segment.p_offset + segment.p_filesz,
+                     ")");
+  }
+  return "";
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------- GeneratedLibrary
@@ -52,6 +122,11 @@ std::shared_ptr<const GeneratedLibrary> GeneratedLibrary::open(const std::string
                              "hinf_cpp.codegen.compile_casadi_functions, or check the path)"));
   if (fs::is_directory(status))
     throw InputError(str_cat("'", path, "' is a folder, not a shared library"));
+  const std::string problem = elf_problem(path);
+  if (!problem.empty())
+    throw InputError(str_cat("'", path, "' is not a whole shared library for this machine: ", problem,
+                             ". Compile it again here (hinf_cpp.codegen.compile_casadi_functions, or export the "
+                             "SymbolicModel again)"));
   // A name without a slash would be searched for on the library path instead of taken as a file.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
   dlerror();  // clears an earlier error

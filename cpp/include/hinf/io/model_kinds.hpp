@@ -83,6 +83,12 @@ struct ModelKind {
   // The section of a model of this kind, every parameter written out, or nullopt for a model
   // that is not of this kind. Empty: models of the kind have no file form (kind = "python").
   std::function<std::optional<Section>(const Model& model)> write;
+  // The key that names a program the reader loads or runs (kind = "casadi": file, whose
+  // model.json names a compiled library; kind = "python": callable), empty for a kind whose
+  // models are data only. A section of such a kind is read only when the caller allows code
+  // (parse_scenario_toml's allow_code); otherwise it is an InputError naming the key and how to
+  // allow it, before anything is loaded.
+  std::string code_key;
 };
 
 // Adds a kind to the table. InputError when the name is empty or taken, or read is empty.

@@ -21,10 +21,18 @@ namespace hinf {
 // channels of the model in [disturbance], keys nested too deeply, text that is not UTF-8.
 // source names the text in messages (usually the file path); the scenario name defaults to
 // the file's stem.
-Scenario parse_scenario_toml(const std::string& text, const std::string& source);
+//
+// Trust: a file is data. A model section whose kind loads or runs a program (kind = "casadi"
+// loads the compiled library its model.json names; kind = "python" imports and calls Python
+// code) is read only with allow_code; otherwise it is an InputError naming the key and how to
+// allow it (hinf-sim and hinf-cpp --trust-code, trust_code=True in Python, HINF_TRUST_CODE=1).
+Scenario parse_scenario_toml(const std::string& text, const std::string& source, bool allow_code = false);
 // Reads and parses a scenario file; a file that cannot be read (missing, a directory) is an
 // InputError naming the path.
-Scenario load_scenario_toml(const std::string& path);
+Scenario load_scenario_toml(const std::string& path, bool allow_code = false);
+// The environment's answer to "may files run code": HINF_TRUST_CODE = 1 yes, unset, empty or 0
+// no, anything else an InputError. The front ends use it as the default of their --trust-code.
+bool code_trusted_by_environment();
 // The inverse of parse_scenario_toml: the scenario as a scenario file that reads back to an
 // equal scenario (numbers written exactly). A model or signal that has no file form (a model
 // or a signal implemented in Python) is an InputError naming it.
@@ -35,7 +43,7 @@ std::string scenario_toml(const Scenario& scenario);
 bool needs_planning_toml(const std::string& text, const std::string& source);
 // The model of a document's [model] section, read as parse_scenario_toml reads it (the planner
 // of the Python package needs the model before the desired inputs exist).
-ModelPtr parse_model_toml(const std::string& text, const std::string& source);
+ModelPtr parse_model_toml(const std::string& text, const std::string& source, bool allow_code = false);
 
 // A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 // scenario), e.g. "kappa = { offset = 1.0 }".

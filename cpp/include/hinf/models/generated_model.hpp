@@ -30,8 +30,9 @@ namespace hinf {
 
 class GeneratedModel final : public Model {
  public:
-  // Reads model.json at metadata_path and loads its library (a path relative to model.json's
-  // folder). `parameters` sets parameter values by name (the others keep their defaults).
+  // Reads model.json at metadata_path and loads its library (a file name: the library lies beside
+  // model.json; a path is refused), after checking that it is a whole shared library of this
+  // machine's kind (GeneratedLibrary::open). `parameters` sets parameter values by name (the others keep their defaults).
   // InputError, naming the file and what to do, when the file is missing or not a model
   // description, a function is missing or has other sizes than the description says, the
   // structure is invalid (check_structure), or a parameter is unknown or not finite.

@@ -63,8 +63,10 @@ using CasadiReal = double;
 // of its entry points.
 class GeneratedLibrary {
  public:
-  // InputError when the file is missing or dlopen refuses it (with dlerror()'s reason), or
-  // when the library reports another casadi_int or casadi_real size than this loader's.
+  // InputError when the file is missing, is not a whole ELF shared library of this machine's
+  // kind (checked before dlopen, which would map a truncated file and die of SIGBUS on its
+  // missing pages), when dlopen refuses it (with dlerror()'s reason), or when the library
+  // reports another casadi_int or casadi_real size than this loader's.
   static std::shared_ptr<const GeneratedLibrary> open(const std::string& path);
   // Code compiled into the program: `symbols` maps each entry point's name to its address;
   // `label` stands for the path in messages.
