@@ -15,6 +15,10 @@
     hinf-cpp planned [--out DIR] [--no-cache] [--quiet]
     hinf-cpp study STUDY.toml --out DIR [--workers N | --scheduler ADDRESS] [--quiet]
 
+Every command takes --trust-code (the same as HINF_TRUST_CODE=1): without it a file that names
+code to run (a [model] of kind "casadi" or "python") is refused before anything is loaded
+(docs/trust.md).
+
 Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
 too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
 condition), 1 a bug. Errors are one line on stderr, with nothing before them. Every output
@@ -184,16 +188,20 @@ def cmd_run(args: argparse.Namespace) -> int:
     return 0
 
 
-def planned_scenario_text(planned) -> str:
-    """The planned scenario as a scenario file (hinf-sim runs it as is), with a header saying
-    where its inputs come from."""
+def planned_scenario_text(planned, output) -> str:
+    """The planned scenario as a scenario file to be written at `output` (hinf-sim runs it as
+    is), with a header saying where its inputs come from. A model compiled from CasADi is copied
+    beside `output` (hinf_cpp.scenario.planned.planned_scenario_toml): the file never points
+    into a cache."""
+    from hinf_cpp.scenario.planned import planned_scenario_toml
+
     plan, report = planned.plan, planned.plan.report
     lines = [f"# Planned by hinf-cpp plan from {planned.source}: u_d through the waypoints below,",
              "# as tables with interpolation = \"linear\" (the optimizer's inputs, docs/planning.md).",
              f"# {report.summary()}.",
              "# Waypoints:"]
     lines += [f"#   {j}: {w.describe()}" for j, w in enumerate(plan.waypoints)]
-    return "\n".join(lines) + "\n" + _core.scenario_toml(planned.scenario)
+    return "\n".join(lines) + "\n" + planned_scenario_toml(planned, output)
 
 
 def plan_dict(planned) -> dict:
@@ -214,7 +222,7 @@ def cmd_plan(args: argparse.Namespace) -> int:
         load_scenario(args.scenario)  # a file that cannot be read or parsed: the reader's message
         raise ValueError(f"{args.scenario}: [desired] gives no waypoints or path: there is nothing to plan "
                          "(docs/planning.md)")
-    write_text(args.output, planned_scenario_text(planned))
+    write_text(args.output, planned_scenario_text(planned, args.output))
     report = planned.plan.report
     print(f"scenario {planned.scenario.name}: planned u_d for the {planned.plan.model.name()} model through "
           f"{len(planned.plan.waypoints)} waypoints")
@@ -546,7 +554,7 @@ def cmd_study(args: argparse.Namespace) -> int:
         raise ValueError("--workers and --scheduler exclude each other: --workers sets the local threads, "
                          "a Dask cluster runs on its own workers")
     _check_outputs(folders=[args.out])
-    study = load_study(args.study)
+    study = load_study(args.study)  # --trust-code: HINF_TRUST_CODE, set by _run
     client = None
     if args.scheduler is not None:
         try:
@@ -731,6 +739,10 @@ def build_parser() -> argparse.ArgumentParser:
                        help="run on the Dask cluster with this scheduler address (tcp://host:port)")
     _add_quiet(study)
     study.set_defaults(handler=cmd_study)
+    for command in sub.choices.values():
+        command.add_argument("--trust-code", action="store_true",
+                             help="let the files read load and run the code they name (a [model] of kind "
+                                  "\"casadi\" or \"python\"); the same as HINF_TRUST_CODE=1 (docs/trust.md)")
     return parser
 
 
@@ -761,7 +773,12 @@ def main(argv: list[str] | None = None) -> int:
 
 def _run(args: argparse.Namespace) -> int:
     """The command's exit status; every exception becomes one line on stderr."""
+    trust_before = os.environ.get("HINF_TRUST_CODE")
     try:
+        if getattr(args, "trust_code", False):
+            # One mechanism: --trust-code is HINF_TRUST_CODE=1 for this command, so every reader
+            # of the package (load_scenario, studies, plans) sees the same answer.
+            os.environ["HINF_TRUST_CODE"] = "1"
         return args.handler(args)
     except BrokenPipeError:
         # The reader went away (e.g. `| head`): stop quietly, as other command-line tools do.
@@ -780,6 +797,11 @@ def _run(args: argparse.Namespace) -> int:
         return _fail("interrupted", 130)
     except Exception as error:  # noqa: BLE001 - a bug: still one line, exit status 1
         return _fail(f"internal error: {type(error).__name__}: {error}", 1)
+    finally:
+        if trust_before is None:
+            os.environ.pop("HINF_TRUST_CODE", None)
+        else:
+            os.environ["HINF_TRUST_CODE"] = trust_before
 
 
 def _fail(error: Exception | str, status: int) -> int:

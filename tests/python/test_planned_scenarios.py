@@ -31,6 +31,14 @@ LANE = (ROOT / "scenarios" / "planned" / "ship_lane_change.toml").read_text()
 
 
 @pytest.fixture(autouse=True)
+def trusted_code(monkeypatch):
+    """The scenarios here name models that are code, written by these tests: trusted
+    (docs/trust.md; test_trust.py checks the refusal without it). Subprocesses inherit it."""
+    monkeypatch.setenv("HINF_TRUST_CODE", "1")
+
+
+
+@pytest.fixture(autouse=True)
 def plan_cache(tmp_path_factory, monkeypatch):
     """A cache of this test session only (the programs started by the tests get it too)."""
     folder = tmp_path_factory.getbasetemp() / "hinf_cpp_cache"

@@ -27,6 +27,14 @@ from hinf_cpp.models.symbolic import SymbolicModel  # noqa: E402
 BIN = pathlib.Path(sys.executable).parent
 
 
+@pytest.fixture(autouse=True)
+def trusted_code(monkeypatch):
+    """The scenarios here name models that are code, written by these tests: trusted
+    (docs/trust.md; test_trust.py checks the refusal without it). Subprocesses inherit it."""
+    monkeypatch.setenv("HINF_TRUST_CODE", "1")
+
+
+
 @pytest.fixture(scope="module")
 def cache_dir(tmp_path_factory):
     return tmp_path_factory.mktemp("casadi-cache")
@@ -152,7 +160,7 @@ def test_scenario_parameters_and_round_trip(exported_ship, tmp_path):
     assert scenario.model.parameters()["d_u"] == 1.5 and scenario.model.parameters()["m_v"] == -2.0
     q = np.array([1.0, 0.2, 0.1, 0.0, 0.0, 0.3])
     assert scenario.model.f(0.0, q)[0] == pytest.approx(0.5 * 0.2 * 0.1 - 1.5 * 1.0, rel=1e-15)
-    again = hc._core.parse_scenario_toml(hc._core.scenario_toml(scenario), "round trip")
+    again = hc._core.parse_scenario_toml(hc._core.scenario_toml(scenario), "round trip", True)
     assert again.model.parameters() == scenario.model.parameters()
     copy = pickle.loads(pickle.dumps(scenario.model))
     np.testing.assert_array_equal(copy.f(0.0, q), scenario.model.f(0.0, q))

@@ -23,10 +23,10 @@ same functions at once each end with a complete library.
 
 A file name can be computed by anyone with the same compiler, so the name alone is not trusted:
 the cache folder is made private (mode 0700, whatever the umask), a folder that another user
-owns or that group or others can write is refused (:class:`CacheDirectoryError`, saying what to
+owns or that group or others can write is refused (``CacheDirectoryError``, saying what to
 do), and each library's SHA-256 is recorded beside it (``<library>.sha256``) and checked before
 the library is loaded. An entry whose hash is missing or wrong, or that does not load, is
-compiled anew under the same name. :func:`check_cache_folder` and :func:`make_cache_folder` apply
+compiled anew under the same name. ``check_cache_folder`` and ``make_cache_folder`` apply
 the same rules to the plan cache (``hinf_cpp.planning``).
 
 The generated code is pinned to the ABI the C++ loader reads: ``casadi_real = double`` and

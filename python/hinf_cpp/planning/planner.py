@@ -707,7 +707,7 @@ def default_cache_dir() -> pathlib.Path:
     ``$HINF_CPP_CACHE/plans``, else ``$XDG_CACHE_HOME/hinf_cpp/plans`` or
     ``~/.cache/hinf_cpp/plans``; it is created (mode 0700) when a plan is written. A folder
     that another user owns or that group or others can write is refused, as the compile
-    cache's (:func:`hinf_cpp.models.codegen.check_cache_folder`).
+    cache's (``hinf_cpp.models.codegen.check_cache_folder``).
 
     Returns
     -------

@@ -13,6 +13,7 @@ import importlib
 import importlib.util
 import os
 import pathlib
+import sys
 import tomllib
 from typing import Any
 
@@ -20,7 +21,47 @@ import tomli_w
 
 from hinf_cpp import _core
 
-__all__ = ["model_from_callable", "read_toml_file", "resolve_callable", "toml_text"]
+__all__ = ["code_allowed", "model_from_callable", "read_toml_file", "resolve_callable", "toml_text"]
+
+
+def code_allowed(trust_code: bool | None) -> bool:
+    """Whether reading a file may load or run the code it names (docs/trust.md).
+
+    Parameters
+    ----------
+    trust_code : bool or None
+        The caller's answer; None asks the environment: ``HINF_TRUST_CODE=1`` yes; unset,
+        empty or 0 no.
+
+    Returns
+    -------
+    bool
+        Whether a ``[model]`` of kind ``"casadi"`` or ``"python"`` may be read.
+
+    Raises
+    ------
+    ValueError
+        HINF_TRUST_CODE set to anything but 1, 0 or nothing.
+
+    Examples
+    --------
+    >>> from hinf_cpp.scenario.documents import code_allowed
+    >>> code_allowed(True), code_allowed(False)
+    (True, False)
+    """
+    return bool(trust_code) if trust_code is not None else _core.code_trusted_by_environment()
+
+
+def _user_code(spec: str, what: str, run):
+    """run(), with what the user's code raises (or a sys.exit in it) as a ValueError naming
+    `spec`: an error in a user's model is theirs to fix, not an internal error."""
+    try:
+        return run()
+    except SystemExit as error:
+        raise ValueError(f"'{spec}': {what} called sys.exit({error.code!r}); a model maker must return a model") \
+            from None
+    except Exception as error:  # noqa: BLE001 - any error of the user's code is reported as theirs
+        raise ValueError(f"'{spec}': {what} raised {type(error).__name__}: {error}") from error
 
 
 def read_toml_file(path: str | os.PathLike, what: str = "") -> dict:
@@ -116,7 +157,8 @@ def resolve_callable(spec: str, base: str | os.PathLike | None = None):
     """The callable named by `spec`: ``"package.module:name"`` or ``"path/to/file.py:name"``.
 
     A module is imported; a Python file is executed as a module of its own (it need not be on
-    ``sys.path``).
+    ``sys.path``; its folder is appended to ``sys.path`` so that it can import the modules
+    beside it). What the file raises while it runs is a ValueError naming `spec`.
 
     Parameters
     ----------
@@ -157,12 +199,19 @@ def resolve_callable(spec: str, base: str | os.PathLike | None = None):
             raise ValueError(f"'{spec}': no Python file {path}")
         module_spec = importlib.util.spec_from_file_location(f"hinf_cpp_user_{path.stem}", path)
         module = importlib.util.module_from_spec(module_spec)
-        module_spec.loader.exec_module(module)
+        # Its folder goes on sys.path (at the end: it shadows nothing), so that it can import a
+        # module beside it, as `python file.py` could, also when its callable imports later.
+        folder = str(path.resolve().parent)
+        if folder not in sys.path:
+            sys.path.append(folder)
+        _user_code(spec, f"running {path}", lambda: module_spec.loader.exec_module(module))
     else:
         try:
             module = importlib.import_module(where)
         except ImportError as error:
             raise ValueError(f"'{spec}': cannot import {where} ({error})") from error
+        except Exception as error:  # noqa: BLE001 - the user's module failed while being imported
+            raise ValueError(f"'{spec}': importing {where} raised {type(error).__name__}: {error}") from error
     factory = getattr(module, name, None)
     if not callable(factory):
         raise ValueError(f"'{spec}': {where} has no callable '{name}'")
@@ -210,7 +259,8 @@ def model_from_callable(spec: str, source: str = "") -> _core.Model:
     ValueError: 'builtins:list' returned list, not an hc.Model or a SymbolicModel
     """
     base = pathlib.Path(source).parent if source and pathlib.Path(source).is_file() else None
-    model = resolve_callable(spec, base)()
+    factory = resolve_callable(spec, base)
+    model = _user_code(spec, "the call", factory)
     if isinstance(model, _core.Model):
         return model
     from hinf_cpp.models.symbolic import SymbolicModel

@@ -16,13 +16,13 @@ from importlib import resources
 from typing import Any
 
 from hinf_cpp import _core
-from hinf_cpp.scenario.documents import toml_text
+from hinf_cpp.scenario.documents import code_allowed, toml_text
 from hinf_cpp.scenario.planned import load_planned, needs_planning, plan_scenario
 
 __all__ = ["load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec"]
 
 
-def load_scenario(path: str | os.PathLike) -> _core.Scenario:
+def load_scenario(path: str | os.PathLike, *, trust_code: bool | None = None) -> _core.Scenario:
     """Read a scenario file (TOML, docs/scenarios.md) into a :class:`hinf_cpp.Scenario`.
 
     The file is read by the C++ reader that ``hinf-sim`` uses: the same files are accepted and
@@ -36,6 +36,11 @@ def load_scenario(path: str | os.PathLike) -> _core.Scenario:
     ----------
     path : str or os.PathLike
         The scenario file; shipped ones are at :func:`scenario_path`.
+    trust_code : bool, optional
+        Whether the file may load or run code: a ``[model]`` of kind ``"casadi"`` loads the
+        compiled library its model.json names, kind ``"python"`` imports and calls Python code.
+        Default: the environment (``HINF_TRUST_CODE=1``), else no: such a file is then a
+        ValueError naming the key and how to allow it, and nothing is loaded (docs/trust.md).
 
     Returns
     -------
@@ -61,10 +66,11 @@ def load_scenario(path: str | os.PathLike) -> _core.Scenario:
         ...
     ValueError: cannot read scenario file 'missing.toml': No such file or directory
     """
-    planned = load_planned(path)
+    allow_code = code_allowed(trust_code)
+    planned = load_planned(path, trust_code=allow_code)
     if planned is not None:
         return _warn_about(planned.scenario, os.fspath(path))
-    return _warn_about(_core.load_scenario_toml(os.fspath(path)), os.fspath(path))
+    return _warn_about(_core.load_scenario_toml(os.fspath(path), allow_code), os.fspath(path))
 
 
 def _warn_about(scenario: _core.Scenario, source: str) -> _core.Scenario:
@@ -73,7 +79,7 @@ def _warn_about(scenario: _core.Scenario, source: str) -> _core.Scenario:
     return scenario
 
 
-def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
+def scenario_from_dict(root: dict, source: str = "<dict>", *, trust_code: bool | None = None) -> _core.Scenario:
     """Build a :class:`hinf_cpp.Scenario` from the dictionary form of a scenario file.
 
     The dictionary (as :func:`tomllib.load` gives it for a file) is written back as TOML text
@@ -87,6 +93,8 @@ def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
         dictionaries.
     source : str, optional
         What the document is called in messages (default ``"<dict>"``).
+    trust_code : bool, optional
+        Whether the document's model may load or run code (as :func:`load_scenario`).
 
     Returns
     -------
@@ -114,9 +122,10 @@ def scenario_from_dict(root: dict, source: str = "<dict>") -> _core.Scenario:
         ...
     ValueError: <dict>: [controller] unknown key 'gama' (known keys: gamma, Q, Qf, kappa, law, cascade)
     """
+    allow_code = code_allowed(trust_code)
     if needs_planning(root):
-        return _warn_about(plan_scenario(root, source).scenario, source)
-    return _warn_about(_core.parse_scenario_toml(toml_text(root, source), source), source)
+        return _warn_about(plan_scenario(root, source, trust_code=allow_code).scenario, source)
+    return _warn_about(_core.parse_scenario_toml(toml_text(root, source), source, allow_code), source)
 
 
 def signal_from_spec(spec: Any, name: str = "signal") -> _core.Signal:

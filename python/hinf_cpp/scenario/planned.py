@@ -36,7 +36,7 @@ from hinf_cpp.models.codegen import _write_atomically
 from hinf_cpp.models.codegen import default_cache_dir as compile_cache_dir
 from hinf_cpp.planning.planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
                       waypoints_from_path)
-from hinf_cpp.scenario.documents import resolve_callable, toml_text
+from hinf_cpp.scenario.documents import code_allowed, resolve_callable, toml_text
 
 __all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario",
            "planned_scenario_toml"]
@@ -118,7 +118,7 @@ def needs_planning(root) -> bool:
     return isinstance(desired, dict) and any(key in desired for key in PLANNING_KEYS)
 
 
-def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario | None:
+def load_planned(path: str | os.PathLike, cache: bool = True, trust_code: bool | None = None) -> PlannedScenario | None:
     """The planned scenario of a file whose [desired] asks for planning, else None.
 
     :func:`hinf_cpp.load_scenario` calls it first for every file.
@@ -130,6 +130,8 @@ def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario
     cache : bool, optional
         Keep plans in :func:`hinf_cpp.planning.default_cache_dir` and read them back from
         there (default True); False plans anew and writes nothing.
+    trust_code : bool, optional
+        Whether the file's model may load or run code (as :func:`hinf_cpp.load_scenario`).
 
     Returns
     -------
@@ -163,10 +165,11 @@ def load_planned(path: str | os.PathLike, cache: bool = True) -> PlannedScenario
         root = tomllib.loads(text)
     except (OSError, ValueError):
         return None
-    return plan_scenario(root, path, cache)
+    return plan_scenario(root, path, cache, trust_code)
 
 
-def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> PlannedScenario:
+def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
+                  trust_code: bool | None = None) -> PlannedScenario:
     """Plan the inputs of a scenario's dictionary and read the planned scenario.
 
     The [desired] table gives ``waypoints`` (or a ``path``, timed by
@@ -187,6 +190,8 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> Pla
     cache : bool, optional
         Keep plans in :func:`hinf_cpp.planning.default_cache_dir` and read them back from
         there (default True); False plans anew and writes nothing.
+    trust_code : bool, optional
+        Whether the document's model may load or run code (as :func:`hinf_cpp.load_scenario`).
 
     Returns
     -------
@@ -229,12 +234,14 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> Pla
     if inputs:
         raise ValueError(f"{source}: [desired] {inputs[0]}: give the inputs or {next(iter(planning))} "
                          "(planned inputs), not both")
-    model = _core.parse_model_toml(toml_text({key: root[key] for key in ("model",) if key in root}, source), source)
+    allow_code = code_allowed(trust_code)
+    model = _core.parse_model_toml(toml_text({key: root[key] for key in ("model",) if key in root}, source), source,
+                                   allow_code)
     # Everything but the inputs, checked by the C++ reader first (with zero inputs in their place).
     skeleton = copy.deepcopy(root)
     skeleton["desired"] = {key: value for key, value in desired.items() if key not in PLANNING_KEYS}
     skeleton["desired"].update({f"u{i + 1}": 0.0 for i in range(model.m())})
-    checked = _core.parse_scenario_toml(toml_text(skeleton, source), source)
+    checked = _core.parse_scenario_toml(toml_text(skeleton, source), source, allow_code)
     options = _plan_options(planning.get("plan", {}), source, model.m())
     if "waypoints" in planning:
         waypoints = _waypoints(planning["waypoints"], source)
@@ -256,7 +263,7 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True) -> Pla
         raise ValueError(f"{source}: {section} {text}") from None
     document = copy.deepcopy(root)
     document["desired"] = dict(skeleton["desired"], **result.input_tables())
-    scenario = _core.parse_scenario_toml(toml_text(document, source), source)
+    scenario = _core.parse_scenario_toml(toml_text(document, source), source, allow_code)
     return PlannedScenario(scenario, result, document, source)
 
 

@@ -34,6 +34,7 @@ import numpy as np
 
 from hinf_cpp import _core
 from hinf_cpp.scenario import scenario_from_dict
+from hinf_cpp.scenario.documents import code_allowed
 from hinf_cpp.scenario.documents import read_toml_file
 from hinf_cpp.scenario.settings import FEEDBACK_KEY, apply_settings, get_key, key_path, set_key, toml_value
 
@@ -196,6 +197,9 @@ class Study:
         The study's own document.
     report : dict
         Its [report] table (metrics, figures).
+    trust_code : bool, optional
+        Whether its scenarios may load or run code (docs/trust.md), decided when the study is
+        read; it travels with the study to every worker (default False).
 
     Examples
     --------
@@ -222,6 +226,7 @@ class Study:
     chunk: int
     definition: dict
     report: dict
+    trust_code: bool = False
 
     @property
     def grid_shape(self) -> tuple[int, ...]:
@@ -277,7 +282,7 @@ class Study:
 
     def scenario(self, run: int) -> _core.Scenario:
         """The scenario of run `run` (read by the one C++ reader)."""
-        return scenario_from_dict(self.document(run), self.source)
+        return scenario_from_dict(self.document(run), self.source, trust_code=self.trust_code)
 
 
 @functools.lru_cache(maxsize=1)
@@ -370,7 +375,7 @@ def _only(table: dict, allowed: set[str], where: str) -> None:
 
 
 def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.PathLike | None = None,
-                    base: dict | None = None) -> Study:
+                    base: dict | None = None, trust_code: bool | None = None) -> Study:
     """A :class:`Study` from the dictionary form of a study file (docs/studies.md).
 
     The base scenario is read from [study] scenario (relative to `folder`) unless its
@@ -389,6 +394,9 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
         The folder a relative [study] scenario is taken from (default: the current one).
     base : dict, optional
         The base scenario's document, instead of reading [study] scenario.
+    trust_code : bool, optional
+        Whether the base scenario's model may load or run code (as
+        :func:`hinf_cpp.load_scenario`; default: ``HINF_TRUST_CODE``, else no).
 
     Returns
     -------
@@ -416,6 +424,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
     ValueError: <study>: [[grid]] 1: unknown key 'value' (allowed: key, values)
     """
     where = source
+    allow_code = code_allowed(trust_code)
     _only(definition, {"study", "grid", "random", "report"}, where)
     head = definition.get("study")
     if not isinstance(head, dict):
@@ -503,7 +512,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
             _only(table, {"key", "distribution"}, at)
         if relative:
             if base_scenario is None and key.split(".")[0] in ("plant", "model"):
-                base_scenario = scenario_from_dict(base, scenario_source)
+                base_scenario = scenario_from_dict(base, scenario_source, trust_code=allow_code)
             try:
                 axis = dataclasses.replace(axis, base=_relative_base(base, base_scenario, key))
             except ValueError as error:
@@ -523,7 +532,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
 
     study = Study(name=str(head.get("name", pathlib.Path(source).stem)), description=str(head.get("description", "")),
                   source=scenario_source, base=base, seed=seed, samples=samples, grid=tuple(grid),
-                  random=tuple(random), chunk=chunk, definition=definition, report=report)
+                  random=tuple(random), chunk=chunk, definition=definition, report=report, trust_code=allow_code)
     study.scenario(0)  # a key the reader refuses, or a value it cannot take, is an error here
     return study
 
@@ -561,7 +570,7 @@ def _check_report(report: Any, grid: list[GridAxis], keys: set[str], where: str)
     return report
 
 
-def load_study(path: str | os.PathLike) -> Study:
+def load_study(path: str | os.PathLike, trust_code: bool | None = None) -> Study:
     """Read a study file (TOML, docs/studies.md).
 
     Its [study] scenario is taken from the study file's folder when relative.
@@ -570,6 +579,8 @@ def load_study(path: str | os.PathLike) -> Study:
     ----------
     path : str or os.PathLike
         The study file.
+    trust_code : bool, optional
+        As :func:`study_from_dict`.
 
     Returns
     -------
@@ -597,7 +608,7 @@ def load_study(path: str | os.PathLike) -> Study:
     ValueError: cannot read the study 'missing.toml': No such file or directory
     """
     path = pathlib.Path(path)
-    return study_from_dict(_read_toml(path, "the study "), os.fspath(path), path.parent)
+    return study_from_dict(_read_toml(path, "the study "), os.fspath(path), path.parent, trust_code=trust_code)
 
 
 # --------------------------------------------------------------------------------------------
