@@ -167,6 +167,55 @@ q0 = [0.0]
     assert hc.ShipModel(hc.ShipParameters()).noise_channels() == [3, 4, 5]
 
 
+# ======================================================================================
+# hinf-cpp run --set KEY=VALUE: the value is read as the file reader reads it
+# ======================================================================================
+
+# What the reader says of each literal refused (None: accepted). 1e400 overflows a double:
+# tomllib reads it as inf, toml++ refuses it; inf is how TOML writes infinity (gamma may be inf).
+GAMMA_LITERALS = {
+    "1e400": "could not be interpreted as a value",
+    "-1e400": "could not be interpreted as a value",
+    "1.8e308": "could not be interpreted as a value",
+    "99999999999999999999": "not representable in 64 bits",
+    "nan": "expected a number",
+    "-inf": "must be > 0",
+    "inf": None,
+    "+inf": None,
+    "1.7976931348623157e308": None,
+}
+
+
+@pytest.mark.parametrize("literal", list(GAMMA_LITERALS))
+def test_set_accepts_and_refuses_a_number_as_the_file_reader_does(tmp_path, capsys, literal):
+    """`--set controller.gamma=1e400` ran with gamma = inf, where the same literal in the file is
+    refused."""
+    in_file = write(tmp_path, "gamma.toml", mutate(PAPER_TEXT, "gamma = 5.0", f"gamma = {literal}"))
+    file_status = cli.main(["run", str(in_file)])
+    file_error = capsys.readouterr().err
+    set_status = cli.main(["run", str(hc.scenario_path("paper_fig1")), "--set", f"controller.gamma={literal}"])
+    set_error = capsys.readouterr().err
+    reason = GAMMA_LITERALS[literal]
+    assert (file_status, set_status) == ((0, 0) if reason is None else (2, 2)), (file_error, set_error)
+    if reason is not None:
+        assert reason in file_error and reason in set_error, (file_error, set_error)
+        assert len(set_error.splitlines()) == 1 and "gamma" in set_error
+
+
+@pytest.mark.parametrize("setting", ["controller.gamma=5\n[initial]\nq0 = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]",
+                                     "controller.gamma=5\r", "controller.gamma=\t5", "controller.gamma=5\x00",
+                                     'controller.law="lqr\u2028"', "controller.gam\nma=5"])
+def test_set_refuses_a_line_break_or_control_character(capsys, setting):
+    """What followed a line break in a --set value was silently dropped (the run went on)."""
+    status = cli.main(["run", str(hc.scenario_path("paper_fig1")), "--set", setting])
+    error = capsys.readouterr().err
+    assert status == 2
+    lines = error.splitlines()
+    assert len(lines) == 1, error
+    assert re.match(r"hinf-cpp: error: --set 'controller\.(gam\\nma|gamma|law)=.*': a line break or control "
+                    r"character \(U\+[0-9A-F]{4}\) at position \d+: give one KEY=VALUE on one line", lines[0]), error
+
+
 @needs_programs
 def test_byte_order_mark_is_accepted_by_both(tmp_path):
     path = write(tmp_path, "bom.toml", b"\xef\xbb\xbf" + PAPER_TEXT.encode())

@@ -9,8 +9,10 @@ path, with array indices: ``controller.gamma``, ``initial.q0[2]``,
 from __future__ import annotations
 
 import copy
+import math
 import re
 import tomllib
+import unicodedata
 from typing import Any, Sequence
 
 __all__ = ["FEEDBACK_KEY", "apply_settings", "get_key", "key_path", "parse_setting", "set_key", "toml_value"]
@@ -195,7 +197,11 @@ def parse_setting(text: str) -> tuple[str, Any]:
     Raises
     ------
     ValueError
-        No ``=`` or no key, a value that is not TOML, a key that is not well formed.
+        No ``=`` or no key, a value that is not TOML, a key that is not well formed; a line
+        break or other control character anywhere in `text` (the value is one TOML value on
+        one line: what follows a line break would be dropped); a number the scenario file
+        reader refuses: a float literal that overflows a double (``1e400``; ``inf`` and
+        ``-inf`` are written so) or an integer outside 64 bits.
 
     Examples
     --------
@@ -204,22 +210,81 @@ def parse_setting(text: str) -> tuple[str, Any]:
     ('controller.law', 'lqr')
     >>> parse_setting("initial.q0[2] = 0.5")
     ('initial.q0[2]', 0.5)
+    >>> parse_setting("controller.gamma=inf")
+    ('controller.gamma', inf)
     >>> parse_setting("controller.law=lqr")
     Traceback (most recent call last):
         ...
     ValueError: --set 'controller.law=lqr': 'lqr' is not a TOML value (quote strings: controller.law="lqr")
+    >>> parse_setting("controller.gamma=1e400")
+    Traceback (most recent call last):
+        ...
+    ValueError: --set 'controller.gamma=1e400': invalid TOML in controller.gamma: ... '1e400' could not be ...
     """
+    _check_one_line(text)
     key, sep, value = text.partition("=")
     key = key.strip()
     if not sep or not key:
         raise ValueError(f"--set '{text}': write it as KEY=VALUE, e.g. controller.gamma=12")
     try:
-        parsed = tomllib.loads(f"value = {value.strip()}")["value"]
+        parsed = tomllib.loads(f"value = {value.strip()}", parse_float=_file_float)["value"]
     except tomllib.TOMLDecodeError:
         raise ValueError(f"--set '{text}': '{value.strip()}' is not a TOML value "
                          "(quote strings: controller.law=\"lqr\")") from None
+    except _Overflow as overflow:
+        raise ValueError(f"--set '{text}': invalid TOML in {key}: Error while parsing floating-point: "
+                         f"'{overflow.literal}' could not be interpreted as a value (it overflows a double; "
+                         "write inf for infinity)") from None
+    integer = _integer_beyond_64_bits(parsed)
+    if integer is not None:
+        raise ValueError(f"--set '{text}': invalid TOML in {key}: Error while parsing integer: '{integer}' is not "
+                         "representable in 64 bits")
     key_path(key) if key != FEEDBACK_KEY else None
     return key, parsed
+
+
+class _Overflow(Exception):
+    def __init__(self, literal: str):
+        super().__init__(literal)
+        self.literal = literal
+
+
+def _file_float(literal: str) -> float:
+    """A TOML float literal as the scenario file reader (toml++) reads it: tomllib gives inf
+    for a literal that overflows (1e400), toml++ refuses it. inf, +inf and -inf are infinite."""
+    value = float(literal)
+    if math.isinf(value) and literal.lstrip("+-") != "inf":
+        raise _Overflow(literal)
+    return value
+
+
+def _integer_beyond_64_bits(value: Any) -> int | None:
+    """The first integer of a TOML value outside int64 (toml++ refuses it), else None."""
+    if isinstance(value, int) and not isinstance(value, bool):
+        return value if not -2**63 <= value < 2**63 else None
+    items = value.values() if isinstance(value, dict) else value if isinstance(value, list) else ()
+    for item in items:
+        found = _integer_beyond_64_bits(item)
+        if found is not None:
+            return found
+    return None
+
+
+def _check_one_line(text: str) -> None:
+    """Refuses a control character (a line break, a tab, ...) in a KEY=VALUE setting: TOML
+    would read the first line and silently drop the rest."""
+    def control(char: str) -> bool:
+        return unicodedata.category(char) in ("Cc", "Zl", "Zp")
+
+    for position, char in enumerate(text):
+        if control(char):
+            shown = "".join(_ESCAPES.get(c, f"\\u{ord(c):04x}") if control(c) else c for c in text[:60])
+            raise ValueError(f"--set '{shown}{'...' if len(text) > 60 else ''}': a line break or control "
+                             f"character (U+{ord(char):04X}) at position {position}: give one KEY=VALUE on one line, "
+                             "without line breaks or tabs")
+
+
+_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
 
 
 def apply_settings(document: dict, settings: Sequence[tuple[str, Any]], seed: int | None = None) -> dict:
