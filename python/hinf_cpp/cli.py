@@ -575,8 +575,13 @@ def cmd_study(args: argparse.Namespace) -> int:
         print(f"note: {args.out}/partial held runs of another version of this study (the study, its scenario "
               "or the library changed): started over")
     if table.attrs.get("reused_chunks"):
+        reused = table.attrs.get("reused_statuses", {})
+        kept = ", ".join(f"{status} {count}" for status, count in reused.items())
         print(f"resumed: reused {table.attrs['reused_chunks']} of {table.attrs['chunks']} chunks saved in "
-              f"{args.out}/partial")
+              f"{args.out}/partial ({sum(reused.values())} runs: {kept})")
+        if reused.get("invalid_input"):
+            print(f"note: their invalid_input runs ({reused['invalid_input']}) were not run again; if a file "
+                  f"was missing then, delete {args.out}/partial to run them again")
     counts = status_counts(table)
     statuses = ", ".join(f"{name} {int(counts[name].sum())}" for name in counts.columns
                          if name != "runs" and counts[name].sum() > 0)

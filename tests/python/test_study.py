@@ -336,6 +336,17 @@ def test_a_chunk_with_a_failed_row_is_run_again_on_resume(tmp_path):
     assert resumed.attrs["reused_chunks"] == 1 and not resumed.attrs["restarted"]
 
 
+def test_a_resumed_study_says_the_statuses_of_the_runs_it_reused(tmp_path):
+    """invalid_input rows are kept on resume: the study says so (it said only how many chunks)."""
+    path = write_study(tmp_path, FAILURES)
+    first = hs.run_study(path, workers=1, out=tmp_path / "out", progress=False)
+    assert first.attrs["reused_statuses"] == {}
+    resumed = hs.run_study(path, workers=1, out=tmp_path / "out", progress=False)
+    assert resumed.attrs["reused_chunks"] == 3
+    assert resumed.attrs["reused_statuses"] == {"completed": 1, "conjugate_point": 1, "coupling_violation": 1,
+                                                "diverged": 1, "invalid_input": 1}
+
+
 # ---- round trips ----
 
 def test_a_pickled_and_a_rewritten_scenario_run_to_the_same_result(mc_study):
@@ -412,6 +423,18 @@ def test_cli_study_writes_the_table_summary_and_figures(tmp_path):
     assert "6 runs (completed 6)" in done.stdout and "resumed" not in done.stdout
     again = cli("study", path, "--out", out, "--quiet")
     assert again.returncode == 0 and "resumed: reused 2 of 2 chunks" in again.stdout, again.stderr
+    assert f"saved in {out}/partial (6 runs: completed 6)" in again.stdout and "note:" not in again.stdout
+
+
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+def test_cli_study_resumed_says_which_failed_runs_it_did_not_run_again(tmp_path):
+    path = write_study(tmp_path, FAILURES)
+    assert cli("study", path, "--out", tmp_path / "out", "--quiet").returncode == 0
+    again = cli("study", path, "--out", tmp_path / "out", "--quiet")
+    assert again.returncode == 0, again.stderr
+    assert "(5 runs: completed 1, diverged 1, conjugate_point 1, coupling_violation 1, invalid_input 1)" in again.stdout
+    assert f"their invalid_input runs (1) were not run again; if a file was missing then, delete " \
+        f"{tmp_path / 'out'}/partial" in again.stdout
 
 
 @pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")

@@ -946,7 +946,8 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
         The columns of :func:`study_table_schema` (integers as nullable Int64).
         ``attrs["restarted"]`` is True when saved chunks in `out` were of another study and
         were deleted; ``attrs["reused_chunks"]`` is the number of saved chunks used, of
-        ``attrs["chunks"]``.
+        ``attrs["chunks"]``, and ``attrs["reused_statuses"]`` the statuses of their runs
+        (status -> count; their ``invalid_input`` rows were not run again).
 
     Raises
     ------
@@ -987,6 +988,8 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
                     tables[index] = table
         todo = [index for index in range(len(chunks)) if index not in tables]
         reused_chunks = len(tables)
+        reused = [status for table in tables.values() for status in table["status"].to_pylist()]
+        reused_statuses = {status: reused.count(status) for status in STATUSES if status in reused}
         callback, close = _progress_callback(progress)
         started, resumed = time.perf_counter(), sum(chunks[i][1] - chunks[i][0] for i in tables)
         lock = threading.Lock()
@@ -1061,6 +1064,7 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     frame = _to_pandas(table)
     frame.attrs["restarted"] = bool(partial is not None and partial.restarted)
     frame.attrs["reused_chunks"] = reused_chunks
+    frame.attrs["reused_statuses"] = reused_statuses
     frame.attrs["chunks"] = len(chunks)
     return frame
 
