@@ -154,6 +154,67 @@ def test_a_dask_cluster_of_two_processes_gives_the_same_table(mc_study, mc_table
                                check_exact=True, check_dtype=False)
 
 
+# ---- on other machines: a carried model, the workers' build, a lost cluster ----
+
+@pytest.fixture(scope="module")
+def inprocess_client():
+    """A Dask cluster of one worker in this process (its files and working folder are this process's:
+    the tests below take away what the client had)."""
+    distributed = pytest.importorskip("dask.distributed")
+    # An in-process scheduler serves HTTP even with dashboard_address=None (on 8787, with a warning if that
+    # is taken): a free local port instead.
+    cluster = distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                       dashboard_address="127.0.0.1:0", silence_logs=50)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("worker", ["another version", "another core", "an older hinf_cpp"])
+def test_a_worker_of_another_build_stops_the_study_naming_it(mc_study, monkeypatch, inprocess_client, worker):
+    """The workers' hinf_cpp was never compared with the client's: their rows were mixed in."""
+    real = hs._dask_chunk
+
+    def other_build(study, start, stop):
+        table, identity = real(study, start, stop)
+        if worker == "an older hinf_cpp":
+            return table  # before chunks said who ran them
+        changed = {"another version": {"version": "0.0.1"}, "another core": {"core": "f" * 64}}[worker]
+        return table, {**identity, **changed}
+
+    monkeypatch.setattr(hs, "_dask_chunk", other_build)
+    address = next(iter(inprocess_client.scheduler_info()["workers"]))
+    with pytest.raises(ValueError, match="install the same hinf_cpp build on every worker") as error:
+        hs.run_study(mc_study, client=inprocess_client, progress=False)
+    message = str(error.value)
+    assert address in message and f"hinf_cpp {hc._core.__version__}" in message
+    if worker != "an older hinf_cpp":
+        assert ("0.0.1" if worker == "another version" else "core ffffffffffff") in message
+
+
+@pytest.mark.slow
+def test_losing_every_worker_is_a_resumable_error_not_an_internal_one(mc_study, mc_table, tmp_path):
+    """It was FutureCancelledError ("internal error" on the command line)."""
+    distributed = pytest.importorskip("dask.distributed")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  dashboard_address="127.0.0.1:0", silence_logs=50) as cluster, distributed.Client(cluster) as client:
+        def lose_the_workers(done, total, message):
+            for worker in list(cluster.workers.values()):
+                client.sync(worker.close)
+
+        with pytest.raises(OSError, match="the same --out .* to resume") as error:  # the CLI: one line, status 2
+            hs.run_study(mc_study, client=client, out=tmp_path, progress=lose_the_workers)
+    assert "the Dask cluster lost the study's tasks (FutureCancelledError" in str(error.value)
+    assert str(tmp_path / "partial") in str(error.value)
+    saved = len(list((tmp_path / "partial").glob("chunk-*.parquet")))  # the first; the second if it ended first
+    assert 1 <= saved < 3
+    resumed = hs.run_study(mc_study, workers=1, out=tmp_path, progress=False)
+    assert resumed.attrs["reused_chunks"] == saved
+    pdt.assert_frame_equal(resumed, mc_table, check_exact=True)
+
+
 # ---- replay ----
 
 def test_replay_gives_the_row_exactly(mc_study, mc_table):

@@ -25,6 +25,7 @@ import math
 import os
 import pathlib
 import re
+import socket
 import tempfile
 import threading
 import time
@@ -41,6 +42,7 @@ from hinf_cpp.scenario.settings import FEEDBACK_KEY, apply_settings, get_key, ke
 __all__ = [
     "GridAxis",
     "RandomAxis",
+    "ClusterError",
     "Study",
     "STATUSES",
     "load_study",
@@ -65,6 +67,23 @@ MAX_RUNS = 10 ** 7
 #: (cpp/src/io/toml_table.cpp, kMaxKeyParts): Python's TOML reader takes memory quadratic in them.
 MAX_KEY_PARTS = 16
 _SEED_LIMIT = 2 ** 63
+
+
+class ClusterError(OSError):
+    """A Dask cluster could not finish a study: its workers or the scheduler were lost.
+
+    Raised by :func:`run_study`. Finished chunks are kept (with ``out``): the same call, or
+    command with the same ``--out``, resumes. An OSError: the command line prints its message
+    on one line and exits with status 2.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies.study import ClusterError
+    >>> issubclass(ClusterError, OSError)
+    True
+    >>> print(ClusterError("study mc: the Dask cluster lost the study's tasks (...)"))
+    study mc: the Dask cluster lost the study's tasks (...)
+    """
 
 
 # --------------------------------------------------------------------------------------------
@@ -200,7 +219,6 @@ class Study:
     trust_code : bool, optional
         Whether its scenarios may load or run code (docs/trust.md), decided when the study is
         read; it travels with the study to every worker (default False).
-
     Examples
     --------
     >>> from hinf_cpp.studies import study_from_dict
@@ -891,8 +909,46 @@ def _worker_threads() -> int:
         return 1
 
 
-def _dask_chunk(study: Study, start: int, stop: int):
-    return run_chunk(study, start, stop, _worker_threads())
+def _identity() -> dict:
+    """Who runs a chunk: the hinf_cpp version, the compiled core's fingerprint, the host and the
+    Dask worker's address (empty outside a worker)."""
+    try:
+        from dask.distributed import get_worker
+
+        address = str(get_worker().address)
+    except (ImportError, ValueError, AttributeError):
+        address = ""
+    return {"version": _core.__version__, "core": _core_fingerprint(), "host": socket.gethostname(),
+            "address": address}
+
+
+def _dask_chunk(study: Study, start: int, stop: int) -> tuple[Any, dict]:
+    """A chunk on a Dask worker: its table, and who ran it (checked by the client)."""
+    return run_chunk(study, start, stop, _worker_threads()), _identity()
+
+
+def _checked_result(result: Any, who: Callable[[], str]) -> Any:
+    """The table of a Dask chunk's result, after checking that the worker runs this hinf_cpp
+    build (the same version and compiled core: another gives other rows); a ValueError naming
+    the worker and both versions otherwise. who() names the worker of a result without identity."""
+    mine = f"hinf_cpp {_core.__version__} (core {_core_fingerprint()[:12]})"
+    if not (isinstance(result, tuple) and len(result) == 2 and isinstance(result[1], dict)):
+        raise ValueError(f"the Dask worker {who()} runs another hinf_cpp than this process's {mine} (its chunks "
+                         "do not say which): install the same hinf_cpp build on every worker")
+    table, worker = result
+    if (worker.get("version"), worker.get("core")) != (_core.__version__, _core_fingerprint()):
+        raise ValueError(f"the Dask worker {worker.get('address') or who()} on {worker.get('host', '?')} runs "
+                         f"hinf_cpp {worker.get('version')} (core {str(worker.get('core'))[:12]}), this process "
+                         f"{mine}: their rows could differ; install the same hinf_cpp build on every worker")
+    return table
+
+
+def _holder(client, future) -> str:
+    """The address of the worker holding a finished future's result ("?" if unknown)."""
+    try:
+        return ", ".join(client.who_has([future]).get(future.key, ())) or "?"
+    except Exception:  # noqa: BLE001 - only for a message
+        return "?"
 
 
 def _progress_callback(progress) -> tuple[Callable[[int, int, str], None], Callable[[], None]]:
@@ -953,7 +1009,11 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     ------
     ValueError
         `workers` with `client`, `workers` not an integer >= 1; out/partial not a study's
-        folder, or in use by another study; as :func:`load_study` for a path.
+        folder, or in use by another study; a Dask worker running another hinf_cpp version or
+        core build (naming the worker and both); as :func:`load_study` for a path.
+    ClusterError
+        The Dask cluster lost the study's tasks (workers or scheduler gone; an OSError:
+        finished chunks are kept in `out`, and the same call resumes).
 
     Examples
     --------
@@ -1041,9 +1101,12 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
                             task.cancel()
                         raise
             else:
-                from dask.distributed import as_completed
-
                 import uuid
+
+                from dask.distributed import as_completed
+                from distributed import KilledWorker
+                from distributed.client import ClosedClientError
+                from distributed.comm import CommClosedError
 
                 # Keys unique to this call: a second run of the same study on the same client must
                 # not meet the first one's futures while the scheduler releases them.
@@ -1053,9 +1116,22 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
                            for index in todo}
                 try:
                     for future in as_completed(futures):
-                        finished(futures[future], future.result())
+                        try:
+                            result = future.result()
+                        except (concurrent.futures.CancelledError, KilledWorker, CommClosedError, ClosedClientError,
+                                TimeoutError, ClusterError) as error:
+                            # Lost workers or scheduler (every task cancelled), or a worker that cannot build
+                            # the study's model: not an internal error, and resumable.
+                            kept = (f"the {len(tables)} finished chunks are kept in {partial.folder}: run the same "
+                                    f"command with the same --out (or run_study with the same out) to resume"
+                                    if partial is not None else "pass --out (out=) to keep finished chunks")
+                            detail = str(error) if isinstance(error, ClusterError) else \
+                                f"the Dask cluster lost the study's tasks ({type(error).__name__}: {error})"
+                            raise ClusterError(f"study {study.name}: {detail.rstrip('.')}; {kept}") from error
+                        finished(futures[future], _checked_result(result, functools.partial(_holder, client, future)))
                 except BaseException:
-                    client.cancel(list(futures))
+                    with contextlib.suppress(Exception):  # a closed client cannot cancel
+                        client.cancel(list(futures))
                     raise
         finally:
             close()
