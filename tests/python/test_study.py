@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import pathlib
 import pickle
+import socket
 import subprocess
 import sys
 import textwrap
@@ -169,6 +170,59 @@ def inprocess_client():
     yield client
     client.close()
     cluster.close()
+
+
+CASADI_STUDY = """\
+[study]
+name = "casadi"
+scenario = "fig2.toml"
+chunk = 1
+
+[[grid]]
+key = "controller.gamma"
+values = [5.0, 10.0]
+"""
+
+
+@pytest.mark.slow
+def test_a_study_carries_its_casadi_model_to_workers_without_its_folder(tmp_path, monkeypatch, inprocess_client):
+    """[model] kind = "casadi" with a relative file: every row was invalid_input on a worker with
+    another working folder or without the model folder. The study now carries model.json and the
+    C source; the worker compiles them in its own cache and gives the local table bit for bit."""
+    pytest.importorskip("casadi")
+    from hinf_cpp.models import builtin
+
+    folder = tmp_path / "project"
+    folder.mkdir()
+    builtin.ship().export(folder / "ship", cache_dir=tmp_path / "export-cache")
+    path = write_study(folder, CASADI_STUDY)
+    scenario = (folder / "fig2.toml").read_text()
+    start, end = scenario.index("[model]"), scenario.index("[horizon]")
+    (folder / "fig2.toml").write_text(scenario[:start] + '[model]\nkind = "casadi"\nfile = "ship/model.json"\n\n'
+                                      + scenario[end:])
+    monkeypatch.chdir(folder)
+    study = hs.load_study(path.name, trust_code=True)  # the scenario as "fig2.toml", its model as "ship/model.json"
+    assert study.source == "fig2.toml"
+    local = hs.run_study(study, workers=1, progress=False)
+    assert (local["status"] == "completed").all(), local["reason"].tolist()
+
+    elsewhere = tmp_path / "worker"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)  # another working folder, and no model folder anywhere
+    (folder / "ship").rename(tmp_path / "moved")
+    # A worker that cannot compile it (a cache folder others can write is refused) stops the study, naming it.
+    (tmp_path / "shared-cache").mkdir(mode=0o777)
+    (tmp_path / "shared-cache").chmod(0o777)
+    monkeypatch.setenv("HINF_CPP_CACHE", str(tmp_path / "shared-cache"))
+    with pytest.raises(OSError, match="cannot compile") as error:
+        hs.run_study(study, client=inprocess_client, progress=False)
+    assert f"the Dask worker on {socket.gethostname()} cannot compile the [model] model of the study " \
+           f"({tmp_path / 'project' / 'ship' / 'model.json'})" in str(error.value)
+    assert "others can write it" in str(error.value) and "pass --out" in str(error.value)
+    monkeypatch.setenv("HINF_CPP_CACHE", str(tmp_path / "worker-cache"))
+    table = hs.run_study(study, client=inprocess_client, progress=False)
+    pdt.assert_frame_equal(table, local, check_exact=True)
+    assert len(list((tmp_path / "worker-cache").glob("hinf_model_ship-*.so"))) == 1  # compiled once, there
 
 
 @pytest.mark.slow

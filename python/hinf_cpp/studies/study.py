@@ -26,6 +26,7 @@ import os
 import pathlib
 import re
 import socket
+import subprocess
 import tempfile
 import threading
 import time
@@ -70,7 +71,8 @@ _SEED_LIMIT = 2 ** 63
 
 
 class ClusterError(OSError):
-    """A Dask cluster could not finish a study: its workers or the scheduler were lost.
+    """A Dask cluster could not finish a study: its workers or the scheduler were lost, or a
+    worker cannot compile the study's CasADi model.
 
     Raised by :func:`run_study`. Finished chunks are kept (with ``out``): the same call, or
     command with the same ``--out``, resumes. An OSError: the command line prints its message
@@ -219,6 +221,13 @@ class Study:
     trust_code : bool, optional
         Whether its scenarios may load or run code (docs/trust.md), decided when the study is
         read; it travels with the study to every worker (default False).
+    model_files : dict, optional
+        What the runs need of the CasADi models the base scenario names (``[model]`` and
+        ``[plant]`` of kind ``"casadi"``, read with trust): section -> {"file": model.json's
+        absolute path, "metadata": its text, "source": the C source beside its library, or
+        None}. A Dask worker compiles the source into its own cache and runs that model, so
+        no worker needs the model folder (default: none).
+
     Examples
     --------
     >>> from hinf_cpp.studies import study_from_dict
@@ -245,6 +254,7 @@ class Study:
     definition: dict
     report: dict
     trust_code: bool = False
+    model_files: dict = dataclasses.field(default_factory=dict)
 
     @property
     def grid_shape(self) -> tuple[int, ...]:
@@ -265,9 +275,11 @@ class Study:
 
     def content_hash(self) -> str:
         """Changes with anything that changes the table: the study's definition, the base
-        scenario and the library (its version and the compiled core's bytes)."""
+        scenario, the CasADi models it names (their model.json and C source) and the library
+        (its version and the compiled core's bytes)."""
+        carried = [self.model_files] if self.model_files else []  # a study without: its hash as before
         text = json.dumps([_core.__version__, _core_fingerprint(), self.definition, self.base, self.seed,
-                           self.samples, self.chunk], sort_keys=True, default=repr)
+                           self.samples, self.chunk, *carried], sort_keys=True, default=repr)
         return hashlib.sha256(text.encode()).hexdigest()
 
     def point(self, run: int) -> tuple[int, int, tuple[int, ...]]:
@@ -308,6 +320,102 @@ def _core_fingerprint() -> str:
     """SHA-256 of the compiled core: a rebuilt library may give other rows."""
     with open(_core.__file__, "rb") as f:
         return hashlib.file_digest(f, "sha256").hexdigest()
+
+
+def _carry_models(base: dict, source: str) -> tuple[dict, dict]:
+    """The base document with the `file` of its [model] and [plant] of kind "casadi" made absolute
+    (relative to the scenario file's folder, as the C++ reader takes it), and what the runs need of
+    those models as content (Study.model_files): model.json's text and the C source beside its
+    library (None when there is none)."""
+    carried = {}
+    for section in ("model", "plant"):
+        table = base.get(section)
+        if not (isinstance(table, dict) and table.get("kind") == "casadi" and isinstance(table.get("file"), str)):
+            continue
+        file = pathlib.Path(table["file"])
+        if not file.is_absolute() and os.path.isfile(source):
+            file = pathlib.Path(source).parent / file
+        file = pathlib.Path(os.path.abspath(file))
+        try:
+            metadata = file.read_text()
+            library = json.loads(metadata)["library"]
+            c_file = (file.parent / pathlib.Path(library).name).with_suffix(".c")
+            c_source = c_file.read_text() if c_file.is_file() else None
+        except (OSError, ValueError, KeyError, TypeError) as error:
+            raise ValueError(f"{source}: [{section}] file: cannot read the model {file}: {error}") from None
+        carried[section] = {"file": os.fspath(file), "metadata": metadata, "source": c_source}
+        base = {**base, section: {**table, "file": os.fspath(file)}}
+    return base, carried
+
+
+# One chunk at a time compiles a carried model (the threads of a Dask worker run chunks at once).
+_MATERIALIZE_LOCK = threading.Lock()
+
+
+def _materialize_model(carried: dict) -> str:
+    """model.json of a carried CasADi model in this machine's compile cache (codegen's
+    default_cache_dir: $HINF_CPP_CACHE, else ~/.cache/hinf_cpp/casadi), its library compiled there
+    from the carried C source on first use. The library's name is the one
+    compile_casadi_functions gives the same source (a SHA-256 of the source, the compiler's
+    identity and the flags), so the same model compiles once per machine and compiler, and an
+    entry is used only if its recorded hash matches and it loads, as codegen's own."""
+    from hinf_cpp.models import codegen
+
+    source = carried["source"]
+    metadata = json.loads(carried["metadata"])
+    name = re.sub(r"-[0-9a-f]{32}$", "", pathlib.Path(metadata["library"]).stem)
+    name = name if codegen.C_IDENTIFIER.fullmatch(name) else "hinf_model"
+    command = codegen._compiler_command(None)
+    flags = " ".join(codegen.COMPILE_FLAGS + codegen.LINK_LIBRARIES)
+    key_text = "\0".join([codegen.CACHE_FORMAT, codegen._compiler_identity(tuple(command)), flags, source])
+    folder = codegen.default_cache_dir()
+    library = folder / f"{name}-{hashlib.sha256(key_text.encode()).hexdigest()[:32]}.so"
+    if not (codegen.check_cache_folder(folder, codegen.WHAT, codegen.HINT) and codegen._usable_entry(library, "f")):
+        # As compile_casadi_functions compiles (same command, flags and atomic writes).
+        codegen.make_cache_folder(folder, codegen.WHAT, codegen.HINT)
+        c_file = library.with_suffix(".c")
+        codegen._write_atomically(c_file, lambda temporary: temporary.write_text(source))
+
+        def compile_to(output: pathlib.Path) -> None:
+            arguments = [command[0], *codegen.COMPILE_FLAGS, *command[1:], "-o", str(output), str(c_file),
+                         *codegen.LINK_LIBRARIES]
+            try:
+                done = subprocess.run(arguments, capture_output=True, text=True, timeout=3600, check=False)
+            except OSError as error:
+                raise codegen.CompilationError(f"cannot run the C compiler {command[0]}: {error}") from error
+            if done.returncode != 0:
+                tail = "\n".join((done.stderr or done.stdout).strip().splitlines()[-30:])
+                raise codegen.CompilationError(f"the C compiler failed (exit status {done.returncode}) on "
+                                               f"{c_file}: {tail or '(no output)'}")
+
+        codegen._write_atomically(library, compile_to)
+        digest = codegen._sha256(library)
+        codegen._write_atomically(codegen._hash_path(library),
+                                  lambda temporary: temporary.write_text(f"{digest}  {library.name}\n"))
+    metadata["library"] = library.name
+    text = json.dumps(metadata, indent=2) + "\n"
+    path = library.with_name(f"{library.stem}.study-{hashlib.sha256(text.encode()).hexdigest()[:16]}.json")
+    if not path.exists() or path.read_text() != text:
+        codegen._write_atomically(path, lambda temporary: temporary.write_text(text))
+    return os.fspath(path)
+
+
+def _on_this_machine(study: Study) -> Study:
+    """The study with the CasADi models it carries compiled on this machine and named by their
+    absolute paths here (a Dask worker's view: its working folder and files are not the
+    client's). A model carried without C source keeps its absolute path."""
+    base = study.base
+    for section, carried in study.model_files.items():
+        if carried.get("source") is None:
+            continue
+        with _MATERIALIZE_LOCK:  # after the first chunk, a hash and a load of the cached library
+            try:
+                path = _materialize_model(carried)
+            except (OSError, RuntimeError) as error:
+                raise ClusterError(f"the Dask worker on {socket.gethostname()} cannot compile the [{section}] model "
+                                   f"of the study ({carried['file']}) into its cache: {error}") from error
+        base = {**base, section: {**base[section], "file": path}}
+    return study if base is study.base else dataclasses.replace(study, base=base)
 
 
 def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> float:
@@ -552,6 +660,9 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
                   source=scenario_source, base=base, seed=seed, samples=samples, grid=tuple(grid),
                   random=tuple(random), chunk=chunk, definition=definition, report=report, trust_code=allow_code)
     study.scenario(0)  # a key the reader refuses, or a value it cannot take, is an error here
+    if allow_code:  # the CasADi models it names travel with it: a Dask worker needs neither path nor folder
+        base, carried = _carry_models(base, scenario_source)
+        study = dataclasses.replace(study, base=base, model_files=carried)
     return study
 
 
@@ -924,7 +1035,7 @@ def _identity() -> dict:
 
 def _dask_chunk(study: Study, start: int, stop: int) -> tuple[Any, dict]:
     """A chunk on a Dask worker: its table, and who ran it (checked by the client)."""
-    return run_chunk(study, start, stop, _worker_threads()), _identity()
+    return run_chunk(_on_this_machine(study), start, stop, _worker_threads()), _identity()
 
 
 def _checked_result(result: Any, who: Callable[[], str]) -> Any:
@@ -986,7 +1097,8 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
         Chunks run at once locally, each on one thread of the C++ batch runner (default: all
         cores). Not with `client`.
     client : dask.distributed.Client, optional
-        Runs the chunks on this Dask cluster instead (the same table, bit for bit).
+        Runs the chunks on this Dask cluster instead (the same table, bit for bit). A CasADi
+        model the study carries (``Study.model_files``) is compiled in each worker's own cache.
     out : str or os.PathLike, optional
         Keeps finished chunks in out/partial/ so that an interrupted study resumes where it
         stopped (a study that changed starts over; a chunk of another study, or with a row of
@@ -1012,8 +1124,9 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
         folder, or in use by another study; a Dask worker running another hinf_cpp version or
         core build (naming the worker and both); as :func:`load_study` for a path.
     ClusterError
-        The Dask cluster lost the study's tasks (workers or scheduler gone; an OSError:
-        finished chunks are kept in `out`, and the same call resumes).
+        The Dask cluster lost the study's tasks (workers or scheduler gone), or a worker cannot
+        compile the study's CasADi model (an OSError; finished chunks are kept in `out`, and
+        the same call resumes).
 
     Examples
     --------
