@@ -170,7 +170,7 @@ def test_an_unreachable_waypoint_in_a_file(tmp_path):
     line: one line naming the file, the section and the waypoint; exit status 2."""
     path = tmp_path / "far.toml"
     # The lane change on 40 s with its second waypoint 100 m too far (the ship makes 2 m/s at
-    # most): the case of test_planner's unreachable waypoint, of a few IPOPT solves.
+    # most, 6 m/s are needed): refused before optimizing, as test_planner's far waypoint.
     text = mutate(LANE, "tf = 60.0", "tf = 40.0")
     text = mutate(text, "  { x = 40.0, y = 3.5, t = 40.0, heading = 0.0 },\n  { x = 60.0, y = 3.5, t = 60.0, heading = 0.0 },",
                   "  { x = 140.0, y = 3.5, t = 40.0 },")
@@ -180,6 +180,30 @@ def test_an_unreachable_waypoint_in_a_file(tmp_path):
     assert done.stderr.count("\n") == 1, done.stderr
     assert done.stderr.startswith(f"hinf-cpp: error: {path}: [desired] waypoints[1] (x = 140, y = 3.5, t = 40) "
                                   "cannot be reached"), done.stderr
+
+
+FIRST_WAYPOINT = "{ x = 20.0, y = 0.0, t = 20.0, heading = 0.0 }"
+
+
+@pytest.mark.ipopt
+@pytest.mark.parametrize("first,error,match", [
+    ("{ x = 200.0, y = 0.0, t = 20.0 }", UnreachableWaypointError,
+     (r"\[desired\] waypoints\[0\] \(x = 200, y = 0, t = 20\) cannot be reached with the input bounds u1 in "
+      r"\[0, 2\], u2 in \[-0.5, 0.5\] by t = 20: it is 199.9 from the start \(x = 0, y = 0\) at t = 0 .*found before "
+      r"optimizing")),
+    ("{ x = 20.0, y = 0.0, t = 20.0, heading = 1e300 }", ValueError,
+     r"\[desired\] waypoints\[0\]\.heading = 1e\+300 rad is too large to compare modulo 2 pi"),
+], ids=["out of reach", "heading 1e300"])
+def test_a_bad_first_waypoint_is_named_before_optimizing(tmp_path, first, error, match):
+    """A first waypoint far out of reach, or with heading = 1e300, used to cost the whole
+    iteration budget and end in a PlanningError that names no waypoint. A budget of 3
+    iterations: any solve runs out of it."""
+    path = tmp_path / "first.toml"
+    text = mutate(mutate(LANE, FIRST_WAYPOINT, first), "tolerance = 0.05", "tolerance = 0.05\nmax_iterations = 3")
+    path.write_text(text)
+    with pytest.raises(error, match=match) as caught:
+        hc.load_scenario(path)
+    assert str(caught.value).startswith(f"{path}: [desired] waypoints[0]")
 
 
 def test_models_the_planner_cannot_use(tmp_path):

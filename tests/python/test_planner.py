@@ -159,21 +159,53 @@ def test_round_trip_through_sampled_waypoints(name, model, q0, u_d, bounds):
 def test_unreachable_waypoint_is_a_clear_error_fast():
     ship = hc.ShipModel()
     # Fast means few iterations, not seconds: the exact penalty meets or misses the waypoints in
-    # one bounded solve (measured: 106 IPOPT iterations, then 14, 9 and 5 to confirm the miss),
-    # so 400 per solve holds it to a few times that; a search for a feasible point would run out
-    # of them and end in a PlanningError instead.
+    # one bounded solve (measured: 103 IPOPT iterations, then 17, 12 and 5 to confirm the
+    # miss), so 400 per solve holds it to a few times that; a search for a feasible point would
+    # run out of them and end in a PlanningError instead.
     options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), max_iterations=400)
-    # At most 2 m/s (u1 <= 2 against the surge damping 1): 180 m in the 20 s after the first
-    # waypoint is out of reach; the first waypoint alone is not.
+    # At most 2 m/s (u1 <= 2 against the surge damping 1): 60 m in the 20 s after the first
+    # waypoint is out of reach (the first waypoint alone is not), but within REACH_FACTOR of
+    # the top speed: the optimizer finds the miss.
     with pytest.raises(UnreachableWaypointError) as caught:
-        plan(ship, [Waypoint(20.0, 0.0, t=20.0), Waypoint(200.0, 3.5, t=40.0)], q0=[1, 0, 0, 0, 0, 0], options=options)
+        plan(ship, [Waypoint(20.0, 0.0, t=20.0), Waypoint(80.0, 3.5, t=40.0)], q0=[1, 0, 0, 0, 0, 0], options=options)
     assert caught.value.index == 1
     message = str(caught.value)
-    assert message.startswith("waypoints[1] (x = 200, y = 3.5, t = 40) cannot be reached with the input bounds "
+    assert message.startswith("waypoints[1] (x = 80, y = 3.5, t = 40) cannot be reached with the input bounds "
                               "u1 in [0, 2], u2 in [-0.5, 0.5] by t = 40: the best plan comes ")
-    # The closest a ship at full speed gets: at least 200 - 2 * 40 = 120 m short.
-    assert caught.value.miss * options.tolerance > 100.0
+    # The ship at full speed (2 m/s) stays about 20 m short (measured: 20.04 m).
+    assert caught.value.miss * options.tolerance > 10.0
     assert isinstance(caught.value, ValueError)
+
+
+@pytest.mark.ipopt
+@pytest.mark.parametrize("waypoints,index,start", [
+    ([Waypoint(200.0, 0.0, t=20.0)], 0, "it is 198.9 from the start (x = 1, y = 0) at t = 0"),
+    ([Waypoint(20.0, 0.0, t=20.0), Waypoint(200.0, 3.5, t=40.0)], 1,
+     "it is 179.9 from waypoints[0] (x = 20, y = 0) at t = 20"),
+], ids=["first", "second"])
+def test_a_waypoint_far_out_of_reach_is_refused_before_optimizing(waypoints, index, start):
+    """A first waypoint far out of reach used to cost the whole iteration budget and end in a
+    PlanningError (IPOPT's feasibility restoration does not converge) that names no waypoint.
+    With an iteration budget of 1 any solve runs out: the error comes before IPOPT."""
+    options = PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5), max_iterations=1)
+    with pytest.raises(UnreachableWaypointError) as caught:
+        plan(hc.ShipModel(), waypoints, q0=[0, 0, 0, 1, 0, 0], options=options)
+    w = waypoints[index]
+    assert caught.value.index == index
+    assert str(caught.value).startswith(
+        f"waypoints[{index}] (x = {w.x:g}, y = {w.y:g}, t = {w.t:g}) cannot be reached with the input bounds u1 in "
+        f"[0, 2], u2 in [-0.5, 0.5] by t = {w.t:g}: {start} (beyond the tolerances), ")
+    # The ship's top speed is 2 m/s (u1 <= 2 against the surge damping 1).
+    assert "more than 3 times the vehicle's top speed with constant inputs at the bounds (2;" in str(caught.value)
+    assert caught.value.miss * options.tolerance > 100.0
+
+
+def test_unbounded_inputs_reach_anywhere():
+    """No input bound, no top speed: nothing is refused before optimizing (a budget of 1
+    iteration ends the solve)."""
+    with pytest.raises(hc.HinfError, match="Maximum_Iterations_Exceeded after 1 iterations"):
+        plan(hc.ShipModel(), [Waypoint(200.0, 0.0, t=20.0)], q0=[0, 0, 0, 1, 0, 0],
+             options=PlanOptions(max_iterations=1))
 
 
 # ---- the plan cache ----
@@ -304,9 +336,25 @@ def test_path_with_a_speed_profile_and_grid():
     (dict(waypoints=[Waypoint(1.0, 0.0)]), "the last waypoint has no time t: give it one, or a speed, or tf"),
     (dict(waypoints=[Waypoint(1.0, math.nan, t=3.0)]), r"waypoints\[0\].y must be a finite number"),
     (dict(q0=[1.0, 0.0]), r"q0 must be 6 finite numbers"),
+    (dict(waypoints=[Waypoint(5.0, 0.0, t=5.0), Waypoint(6.0, 0.0, t=6.0, heading=-1e300)]),
+     r"^waypoints\[1\]\.heading = -1e\+300 rad is too large to compare modulo 2 pi: give it within \+-1e\+06 rad"),
 ])
 def test_bad_arguments_name_the_problem(kwargs, match):
-    arguments = dict(waypoints=[Waypoint(5.0, 0.0, t=5.0)], q0=[1.0, 0, 0, 0, 0, 0], options=PlanOptions())
+    # An iteration budget: a bad argument let through ends in IPOPT's maximum iterations.
+    arguments = dict(waypoints=[Waypoint(5.0, 0.0, t=5.0)], q0=[1.0, 0, 0, 0, 0, 0],
+                     options=PlanOptions(max_iterations=3))
     arguments.update(kwargs)
     with pytest.raises(ValueError, match=match):
         plan(hc.ShipModel(), arguments["waypoints"], q0=arguments["q0"], options=arguments["options"])
+
+
+@pytest.mark.ipopt
+def test_a_time_grid_too_fine_is_refused(monkeypatch):
+    """A waypoint at t = 1e12 with interval = 1 s asked for 1e12 nodes (memory and time without
+    end); the grid is limited (here to 50 intervals, the default horizon / 60 needs 60)."""
+    from hinf_cpp.planning import planner
+
+    monkeypatch.setattr(planner, "MAX_INTERVALS", 50)
+    with pytest.raises(ValueError, match=r"^the horizon from t0 = 0 to tf = 60 s in intervals of at most 1 s needs "
+                                         r"more than 50 intervals: give a larger interval or a shorter horizon"):
+        plan(hc.ShipModel(), [Waypoint(5.0, 0.0, t=60.0)], q0=[1.0, 0, 0, 0, 0, 0], options=PlanOptions(max_iterations=3))

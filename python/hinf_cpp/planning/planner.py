@@ -21,7 +21,8 @@ open-loop mismatch between the planned states and the re-simulated ones is the r
 The waypoint conditions are soft in the optimization (exact penalty with slacks), so that the
 problem always has a solution: a waypoint the inputs cannot reach shows as a miss of the
 best compromise, reported by :class:`UnreachableWaypointError` with the waypoint's index and
-the distance, instead of a long fruitless search for a feasible point.
+the distance, instead of a long fruitless search for a feasible point. A waypoint far beyond
+what the vehicle's top speed with the input bounds covers is refused before optimizing.
 
 The model's dynamics enter as CasADi expressions: a :class:`~hinf_cpp.models.symbolic.SymbolicModel`,
 or a built-in model through :func:`~hinf_cpp.models.builtin.symbolic_model`.
@@ -34,6 +35,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import itertools
 import json
 import math
 import os
@@ -62,6 +64,16 @@ PLANNER_VERSION = 1
 # most plans and keeps IPOPT fast when a waypoint is out of reach, and a miss is confirmed with
 # the larger ones before it is reported.
 PENALTIES = (1e2, 1e4, 1e6)
+# A waypoint farther from the one before (or from the start) than REACH_FACTOR times the
+# distance covered at the vehicle's top speed is refused before optimizing. The top speed is
+# estimated by simulating constant inputs at the bounds (and 0): a clever input can do better
+# than a constant one, hence the factor; IPOPT searches long for a waypoint far out of reach.
+REACH_FACTOR = 3.0
+# Headings are compared modulo 2 pi; beyond this size (rad) a double no longer resolves the
+# heading tolerance after wrapping.
+MAX_HEADING = 1e6
+# The most intervals of the time grid (each adds n + m unknowns to the optimization).
+MAX_INTERVALS = 100_000
 
 
 class PlanningError(_core.HinfError):
@@ -102,7 +114,8 @@ class UnreachableWaypointError(ValueError):
         The waypoint's index (0-based) in the list given to :func:`plan`.
     miss : float
         How far the best plan stays from the waypoint, in units of the condition's tolerance
-        (position: distance / ``tolerance``; heading and speed likewise).
+        (position: distance / ``tolerance``; heading and speed likewise). For a waypoint refused
+        before optimizing, an estimate: its distance beyond what the top speed covers.
 
     Examples
     --------
@@ -601,12 +614,15 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     ------
     ValueError
         Bad arguments (q0 not n finite numbers, a model without two position components or
-        without a CasADi form, bad waypoints or options, times that do not increase).
+        without a CasADi form, bad waypoints or options, times that do not increase, a heading
+        beyond +-1e6 rad, a time grid of more than 100000 intervals).
     hinf_cpp.models.codegen.CacheDirectoryError
         An OSError: `cache_dir` is owned by another user, or group or others can write it
         (the message says what to do).
     UnreachableWaypointError
-        A ValueError: a waypoint cannot be met with the input bounds and the time given.
+        A ValueError: a waypoint cannot be met with the input bounds and the time given; one
+        more than 3 times as far as the vehicle's top speed takes it (simulated with constant
+        inputs at the bounds) is refused before optimizing.
     PlanningError
         IPOPT fails, or the plan cannot be made accurate enough.
 
@@ -644,7 +660,11 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     t0 = float(t0)
     waypoints = resolve_times(waypoints, q0[positions], t0, tf, options.speed)
     tf = waypoints[-1].t if tf is None else float(tf)
-    t = time_grid(t0, tf, [w.t for w in waypoints], options.interval or (tf - t0) / 60.0)
+    interval = options.interval or (tf - t0) / 60.0
+    if not (tf - t0) / interval <= MAX_INTERVALS:
+        raise ValueError(f"the horizon from t0 = {t0:g} to tf = {tf:g} s in intervals of at most {interval:g} s "
+                         f"needs more than {MAX_INTERVALS} intervals: give a larger interval or a shorter horizon")
+    t = time_grid(t0, tf, [w.t for w in waypoints], interval)
     nodes = [int(np.searchsorted(t, w.t)) for w in waypoints]
 
     dynamics = _dynamics_function(ca, symbolic)
@@ -655,6 +675,7 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
             cached = _read_cached(cache_path, cpp_model, waypoints, nodes, t, q0, options, started)
             if cached is not None:
                 return cached
+    _check_reach(dynamics, symbolic, q0, t, waypoints, nodes, options)
     iterate = _Iterate(*_initial_guess(dynamics, symbolic, q0, t, waypoints, nodes, options))
     # A first solve with a quarter of the substeps finds the solution (or the unreachable
     # waypoint) at a quarter of the cost per iteration; each solve after it starts from the
@@ -805,8 +826,57 @@ def _check_waypoint(j: int, w: Waypoint, heading: int) -> None:
             raise ValueError(f"waypoints[{j}].{name} must be a finite number, got {value!r}")
     if w.speed is not None and w.speed < 0:
         raise ValueError(f"waypoints[{j}].speed must be >= 0, got {w.speed:g}")
+    if w.heading is not None and abs(w.heading) > MAX_HEADING:
+        raise ValueError(f"waypoints[{j}].heading = {w.heading:g} rad is too large to compare modulo 2 pi: give it "
+                         f"within +-{MAX_HEADING:g} rad (e.g. in [-pi, pi])")
     if w.heading is not None and heading < 0:
         raise ValueError(f"waypoints[{j}] gives a heading, but the model has no heading state (heading_index)")
+
+
+def _check_reach(F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoints: list[Waypoint],
+                 nodes: list[int], options: PlanOptions) -> None:
+    """Raises UnreachableWaypointError for the first waypoint farther from the one before it (the
+    start, for the first) than REACH_FACTOR times the distance the vehicle covers in between at
+    its top speed. The top speed up to each node: the largest speed over ground of the model
+    simulated from q0 with each constant input whose components are at a bound or 0 (3^m of
+    them), by classical Runge-Kutta on the time grid. No check where an input is unbounded or a
+    simulation leaves the finite numbers (the speed is then not bounded by them)."""
+    ca = _casadi()
+    n, m = symbolic.n, symbolic.m
+    if not (all(map(math.isfinite, options.u_min)) and all(map(math.isfinite, options.u_max))) or 3**m > 729:
+        return
+    levels = [sorted({low, min(max(0.0, low), high), high}) for low, high in zip(options.u_min, options.u_max)]
+    inputs = np.array(list(itertools.product(*levels)), dtype=float).T  # m x K
+    count = inputs.shape[1]
+    positions = list(symbolic.position_indices)
+    step = _build_interval(ca, F, n, m, 4).map(count)
+    symbol = ca.SX if F.is_a("SXFunction") else ca.MX
+    tk, q, u = symbol.sym("t"), symbol.sym("q", n), symbol.sym("u", m)
+    speed = ca.Function("speed", [tk, q, u], [ca.norm_2(F(tk, q, u)[positions])]).map(count)
+    states = np.tile(q0.reshape(-1, 1), (1, count))
+    top = np.full(len(t), math.inf)  # the top speed up to each node
+    fastest = 0.0
+    for k in range(len(t)):
+        if k > 0:
+            states = np.asarray(step(t[k - 1], t[k] - t[k - 1], states, inputs, inputs))
+        speeds = np.asarray(speed(t[k], states, inputs)).ravel()
+        if not (np.all(np.isfinite(states)) and np.all(np.isfinite(speeds))):
+            break  # no bound from here on
+        fastest = top[k] = max(fastest, float(np.max(speeds)))
+    before, start, tolerances = tuple(q0[positions]), t[0], options.tolerance
+    for j, (w, k) in enumerate(zip(waypoints, nodes)):
+        distance = math.hypot(w.x - before[0], w.y - before[1]) - tolerances
+        covered = top[k] * (w.t - start)
+        if distance > REACH_FACTOR * covered:
+            origin = "the start" if j == 0 else f"waypoints[{j - 1}]"
+            raise UnreachableWaypointError(
+                f"waypoints[{j}] {w.describe()} cannot be reached with {_bounds_text(options)} by t = {w.t:g}: it is "
+                f"{distance:.4g} from {origin} (x = {before[0]:g}, y = {before[1]:g}) at t = {start:g} (beyond the "
+                f"tolerances), {distance / (w.t - start):.4g} per s, more than {REACH_FACTOR:g} times the vehicle's "
+                f"top speed with constant inputs at the bounds ({top[k]:.4g}; found before optimizing). Give it more "
+                "time, move it, or widen the input bounds",
+                j, (distance - covered) / options.tolerance)
+        before, start, tolerances = (w.x, w.y), w.t, 2 * options.tolerance
 
 
 def _dynamics_function(ca, symbolic: SymbolicModel):
