@@ -8,7 +8,7 @@ planner needs their expressions). CasADi itself is imported only when it is used
 """
 
 from hinf_cpp.models.builtin import symbolic_model
-from hinf_cpp.models.codegen import compile_casadi_functions
+from hinf_cpp.models.codegen import compile_c_source, compile_casadi_functions
 from hinf_cpp.models.symbolic import CompiledModel, SymbolicModel
 
-__all__ = ["CompiledModel", "SymbolicModel", "compile_casadi_functions", "symbolic_model"]
+__all__ = ["CompiledModel", "SymbolicModel", "compile_c_source", "compile_casadi_functions", "symbolic_model"]

@@ -16,10 +16,12 @@ system C compiler into a shared library, and loaded by ``hinf_cpp.GeneratedFunct
 
 Libraries are cached: the file name carries a SHA-256 of the generated C source, the
 compiler's identity (its path and ``--version``) and the flags, so the same functions compile
-once per machine and compiler; a changed expression is another file. The cache folder is
-``$HINF_CPP_CACHE``, else ``$XDG_CACHE_HOME/hinf_cpp/casadi`` (``~/.cache/hinf_cpp/casadi``).
-Each file is written under a temporary name and renamed into place, so processes compiling the
-same functions at once each end with a complete library.
+once per machine and compiler; a changed expression is another file. ``compile_c_source`` is
+the compile step alone, for C source already written (a study's model carried to a Dask
+worker): the same source gets the same library. The cache folder is ``$HINF_CPP_CACHE``, else
+``$XDG_CACHE_HOME/hinf_cpp/casadi`` (``~/.cache/hinf_cpp/casadi``). Each file is written under
+a temporary name and renamed into place, so processes compiling the same functions at once
+each end with a complete library.
 
 A file name can be computed by anyone with the same compiler, so the name alone is not trusted:
 the cache folder is made private (mode 0700, whatever the umask), a folder that another user
@@ -93,8 +95,8 @@ class CacheDirectoryError(OSError):
 @dataclasses.dataclass(frozen=True)
 class CompiledLibrary:
     """A compiled library: its path, whether it came from the cache, and the seconds spent
-    generating the C source (also on a cache hit: the key is its hash) and compiling it
-    (0 on a cache hit)."""
+    generating the C source (also on a cache hit: the key is its hash; 0 from
+    :func:`compile_c_source`, given the source) and compiling it (0 on a cache hit)."""
 
     path: pathlib.Path
     cache_hit: bool
@@ -351,15 +353,81 @@ def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
     started = time.perf_counter()
     source = generate_c_source(functions, name)
     generate_seconds = time.perf_counter() - started
+    library = compile_c_source(source, name, functions[0].name(), cache_dir, compiler)
+    return dataclasses.replace(library, generate_seconds=generate_seconds)
 
+
+def compile_c_source(source: str, name: str, symbol: str, cache_dir: str | os.PathLike | None = None,
+                     compiler: str | None = None) -> CompiledLibrary:
+    """Compile C source into a shared library in the private cache, or find it cached.
+
+    The compile step of :func:`compile_casadi_functions`, for C source that is already written
+    (by ``generate_c_source``, or carried from another machine, as a study carries its
+    models to Dask workers). The library's file name is ``<name>-<key>.so``, where the key is a
+    SHA-256 of the source, the compiler's identity (its path and ``--version``) and the flags:
+    the same source gets the same name here as from :func:`compile_casadi_functions`, and
+    compiles once per machine and compiler. The source is written beside the library
+    (``.c``), the library's SHA-256 beside it too (``<library>.sha256``), each under a
+    temporary name renamed into place. The cache folder is made with mode 0700; a cached
+    library is used only if its SHA-256 is the one recorded beside it and it loads (with
+    `symbol`), else it is compiled anew under the same name.
+
+    Parameters
+    ----------
+    source : str
+        The C source, with the ABI functions the loader checks (as ``generate_c_source``
+        writes it).
+    name : str
+        The library's name (a C identifier), the start of its file name.
+    symbol : str
+        A function of the library: a cached entry is used only if it loads with this function.
+    cache_dir : str or os.PathLike, optional
+        The folder of the libraries, as for :func:`compile_casadi_functions` (default the
+        package's cache folder).
+    compiler : str, optional
+        The C compiler command, as for :func:`compile_casadi_functions` (default ``$CC``, else
+        ``cc``).
+
+    Returns
+    -------
+    CompiledLibrary
+        ``path`` (the ``.so``; its C source is beside it), ``cache_hit``, ``generate_seconds``
+        (0: the source was given) and ``compile_seconds`` (0 on a cache hit).
+
+    Raises
+    ------
+    ValueError
+        A name that is not a C identifier.
+    hinf_cpp.models.codegen.CompilationError, hinf_cpp.models.codegen.CacheDirectoryError
+        As from :func:`compile_casadi_functions`: the compiler is missing or fails; the cache
+        folder cannot be used.
+
+    Examples
+    --------
+    >>> import casadi as ca
+    >>> from hinf_cpp.models import compile_c_source
+    >>> from hinf_cpp.models.codegen import generate_c_source
+    >>> x = ca.SX.sym("x", 2)
+    >>> source = generate_c_source([ca.Function("twice", [x], [2 * x])], "demo")
+    >>> library = compile_c_source(source, "demo", "twice", cache_dir="cache")
+    >>> library.path.suffix, library.cache_hit
+    ('.so', False)
+    >>> compile_c_source(source, "demo", "twice", cache_dir="cache").path == library.path  # cached
+    True
+    >>> library.function("twice")([1.0, 2.0])[0]  # a 2 x 1 output
+    array([[2.],
+           [4.]])
+    """
+    if not C_IDENTIFIER.fullmatch(name):
+        raise ValueError(f"the library name must be a C identifier (letters, digits, _), got {name!r}")
     command = _compiler_command(compiler)
     key_text = "\0".join([CACHE_FORMAT, _compiler_identity(tuple(command)), " ".join(COMPILE_FLAGS + LINK_LIBRARIES),
                           source])
     key = hashlib.sha256(key_text.encode()).hexdigest()[:32]
     folder = pathlib.Path(cache_dir) if cache_dir is not None else default_cache_dir()
     library = folder / f"{name}-{key}.so"
-    if check_cache_folder(folder, WHAT, HINT) and _usable_entry(library, functions[0].name()):
-        return CompiledLibrary(library, True, generate_seconds, 0.0)
+    if check_cache_folder(folder, WHAT, HINT) and _usable_entry(library, symbol):
+        return CompiledLibrary(library, True, 0.0, 0.0)
 
     # Absent, damaged, planted or unloadable: compiled anew under the same name.
     make_cache_folder(folder, WHAT, HINT)
@@ -383,4 +451,4 @@ def compile_casadi_functions(functions: Sequence[casadi.Function], name: str,
     _write_atomically(library, compile_to)
     digest = _sha256(library)
     _write_atomically(_hash_path(library), lambda temporary: temporary.write_text(f"{digest}  {library.name}\n"))
-    return CompiledLibrary(library, False, generate_seconds, time.perf_counter() - started)
+    return CompiledLibrary(library, False, 0.0, time.perf_counter() - started)

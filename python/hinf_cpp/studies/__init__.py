@@ -5,8 +5,8 @@ pandas DataFrame, :func:`replay` runs one row again. :mod:`hinf_cpp.studies.repo
 and plots a table (it imports matplotlib).
 """
 
-from hinf_cpp.studies.study import (STATUSES, GridAxis, RandomAxis, Study, load_study, local_cores, replay,
-                                    replay_command, run_study, study_from_dict, study_table_schema)
+from hinf_cpp.studies.study import (STATUSES, ClusterError, GridAxis, RandomAxis, Study, load_study, local_cores,
+                                    replay, replay_command, run_study, study_from_dict, study_table_schema)
 
-__all__ = ["STATUSES", "GridAxis", "RandomAxis", "Study", "load_study", "local_cores", "replay", "replay_command",
-           "run_study", "study_from_dict", "study_table_schema"]
+__all__ = ["STATUSES", "ClusterError", "GridAxis", "RandomAxis", "Study", "load_study", "local_cores", "replay",
+           "replay_command", "run_study", "study_from_dict", "study_table_schema"]

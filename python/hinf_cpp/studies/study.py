@@ -26,7 +26,6 @@ import os
 import pathlib
 import re
 import socket
-import subprocess
 import tempfile
 import threading
 import time
@@ -80,7 +79,7 @@ class ClusterError(OSError):
 
     Examples
     --------
-    >>> from hinf_cpp.studies.study import ClusterError
+    >>> from hinf_cpp.studies import ClusterError
     >>> issubclass(ClusterError, OSError)
     True
     >>> print(ClusterError("study mc: the Dask cluster lost the study's tasks (...)"))
@@ -355,43 +354,16 @@ _MATERIALIZE_LOCK = threading.Lock()
 def _materialize_model(carried: dict) -> str:
     """model.json of a carried CasADi model in this machine's compile cache (codegen's
     default_cache_dir: $HINF_CPP_CACHE, else ~/.cache/hinf_cpp/casadi), its library compiled there
-    from the carried C source on first use. The library's name is the one
-    compile_casadi_functions gives the same source (a SHA-256 of the source, the compiler's
-    identity and the flags), so the same model compiles once per machine and compiler, and an
-    entry is used only if its recorded hash matches and it loads, as codegen's own."""
+    from the carried C source on first use by codegen.compile_c_source: the library's name is the
+    one compile_casadi_functions gives the same source, so the same model compiles once per machine
+    and compiler, and an entry is used only if its recorded hash matches and it loads."""
     from hinf_cpp.models import codegen
 
     source = carried["source"]
     metadata = json.loads(carried["metadata"])
     name = re.sub(r"-[0-9a-f]{32}$", "", pathlib.Path(metadata["library"]).stem)
     name = name if codegen.C_IDENTIFIER.fullmatch(name) else "hinf_model"
-    command = codegen._compiler_command(None)
-    flags = " ".join(codegen.COMPILE_FLAGS + codegen.LINK_LIBRARIES)
-    key_text = "\0".join([codegen.CACHE_FORMAT, codegen._compiler_identity(tuple(command)), flags, source])
-    folder = codegen.default_cache_dir()
-    library = folder / f"{name}-{hashlib.sha256(key_text.encode()).hexdigest()[:32]}.so"
-    if not (codegen.check_cache_folder(folder, codegen.WHAT, codegen.HINT) and codegen._usable_entry(library, "f")):
-        # As compile_casadi_functions compiles (same command, flags and atomic writes).
-        codegen.make_cache_folder(folder, codegen.WHAT, codegen.HINT)
-        c_file = library.with_suffix(".c")
-        codegen._write_atomically(c_file, lambda temporary: temporary.write_text(source))
-
-        def compile_to(output: pathlib.Path) -> None:
-            arguments = [command[0], *codegen.COMPILE_FLAGS, *command[1:], "-o", str(output), str(c_file),
-                         *codegen.LINK_LIBRARIES]
-            try:
-                done = subprocess.run(arguments, capture_output=True, text=True, timeout=3600, check=False)
-            except OSError as error:
-                raise codegen.CompilationError(f"cannot run the C compiler {command[0]}: {error}") from error
-            if done.returncode != 0:
-                tail = "\n".join((done.stderr or done.stdout).strip().splitlines()[-30:])
-                raise codegen.CompilationError(f"the C compiler failed (exit status {done.returncode}) on "
-                                               f"{c_file}: {tail or '(no output)'}")
-
-        codegen._write_atomically(library, compile_to)
-        digest = codegen._sha256(library)
-        codegen._write_atomically(codegen._hash_path(library),
-                                  lambda temporary: temporary.write_text(f"{digest}  {library.name}\n"))
+    library = codegen.compile_c_source(source, name, "f").path
     metadata["library"] = library.name
     text = json.dumps(metadata, indent=2) + "\n"
     path = library.with_name(f"{library.stem}.study-{hashlib.sha256(text.encode()).hexdigest()[:16]}.json")
