@@ -878,7 +878,16 @@ estimate (remainder_is_bound false).)contract"},
     {"check_dimension", R"contract(min <= value <= kMaxDimension (a dimension of a model, controller or signal).)contract"},
     {"check_dimensions", R"contract(InputError unless n >= 1, m >= 1 and nw >= 0 (all at most kMaxDimension): checked before
 anything sized by them is read.)contract"},
+    {"check_finite_outputs", R"contract(An InputError naming the first of f, df/dq, G and D of the model that is not finite at (t, q)
+(with t and q), and what to do; nothing when all four are finite. The integrators call it
+where a right-hand side or a solution stops being finite, so that the model's own failure is
+reported as the model's, not as a step size, a conjugate point or a metric.)contract"},
     {"check_horizon", R"contract(Strictly increasing, finite time grid [t0, tf].)contract"},
+    {"check_input_matrix_declarations", R"contract(An InputError when the model says its input matrices are constant (constant_input_matrices())
+but G or D differ between the points (t_k, q_k), or says they do not depend on the state
+(!state_dependent_inputs()) but G or D change when q moves at a fixed t: such a model would be
+evaluated at (t0, q0) only, or linearized without d(G u)/dq, and give wrong results silently.
+The message names the model, the matrix, the two points and the declaration to change.)contract"},
     {"check_memory", R"contract(InputError when `bytes` exceed memory_budget_bytes(): "<what> would need X GB, more than a
 quarter of this machine's memory (Y GB): <advice>".)contract"},
     {"check_output_grid", R"contract(output_count, and an InputError when the grid would not fit in memory (resources.hpp): the

@@ -280,6 +280,100 @@ class TimeVaryingScalar final : public hinf::Model {
   bool constant_input_matrices() const override { return false; }
 };
 
+// dq/dt = -q + G u + D w with a flaw chosen by the test: a NaN in f or in df/dq after t = 1, a G
+// that changes with t or with q while the model declares the default (constant, independent of q).
+class FlawedScalar final : public hinf::Model {
+ public:
+  enum class Flaw { NanDrift, NanJacobian, GofT, GofQ };
+  explicit FlawedScalar(Flaw flaw) : flaw_(flaw) {}
+  std::string name() const override { return "flawed"; }
+  int n() const override { return 1; }
+  int m() const override { return 1; }
+  int nw() const override { return 1; }
+  void f(double t, const hinf::ConstVecRef& q, hinf::VecRef out) const override {
+    out[0] = flaw_ == Flaw::NanDrift && t > 1.0 ? std::numeric_limits<double>::quiet_NaN() : -q[0];
+  }
+  void dfdq(double t, const hinf::ConstVecRef&, hinf::MatRef J) const override {
+    // NaN on (1, 1.5) only: met inside the backward solve, not at its start tf = 2.
+    J(0, 0) = flaw_ == Flaw::NanJacobian && t > 1.0 && t < 1.5 ? std::numeric_limits<double>::quiet_NaN() : -1.0;
+  }
+  Mat G(double t, const hinf::ConstVecRef& q) const override {
+    if (flaw_ == Flaw::GofT) return Mat::Constant(1, 1, 1.0 + 0.5 * t);
+    if (flaw_ == Flaw::GofQ) return Mat::Constant(1, 1, 1.0 + 0.5 * std::tanh(q[0]));
+    return Mat::Constant(1, 1, 1.0);
+  }
+  Mat D(double, const hinf::ConstVecRef&) const override { return Mat::Constant(1, 1, 0.5); }
+
+ private:
+  Flaw flaw_;
+};
+
+std::shared_ptr<const hinf::Trajectory> flawed_trajectory(FlawedScalar::Flaw flaw) {
+  return std::make_shared<const hinf::Trajectory>(std::make_shared<const FlawedScalar>(flaw), Vec::Constant(1, 1.0),
+                                                  hinf::VectorSignal(std::vector<hinf::Signal>{hinf::Signal(0.5)}),
+                                                  0.0, 2.0);
+}
+
+template <class Action>
+std::string input_error_of(Action action) {
+  try {
+    action();
+  } catch (const hinf::InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    return std::string("another error: ") + e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ModelChecks, ANonFiniteDriftIsTheModelsErrorWithItsTimeAndState) {
+  // Before: the desired trajectory's integrator shrank its step on NaN until it gave up, blaming
+  // the step size.
+  const std::string what = input_error_of([] { flawed_trajectory(FlawedScalar::Flaw::NanDrift); });
+  EXPECT_NE(what.find("the model 'flawed' returned a non-finite f(t, q) (nan at (0, 0)) at t = 1"), std::string::npos)
+      << what;
+  EXPECT_NE(what.find(", q = ["), std::string::npos) << what;
+}
+
+TEST(ModelChecks, ANonFiniteJacobianIsNotAConjugatePoint) {
+  // Before: the GRDE backward from tf met the NaN at once and reported a conjugate point at tf.
+  const auto trajectory = flawed_trajectory(FlawedScalar::Flaw::NanJacobian);
+  const std::string what = input_error_of(
+      [&] { hinf::solve_grde(trajectory, Mat::Identity(1, 1), Mat::Identity(1, 1), 10.0); });
+  EXPECT_NE(what.find("the model 'flawed' returned a non-finite df/dq (t, q)"), std::string::npos) << what;
+}
+
+TEST(ModelChecks, ANonFinitePlantInTheClosedLoopIsTheModelsError) {
+  // The design model is sound; the plant's drift becomes NaN after t = 1.
+  const auto sound = std::make_shared<const hinf::Trajectory>(
+      std::make_shared<const hinf::LinearModel>(Mat::Constant(1, 1, -1.0), Mat::Constant(1, 1, 1.0),
+                                                Mat::Constant(1, 1, 0.5)),
+      Vec::Constant(1, 1.0), hinf::VectorSignal(std::vector<hinf::Signal>{hinf::Signal(0.5)}), 0.0, 2.0);
+  hinf::HinfStateFeedback controller(hinf::solve_grde(sound, Mat::Identity(1, 1), Mat::Identity(1, 1), 10.0));
+  const FlawedScalar plant(FlawedScalar::Flaw::NanDrift);
+  for (Method method : kMethods) {
+    hinf::SimulationOptions options;
+    options.solver.method = method;
+    const std::string what = input_error_of([&] {
+      hinf::simulate_state_feedback(*sound, controller, hinf::VectorSignal::zeros(1), Vec::Constant(1, 1.2), options,
+                                    &plant);
+    });
+    EXPECT_NE(what.find("the model 'flawed' returned a non-finite f(t, q)"), std::string::npos)
+        << hinf::to_string(method) << ": " << what;
+  }
+}
+
+TEST(ModelChecks, InputMatricesThatChangeMustBeDeclared) {
+  // Before: G was taken at (t0, q_d0) everywhere (G(t)), or its d(G u)/dq left out (G(q)),
+  // silently.
+  const std::string of_t = input_error_of([] { flawed_trajectory(FlawedScalar::Flaw::GofT); });
+  EXPECT_NE(of_t.find("the model 'flawed' returns another G at t = 1, q = ["), std::string::npos) << of_t;
+  EXPECT_NE(of_t.find("than at t = 0, q = [1]"), std::string::npos) << of_t;
+  EXPECT_NE(of_t.find("override constant_input_matrices() to return false"), std::string::npos) << of_t;
+  const std::string of_q = input_error_of([] { flawed_trajectory(FlawedScalar::Flaw::GofQ); });
+  EXPECT_NE(of_q.find("override state_dependent_inputs() to return true"), std::string::npos) << of_q;
+}
+
 TEST(DesiredTrajectory, LinearTableInputAgainstTheClosedForm) {
   // dq/dt = -q + u(t) with u a "linear" table that zig-zags (slopes +-40 between points 0.05 s
   // apart, kinks at every point). On a piece where u = a + b s (s = t - t_k):

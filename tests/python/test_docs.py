@@ -145,10 +145,10 @@ def test_end_to_end_page_runs_and_prints_what_it_says(tmp_path, monkeypatch):
 
 
 def test_models_page_on_constant_input_matrices():
-    """docs/models.md, "Input matrices that change": the default freezes a G(t) at t0 (the
-    double integrator's rows of the table), the override fixes it, and both flags True is
-    refused. Closed forms: with G = [0, 1 + t]' and u = 1 from rest, v(t) = t + t^2/2 and
-    x(t) = t^2/2 + t^3/6; frozen, v = t and x = t^2/2."""
+    """docs/models.md, "Input matrices that change": the default, which would freeze a G(t) at
+    t0, is refused for such a model; the override gives the closed form; both flags True is
+    refused. Closed form: with G = [0, 1 + t]' and u = 1 from rest, v(t) = t + t^2/2 and
+    x(t) = t^2/2 + t^3/6."""
     import hinf_cpp as hc
 
     class TimeVaryingInput(hc.Model):
@@ -165,12 +165,12 @@ def test_models_page_on_constant_input_matrices():
     class Contradictory(TimeVaryingInput):
         def state_dependent_inputs(self): return True
 
+    # The default would freeze G at t0 (q_d(2) = [2, 2] instead of [3.33, 4]): refused, naming
+    # the declaration to change.
+    with pytest.raises(ValueError, match=r"returns another G at t = 1, .* than at t = 0, .*override "
+                                         r"constant_input_matrices\(\) to return false"):
+        hc.Trajectory(TimeVaryingInput(), [0.0, 0.0], [1.0], 0.0, 2.0)
     # Integrated at rtol 1e-10: 1e-8 is far below the differences the page describes.
-    frozen = hc.Trajectory(TimeVaryingInput(), [0.0, 0.0], [1.0], 0.0, 2.0)
-    np.testing.assert_allclose(frozen.q_d(2.0), [2.0, 2.0], rtol=1e-8)
-    np.testing.assert_allclose(frozen.B_e(2.0).ravel(), [0.0, 3.0])
-    gain = hc.solve_grde(frozen, np.eye(2), np.eye(2), 10.0).gain(2.0)
-    np.testing.assert_allclose(gain, [[0.0, 1.0]], atol=1e-12)  # Z(tf) = Qf = I: B'Z = B' at t0
     right = hc.Trajectory(Declared(), [0.0, 0.0], [1.0], 0.0, 2.0)
     np.testing.assert_allclose(right.q_d(2.0), [2.0 + 8.0 / 6.0, 4.0], rtol=1e-8)
     np.testing.assert_allclose(hc.solve_grde(right, np.eye(2), np.eye(2), 10.0).gain(2.0), [[0.0, 3.0]], atol=1e-12)

@@ -53,6 +53,12 @@ class RiccatiProblem {
     coefficients_at(t);
     unpack_symmetric(x, X_);
     detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx, diagonal_S_);
+    // One sum tells whether every entry is finite (an overflow of a huge, escaping X also makes
+    // it inf: then the model is asked, and only a model that returns non-finite numbers at
+    // (t, q_d(t)) is blamed, as the model's InputError instead of a conjugate point).
+    double sum = 0.0;
+    for (int i = 0, p = packed_size(n_); i < p; ++i) sum += dx[i];
+    if (!std::isfinite(sum)) check_finite_outputs(model_, t, q_d_);
   }
 
   void jacobian(double t, const double* x, double* J) {
@@ -211,6 +217,13 @@ double solution_scale(const Trajectory& trajectory, RiccatiKind kind, const Mat&
   return std::max({largest_eigenvalue(X_start), R_scale * time_scale, std::numeric_limits<double>::min()});
 }
 
+// A solve that fails or escapes where the model's linearization is not finite is the model's
+// failure: an InputError naming it (check_finite_outputs) instead of a conjugate point.
+void blame_model_if_not_finite(const Trajectory& trajectory, std::initializer_list<double> times) {
+  for (double t : times)
+    if (t >= trajectory.t0() && t <= trajectory.tf()) check_finite_outputs(trajectory.model(), t, trajectory.q_d(t));
+}
+
 [[noreturn]] void throw_escape(RiccatiKind kind, double t_escape, double gamma, double t0, double tf,
                                const std::string& detail) {
   if (kind == RiccatiKind::Control)
@@ -296,6 +309,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv);
   std::vector<double> x(static_cast<std::size_t>(p));
   pack_symmetric(X_start, x.data());
+  blame_model_if_not_finite(trajectory, {t_start});  // the scale below is taken there
   const double scale = solution_scale(trajectory, kind, Q, X_start);
   // atol is meant for solutions of order 1: a smaller solution gets a proportionally smaller one
   // (Qf = 1e-8 I and Q = 4e-5 I with atol = 1e-10 put gamma* 1.5e-5 too high).
@@ -312,7 +326,10 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
     Mat X(n, n);
     unpack_symmetric(x.data(), X);
     const double t_escape = escape_after<N>(trajectory, kind, Q, gamma, N_inv, X, t_last, t_end, scale, options);
-    if (!std::isnan(t_escape)) throw_escape(kind, t_escape, gamma, t0, tf, "");
+    if (!std::isnan(t_escape)) {
+      blame_model_if_not_finite(trajectory, {t_last, t_escape});
+      throw_escape(kind, t_escape, gamma, t0, tf, "");
+    }
     no_escape = true;
   };
   const double limit = options.escape_norm * scale;
@@ -361,6 +378,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
           return StepAction::Continue;
         });
   } catch (const SolverError& e) {
+    blame_model_if_not_finite(trajectory, {t_last, e.t()});
     // A failure may be an escape that the threshold has not caught yet: a step size that
     // collapses, or running out of steps while X grows. Out of steps with a moderate X is only
     // that, and is reported as such.

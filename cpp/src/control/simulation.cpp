@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "hinf/core/angles.hpp"
 #include "hinf/core/checks.hpp"
@@ -119,6 +120,14 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
       check_shape(Dt, n, nw, str_cat("D(t, q) at t = ", t, " of the model '", model.name(), "'"));
       out.noalias() += Gt * u + Dt * w;
     }
+    if (!out.allFinite()) {
+      // The model's own failure is reported as the model's (not as a step size that collapses).
+      check_finite_outputs(model, t, q);
+      throw SolverError(str_cat("the closed loop's right-hand side is not finite at t = ", t,
+                                ": the model's f, G and D are finite there, the command u (", u.allFinite() ? "finite" : "not finite",
+                                ") or the disturbance w (", w.allFinite() ? "finite" : "not finite", ") is not"),
+                        t, "NOT_FINITE");
+    }
   };
   // d/dq [f + G(q) u(q) + D(q) w] ~ df/dq + d(G u)/dq + G du/dq: the change of D(q) w with q is
   // left out (the Jacobian only steers the implicit methods' Newton iterations).
@@ -203,7 +212,8 @@ DivergenceCheck::DivergenceCheck(const Trajectory& trajectory, int heading, doub
 bool DivergenceCheck::within(double t, const double* y, const char* advice, SimulationResult& result) {
   trajectory_.q_d(t, q_d_.data(), &cursor_);
   tracking_error(static_cast<int>(q_d_.size()), heading_, y, q_d_.data(), q_e_.data());
-  const double error = q_e_.cwiseAbs().maxCoeff();
+  // A non-finite error (NaN compares false, and maxCoeff may skip it) is past every bound.
+  const double error = q_e_.allFinite() ? q_e_.cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
   if (error <= bound_) return true;
   result.status = RunStatus::Diverged;
   result.status_message = str_cat("the tracking error |q - q_d|_inf = ", error, " exceeded the divergence bound ", bound_,

@@ -31,6 +31,10 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
                                  G.rows(), ", ", G.cols(), "), expected (", n, ", ", m, ")"));
     }
     out.noalias() = f + G * u;
+    if (!out.allFinite()) {
+      check_finite_outputs(*model_, t, q);
+      throw InputError(str_cat("the desired input u_d is not finite at t = ", t));
+    }
   };
   dense_ = PiecewisePolynomial(n);
   Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
@@ -50,6 +54,7 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
   }
   dense_.finalize();
   stats_ = stepper.stats();
+  check_declarations();
 }
 
 Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf, PiecewisePolynomial dense,
@@ -62,6 +67,14 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
           " pieces");
   require(dense_.t_min() <= t0 && dense_.t_max() >= tf, "the dense output covers [", dense_.t_min(), ", ",
           dense_.t_max(), "], not the horizon [", t0, ", ", tf, "]");
+  check_declarations();
+}
+
+// What the model says about its input matrices, checked at the start, the middle and the end of
+// the trajectory: a wrong declaration would freeze G at (t0, q_d0) or drop d(G u)/dq silently.
+void Trajectory::check_declarations() const {
+  const double t_mid = 0.5 * (t0_ + tf_);
+  check_input_matrix_declarations(*model_, {t0_, t_mid, tf_}, {q_d0_, q_d(t_mid), q_d(tf_)});
 }
 
 std::vector<double> Trajectory::input_breakpoints(double t0, double tf) const {

@@ -1,5 +1,6 @@
 #include "hinf/models/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <typeinfo>
 
@@ -31,6 +32,78 @@ void linearize(const Model& model, double t, const ConstVecRef& q, const ConstVe
   Mat input_part(model.n(), model.n());
   model.dGudq(t, q, u, input_part);
   A += input_part;
+}
+
+namespace {
+
+std::string vector_text(const ConstVecRef& v) {
+  std::string text = "[";
+  for (Eigen::Index i = 0; i < v.size(); ++i) text += str_cat(i == 0 ? "" : ", ", v[i]);
+  return text + "]";
+}
+
+// "(i, j) = value" of the first non-finite entry, or "" when M is finite.
+std::string first_nonfinite(const Mat& M) {
+  for (Eigen::Index j = 0; j < M.cols(); ++j)
+    for (Eigen::Index i = 0; i < M.rows(); ++i)
+      if (!std::isfinite(M(i, j))) return str_cat(M(i, j), " at (", i, ", ", j, ")");
+  return "";
+}
+
+}  // namespace
+
+void check_finite_outputs(const Model& model, double t, const ConstVecRef& q) {
+  const auto fail = [&](const char* what, const std::string& entry) {
+    throw InputError(str_cat("the model '", model.name(), "' returned a non-finite ", what, " (", entry, ") at t = ", t,
+                             ", q = ", vector_text(q),
+                             ": a model must return finite numbers wherever it is evaluated (fix its equations "
+                             "there, or keep the states and inputs where they are defined)"));
+  };
+  if (!q.allFinite()) return;  // a non-finite state is not the model's output
+  const int n = model.n();
+  Vec f(n);
+  model.f(t, q, f);
+  if (std::string entry = first_nonfinite(f); !entry.empty()) fail("f(t, q)", entry);
+  Mat A(n, n);
+  model.dfdq(t, q, A);
+  if (std::string entry = first_nonfinite(A); !entry.empty()) fail("df/dq (t, q)", entry);
+  if (std::string entry = first_nonfinite(model.G(t, q)); !entry.empty()) fail("G(t, q)", entry);
+  if (std::string entry = first_nonfinite(model.D(t, q)); !entry.empty()) fail("D(t, q)", entry);
+}
+
+void check_input_matrix_declarations(const Model& model, const std::vector<double>& t, const std::vector<Vec>& q) {
+  if (t.empty()) return;
+  const auto differ = [](const Mat& a, const Mat& b) {
+    // Equal matrices are equal bit for bit when they do not depend on (t, q); the tolerance only
+    // keeps round-off of a model that recomputes a constant from being called a dependence.
+    return (a - b).cwiseAbs().maxCoeff() > 1e-12 * (1.0 + std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()));
+  };
+  const auto fail = [&](const char* matrix, double t1, const Vec& q1, double t2, const Vec& q2, const char* fix) {
+    throw InputError(str_cat("the model '", model.name(), "' returns another ", matrix, " at t = ", t2, ", q = ",
+                             vector_text(q2), " than at t = ", t1, ", q = ", vector_text(q1), ", but ", fix));
+  };
+  const Mat G0 = model.G(t[0], q[0]), D0 = model.D(t[0], q[0]);
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Mat Gk = model.G(t[k], q[k]), Dk = model.D(t[k], q[k]);
+    if (model.constant_input_matrices()) {
+      const char* fix = "it declares constant input matrices (constant_input_matrices() is true, the default), so it "
+                        "would be evaluated at the first point only: override constant_input_matrices() to return "
+                        "false (and state_dependent_inputs() to return true if they depend on q)";
+      if (differ(G0, Gk)) fail("G", t[0], q[0], t[k], q[k], fix);
+      if (differ(D0, Dk)) fail("D", t[0], q[0], t[k], q[k], fix);
+    }
+    if (!model.state_dependent_inputs()) {
+      // The same time, the state moved in every component by a different amount.
+      Vec moved = q[k];
+      for (Eigen::Index i = 0; i < moved.size(); ++i)
+        moved[i] += (0.1 + 0.05 * static_cast<double>(i)) * std::max(1.0, std::abs(moved[i]));
+      const char* fix = "it declares input matrices that do not depend on q (state_dependent_inputs() is false, the "
+                        "default), so its linearization would leave out d(G u)/dq: override state_dependent_inputs() "
+                        "to return true and constant_input_matrices() to return false";
+      if (differ(Gk, model.G(t[k], moved))) fail("G", t[k], q[k], t[k], moved, fix);
+      if (differ(Dk, model.D(t[k], moved))) fail("D", t[k], q[k], t[k], moved, fix);
+    }
+  }
 }
 
 double Model::remainder_bound(double, const ConstVecRef&, double) const { return NAN; }

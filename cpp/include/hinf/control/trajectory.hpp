@@ -74,6 +74,7 @@ class Trajectory {
  private:
   // The checks of the constructors' arguments (not of the dense output).
   void check_arguments() const;
+  void check_declarations() const;
   // The points of u_d's tables inside (t0, tf), and tf: where the integration restarts.
   std::vector<double> input_breakpoints(double t0, double tf) const;
 

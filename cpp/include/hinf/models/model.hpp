@@ -164,6 +164,20 @@ void validate_model(const Model& model, double t, const ConstVecRef& q);
 // A_e(t).
 void linearize(const Model& model, double t, const ConstVecRef& q, const ConstVecRef& u, MatRef A);
 
+// An InputError naming the first of f, df/dq, G and D of the model that is not finite at (t, q)
+// (with t and q), and what to do; nothing when all four are finite. The integrators call it
+// where a right-hand side or a solution stops being finite, so that the model's own failure is
+// reported as the model's, not as a step size, a conjugate point or a metric.
+void check_finite_outputs(const Model& model, double t, const ConstVecRef& q);
+
+// An InputError when the model says its input matrices are constant (constant_input_matrices())
+// but G or D differ between the points (t_k, q_k), or says they do not depend on the state
+// (!state_dependent_inputs()) but G or D change when q moves at a fixed t: such a model would be
+// evaluated at (t0, q0) only, or linearized without d(G u)/dq, and give wrong results silently.
+// The message names the model, the matrix, the two points and the declaration to change.
+void check_input_matrix_declarations(const Model& model, const std::vector<double>& t,
+                                     const std::vector<Vec>& q);
+
 // A linear time-invariant model dq/dt = A q + B u + D w (for LTI studies and tests).
 // With a measurement matrix C (p x n), w gets p more channels for the measurement noise:
 // w = [process disturbance (D.cols()), measurement noise (p)], and D is padded with zeros.
