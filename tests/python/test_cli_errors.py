@@ -200,6 +200,11 @@ def test_set_accepts_and_refuses_a_number_as_the_file_reader_does(tmp_path, caps
     if reason is not None:
         assert reason in file_error and reason in set_error, (file_error, set_error)
         assert len(set_error.splitlines()) == 1 and "gamma" in set_error
+    # The file's literal with another key --set: the file is then read in Python (to apply the
+    # setting), with the reader's accept/reject too.
+    both_status = cli.main(["run", str(in_file), "--set", "controller.Q=1.0"])
+    both_error = capsys.readouterr().err
+    assert both_status == file_status, (file_error, both_error)
 
 
 @pytest.mark.parametrize("setting", ["controller.gamma=5\n[initial]\nq0 = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import math
 import os
 import pathlib
 import sys
@@ -100,11 +101,32 @@ def read_toml_file(path: str | os.PathLike, what: str = "") -> dict:
     """
     try:
         with open(path, "rb") as f:
-            return tomllib.load(f)
+            return tomllib.load(f, parse_float=file_float)
     except OSError as error:
         raise ValueError(f"cannot read {what}'{path}': {error.strerror}") from None
     except tomllib.TOMLDecodeError as error:
         raise ValueError(f"{path}: {error}") from None
+    except FloatOverflow as overflow:
+        raise ValueError(f"{path}: {overflow}") from None
+
+
+class FloatOverflow(ValueError):
+    """A TOML float literal beyond the range of a double (1e400): the scenario reader refuses it."""
+
+    def __init__(self, literal: str):
+        super().__init__(f"Error while parsing floating-point: '{literal}' could not be interpreted as a value (it "
+                         "overflows a double; write inf for infinity)")
+        self.literal = literal
+
+
+def file_float(literal: str) -> float:
+    """A TOML float literal as the scenario file reader (toml++) reads it, for tomllib's
+    ``parse_float``: tomllib gives inf for a literal that overflows (1e400), toml++ refuses it
+    (:class:`FloatOverflow`); inf, +inf and -inf are infinite."""
+    value = float(literal)
+    if math.isinf(value) and literal.lstrip("+-") != "inf":
+        raise FloatOverflow(literal)
+    return value
 
 
 def toml_text(document: Any, source: str) -> str:

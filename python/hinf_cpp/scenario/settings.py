@@ -9,11 +9,12 @@ path, with array indices: ``controller.gamma``, ``initial.q0[2]``,
 from __future__ import annotations
 
 import copy
-import math
 import re
 import tomllib
 import unicodedata
 from typing import Any, Sequence
+
+from hinf_cpp.scenario.documents import FloatOverflow, file_float
 
 __all__ = ["FEEDBACK_KEY", "apply_settings", "get_key", "key_path", "parse_setting", "set_key", "toml_value"]
 
@@ -227,35 +228,18 @@ def parse_setting(text: str) -> tuple[str, Any]:
     if not sep or not key:
         raise ValueError(f"--set '{text}': write it as KEY=VALUE, e.g. controller.gamma=12")
     try:
-        parsed = tomllib.loads(f"value = {value.strip()}", parse_float=_file_float)["value"]
+        parsed = tomllib.loads(f"value = {value.strip()}", parse_float=file_float)["value"]
     except tomllib.TOMLDecodeError:
         raise ValueError(f"--set '{text}': '{value.strip()}' is not a TOML value "
                          "(quote strings: controller.law=\"lqr\")") from None
-    except _Overflow as overflow:
-        raise ValueError(f"--set '{text}': invalid TOML in {key}: Error while parsing floating-point: "
-                         f"'{overflow.literal}' could not be interpreted as a value (it overflows a double; "
-                         "write inf for infinity)") from None
+    except FloatOverflow as overflow:
+        raise ValueError(f"--set '{text}': invalid TOML in {key}: {overflow}") from None
     integer = _integer_beyond_64_bits(parsed)
     if integer is not None:
         raise ValueError(f"--set '{text}': invalid TOML in {key}: Error while parsing integer: '{integer}' is not "
                          "representable in 64 bits")
     key_path(key) if key != FEEDBACK_KEY else None
     return key, parsed
-
-
-class _Overflow(Exception):
-    def __init__(self, literal: str):
-        super().__init__(literal)
-        self.literal = literal
-
-
-def _file_float(literal: str) -> float:
-    """A TOML float literal as the scenario file reader (toml++) reads it: tomllib gives inf
-    for a literal that overflows (1e400), toml++ refuses it. inf, +inf and -inf are infinite."""
-    value = float(literal)
-    if math.isinf(value) and literal.lstrip("+-") != "inf":
-        raise _Overflow(literal)
-    return value
 
 
 def _integer_beyond_64_bits(value: Any) -> int | None:
