@@ -8,8 +8,8 @@
 // --gamma-star also computes gamma* (paper eq. 14) of the state-feedback design and puts it in
 // the results file.
 // Exit status: 0 success, 2 bad input or usage (unusable output paths and runs too large for
-// the memory included), 3 numerical failure (solver, conjugate point, coupling condition), 1
-// anything else (a bug). Errors are one line on stderr. Output paths are checked before the
+// the memory included), 3 numerical failure (solver, conjugate point, coupling condition), 130
+// interrupted (Ctrl-C; "hinf-sim: interrupted"), 1 anything else (a bug). Errors are one line on stderr. Output paths are checked before the
 // run; each file is written whole or not at all.
 #include <iostream>
 #include <new>
@@ -17,6 +17,7 @@
 #include <string>
 
 #include "hinf/core/errors.hpp"
+#include "hinf/core/interrupt.hpp"
 #include "hinf/io/files.hpp"
 #include "hinf/io/results.hpp"
 #include "hinf/io/scenario_file.hpp"
@@ -78,6 +79,7 @@ int main(int argc, char** argv) {
   }
   if (scenario_path.empty()) return fail(2, std::string("no scenario file given; ") + kUsage);
 
+  hinf::install_interrupt_handler();
   try {
     for (const std::optional<std::string>& path : {json_path, csv_path})
       if (path) hinf::check_output_path(*path);
@@ -104,6 +106,9 @@ int main(int argc, char** argv) {
       std::cerr << "hinf-sim: warning: the run " << hinf::to_string(result.simulation.status) << ": "
                 << result.simulation.status_message << "\n";
     return 0;
+  } catch (const hinf::Interrupted&) {
+    std::cerr << "hinf-sim: interrupted\n";
+    return 130;  // 128 + SIGINT, as a shell reports a process that SIGINT ended
   } catch (const hinf::InputError& e) {
     return fail(2, e.what());
   } catch (const hinf::HinfError& e) {

@@ -182,7 +182,7 @@ Examples
 >>> sampled.steps(), sampled.A(0).shape, sampled.B(0).shape, sampled.D(0).shape
 (100, (6, 6), (6, 2), (6, 6)))").c_str())
       .def(py::init([](TrajectoryPtr trajectory, double period) {
-             py::gil_scoped_release release;
+             ComputationScope release;
              return std::make_shared<SampledLinearization>(std::move(trajectory), period);
            }),
            py::arg("trajectory"), py::arg("period"))
@@ -221,11 +221,11 @@ Examples
         [](const py::object& source, double period, const Mat& Q, const Mat& Qf, double gamma) {
           if (py::isinstance<SampledLinearization>(source)) {
             auto sampled = source.cast<SampledLinearizationPtr>();
-            py::gil_scoped_release release;
+            ComputationScope release;
             return solve_discrete_game(sampled, Q, Qf, gamma);
           }
           auto trajectory = source.cast<TrajectoryPtr>();
-          py::gil_scoped_release release;
+          ComputationScope release;
           return solve_discrete_game(trajectory, period, Q, Qf, gamma);
         },
         py::arg("trajectory"), py::arg("period"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
@@ -265,7 +265,7 @@ Examples
 
   m.def("discrete_conjugate_time",
         [](const SampledLinearization& sampled, const Mat& Q, const Mat& Qf, double gamma) {
-          py::gil_scoped_release release;
+          ComputationScope release;
           return discrete_conjugate_time(sampled, Q, Qf, gamma);
         },
         py::arg("sampled"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"), doc({"discrete_conjugate_time"}, R"(Parameters
@@ -292,7 +292,7 @@ Examples
 
   m.def("gamma_star_discrete",
         [](const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf, const GammaStarOptions& options) {
-          py::gil_scoped_release release;
+          ComputationScope release;
           return gamma_star_discrete(sampled, Q, Qf, options);
         },
         py::arg("sampled"), py::arg("Q"), py::arg("Qf"), py::arg("options") = GammaStarOptions{},
@@ -327,7 +327,7 @@ Examples
       .def_static("emulated",
                   [](RiccatiSolutionPtr design, double period, const py::object& kappa) {
                     const Signal k = to_signal(kappa, "kappa");
-                    py::gil_scoped_release release;
+                    ComputationScope release;
                     return SampledLaw::emulated(std::move(design), period, k);
                   },
                   py::arg("design"), py::arg("period"), py::arg("kappa") = Signal(1.0),
@@ -515,7 +515,7 @@ array([1., 0.]))").c_str())
              Vec u(c.m());
              StepReport report;
              {
-               py::gil_scoped_release release;
+               ComputationScope release;
                report = c.step(t_now, measurement, t_meas.value_or(t_now), u.data());
              }
              if (report.status == StepStatus::NotReset)
@@ -567,7 +567,7 @@ Examples
              std::vector<StepReport> reports(static_cast<std::size_t>(k));
              const double* rows = q.data();
              {
-               py::gil_scoped_release release;
+               ComputationScope release;
                Vec command(c.m());
                for (Eigen::Index i = 0; i < k; ++i) {
                  reports[static_cast<std::size_t>(i)] =
@@ -641,7 +641,7 @@ void bind_sampled_loop(py::module_& m) {
         [](const Trajectory& trajectory, OnlineController& controller, const py::object& disturbance, const Vec& q0,
            const SampledLoopOptions& options, const std::optional<ModelPtr>& plant) {
           const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
-          py::gil_scoped_release release;
+          ComputationScope release;
           return simulate_sampled(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
@@ -765,7 +765,7 @@ array([ 0.981, -0.192,  0.191,  8.814,  3.236,  1.331])
                        const TrajectoryOptions& options) {
              require(model != nullptr, "Trajectory needs a model");
              VectorSignal inputs = to_vector_signal(u_d, model->m(), "u_d");
-             py::gil_scoped_release release;
+             ComputationScope release;
              return std::make_shared<Trajectory>(std::move(model), std::move(q_d0), std::move(inputs), t0, tf,
                                                  options);
            }),
@@ -906,7 +906,7 @@ Examples
   def_solution_pickle(filter);
 
   m.def("solve_grde", &solve_grde, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
-        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(),
+        py::arg("options") = SolverOptions{}, py::call_guard<ComputationScope>(),
             doc({"solve_grde", "control/riccati.hpp"}, R"(
 Parameters
 ----------
@@ -945,7 +945,7 @@ array([ 0.219, 20.815])
 True)").c_str());
   m.def("solve_filter_riccati", &solve_filter_riccati, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
-        py::call_guard<py::gil_scoped_release>(), doc({"solve_filter_riccati"}, R"(Parameters
+        py::call_guard<ComputationScope>(), doc({"solve_filter_riccati"}, R"(Parameters
 ----------
 trajectory : Trajectory
     The desired trajectory: A = A_e(t) and D = D_e(t) along it; its model gives C (Model.C).
@@ -982,7 +982,7 @@ Examples
 >>> np.round(Sigma.eigenvalue_bounds(), 3)
 array([0.101, 1.005]))").c_str());
   m.def("grde_escape_time", &grde_escape_time, py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
-        py::arg("options") = SolverOptions{}, py::call_guard<py::gil_scoped_release>(), doc({"grde_escape_time"}, R"(
+        py::arg("options") = SolverOptions{}, py::call_guard<ComputationScope>(), doc({"grde_escape_time"}, R"(
 Parameters
 ----------
 trajectory : Trajectory
@@ -1017,7 +1017,7 @@ nan
 7.56)").c_str());
   m.def("filter_escape_time", &filter_escape_time, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
-        py::call_guard<py::gil_scoped_release>(), doc({"filter_escape_time"}, R"(Parameters
+        py::call_guard<ComputationScope>(), doc({"filter_escape_time"}, R"(Parameters
 ----------
 trajectory : Trajectory
     The desired trajectory (A = A_e(t); C of its model).
@@ -1227,7 +1227,7 @@ Examples
            const SimulationOptions& options, const std::optional<ModelPtr>& plant) {
           check_controller_fits(controller, trajectory.model());
           const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
-          py::gil_scoped_release release;
+          ComputationScope release;
           return simulate_state_feedback(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
@@ -1310,7 +1310,7 @@ OutputFeedbackOptions(filter_A='estimate', on_coupling_violation='flag', sigma_e
           check_dimension(channels, 0, "channels");
           require(static_cast<double>(count) * channels <= kMaxNumbers, "standard_normal_samples: count x channels = ",
                   count, " x ", channels, " is more than the ", kMaxNumbers, " numbers (8 GB) allowed");
-          py::gil_scoped_release release;
+          ComputationScope release;
           return standard_normal_samples(seed, count, channels);
         },
         py::arg("seed"), py::arg("count"), py::arg("channels"),
@@ -1323,7 +1323,7 @@ OutputFeedbackOptions(filter_A='estimate', on_coupling_violation='flag', sigma_e
           const Model& model = problem.design->trajectory().model();
           check_controller_fits(controller, model);
           const Disturbance w = to_disturbance(disturbance, model.nw());
-          py::gil_scoped_release release;
+          ComputationScope release;
           return simulate_output_feedback(problem, controller, w, q0, options, simulation,
                                           plant ? plant->get() : nullptr);
         },
@@ -1497,7 +1497,7 @@ Examples
           return gamma_star(trajectory, Q, Qf, serial_for_python_models(model_of(trajectory), options));
         },
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("options") = GammaStarOptions{},
-        py::call_guard<py::gil_scoped_release>(), doc({"gamma_star", "control/analysis.hpp"}, R"(Parameters
+        py::call_guard<ComputationScope>(), doc({"gamma_star", "control/analysis.hpp"}, R"(Parameters
 ----------
 trajectory : Trajectory
     The desired trajectory (its horizon [t0, tf]).
@@ -1533,7 +1533,7 @@ Examples
                                             serial_for_python_models(model_of(trajectory), options));
         },
         py::arg("trajectory"), py::arg("Q"), py::arg("Qf"), py::arg("N"), py::arg("Sigma0"),
-        py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
         doc({"gamma_star_output_feedback"}, R"(Parameters
 ----------
 trajectory : Trajectory
@@ -1572,7 +1572,7 @@ Examples
         [](const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma) {
           require(Z.n() == Sigma.n(), "max_rho_sigma_z: Z is ", Z.n(), " x ", Z.n(), " but Sigma is ", Sigma.n(), " x ",
                   Sigma.n(), ": pass the solutions of one design");
-          py::gil_scoped_release release;
+          ComputationScope release;
           return max_rho_sigma_z(Z, Sigma);
         },
         py::arg("Z"), py::arg("Sigma"), doc({"max_rho_sigma_z"}, R"(Parameters
@@ -1609,7 +1609,7 @@ Examples
   m.def("certify",
         [](const RiccatiSolution& Z, const py::object& kappa, const Mat& Q) {
           const Signal k = to_signal(kappa, "kappa");
-          py::gil_scoped_release release;
+          ComputationScope release;
           return certify(Z, k, Q);
         },
         py::arg("Z"), py::arg("kappa"), py::arg("Q"), doc({"certify"}, R"(Parameters

@@ -89,6 +89,12 @@ Examples
     };
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const Interrupted&) {
+      clear_interrupt();  // the request is answered: Python's KeyboardInterrupt carries it on
+      // Python's own handler of the SIGINT is pending too: run it now (it raises the
+      // KeyboardInterrupt and is then done), so that a second one does not follow this one.
+      // Without a pending signal (a request from code, or not the main thread) raise it here.
+      if (PyErr_CheckSignals() == 0) PyErr_SetNone(PyExc_KeyboardInterrupt);
     } catch (const ConjugatePointError& e) {
       py::dict a;
       a["t_escape"] = e.t_escape();
@@ -109,6 +115,13 @@ Examples
       raise(hinf_error, e.what(), py::dict());
     }
   });
+
+  // ---- Ctrl-C (core/interrupt.hpp; module.cpp chains the request to Python's SIGINT) ----
+  m.def("request_interrupt", &request_interrupt, doc({"request_interrupt", "core/interrupt.hpp"},
+                                                     "A computation that it stops raises KeyboardInterrupt.")
+                                                     .c_str());
+  m.def("clear_interrupt", &clear_interrupt, doc({"clear_interrupt"}).c_str());
+  m.def("interrupt_requested", &interrupt_requested, doc({"interrupt_requested"}).c_str());
 
   m.def("wrap_angle", &wrap_angle, py::arg("angle"), doc({"wrap_angle", "core/angles.hpp"}, R"(Parameters
 ----------

@@ -130,7 +130,7 @@ class PyModel : public Model, public py::trampoline_self_life_support {
     py::gil_scoped_acquire gil;
     py::function override = py::get_override(static_cast<const Model*>(this), "error_split");
     if (!override) {
-      py::gil_scoped_release release;
+      py::gil_scoped_release release;  // nested in a computation: no ComputationScope
       Model::error_split(t, q_d, u_d, q_e, A, alpha);
       return;
     }

@@ -175,7 +175,7 @@ void bind_generated_function(py::module_& m) {
                output_data.push_back(outputs.back().mutable_data());
              }
              {
-               py::gil_scoped_release release;
+               ComputationScope release;
                f.eval(input_data.data(), output_data.data());
              }
              return outputs;

@@ -166,7 +166,7 @@ Examples
           "plant", [](const RunResult& r) { return r.plant ? std::optional<ModelPtr>(r.plant) : std::nullopt; },
           doc({"RunResult::plant"}).c_str());
 
-  m.def("run_scenario", &run_scenario, py::arg("scenario"), py::call_guard<py::gil_scoped_release>(),
+  m.def("run_scenario", &run_scenario, py::arg("scenario"), py::call_guard<ComputationScope>(),
         doc({"run_scenario"}, R"(Parameters
 ----------
 scenario : Scenario
@@ -195,7 +195,7 @@ Examples
 >>> result.simulation.status, round(result.metrics.max_position_error, 3)   # the initial error (m)
 (<RunStatus.completed: 0>, 1.414))").c_str());
   m.def("run_scenario_with_noise", &run_scenario_with_noise, py::arg("scenario"), py::arg("noise"),
-        py::call_guard<py::gil_scoped_release>(), doc({"run_scenario_with_noise"}, R"(Parameters
+        py::call_guard<ComputationScope>(), doc({"run_scenario_with_noise"}, R"(Parameters
 ----------
 scenario : Scenario
     A scenario with [measurement].
@@ -277,7 +277,7 @@ Examples
             if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             if (progress) (*progress)(done, total);
           };
-          py::gil_scoped_release release;
+          ComputationScope release;
           return run_scenarios(scenarios, options, report);
         },
         py::arg("scenarios"), py::arg("options") = StudyOptions{}, py::arg("progress") = py::none(),
@@ -318,7 +318,7 @@ Examples
         [](const Scenario& scenario, const GammaStarOptions& options) {
           return scenario_gamma_star(scenario, serial_for_python_models(scenario.model.get(), options));
         },
-        py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+        py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
         doc({"scenario_gamma_star"}, R"(Parameters
 ----------
 scenario : Scenario
@@ -346,7 +346,7 @@ Examples
         [](const Scenario& scenario, const GammaStarOptions& options) {
           return scenario_gamma_star_output_feedback(scenario, serial_for_python_models(scenario.model.get(), options));
         },
-        py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<py::gil_scoped_release>(),
+        py::arg("scenario"), py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
         doc({"scenario_gamma_star_output_feedback"}, R"(Parameters
 ----------
 scenario : Scenario
@@ -373,7 +373,7 @@ Examples
 >>> round(result.gamma_star, 2), result.binding
 (4.59, <GammaCondition.coupling: 3>))").c_str());
   m.def("scenario_certificates", &scenario_certificates, py::arg("scenario"),
-        py::call_guard<py::gil_scoped_release>(), doc({"scenario_certificates"}, R"(Parameters
+        py::call_guard<ComputationScope>(), doc({"scenario_certificates"}, R"(Parameters
 ----------
 scenario : Scenario
     The scenario (its gamma, Q, Qf, kappa, model and desired trajectory).

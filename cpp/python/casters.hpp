@@ -39,6 +39,7 @@
 #include "hinf/core/checks.hpp"
 #include "hinf/core/enum_names.hpp"
 #include "hinf/core/errors.hpp"
+#include "hinf/core/interrupt.hpp"
 #include "hinf/core/types.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/numerics/signal.hpp"
@@ -106,6 +107,19 @@ HINF_ENUM_CASTER(RunOutcome);
 }  // namespace pybind11::detail
 
 namespace hinf::python {
+
+// The GIL released for a computation that Ctrl-C stops (core/interrupt.hpp; module.cpp chains
+// the request to Python's SIGINT handler). A request left from a Ctrl-C that Python code has
+// already handled (a KeyboardInterrupt caught, a notebook cell stopped) is cleared first: it
+// must not stop this computation. Used as `ComputationScope scope;` or
+// `py::call_guard<ComputationScope>()`.
+class ComputationScope {
+ private:
+  struct ClearStaleRequest {
+    ClearStaleRequest() { clear_interrupt(); }
+  } clear_;  // before the release: members are made in this order
+  py::gil_scoped_release release_;
+};
 
 // ---- docstrings ----
 // A docstring is written once: the contract of a C++ declaration is its comment in the header

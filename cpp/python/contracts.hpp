@@ -336,6 +336,8 @@ the range of the values (a step rings on both sides))contract"},
     {"Interpolation::pchip", R"contract(piecewise cubic Hermite with the slopes of Fritsch and Carlson, weighted harmonic
 mean of Fritsch and Butland (as SciPy's PchipInterpolator): C1, and on each
 interval between v_i and v_{i+1}: no overshoot (the default))contract"},
+    {"Interrupted", R"contract(Thrown by throw_if_interrupted(): not an InputError or a HinfError, so that no handler of
+bad input or numerical failure takes it for one (a study does not record it as a failed run).)contract"},
     {"Law", R"contract(The tracking law of a scenario ([controller] law).)contract"},
     {"Law::cascade", R"contract(the cascaded ship baseline (control/cascade.hpp); with [measurement] on the H-infinity estimate)contract"},
     {"Law::hinf", R"contract(the paper's H-infinity law (17)/(18), and (34) with measurements)contract"},
@@ -904,6 +906,8 @@ check when they are the same object). Scenario files check more (check_plant, sc
 index -1 or in [0, n), noise channels distinct and in [0, nw), and not both constant and
 state-dependent input matrices. InputError naming the first fault.)contract"},
     {"check_symmetric_weight", R"contract(Symmetric to 1e-10 relative and positive semidefinite (definite = false) or definite.)contract"},
+    {"clear_interrupt", R"contract(Withdraws a request (a computation's front end does, before it starts, for one that was
+already answered).)contract"},
     {"code_trusted_by_environment", R"contract(The environment's answer to "may files run code": HINF_TRUST_CODE = 1 yes, unset, empty or 0
 no, anything else an InputError. The front ends use it as the default of their --trust-code.)contract"},
     {"compute_metrics", R"contract(The metrics of a closed-loop run of `model` (whose position and heading indices they use),
@@ -1128,6 +1132,11 @@ and gets to_string(E) and from_string<E>(name) (an InputError listing the names)
                          (paper §4) failed; carries the time and rho.
 SolverError, ConjugatePointError and CouplingConditionError derive from HinfError
 (Python: hinf_cpp.HinfError, a RuntimeError).)contract"},
+    {"core/interrupt.hpp", R"contract(Ctrl-C for long computations. A process-wide request that a signal handler may set (a
+lock-free atomic store: async-signal-safe) and that every integrator reads after each step:
+a request ends the computation with Interrupted within one step. hinf-sim installs a SIGINT
+handler that sets it; the Python module chains one before Python's own, so that a Ctrl-C
+stops a C++ call that runs without the GIL and Python then raises KeyboardInterrupt.)contract"},
     {"core/resources.hpp", R"contract(Limits on what one computation may allocate, checked before allocating.)contract"},
     {"core/types.hpp", R"contract(Eigen aliases and the packed storage of symmetric matrices used throughout hinf_cpp.)contract"},
     {"discrete_conjugate_time", R"contract(The latest sample time t_k at which the existence condition fails (the recursion stops there),
@@ -1152,6 +1161,9 @@ rho(Sigma Z) < gamma^2 on [t0, tf]. binding names the condition that limits it.)
 on [t0, tf] (paper eq. 14), or NaN when there is none. Nothing is stored; the same input
 checks as solve_grde. The escape is located on the inverse W = Z^-1, which is smooth
 there, so no escape between solver steps is missed.)contract"},
+    {"install_interrupt_handler", R"contract(For programs without Python (hinf-sim): SIGINT requests an interrupt; a second SIGINT while
+the first is pending ends the process as SIGINT does by default.)contract"},
+    {"interrupt_requested", R"contract(Whether an interrupt is requested.)contract"},
     {"io/files.hpp", R"contract(Files read and written by the front ends: text read whole, and output files written whole or
 not at all.)contract"},
     {"io/model_kinds.hpp", R"contract(The kinds of model of scenario files (docs/scenarios.md): the name that a model section
@@ -1425,6 +1437,8 @@ scenario), e.g. "kappa = { offset = 1.0 }".)contract"},
 that cannot be read (missing, a directory, a read error).)contract"},
     {"register_model_kind", R"contract(Adds a kind to the table. InputError when the name is empty or taken, or read is empty.
 Safe to call from several threads; scenarios read afterwards know the kind.)contract"},
+    {"request_interrupt", R"contract(Requests that the running computations stop at their next step (as Ctrl-C does); safe in a
+signal handler.)contract"},
     {"results_csv", R"contract(The time series on the output grid, one row per time, with a header line: t, the states,
 the desired states (suffix _d), u1.., u1_d.., w1..; with output feedback also the estimated
 errors (suffix _e_hat), the measurements y1.., sigma_min_eig, sigma_max_eig, rho_sigma_z.)contract"},
@@ -1540,6 +1554,8 @@ Marsaglia polar method): the same numbers for the same seed on every run.)contra
     {"structure_of", R"contract(What the model says about itself (n, m, nw checked first by check_dimensions, since the
 rest is sized by them); check_structure checks the rest.)contract"},
     {"table_of", R"contract(The TOML reader behind a section (for the built-in kinds whose keys are more than numbers).)contract"},
+    {"throw_if_interrupted", R"contract(Throws Interrupted when an interrupt is requested (and leaves the request set, so that every
+loop on the way out stops too).)contract"},
     {"tracking_error", R"contract(q_e = q - q_d (n numbers) with the component heading_index (if >= 0) wrapped to (-pi, pi].
 q_e may alias q or q_d.)contract"},
     {"validate_model", R"contract(The check of a model where it enters the library (the Trajectory constructor,

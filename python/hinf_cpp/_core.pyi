@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -5864,6 +5864,11 @@ def check_model_structure(structure: ModelStructure) -> None:
     index -1 or in [0, n), noise channels distinct and in [0, nw), and not both constant and
     state-dependent input matrices. InputError naming the first fault.
     """
+def clear_interrupt() -> None:
+    """
+    Withdraws a request (a computation's front end does, before it starts, for one that was
+    already answered).
+    """
 def code_trusted_by_environment() -> bool:
     """
     The environment's answer to "may files run code": HINF_TRUST_CODE = 1 yes, unset, empty or 0
@@ -6131,6 +6136,10 @@ def grde_escape_time(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.Ar
     >>> round(hc.grde_escape_time(trajectory, np.eye(6), np.eye(6), 1.0), 2)     # gamma < gamma* = 1.33
     7.56
     """
+def interrupt_requested() -> bool:
+    """
+    Whether an interrupt is requested.
+    """
 def l2_norm(t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], series: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> float:
     """
     sqrt of the trapezoid integral of the squared row norms of series over times t.
@@ -6235,6 +6244,19 @@ def parse_signal_toml(text: str, key: str, source: str) -> Signal:
     """
     A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
     scenario), e.g. "kappa = { offset = 1.0 }".
+    """
+def request_interrupt() -> None:
+    """
+    Requests that the running computations stop at their next step (as Ctrl-C does); safe in a
+    signal handler.
+    
+    Ctrl-C for long computations. A process-wide request that a signal handler may set (a
+    lock-free atomic store: async-signal-safe) and that every integrator reads after each step:
+    a request ends the computation with Interrupted within one step. hinf-sim installs a SIGINT
+    handler that sets it; the Python module chains one before Python's own, so that a Ctrl-C
+    stops a C++ call that runs without the GIL and Python then raises KeyboardInterrupt.
+    
+    A computation that it stops raises KeyboardInterrupt.
     """
 def results_csv(result: RunResult) -> str:
     """

@@ -21,7 +21,8 @@ code to run (a [model] of kind "casadi" or "python") is refused before anything 
 
 Exit status: 0 success, 2 bad input (bad options, unusable output paths, a full disk and runs
 too large for the memory included), 3 numerical failure (solver, conjugate point, coupling
-condition), 1 a bug. Errors are one line on stderr, with nothing before them. Every output
+condition), 130 interrupted (Ctrl-C stops a computation at its next step: "interrupted"), 1 a
+bug, and for `study` a study whose runs all failed. Errors are one line on stderr, with nothing before them. Every output
 path is checked before the computation starts, and every file is written whole or not at
 all. The longer commands show a live progress line on stderr when it is a terminal (off with
 --quiet).

@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "hinf/core/errors.hpp"
+#include "hinf/core/interrupt.hpp"
 #include "hinf/core/types.hpp"
 #include "hinf/numerics/cvode.hpp"
 #include "hinf/numerics/dopri5.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
+#include "hinf/numerics/stepper.hpp"
 #include "references.hpp"
 #include "tolerances.hpp"
 
@@ -305,6 +307,32 @@ DopriRun run_dopri(const LinearProblem& prob, double t0, double t1, double rtol,
   EXPECT_NEAR(t_prev, t1, hinf_test::kRoundoff * std::max(1.0, std::abs(t1)));  // sum of the steps
   run.y_end = y;
   return run;
+}
+
+// Ctrl-C (core/interrupt.hpp): every method stops after the step in progress, before the caller
+// sees another piece, and a cleared request lets the same integration run to its end.
+TEST(Interrupt, AnIntegrationStopsWithinOneStepAndRunsAgainOnceCleared) {
+  for (const hinf::Method method : {hinf::Method::ERK, hinf::Method::BDF, hinf::Method::Adams, hinf::Method::Auto}) {
+    hinf::SolverOptions options;
+    options.method = method;
+    const auto decay = [](double, const double* y, double* dy) { dy[0] = -y[0]; };
+    long pieces = 0;
+    const auto count = [&](const hinf::DensePiece&) {
+      ++pieces;
+      return hinf::StepAction::Continue;
+    };
+    double y = 1.0;
+    hinf::request_interrupt();
+    EXPECT_THROW(hinf::integrate(options, 1, decay, {}, 0.0, 10.0, &y, count), hinf::Interrupted)
+        << hinf::to_string(method);
+    EXPECT_EQ(pieces, 0) << hinf::to_string(method);
+    EXPECT_TRUE(hinf::interrupt_requested());  // left set: every loop on the way out stops too
+    hinf::clear_interrupt();
+    y = 1.0;
+    hinf::integrate(options, 1, decay, {}, 0.0, 10.0, &y, count);
+    EXPECT_GT(pieces, 1) << hinf::to_string(method);
+    EXPECT_NEAR(y, std::exp(-10.0), 1e-5) << hinf::to_string(method);  // the default tolerances
+  }
 }
 
 TEST(Dopri5, ForwardAndBackwardAgainstExactSolutions) {

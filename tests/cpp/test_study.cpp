@@ -22,6 +22,7 @@
 
 #include "hinf/control/metrics.hpp"
 #include "hinf/core/errors.hpp"
+#include "hinf/core/interrupt.hpp"
 #include "hinf/io/scenario_file.hpp"
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"
@@ -89,6 +90,19 @@ std::vector<Scenario> mixed_batch() {
   lqr_other_gamma.gamma = 3.0;  // the lqr design is at inf whatever gamma says
   runs.push_back(lqr_other_gamma);
   return runs;
+}
+
+// Ctrl-C stops a batch: Interrupted from the call, not rows of failed runs.
+TEST(Study, AnInterruptStopsTheBatchInsteadOfFailingItsRuns) {
+  const std::vector<Scenario> scenarios(4, paper(1));
+  for (int threads : {1, 2}) {
+    hinf::StudyOptions options;
+    options.threads = threads;
+    hinf::request_interrupt();
+    EXPECT_THROW(hinf::run_scenarios(scenarios, options), hinf::Interrupted) << threads;
+    hinf::clear_interrupt();
+  }
+  EXPECT_EQ(hinf::run_scenarios(scenarios).size(), 4u);
 }
 
 TEST(Study, RowsAreRunScenarioExactlyForAnyThreadsAndSharing) {

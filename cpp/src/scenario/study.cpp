@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "hinf/core/errors.hpp"
+#include "hinf/core/interrupt.hpp"
 #include "scenario/scenario_run.hpp"
 
 namespace hinf {
@@ -135,6 +136,7 @@ std::vector<StudyRun> run_scenarios(const std::vector<Scenario>& scenarios, cons
   std::atomic<std::size_t> done{0};
   std::size_t reported = std::numeric_limits<std::size_t>::max();
   const auto poll = [&] {
+    throw_if_interrupted();  // the runs in flight stop at their next step (their rows are dropped)
     const std::size_t now = done.load();
     if (now == reported || !progress) return;
     reported = now;

@@ -1032,6 +1032,11 @@ def _solve(ca, F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoi
     try:
         solution = opti.solve()
     except RuntimeError:  # Opti raises when IPOPT does not succeed; its stats say why
+        if _core.interrupt_requested():
+            # Ctrl-C: CasADi takes Python's KeyboardInterrupt and stops IPOPT with an exception
+            # of its own; the request the core's SIGINT handler recorded says it was the user.
+            _core.clear_interrupt()
+            raise KeyboardInterrupt from None
         stats = opti.stats()
         raise PlanningError(f"the planner's optimizer (IPOPT) stopped without a solution: "
                             f"{stats.get('return_status', 'unknown status')} after {stats.get('iter_count', 0)} "

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hinf/core/errors.hpp"
+#include "hinf/core/interrupt.hpp"
 #include "hinf/numerics/dense_piece.hpp"
 
 namespace hinf {
@@ -95,6 +96,7 @@ class Dopri5 {
         ++stats_.steps;
         update_stiffness(hs);
         const DensePiece piece{t_start, t, 4, dim_, dense_.data()};
+        throw_if_interrupted();  // Ctrl-C ends every integration within one step
         bool stop = false;
         if constexpr (std::is_void_v<decltype(on_step(piece))>) on_step(piece);
         else stop = on_step(piece) == StepAction::Stop;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <type_traits>
 
+#include "hinf/core/interrupt.hpp"
 #include "hinf/numerics/cvode.hpp"
 #include "hinf/numerics/dopri5.hpp"
 #include "hinf/numerics/solver_options.hpp"
@@ -26,6 +27,7 @@ StepStats integrate_cvode(Method method, const SolverOptions& options, int dim, 
   const double direction = t1 > t0 ? 1.0 : -1.0;
   for (double t = t0; (t1 - t) * direction > 0.0;) {
     t = solver.step(y);
+    throw_if_interrupted();  // Ctrl-C ends every integration within one step
     if (on_step(solver.last_step_piece()) == StepAction::Stop) break;
   }
   StepStats stats;
