@@ -200,6 +200,7 @@ def test_a_waypoint_far_out_of_reach_is_refused_before_optimizing(waypoints, ind
     assert caught.value.miss * options.tolerance > 100.0
 
 
+@pytest.mark.ipopt
 def test_unbounded_inputs_reach_anywhere():
     """No input bound, no top speed: nothing is refused before optimizing (a budget of 1
     iteration ends the solve)."""
@@ -295,6 +296,7 @@ def test_the_plan_cache_folder_is_private_whatever_the_umask(good_entry, tmp_pat
     assert stat.S_IMODE(entry.stat().st_mode) & 0o022 == 0
 
 
+@pytest.mark.ipopt  # good_entry plans
 def test_a_plan_cache_folder_others_can_write_is_refused(good_entry, tmp_path):
     """Refused before anything is read from it (its entry is good: a cache hit otherwise)."""
     folder = tmp_path / "plans"
@@ -306,6 +308,7 @@ def test_a_plan_cache_folder_others_can_write_is_refused(good_entry, tmp_path):
         cached_plan(folder)
 
 
+@pytest.mark.ipopt  # good_entry plans
 @pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0, reason="chown to another user needs root")
 def test_a_plan_cache_folder_of_another_user_is_refused(good_entry, tmp_path):
     folder = tmp_path / "plans"
