@@ -35,6 +35,8 @@ void bind_io(py::module_& m) {
   m.def("code_trusted_by_environment", &code_trusted_by_environment, doc({"code_trusted_by_environment"}).c_str());
   m.def("needs_planning_toml", &needs_planning_toml, py::arg("text"), py::arg("source"),
         doc({"needs_planning_toml"}).c_str());
+  m.def("check_scenario_toml", &check_scenario_toml, py::arg("text"), py::arg("source"),
+        doc({"check_scenario_toml"}).c_str());
   m.def("parse_model_toml", &parse_model_toml, py::arg("text"), py::arg("source"), py::arg("allow_code") = false,
         doc({"parse_model_toml"}).c_str());
   m.def("scenario_toml", &scenario_toml, py::arg("scenario"), doc({"scenario_toml", "io/scenario_file.hpp"}, R"(

@@ -665,6 +665,9 @@ none: the continuous loop)contract"},
     {"Scenario::t0", R"contract([horizon] t0 (s))contract"},
     {"Scenario::tf", R"contract([horizon] tf (s), > t0)contract"},
     {"Scenario::validate", R"contract(Throws InputError naming the first problem found. Call on a resolved scenario.)contract"},
+    {"Scenario::validate_settings", R"contract(The checks of validate() that need no model (the horizon, gamma, kappa, the solver and output
+settings, the scalars of [measurement] and [sampling]): what the reader checks before it loads
+a model that is a program.)contract"},
     {"Scenario::worst_case", R"contract(adds the worst-case disturbance gamma^-2 D' Z q_e of paper
 eq. (16) (Z of the H-infinity design at gamma, whatever the
 law) to the disturbance signals)contract"},
@@ -902,6 +905,11 @@ channels, heading index and position indices, and as many measured outputs (rows
 or no measurement when the model has none. Messages name [plant].)contract"},
     {"check_plant_sizes", R"contract(InputError unless the plant has the design model's n, m, nw and heading index (nothing to
 check when they are the same object). Scenario files check more (check_plant, scenario.hpp).)contract"},
+    {"check_scenario_toml", R"contract(Every check that needs no model, with nothing loaded or run whatever the model's kind: the
+reader's keys, types and values, and Scenario::validate_settings (trust aside). The sizes a
+model sets (the length of q0, the inputs u1..um, the channels w1..wnw) are not checked.
+InputError naming the source, as parse_scenario_toml. parse_scenario_toml runs these checks
+first when a model section's kind is a program.)contract"},
     {"check_structure", R"contract(check_dimensions, and: n state names, position indices distinct and in [0, n), heading
 index -1 or in [0, n), noise channels distinct and in [0, nw), and not both constant and
 state-dependent input matrices. InputError naming the first fault.)contract"},
@@ -1429,7 +1437,10 @@ the file's stem.
 Trust: a file is data. A model section whose kind loads or runs a program (kind = "casadi"
 loads the compiled library its model.json names; kind = "python" imports and calls Python
 code) is read only with allow_code; otherwise it is an InputError naming the key and how to
-allow it (hinf-sim and hinf-cpp --trust-code, trust_code=True in Python, HINF_TRUST_CODE=1).)contract"},
+allow it (hinf-sim and hinf-cpp --trust-code, trust_code=True in Python, HINF_TRUST_CODE=1).
+
+A model section whose kind is a program is loaded only after every other check of the file
+has passed (the sizes that the model sets are checked after it, as they must be).)contract"},
     {"parse_signal_toml", R"contract(A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
 scenario), e.g. "kappa = { offset = 1.0 }".)contract"},
     {"physical_memory_bytes", R"contract(Bytes of physical memory of this machine (0 if unknown).)contract"},

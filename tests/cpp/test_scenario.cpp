@@ -27,6 +27,7 @@
 #include "hinf/core/errors.hpp"
 #include "hinf/io/files.hpp"
 #include "hinf/io/results.hpp"
+#include "hinf/io/model_kinds.hpp"
 #include "hinf/io/scenario_file.hpp"
 #include "hinf/models/model.hpp"
 #include "hinf/models/ship.hpp"
@@ -400,6 +401,50 @@ TEST(ScenarioReader, CodeInAFileIsReadOnlyWhenAllowed) {
   // [plant] is a model section too.
   const std::string plant = error_of(kMinimal + "\n[plant]\nkind = \"casadi\"\nfile = \"m.json\"\n");
   EXPECT_NE(plant.find("[plant] file: kind = \"casadi\" loads and runs a program"), std::string::npos) << plant;
+}
+
+// With code allowed, a model that is a program is loaded only after every check that needs no
+// model: a file wrong anywhere else runs nothing.
+TEST(ScenarioReader, NothingRunsBeforeTheRestOfTheFileIsChecked) {
+  int runs = 0;
+  hinf::set_python_model_hook([&runs](const std::string&, const std::string&) -> hinf::ModelPtr {
+    ++runs;
+    return std::make_shared<hinf::ShipModel>();
+  });
+  std::string python = kMinimal;
+  python.replace(python.find("kind = \"ship\""), 13, "kind = \"python\"\ncallable = \"model.py:make\"");
+  const std::vector<std::pair<std::string, std::string>> edits{
+      {"gamma = 5.0", "gamma = -1.0"},
+      {"gamma = 5.0", "gamma = 5.0\nkapa = 1.0"},
+      {"tf = 10.0", "tf = -1.0"},
+      {"u1 = { offset = 1.0 }", "u1 = { offset = \"fast\" }"},
+      {"u1 = { offset = 1.0 }", "u1 = { offset = 1.0 }\nspeed = 2.0"},
+      {"q0 = [1.0, 0.0, 0.0, 0.0, 0.5, 0.0]", "q0 = [1.0, \"x\"]"},
+      {"gamma = 5.0", "gamma = 5.0\nQ = [[1.0, 2.0], [3.0]]"},
+      {"gamma = 5.0", "gamma = 5.0\n[sampling]\nperiod = 20.0"},
+      {"gamma = 5.0", "gamma = 5.0\n[measurement]\nsigma = -0.5"},
+      {"gamma = 5.0", "gamma = 5.0\n[disturbance]\nw1 = 0.1\nv1 = 0.2"},
+      {"gamma = 5.0", "gamma = 5.0\n[plant]\nkind = \"ship\"\nm11 = \"heavy\""},
+  };
+  for (const auto& [from, to] : edits) {
+    std::string text = python;
+    text.replace(text.find(from), from.size(), to);
+    EXPECT_THROW(hinf::parse_scenario_toml(text, "tests/my_case.toml", true), hinf::InputError) << to;
+    EXPECT_THROW(hinf::check_scenario_toml(text, "tests/my_case.toml"), hinf::InputError) << to;
+    EXPECT_EQ(runs, 0) << "the model ran before the file was checked: " << to;
+  }
+  // A valid file runs the program once; the sizes the model sets are checked after it.
+  hinf::check_scenario_toml(python, "tests/my_case.toml");
+  EXPECT_EQ(runs, 0);
+  const Scenario s = hinf::parse_scenario_toml(python, "tests/my_case.toml", true);
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(s.desired_u.dim(), 2);
+  std::string short_q0 = python;
+  short_q0.replace(short_q0.find("q0 = [1.0, 0.0, 0.0, 0.0, 0.5, 0.0]"), 35, "q0 = [1.0, 0.0]");
+  hinf::check_scenario_toml(short_q0, "tests/my_case.toml");  // no model: no size to check
+  EXPECT_THROW(hinf::parse_scenario_toml(short_q0, "tests/my_case.toml", true), hinf::InputError);
+  EXPECT_EQ(runs, 2);
+  hinf::set_python_model_hook({});
 }
 
 TEST(ScenarioReader, TrustFromTheEnvironment) {

@@ -78,6 +78,34 @@ def test_a_python_model_is_not_run_without_trust(tmp_path):
     assert "HINF_TRUST_CODE" not in os.environ  # the flag did not leak out of the command
 
 
+@pytest.mark.parametrize("edit", [
+    ("gamma = 5.0", "gamma = -1.0"),                       # a value
+    ("[horizon]", "[horizon]\nt_final = 3.0"),              # an unknown key
+    ("[initial]", "[sampling]\nperiod = 0.1\ndelay = 0.5\n\n[initial]"),  # a setting of another section
+])
+def test_with_trust_a_file_wrong_elsewhere_runs_nothing(tmp_path, edit):
+    marker = tmp_path / "ran"
+    planting_model(tmp_path, marker)
+    path = tmp_path / "s.toml"
+    text = with_model('kind = "python"\ncallable = "planted.py:make"')
+    assert edit[0] in text
+    path.write_text(text.replace(edit[0], edit[1], 1))
+    with pytest.raises(ValueError, match=r"s\.toml: "):
+        hc.load_scenario(path, trust_code=True)
+    done = run(BIN / "hinf-cpp", "run", path, "--trust-code", cwd=tmp_path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert not marker.exists()
+    # The planner's path too: the waypoints replace the inputs, the rest is checked first.
+    planned = text.replace(edit[0], edit[1], 1)
+    planned = re.sub(r"\[desired\]\n(q0 = .*?\n).*?\n\n",
+                     '[desired]\n\\1waypoints = [{ x = 20.0, y = 0.0, t = 20.0 }]\n\n', planned, count=1, flags=re.S)
+    assert "waypoints" in planned
+    path.write_text(planned)
+    done = run(BIN / "hinf-cpp", "plan", path, "-o", tmp_path / "p.toml", "--trust-code", cwd=tmp_path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert not marker.exists()
+
+
 def test_a_study_reads_code_only_with_trust_and_carries_the_answer(tmp_path):
     marker = tmp_path / "ran"
     planting_model(tmp_path, marker)

@@ -230,8 +230,12 @@ void set_python_model_hook(PythonModelHook hook) { python_model_hook() = std::mo
 
 namespace detail {
 
-ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where,
-                            bool allow_code) {
+namespace {
+
+// Everything about a model section that is checked without reading the model: the kind, each
+// key's kind, and trust. Returns the kind (kinds keeps it alive); every problem throws.
+const ModelKind& check_section(const toml::table& table, const std::string& source, const std::string& where,
+                               bool allow_code, std::vector<std::shared_ptr<const ModelKind>>& kinds) {
   const auto fail = [&source, &where](const std::string& key, const std::string& problem) {
     return InputError(str_cat(source, ": ", where, " ", key, ": ", problem));
   };
@@ -239,7 +243,7 @@ ModelPtr read_model_section(const toml::table& table, const std::string& source,
   if (node == nullptr) throw fail("kind", "is required");
   if (node->as_string() == nullptr) throw fail("kind", "expected a string, got " + type_name(*node));
   const std::string name = node->as_string()->get();
-  const std::vector<std::shared_ptr<const ModelKind>> kinds = registered_kinds();
+  kinds = registered_kinds();
   const ModelKind* kind = nullptr;
   std::string names;
   for (const auto& k : kinds) {
@@ -268,8 +272,35 @@ ModelPtr read_model_section(const toml::table& table, const std::string& source,
                                          "file, pass --trust-code (hinf-sim, hinf-cpp), trust_code=True (Python) or "
                                          "set HINF_TRUST_CODE=1"));
   }
-  ModelPtr model = kind->read(section);
-  if (model == nullptr) section.fail_section(str_cat("kind = \"", name, "\" made no model"));
+  return *kind;
+}
+
+}  // namespace
+
+bool section_runs_code(const toml::table& table) {
+  const toml::node* node = table.get("kind");
+  if (node == nullptr || node->as_string() == nullptr) return false;
+  for (const auto& kind : registered_kinds())
+    if (kind->name == node->as_string()->get()) return !kind->code_key.empty();
+  return false;
+}
+
+void check_model_section(const toml::table& table, const std::string& source, const std::string& where,
+                         bool allow_code) {
+  std::vector<std::shared_ptr<const ModelKind>> kinds;
+  check_section(table, source, where, allow_code, kinds);
+}
+
+ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where,
+                            bool allow_code) {
+  std::vector<std::shared_ptr<const ModelKind>> kinds;  // keeps the kind alive while it reads
+  const ModelKind& kind = check_section(table, source, where, allow_code, kinds);
+  std::vector<std::string> known{"kind"};
+  known.insert(known.end(), kind.keys.begin(), kind.keys.end());
+  TableReader reader(table, where, source, known);
+  const SectionReader section(reader, source, where);
+  ModelPtr model = kind.read(section);
+  if (model == nullptr) section.fail_section(str_cat("kind = \"", kind.name, "\" made no model"));
   return model;
 }
 

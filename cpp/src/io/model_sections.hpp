@@ -16,6 +16,13 @@ namespace hinf::detail {
 ModelPtr read_model_section(const toml::table& table, const std::string& source, const std::string& where,
                             bool allow_code);
 
+// The checks of read_model_section that need no model: nothing is loaded or run.
+void check_model_section(const toml::table& table, const std::string& source, const std::string& where,
+                         bool allow_code);
+// Whether the section's kind loads or runs a program (ModelKind::code_key); false for a section
+// whose kind is missing or unknown (read_model_section names that problem).
+bool section_runs_code(const toml::table& table);
+
 // The section of a model (kind and every parameter). InputError when no kind writes it (a
 // model implemented in Python, a model of a program's own that registered no kind).
 toml::table model_section(const Model& model);

@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
+#include <vector>
 #include <string>
 
 #include "hinf/core/errors.hpp"
@@ -17,15 +19,20 @@ using detail::type_name;
 
 namespace {
 
+const std::vector<std::string> kTopLevelKeys{"name",       "description", "model",   "plant",   "horizon",
+                                             "desired",    "controller",  "disturbance", "initial", "measurement",
+                                             "sampling",   "solver",      "output"};
+
 // [plant]: a model section with the keys of [model]. Its kind defaults to [model]'s; with the
 // same kind, a key not given is [model]'s (for kind = "casadi", each name of [plant.parameters]
 // not given is [model.parameters]'), so only what differs need be written; with another kind,
-// a key not given is that kind's default. Messages name [plant].
-ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const std::string& source, bool allow_code) {
+// a key not given is that kind's default. The table the plant is read from.
+toml::table plant_table(const toml::table& plant, const toml::table& model) {
   const toml::node* kind = plant.get("kind");
-  const bool same_kind = kind == nullptr || (kind->is_string() && model.get("kind")->is_string() &&
-                                             kind->as_string()->get() == model.get("kind")->as_string()->get());
-  if (!same_kind) return detail::read_model_section(plant, source, "[plant]", allow_code);
+  const toml::node* model_kind = model.get("kind");
+  const bool same_kind = kind == nullptr || (kind->is_string() && model_kind != nullptr && model_kind->is_string() &&
+                                             kind->as_string()->get() == model_kind->as_string()->get());
+  if (!same_kind) return plant;
   toml::table merged = model;
   for (auto&& [key, value] : plant) {
     toml::table* base_parameters = merged.get_as<toml::table>("parameters");
@@ -35,7 +42,20 @@ ModelPtr parse_plant(const toml::table& plant, const toml::table& model, const s
       merged.insert_or_assign(key, value);
     }
   }
-  return detail::read_model_section(merged, source, "[plant]", allow_code);
+  return merged;
+}
+
+// The keys of a table that match a prefix and a channel number (u1, u2, ...): the channels a
+// section gives when the model, and so the number of channels, is not known yet.
+std::vector<std::string> numbered_keys(const toml::table& table, const std::string& prefix) {
+  std::vector<std::string> keys;
+  for (auto&& [k, v] : table) {
+    const std::string key(k.str());
+    if (key.size() > prefix.size() && key.compare(0, prefix.size(), prefix) == 0 && key[prefix.size()] != '0' &&
+        key.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
+      keys.push_back(key);
+  }
+  return keys;
 }
 
 std::string file_stem(const std::string& path) {
@@ -44,28 +64,17 @@ std::string file_stem(const std::string& path) {
   return dot == std::string::npos ? name : name.substr(0, dot);
 }
 
-}  // namespace
-
-Scenario parse_scenario_toml(const std::string& text, const std::string& source, bool allow_code) {
-  const toml::table root = detail::parse_toml(text, source);
-  TableReader top(root, "top level", source,
-                  {"name", "description", "model", "plant", "horizon", "desired", "controller",
-                   "disturbance", "initial", "measurement", "sampling", "solver", "output"});
-  Scenario s;
-  s.name = top.string_or("name", file_stem(source));
-  s.description = top.string_or("description", "");
-
-  const toml::table& model = *section(root, "model", source, true);
-  s.model = detail::read_model_section(model, source, "[model]", allow_code);
-  const int n = s.model->n(), m = s.model->m(), nw = s.model->nw();
-  if (const toml::table* plant = section(root, "plant", source, false)) s.plant = parse_plant(*plant, model, source, allow_code);
-
+// Every section but [model] and [plant] into s, with the sizes of s.model, or (s.model null) with
+// the sizes a model sets unchecked: the pass that runs before a model that is a program is loaded.
+void read_sections(const toml::table& root, const std::string& source, Scenario& s) {
+  const bool sized = s.model != nullptr;
+  const int n = sized ? s.model->n() : -1, m = sized ? s.model->m() : -1, nw = sized ? s.model->nw() : -1;
   {
     TableReader r(*section(root, "horizon", source, true), "[horizon]", source, {"t0", "tf"});
     s.t0 = r.number_or("t0", 0.0);
     s.tf = r.number("tf");
   }
-  if (s.plant) {
+  if (s.plant && sized) {
     try {
       check_plant(*s.model, *s.plant, s.t0);
     } catch (const InputError& e) {
@@ -73,9 +82,13 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source,
     }
   }
   {
-    std::vector<std::string> known{"q0"};
-    for (int i = 1; i <= m; ++i) known.push_back(str_cat("u", i));
     const toml::table& desired = *section(root, "desired", source, true);
+    std::vector<std::string> known{"q0"};
+    if (sized) {
+      for (int i = 1; i <= m; ++i) known.push_back(str_cat("u", i));
+    } else {
+      for (const std::string& key : numbered_keys(desired, "u")) known.push_back(key);
+    }
     // Planning (docs/planning.md) is the Python package's: it replaces these keys by the planned
     // inputs before the scenario reaches this reader.
     for (const char* key : {"waypoints", "path", "plan"})
@@ -87,8 +100,8 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source,
     TableReader r(desired, "[desired]", source, known);
     s.desired_q0 = r.vector("q0", n);
     std::vector<Signal> inputs;
-    for (int i = 1; i <= m; ++i) inputs.push_back(r.signal(str_cat("u", i)));
-    s.desired_u = VectorSignal(std::move(inputs));
+    for (std::size_t i = 1; i < known.size(); ++i) inputs.push_back(r.signal(known[i]));
+    if (sized) s.desired_u = VectorSignal(std::move(inputs));
   }
   {
     TableReader r(*section(root, "controller", source, true), "[controller]", source,
@@ -110,16 +123,20 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source,
     if (r.has("kappa")) s.kappa = r.signal("kappa");
   }
   {
-    std::vector<Signal> channels(static_cast<std::size_t>(nw));
+    std::vector<Signal> channels(static_cast<std::size_t>(std::max(nw, 0)));
     if (const toml::table* table = section(root, "disturbance", source, false)) {
-      std::vector<std::string> known;
+      std::vector<std::string> known = sized ? std::vector<std::string>{} : numbered_keys(*table, "w");
       for (int i = 1; i <= nw; ++i) known.push_back(str_cat("w", i));
       known.push_back("worst_case");
       TableReader r(*table, "[disturbance]", source, known);
+      if (!sized) {
+        for (const std::string& key : known)
+          if (key != "worst_case") r.signal(key);
+      }
       // The noise channels carry the measurement noise of [measurement]: a signal there would
       // count in the disturbance's energy without moving the vehicle, and output feedback
       // would overwrite it with the noise.
-      for (int channel : s.model->noise_channels()) {
+      for (int channel : sized ? s.model->noise_channels() : std::vector<int>{}) {
         const std::string key = str_cat("w", channel + 1);
         if (r.has(key))
           r.fail(key, str_cat("is a measurement-noise channel of the ", s.model->name(),
@@ -198,7 +215,53 @@ Scenario parse_scenario_toml(const std::string& text, const std::string& source,
     TableReader r(*table, "[output]", source, {"dt"});
     s.output_dt = r.number_or("dt", s.output_dt);
   }
+}
+
+// Every section read and every setting checked without a model.
+void check_unsized(const toml::table& root, const std::string& source) {
+  Scenario unsized;
+  read_sections(root, source, unsized);
+  try {
+    unsized.validate_settings();
+  } catch (const InputError& e) {
+    throw InputError(str_cat(source, ": ", e.what()));
+  }
+}
+
+}  // namespace
+
+Scenario parse_scenario_toml(const std::string& text, const std::string& source, bool allow_code) {
+  const toml::table root = detail::parse_toml(text, source);
+  TableReader top(root, "top level", source, kTopLevelKeys);
+  Scenario s;
+  s.name = top.string_or("name", file_stem(source));
+  s.description = top.string_or("description", "");
+  const toml::table& model = *section(root, "model", source, true);
+  const toml::table* plant_given = section(root, "plant", source, false);
+  const std::optional<toml::table> plant =
+      plant_given == nullptr ? std::nullopt : std::optional<toml::table>(plant_table(*plant_given, model));
+  // A model that is a program runs only after everything else in the file has been checked.
+  if (detail::section_runs_code(model) || (plant && detail::section_runs_code(*plant))) {
+    detail::check_model_section(model, source, "[model]", allow_code);
+    if (plant) detail::check_model_section(*plant, source, "[plant]", allow_code);
+    check_unsized(root, source);
+  }
+  s.model = detail::read_model_section(model, source, "[model]", allow_code);
+  if (plant) s.plant = detail::read_model_section(*plant, source, "[plant]", allow_code);
+  read_sections(root, source, s);
   return s;
+}
+
+void check_scenario_toml(const std::string& text, const std::string& source) {
+  const toml::table root = detail::parse_toml(text, source);
+  TableReader top(root, "top level", source, kTopLevelKeys);
+  top.string_or("name", "");
+  top.string_or("description", "");
+  const toml::table& model = *section(root, "model", source, true);
+  detail::check_model_section(model, source, "[model]", true);
+  if (const toml::table* plant = section(root, "plant", source, false))
+    detail::check_model_section(plant_table(*plant, model), source, "[plant]", true);
+  check_unsized(root, source);
 }
 
 bool needs_planning_toml(const std::string& text, const std::string& source) {

@@ -133,15 +133,17 @@ class TableReader {
   Mat matrix(const std::string& key, int rows, int cols, bool allow_scalar) {
     const toml::node* node = get(key);
     if (node == nullptr) fail(key, "is required");
+    // rows = cols = -1: a square matrix of any size (its size is checked once the model is known).
     if (allow_scalar && (node->is_integer() || node->is_floating_point())) {
       require(rows == cols, "internal: scalar weight for a non-square matrix");
-      return as_number(*node, key) * Mat::Identity(rows, cols);
+      return as_number(*node, key) * Mat::Identity(std::max(rows, 1), std::max(cols, 1));
     }
     const toml::array* array = node->as_array();
-    const std::string expected = str_cat(allow_scalar ? "a number or " : "", "a ", rows, " x ",
-                                         cols, " nested list");
+    const std::string expected = str_cat(allow_scalar ? "a number or " : "", rows < 0 ? std::string("a square") :
+                                         str_cat("a ", rows, " x ", cols), " nested list");
     if (array == nullptr) fail(key, "expected " + expected + ", got " + type_name(*node));
     if (array->empty()) fail(key, "expected " + expected + ", got an empty array");
+    if (rows < 0) rows = cols = static_cast<int>(array->size());
     if (static_cast<int>(array->size()) != rows)
       fail(key, str_cat("expected ", expected, ", got ", array->size(), " rows"));
     Mat M(rows, cols);

@@ -93,45 +93,15 @@ void check_plant(const Model& model, const Model& plant, double t0) {
   same("measured outputs (rows of C; -1: none)", measured_outputs(model, t0), measured_outputs(plant, t0));
 }
 
-void Scenario::validate() const {
-  require(model != nullptr, "the scenario has no model");
+void Scenario::validate_settings() const {
   check_horizon(t0, tf);
-  check_structure(structure_of(*model));
-  const int n = model->n(), m = model->m(), nw = model->nw();
-  check_size(desired_q0, n, "[desired] q0");
-  validate_model(*model, t0, desired_q0);
-  if (plant) {
-    check_plant(*model, *plant, t0);
-    try {
-      validate_model(*plant, t0, desired_q0);
-    } catch (const InputError& e) {
-      throw InputError(str_cat("[plant] ", e.what()));
-    }
-  }
-  require(desired_u.dim() == m, "[desired] needs ", m, " input signals (u1..u", m, "), got ",
-          desired_u.dim());
   require(!std::isnan(gamma) && gamma > 0.0, "[controller] gamma must be > 0 (or inf), got ", gamma);
-  check_symmetric_weight(Q, n, "Q", false);
-  check_symmetric_weight(Qf, n, "Qf", true);
-  require(disturbance.dim() == nw, "[disturbance] has ", disturbance.dim(), " channels, the model has ", nw);
-  // The measurement-noise channels carry the noise of [measurement], nothing else.
-  for (int c : model->noise_channels()) {
-    const bool zero = disturbance.is_function()
-                          ? disturbance(t0)[c] == 0.0 && disturbance(0.5 * (t0 + tf))[c] == 0.0
-                          : disturbance.channels()[static_cast<std::size_t>(c)].is_constant() &&
-                                disturbance.channels()[static_cast<std::size_t>(c)].offset() == 0.0;
-    require(zero, "[disturbance] w", c + 1, " is a measurement-noise channel of the model '", model->name(),
-            "': its noise is set in [measurement] (sigma), not as a disturbance");
-  }
-  check_size(initial_q0, n, "[initial] q0");
   simulation_options().validate();
   const auto [kappa_min, kappa_min_t] = kappa.minimum(t0, tf);
   require(std::isfinite(kappa_min) && kappa_min > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(",
           kappa_min_t, ") = ", kappa_min);
   check_output_grid(t0, tf, output_dt);  // dt, without allocating the grid
   if (law == Law::Cascade) {
-    require(dynamic_cast<const ShipModel*>(model.get()) != nullptr,
-            "[controller] law = \"cascade\" is written for the ship model; the model is '", model->name(), "'");
     for (double g : {cascade.k, cascade.k1, cascade.k2})
       require(std::isfinite(g) && g > 0.0, "[controller] cascade gains k, k1, k2 must be > 0, got (", cascade.k,
               ", ", cascade.k1, ", ", cascade.k2, ")");
@@ -140,21 +110,10 @@ void Scenario::validate() const {
           "[disturbance] worst_case needs a finite gamma: the worst-case disturbance gamma^-2 D' Z q_e is 0 at inf");
   if (measurement) {
     const MeasurementSpec& ms = *measurement;
-    const int p = static_cast<int>(model->C(t0).rows());
     require(std::isfinite(ms.sigma) && ms.sigma >= 0.0, "[measurement] sigma must be >= 0, got ", ms.sigma);
-    require(ms.N.size() > 0, "[measurement] N must be given when sigma = 0 (the default N is sigma^2 I)");
     require(std::isfinite(ms.sample_period) && ms.sample_period > 0.0,
             "[measurement] sample_period must be > 0, got ", ms.sample_period);
-    check_symmetric_weight(ms.N, p, "[measurement] N", true);
     require(std::isfinite(ms.eta) && ms.eta > 0.0, "[measurement] eta must be > 0 (paper §4), got ", ms.eta);
-    check_symmetric_weight(ms.Q0, n, "[measurement] Q0", false);
-    const Mat shifted = ms.Q0 - ms.eta * Mat::Identity(n, n);
-    Eigen::SelfAdjointEigenSolver<Mat> eig(0.5 * (shifted + shifted.transpose()), Eigen::EigenvaluesOnly);
-    require(eig.eigenvalues()(0) > 0.0,
-            "[measurement] Q0 - eta I must be positive definite (Sigma(t0) = (Q0 - eta I)^-1): its smallest"
-            " eigenvalue is ", eig.eigenvalues()(0), "; increase Q0 or decrease eta");
-    require(static_cast<int>(model->noise_channels().size()) == p, "the model '", model->name(),
-            "' has no noise channel for each of its ", p, " measured outputs");
   }
   if (sampling) {
     const SamplingSpec& sp = *sampling;
@@ -163,11 +122,6 @@ void Scenario::validate() const {
     require(std::isfinite(sp.delay) && sp.delay >= 0.0 && sp.delay <= sp.period * (1.0 + 1e-12),
             "[sampling] delay must be in [0, period] = [0, ", sp.period, "] s, got ", sp.delay);
     require(!std::isnan(sp.max_age) && sp.max_age > 0.0, "[sampling] max_age must be > 0 s, got ", sp.max_age);
-    try {
-      sp.limits.validate(m);
-    } catch (const InputError& e) {
-      throw InputError(str_cat("[sampling] ", e.what()));
-    }
     if (sp.measurement_period != 0.0) {
       require(std::isfinite(sp.measurement_period) && sp.measurement_period <= tf - t0,
               "[sampling] measurement_period must be at most the horizon tf - t0 = ", tf - t0, " s, got ",
@@ -182,6 +136,62 @@ void Scenario::validate() const {
     require(sp.design == SampledDesign::Emulated || (kappa.is_constant() && kappa.offset() == 1.0),
             "[controller] kappa scales the continuous law's gain; the digital design ([sampling] design ="
             " \"digital\") has its own gains: remove kappa or use design = \"emulated\"");
+  }
+}
+
+void Scenario::validate() const {
+  require(model != nullptr, "the scenario has no model");
+  validate_settings();
+  check_structure(structure_of(*model));
+  const int n = model->n(), m = model->m(), nw = model->nw();
+  check_size(desired_q0, n, "[desired] q0");
+  validate_model(*model, t0, desired_q0);
+  if (plant) {
+    check_plant(*model, *plant, t0);
+    try {
+      validate_model(*plant, t0, desired_q0);
+    } catch (const InputError& e) {
+      throw InputError(str_cat("[plant] ", e.what()));
+    }
+  }
+  require(desired_u.dim() == m, "[desired] needs ", m, " input signals (u1..u", m, "), got ",
+          desired_u.dim());
+  check_symmetric_weight(Q, n, "Q", false);
+  check_symmetric_weight(Qf, n, "Qf", true);
+  require(disturbance.dim() == nw, "[disturbance] has ", disturbance.dim(), " channels, the model has ", nw);
+  // The measurement-noise channels carry the noise of [measurement], nothing else.
+  for (int c : model->noise_channels()) {
+    const bool zero = disturbance.is_function()
+                          ? disturbance(t0)[c] == 0.0 && disturbance(0.5 * (t0 + tf))[c] == 0.0
+                          : disturbance.channels()[static_cast<std::size_t>(c)].is_constant() &&
+                                disturbance.channels()[static_cast<std::size_t>(c)].offset() == 0.0;
+    require(zero, "[disturbance] w", c + 1, " is a measurement-noise channel of the model '", model->name(),
+            "': its noise is set in [measurement] (sigma), not as a disturbance");
+  }
+  check_size(initial_q0, n, "[initial] q0");
+  if (law == Law::Cascade)
+    require(dynamic_cast<const ShipModel*>(model.get()) != nullptr,
+            "[controller] law = \"cascade\" is written for the ship model; the model is '", model->name(), "'");
+  if (measurement) {
+    const MeasurementSpec& ms = *measurement;
+    const int p = static_cast<int>(model->C(t0).rows());
+    require(ms.N.size() > 0, "[measurement] N must be given when sigma = 0 (the default N is sigma^2 I)");
+    check_symmetric_weight(ms.N, p, "[measurement] N", true);
+    check_symmetric_weight(ms.Q0, n, "[measurement] Q0", false);
+    const Mat shifted = ms.Q0 - ms.eta * Mat::Identity(n, n);
+    Eigen::SelfAdjointEigenSolver<Mat> eig(0.5 * (shifted + shifted.transpose()), Eigen::EigenvaluesOnly);
+    require(eig.eigenvalues()(0) > 0.0,
+            "[measurement] Q0 - eta I must be positive definite (Sigma(t0) = (Q0 - eta I)^-1): its smallest"
+            " eigenvalue is ", eig.eigenvalues()(0), "; increase Q0 or decrease eta");
+    require(static_cast<int>(model->noise_channels().size()) == p, "the model '", model->name(),
+            "' has no noise channel for each of its ", p, " measured outputs");
+  }
+  if (sampling) {
+    try {
+      sampling->limits.validate(m);
+    } catch (const InputError& e) {
+      throw InputError(str_cat("[sampling] ", e.what()));
+    }
   }
 }
 

@@ -235,11 +235,13 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
         raise ValueError(f"{source}: [desired] {inputs[0]}: give the inputs or {next(iter(planning))} "
                          "(planned inputs), not both")
     allow_code = code_allowed(trust_code)
-    model = _core.parse_model_toml(toml_text({key: root[key] for key in ("model",) if key in root}, source), source,
-                                   allow_code)
-    # Everything but the inputs, checked by the C++ reader first (with zero inputs in their place).
+    # Everything but the inputs and the sizes the model sets, checked before the model (which may
+    # be a program) is loaded; then everything, with zero inputs in their place.
     skeleton = copy.deepcopy(root)
     skeleton["desired"] = {key: value for key, value in desired.items() if key not in PLANNING_KEYS}
+    _core.check_scenario_toml(toml_text(skeleton, source), source)
+    model = _core.parse_model_toml(toml_text({key: root[key] for key in ("model",) if key in root}, source), source,
+                                   allow_code)
     skeleton["desired"].update({f"u{i + 1}": 0.0 for i in range(model.m())})
     checked = _core.parse_scenario_toml(toml_text(skeleton, source), source, allow_code)
     options = _plan_options(planning.get("plan", {}), source, model.m())

@@ -26,7 +26,16 @@ namespace hinf {
 // loads the compiled library its model.json names; kind = "python" imports and calls Python
 // code) is read only with allow_code; otherwise it is an InputError naming the key and how to
 // allow it (hinf-sim and hinf-cpp --trust-code, trust_code=True in Python, HINF_TRUST_CODE=1).
+//
+// A model section whose kind is a program is loaded only after every other check of the file
+// has passed (the sizes that the model sets are checked after it, as they must be).
 Scenario parse_scenario_toml(const std::string& text, const std::string& source, bool allow_code = false);
+// Every check that needs no model, with nothing loaded or run whatever the model's kind: the
+// reader's keys, types and values, and Scenario::validate_settings (trust aside). The sizes a
+// model sets (the length of q0, the inputs u1..um, the channels w1..wnw) are not checked.
+// InputError naming the source, as parse_scenario_toml. parse_scenario_toml runs these checks
+// first when a model section's kind is a program.
+void check_scenario_toml(const std::string& text, const std::string& source);
 // Reads and parses a scenario file; a file that cannot be read (missing, a directory) is an
 // InputError naming the path.
 Scenario load_scenario_toml(const std::string& path, bool allow_code = false);

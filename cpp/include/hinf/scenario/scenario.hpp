@@ -107,6 +107,10 @@ struct Scenario {
   Scenario resolved() const;
   // Throws InputError naming the first problem found. Call on a resolved scenario.
   void validate() const;
+  // The checks of validate() that need no model (the horizon, gamma, kappa, the solver and output
+  // settings, the scalars of [measurement] and [sampling]): what the reader checks before it loads
+  // a model that is a program.
+  void validate_settings() const;
   // output_dt, divergence_factor and solver, for the closed loop.
   SimulationOptions simulation_options() const;
 };
