@@ -8,6 +8,7 @@ import json
 import pathlib
 import pickle
 import socket
+import stat
 import subprocess
 import sys
 import textwrap
@@ -223,6 +224,42 @@ def test_a_study_carries_its_casadi_model_to_workers_without_its_folder(tmp_path
     table = hs.run_study(study, client=inprocess_client, progress=False)
     pdt.assert_frame_equal(table, local, check_exact=True)
     assert len(list((tmp_path / "worker-cache").glob("hinf_model_ship-*.so"))) == 1  # compiled once, there
+
+
+def test_a_study_carries_its_python_model_file_to_workers_without_its_folder(tmp_path, monkeypatch,
+                                                                           inprocess_client):
+    """[model] kind = "python" naming FILE.py:CALLABLE, read with trust: the study carries the file's
+    text; a worker with another working folder and without the file writes it into its own cache
+    and gives the local table bit for bit. The file's text is part of the study's hash."""
+    folder = tmp_path / "project"
+    folder.mkdir()
+    (folder / "vessel.py").write_text("import hinf_cpp as hc\n\ndef make():\n    return hc.ShipModel()\n")
+    path = write_study(folder, CASADI_STUDY)
+    scenario = (folder / "fig2.toml").read_text()
+    start, end = scenario.index("[model]"), scenario.index("[horizon]")
+    (folder / "fig2.toml").write_text(scenario[:start] + '[model]\nkind = "python"\ncallable = "vessel.py:make"\n\n'
+                                      + scenario[end:])
+    monkeypatch.chdir(folder)
+    study = hs.load_study(path.name, trust_code=True)
+    assert study.model_files["model"]["text"] == (folder / "vessel.py").read_text()
+    local = hs.run_study(study, workers=1, progress=False)
+    assert (local["status"] == "completed").all(), local["reason"].tolist()
+
+    elsewhere = tmp_path / "worker"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    (folder / "vessel.py").rename(tmp_path / "moved.py")
+    monkeypatch.setenv("HINF_CPP_CACHE", str(tmp_path / "worker-cache" / "casadi"))
+    table = hs.run_study(study, client=inprocess_client, progress=False)
+    pdt.assert_frame_equal(table, local, check_exact=True)
+    written = list((tmp_path / "worker-cache" / "python_models").glob("*/vessel.py"))
+    assert len(written) == 1 and written[0].read_text() == study.model_files["model"]["text"]
+    assert stat.S_IMODE(written[0].parent.stat().st_mode) == 0o700
+
+    (tmp_path / "moved.py").write_text((tmp_path / "moved.py").read_text().replace("ShipModel()", "ShipModel() "))
+    (tmp_path / "moved.py").rename(folder / "vessel.py")
+    monkeypatch.chdir(folder)
+    assert hs.load_study(path.name, trust_code=True).content_hash() != study.content_hash()
 
 
 @pytest.mark.slow

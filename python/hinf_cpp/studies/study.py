@@ -221,11 +221,14 @@ class Study:
         Whether its scenarios may load or run code (docs/trust.md), decided when the study is
         read; it travels with the study to every worker (default False).
     model_files : dict, optional
-        What the runs need of the CasADi models the base scenario names (``[model]`` and
-        ``[plant]`` of kind ``"casadi"``, read with trust): section -> {"file": model.json's
+        What the runs need of the models the base scenario names as files (``[model]`` and
+        ``[plant]``, read with trust): section -> for kind ``"casadi"`` {"file": model.json's
         absolute path, "metadata": its text, "source": the C source beside its library, or
-        None}. A Dask worker compiles the source into its own cache and runs that model, so
-        no worker needs the model folder (default: none).
+        None}; for kind ``"python"`` naming ``FILE.py:CALLABLE`` {"kind": "python", "file":
+        its absolute path, "callable": CALLABLE, "text": the file's text}. A Dask worker
+        compiles the source, or writes the Python file, into its own cache and runs that
+        model, so no worker needs the model folder (default: none). A Python model file
+        travels alone: modules it imports from beside it must be installed on the workers.
 
     Examples
     --------
@@ -322,13 +325,29 @@ def _core_fingerprint() -> str:
 
 
 def _carry_models(base: dict, source: str) -> tuple[dict, dict]:
-    """The base document with the `file` of its [model] and [plant] of kind "casadi" made absolute
-    (relative to the scenario file's folder, as the C++ reader takes it), and what the runs need of
-    those models as content (Study.model_files): model.json's text and the C source beside its
-    library (None when there is none)."""
+    """The base document with the model files of its [model] and [plant] made absolute (relative to
+    the scenario file's folder, as the readers take them): kind "casadi"'s `file`, kind "python"'s
+    FILE.py in `callable`; and what the runs need of those models as content (Study.model_files):
+    model.json's text and the C source beside its library (None when there is none), the Python
+    file's text."""
     carried = {}
     for section in ("model", "plant"):
         table = base.get(section)
+        if isinstance(table, dict) and table.get("kind") == "python" and isinstance(table.get("callable"), str):
+            where, _, name = table["callable"].rpartition(":")
+            if not where.endswith(".py"):
+                continue  # MODULE:CALLABLE: an installed module, the same on every machine
+            file = pathlib.Path(where)
+            if not file.is_absolute() and os.path.isfile(source):
+                file = pathlib.Path(source).parent / file
+            file = pathlib.Path(os.path.abspath(file))
+            try:
+                text = file.read_text()
+            except (OSError, UnicodeDecodeError) as error:
+                raise ValueError(f"{source}: [{section}] callable: cannot read the model {file}: {error}") from None
+            carried[section] = {"kind": "python", "file": os.fspath(file), "callable": name, "text": text}
+            base = {**base, section: {**table, "callable": f"{file}:{name}"}}
+            continue
         if not (isinstance(table, dict) and table.get("kind") == "casadi" and isinstance(table.get("file"), str)):
             continue
         file = pathlib.Path(table["file"])
@@ -372,12 +391,38 @@ def _materialize_model(carried: dict) -> str:
     return os.fspath(path)
 
 
+def _materialize_python_model(carried: dict) -> str:
+    """The callable of a carried Python model file, written into this machine's cache under its
+    content's hash (a private folder: codegen.make_cache_folder) with the file's own name."""
+    from hinf_cpp.models import codegen
+
+    text = carried["text"]
+    digest = hashlib.sha256(text.encode()).hexdigest()[:32]
+    folder = codegen.default_cache_dir().parent / "python_models" / digest
+    codegen.make_cache_folder(folder, "the Python model files of studies",
+                              "set HINF_CPP_CACHE to a folder of your own")
+    path = folder / pathlib.Path(carried["file"]).name
+    if not path.is_file() or path.read_text() != text:
+        codegen._write_atomically(path, lambda temporary: temporary.write_text(text))
+    return f"{path}:{carried['callable']}"
+
+
 def _on_this_machine(study: Study) -> Study:
-    """The study with the CasADi models it carries compiled on this machine and named by their
-    absolute paths here (a Dask worker's view: its working folder and files are not the
-    client's). A model carried without C source keeps its absolute path."""
+    """The study with the models it carries on this machine: CasADi models compiled here, Python
+    model files written here, each named by its absolute path here (a Dask worker's view: its
+    working folder and files are not the client's). A CasADi model carried without C source keeps
+    its absolute path."""
     base = study.base
     for section, carried in study.model_files.items():
+        if carried.get("kind") == "python":
+            with _MATERIALIZE_LOCK:
+                try:
+                    spec = _materialize_python_model(carried)
+                except OSError as error:
+                    raise ClusterError(f"the Dask worker on {socket.gethostname()} cannot write the [{section}] "
+                                       f"model of the study ({carried['file']}) into its cache: {error}") from error
+            base = {**base, section: {**base[section], "callable": spec}}
+            continue
         if carried.get("source") is None:
             continue
         with _MATERIALIZE_LOCK:  # after the first chunk, a hash and a load of the cached library
@@ -632,7 +677,7 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
                   source=scenario_source, base=base, seed=seed, samples=samples, grid=tuple(grid),
                   random=tuple(random), chunk=chunk, definition=definition, report=report, trust_code=allow_code)
     study.scenario(0)  # a key the reader refuses, or a value it cannot take, is an error here
-    if allow_code:  # the CasADi models it names travel with it: a Dask worker needs neither path nor folder
+    if allow_code:  # the model files it names travel with it: a Dask worker needs neither path nor folder
         base, carried = _carry_models(base, scenario_source)
         study = dataclasses.replace(study, base=base, model_files=carried)
     return study
