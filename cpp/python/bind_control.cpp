@@ -401,6 +401,10 @@ Examples
 >>> limits = hc.ActuatorLimits(u_min=[-2.0, -1.0], u_max=[2.0, 1.0], rate_max=[4.0, np.inf])
 >>> limits.u_max
 array([2., 1.]))");
+  bind_enum<MeasurementUpdate>(m, "MeasurementUpdate", R"(Examples
+--------
+>>> hc.OnlineFilter().update
+<MeasurementUpdate.sampled: 1>)");
   bind_options<OnlineFilter>(m, "OnlineFilter", {"OnlineFilter"},
                              {{"N", "array_like, shape (p, p) or (0, 0)"}, {"Sigma0", "array_like, shape (n, n)"},
                               {"Q", "array_like, shape (n, n)"}},

@@ -357,6 +357,11 @@ w = [process disturbance (D.cols()), measurement noise (p)], and D is padded wit
     {"MeasurementSpec::sample_period", R"contract(noise held constant over each period (s))contract"},
     {"MeasurementSpec::seed", R"contract(seed of the noise samples (scenario_noise))contract"},
     {"MeasurementSpec::sigma", R"contract(std of the noise on each measured output)contract"},
+    {"MeasurementUpdate", R"contract(How a measurement enters the output-feedback estimator.)contract"},
+    {"MeasurementUpdate::held", R"contract(held in the innovation of (35)-(36) for `hold` seconds after its time (a continuous
+measurement, as the batch loop's held noise))contract"},
+    {"MeasurementUpdate::sampled", R"contract(once, at its time, as a jump of the estimate and Sigma (the sampled-measurement form
+of (35)-(36), see the top of this file): the command of the same step sees it)contract"},
     {"MeasurementUse", R"contract(What became of the measurement given to step(). Anything but Used: the estimate was predicted.)contract"},
     {"MeasurementUse::duplicate", R"contract(not newer than the last measurement used (the same one again, or out of order))contract"},
     {"MeasurementUse::future", R"contract(t_meas > t_now)contract"},
@@ -484,8 +489,9 @@ in (36); for noise of standard deviation sigma per sample held over the
 sensor's period T_s, the continuous filter's intensity sigma^2 T_s)contract"},
     {"OnlineFilter::Q", R"contract(n x n, symmetric positive semidefinite: the performance weight in (36))contract"},
     {"OnlineFilter::Sigma0", R"contract(n x n, symmetric positive definite: Sigma at reset(), (Q0 - eta I)^-1)contract"},
-    {"OnlineFilter::hold", R"contract(s: how long a measurement stays in the innovation after its time
-(the sensor's period); 0: the law's period)contract"},
+    {"OnlineFilter::hold", R"contract(s: the sensor's period; 0: the law's period. Held: how long a measurement
+stays in the innovation after its time; sampled: the noise covariance of
+one measurement is N / hold)contract"},
     {"OnlineFilter::validate", R"contract(InputError naming the matrix, for shapes (p measured outputs, n states) or values that do
 not fit.)contract"},
     {"OnlineOptions", R"contract(The choices of an online controller.)contract"},
@@ -631,8 +637,10 @@ every `period`, its command held, with a computation delay and actuator limits.)
     {"SamplingSpec::design", R"contract(the law it runs)contract"},
     {"SamplingSpec::limits", R"contract(u_min, u_max, rate_max (empty: none))contract"},
     {"SamplingSpec::max_age", R"contract(s: an older measurement is stale)contract"},
-    {"SamplingSpec::measurement_every", R"contract(The sensor's period in samples of T (>= 1).)contract"},
+    {"SamplingSpec::measurement_every", R"contract(estimator takes a measurement (online_controller.hpp)
+The sensor's period in samples of T (>= 1).)contract"},
     {"SamplingSpec::measurement_period", R"contract(s: the sensor's period, a multiple of T (0: T))contract"},
+    {"SamplingSpec::measurement_update", R"contract(how the output-feedback)contract"},
     {"SamplingSpec::period", R"contract(s: the controller's period T, > 0)contract"},
     {"Scenario", R"contract(A scenario: the model, the horizon, the desired trajectory, the law and its design, the
 disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
@@ -1016,12 +1024,21 @@ with A_e, B_e, D_e and Z (the design's Z(t_k), or M_k of the digital design) int
 linearly between samples: the estimator's drift is the linearization, A(q_hat) q_hat + alpha
 of (35) less its second-order remainder, so that a step needs nothing of the model but its
 tables. A measurement y taken at t_meas enters as the measured error y_e = y - C q_d(t_meas)
-(the heading's component, and the innovation's, wrapped), held from t_meas for `hold` seconds
-(the sensor's period) and until a newer one is used (the error changes slowly where the
-vehicle's position does not, so holding it costs little);
-outside that the innovation terms are off (prediction: the estimator runs open loop and Sigma
-grows). A measurement that arrives late (t_meas earlier than the last call) is used from its
-own time: the estimate is integrated again from the last measurement's time, where it is kept.
+(the heading's component, and the innovation's, wrapped), in one of two ways
+(OnlineFilter::update):
+  - sampled (the default): once, at t_meas, as the sampled-measurement form of (35)-(36):
+        Sigma+ = (Sigma^-1 + C' R^-1 C)^-1,   R = N / hold,
+        q_hat+ = q_hat + [I - gamma^-2 Sigma+ Z]^-1 Sigma+ C' R^-1 (y_e - C q_hat),
+    with R the noise covariance of one measurement (N is an intensity, hold the sensor's
+    period); between measurements the innovation terms are off. The command of the same step
+    sees the measurement. As hold -> 0 this is (35)-(36) with y held; at gamma = inf it is the
+    continuous-discrete Kalman filter.
+  - held: in the innovation terms of (35)-(36) from t_meas for `hold` seconds and until a newer
+    one is used (the error changes slowly where the vehicle's position does not, so holding it
+    costs little); the command of the same step does not see it yet.
+Without a measurement the estimator runs open loop and Sigma grows. A measurement that arrives
+late (t_meas earlier than the last call) is used from its own time: the estimate is
+integrated again from the last measurement's time, where it is kept.
 Then u = u_d(t_now) - K_k q_hat(t_now) as above. The coupling condition rho(Sigma Z) < gamma^2
 is evaluated at every step (StepReport::rho_sigma_z); where it fails the estimator's gain is
 singular: the step is still computed, flagged, and counted.)contract"},

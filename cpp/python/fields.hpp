@@ -99,7 +99,8 @@ struct Fields<ActuatorLimits> {
 template <>
 struct Fields<OnlineFilter> {
   static constexpr auto list = std::make_tuple(field("N", &OnlineFilter::N), field("Sigma0", &OnlineFilter::Sigma0),
-                                               field("Q", &OnlineFilter::Q), field("hold", &OnlineFilter::hold));
+                                               field("Q", &OnlineFilter::Q), field("hold", &OnlineFilter::hold),
+                                               field("update", &OnlineFilter::update));
 };
 template <>
 struct Fields<OnlineOptions> {
@@ -189,7 +190,8 @@ struct Fields<SamplingSpec> {
       field("period", &SamplingSpec::period), field("design", &SamplingSpec::design),
       field("delay", &SamplingSpec::delay), field("compensate_delay", &SamplingSpec::compensate_delay),
       field("limits", &SamplingSpec::limits), field("max_age", &SamplingSpec::max_age),
-      field("measurement_period", &SamplingSpec::measurement_period));
+      field("measurement_period", &SamplingSpec::measurement_period),
+      field("measurement_update", &SamplingSpec::measurement_update));
 };
 template <>
 struct Fields<StepStats> {

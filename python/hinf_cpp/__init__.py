@@ -74,6 +74,7 @@ from hinf_cpp._core import (
     Law,
     LinearModel,
     MeasurementSpec,
+    MeasurementUpdate,
     MeasurementUse,
     Method,
     MetricDefinition,
@@ -170,7 +171,7 @@ __all__ = [
     "Metrics", "MetricDefinition", "metric_table", "compute_metrics",
     # on a vehicle: the digital design and the online controller
     "SampledLinearization", "solve_discrete_game", "DiscreteDesign", "discrete_conjugate_time", "gamma_star_discrete",
-    "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse",
+    "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse", "MeasurementUpdate",
     "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
     # errors
     "HinfError", "SolverError", "ConjugatePointError", "CouplingConditionError",

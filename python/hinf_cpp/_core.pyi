@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -3980,6 +3980,66 @@ class ActuatorLimits:
     @u_min.setter
     def u_min(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> None:
         ...
+class MeasurementUpdate:
+    """
+    How a measurement enters the output-feedback estimator.
+    
+    Parameters
+    ----------
+    value : int
+        The member's number, as its repr shows it.
+    name : str
+        The member's name, one of those below.
+    
+    Attributes
+    ----------
+    held
+        held in the innovation of (35)-(36) for `hold` seconds after its time (a continuous
+        measurement, as the batch loop's held noise)
+    sampled
+        once, at its time, as a jump of the estimate and Sigma (the sampled-measurement form
+        of (35)-(36), see the top of this file): the command of the same step sees it
+    
+    Examples
+    --------
+    >>> hc.OnlineFilter().update
+    <MeasurementUpdate.sampled: 1>
+    """
+    __members__: typing.ClassVar[dict[str, MeasurementUpdate]]
+    held: typing.ClassVar[MeasurementUpdate]
+    sampled: typing.ClassVar[MeasurementUpdate]
+    def __eq__(self, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        """
+        The member of that name (ValueError listing the names for another).
+        """
+    def __int__(self) -> int:
+        ...
+    def __ne__(self, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
 class OnlineFilter:
     """
     The filter of an output-feedback controller (see the top of this file). An empty N: state
@@ -3996,8 +4056,10 @@ class OnlineFilter:
     Q : array_like, shape (n, n), optional
         n x n, symmetric positive semidefinite: the performance weight in (36)
     hold : float, default 0.0
-        s: how long a measurement stays in the innovation after its time
-        (the sensor's period); 0: the law's period
+        s: the sensor's period; 0: the law's period. Held: how long a measurement
+        stays in the innovation after its time; sampled: the noise covariance of
+        one measurement is N / hold
+    update : MeasurementUpdate or str, default 'sampled'
     
     Examples
     --------
@@ -4006,12 +4068,13 @@ class OnlineFilter:
     0.0
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('N', 'Sigma0', 'Q', 'hold')
+    __match_args__: typing.ClassVar[tuple] = ('N', 'Sigma0', 'Q', 'hold', 'update')
+    update: MeasurementUpdate
     def __eq__(self, arg0: OnlineFilter) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., hold: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., hold: typing.SupportsFloat | typing.SupportsIndex = 0.0, update: MeasurementUpdate = MeasurementUpdate.sampled) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -4046,8 +4109,9 @@ class OnlineFilter:
     @property
     def hold(self) -> float:
         """
-        s: how long a measurement stays in the innovation after its time
-        (the sensor's period); 0: the law's period
+        s: the sensor's period; 0: the law's period. Held: how long a measurement
+        stays in the innovation after its time; sampled: the noise covariance of
+        one measurement is N / hold
         """
     @hold.setter
     def hold(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
@@ -5081,6 +5145,8 @@ class SamplingSpec:
         s: an older measurement is stale
     measurement_period : float, default 0.0
         s: the sensor's period, a multiple of T (0: T)
+    measurement_update : MeasurementUpdate or str, default 'sampled'
+        how the output-feedback
     
     Notes
     -----
@@ -5097,12 +5163,12 @@ class SamplingSpec:
     (100, 0)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('period', 'design', 'delay', 'compensate_delay', 'limits', 'max_age', 'measurement_period')
+    __match_args__: typing.ClassVar[tuple] = ('period', 'design', 'delay', 'compensate_delay', 'limits', 'max_age', 'measurement_period', 'measurement_update')
     def __eq__(self, arg0: SamplingSpec) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, period: typing.SupportsFloat | typing.SupportsIndex = 0.0, design: SampledDesign | str = SampledDesign.emulated, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, compensate_delay: bool = True, limits: ActuatorLimits = ..., max_age: typing.SupportsFloat | typing.SupportsIndex = ..., measurement_period: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, period: typing.SupportsFloat | typing.SupportsIndex = 0.0, design: SampledDesign | str = SampledDesign.emulated, delay: typing.SupportsFloat | typing.SupportsIndex = 0.0, compensate_delay: bool = True, limits: ActuatorLimits = ..., max_age: typing.SupportsFloat | typing.SupportsIndex = ..., measurement_period: typing.SupportsFloat | typing.SupportsIndex = 0.0, measurement_update: MeasurementUpdate = MeasurementUpdate.sampled) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -5155,6 +5221,14 @@ class SamplingSpec:
         """
     @measurement_period.setter
     def measurement_period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def measurement_update(self) -> MeasurementUpdate:
+        """
+        how the output-feedback
+        """
+    @measurement_update.setter
+    def measurement_update(self, arg1: MeasurementUpdate) -> None:
         ...
     @property
     def period(self) -> float:

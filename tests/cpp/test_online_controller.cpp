@@ -485,9 +485,12 @@ double rms_last_half(const hinf::SimulationResult& r, const hinf::Trajectory& tr
 }
 
 TEST(OutputFeedback, StepAllocatesNothing) {
+  for (auto update : {hinf::MeasurementUpdate::Sampled, hinf::MeasurementUpdate::Held}) {
+  SCOPED_TRACE(hinf::to_string(update));
   const auto law = hinf::SampledLaw::emulated(paper().design, 0.05);
   hinf::OnlineOptions options;
   options.filter = paper_filter();
+  options.filter.update = update;
   options.limits.u_min = Vec::Constant(2, -1.5);
   options.limits.u_max = Vec::Constant(2, 1.5);
   options.limits.rate_max = Vec::Constant(2, 4.0);
@@ -521,6 +524,7 @@ TEST(OutputFeedback, StepAllocatesNothing) {
   EXPECT_GT(controller.counts().predicted, 20000);
   EXPECT_GT(late, 500);
   EXPECT_GT(controller.counts().largest_rho, 0.0);
+  }
 }
 
 TEST(OutputFeedback, TheFilterIsKalmanBucysAsGammaGoesToInfinity) {
@@ -538,6 +542,7 @@ TEST(OutputFeedback, TheFilterIsKalmanBucysAsGammaGoesToInfinity) {
   options.filter.N = m11(N);
   options.filter.Sigma0 = m11(2.0);
   options.filter.Q = m11(1.0);
+  options.filter.update = hinf::MeasurementUpdate::Held;
   hinf::OnlineController controller(law, options);
   controller.reset(0.0, m11(0.0).col(0));
   // Riccati ODE s' = -(s - s1)(s - s2) / N with roots s1,2 = N (a +- sqrt(a^2 + d^2 / N)):
@@ -554,13 +559,54 @@ TEST(OutputFeedback, TheFilterIsKalmanBucysAsGammaGoesToInfinity) {
   }
 }
 
+TEST(OutputFeedback, TheSampledUpdateIsTheContinuousDiscreteKalmanFilterAtGammaInfinity) {
+  // gamma = inf, dx/dt = a x + d w, y_k = c x(t_k) + v_k with Var v_k = R = N / hold: between
+  // measurements Sigma solves dSigma/dt = 2 a Sigma + d^2, Sigma(t) = (Sigma+ + d^2 / (2a))
+  // e^{2a(t - t_k)} - d^2 / (2a); at a measurement Sigma+ = 1 / (1 / Sigma- + c^2 / R) and
+  // x+ = x- + Sigma+ c / R (y - c x-), x- = e^{a T} x+ (u pinned at 0 by u_min = u_max = 0).
+  // RK4 steps of h <= 5 ms on rates |2a| = 1 / s: ~1e-12 relative.
+  const double a = -0.5, c = 2.0, d = 1.0, N = 0.25, T = 0.05;
+  auto model = std::make_shared<const hinf::LinearModel>(m11(a), m11(1.0), m11(d), m11(c));
+  const auto trajectory = std::make_shared<const hinf::Trajectory>(model, Vec::Zero(1), hinf::VectorSignal::zeros(1),
+                                                                    0.0, 5.0);
+  const auto law = hinf::SampledLaw::emulated(hinf::solve_grde(trajectory, m11(1.0), m11(1.0), kInf), T);
+  hinf::OnlineOptions options;
+  options.filter.N = m11(N);
+  options.filter.Sigma0 = m11(2.0);
+  options.filter.Q = m11(1.0);
+  options.limits.u_min = Vec::Zero(1);
+  options.limits.u_max = Vec::Zero(1);
+  ASSERT_EQ(options.filter.update, hinf::MeasurementUpdate::Sampled) << "the default";
+  hinf::OnlineController controller(law, options);
+  controller.reset(0.0, m11(0.3).col(0));
+  const double R = N / T;
+  double sigma = 2.0, x = 0.3, u = 0.0;
+  for (int k = 0; k < 99; ++k) {
+    const double t = T * k;
+    if (k > 0) {
+      sigma = (sigma + d * d / (2 * a)) * std::exp(2 * a * T) - d * d / (2 * a);
+      x *= std::exp(a * T);
+    }
+    const double y = std::sin(0.7 * k);
+    const double posterior = 1.0 / (1.0 / sigma + c * c / R);
+    x += posterior * c / R * (y - c * x);
+    sigma = posterior;
+    EXPECT_EQ(controller.step(t, &y, t, &u).measurement, MeasurementUse::Used);
+    EXPECT_NEAR(controller.sigma()(0, 0), sigma, 1e-9 * sigma) << "t = " << t;
+    EXPECT_NEAR(controller.estimate()[0], x, 1e-9) << "t = " << t;
+  }
+}
+
 TEST(OutputFeedback, ALateMeasurementIsUsedFromItsOwnTime) {
+  for (auto update : {hinf::MeasurementUpdate::Sampled, hinf::MeasurementUpdate::Held}) {
+  SCOPED_TRACE(hinf::to_string(update));
   // Commands pinned at 0 (u_min = u_max = 0): the estimate depends only on the measurements, so a
   // measurement of t = 0.2 handed over at 0.25 after a step at 0.22 must give the estimate of the
   // same measurement handed over on time. The integration's substeps differ: RK4, ~1e-12.
   const auto law = hinf::SampledLaw::emulated(paper().design, 0.05);
   hinf::OnlineOptions options;
   options.filter = paper_filter();
+  options.filter.update = update;
   options.limits.u_min = Vec::Zero(2);
   options.limits.u_max = Vec::Zero(2);
   hinf::OnlineController on_time(law, options), late(law, options);
@@ -584,6 +630,7 @@ TEST(OutputFeedback, ALateMeasurementIsUsedFromItsOwnTime) {
   without.step(0.1, y1.data(), 0.1, u.data());
   without.step(0.25, nullptr, 0.0, u.data());
   EXPECT_GT((without.estimate() - on_time.estimate()).norm(), 1e-3);
+  }
 }
 
 TEST(OutputFeedback, ALongOutageLosesTheEstimateAndSaysSo) {
@@ -641,46 +688,72 @@ TEST(OutputFeedback, BadFilterIsAnInputError) {
 // The paper's Figure 2 (output feedback, sigma = 0.5) sampled at T: the controller gets
 // y_k = C q(t_k) + sigma v_k, the continuous loop y(t) = C q(t) + sigma v_k on [t_k, t_k + T),
 // with the same noise samples v_k (a sensor at the controller's rate; at T = 0.01 s, the paper's).
-// At T = 0.1 s the sampled loop is measured 11% above the continuous one (0.2685 against
-// 0.2415 m), against 4% for Figure 1: besides the held command, a measurement reaches the command
-// one sample later than in the continuous loop, where it acts on the estimate, and so on u, from
-// its own time on. The bound is 15% there.
-TEST(OutputFeedback, Figure2SampledApproachesTheContinuousLoop) {
+// The continuous loop sees C q(t) between samples, the sampled one only at t_k, so at T = 0.1 s
+// the difference depends on the noise: with the sampled measurement update, over the paper's
+// seed and seven others, the RMS is 3.0% above the continuous loop's (+5.0% on the paper's seed
+// alone, -3% to +7% per seed); with the held update 8.6% over seven of them (+11% on the paper's
+// seed), because the command sees a measurement one sample later. The test takes the RMS over
+// the eight runs.
+struct Figure2Runs {
+  double continuous_ms = 0.0, sampled_ms = 0.0;  // sums of mean squares
+  long coupling_violated = 0;
+};
+
+Figure2Runs figure2_runs(double T, hinf::MeasurementUpdate update, std::uint64_t seed) {
   const hinf::Trajectory& trajectory = *paper().trajectory;
   hinf::SimulationOptions tight;
   tight.solver.rtol = 1e-9;
   tight.solver.atol = 1e-11;
-  for (auto [T, bound] : {std::pair{0.01, 0.01}, std::pair{0.1, 0.15}}) {
-    const hinf::RowMat noise = hinf::standard_normal_samples(20000601, hinf::noise_sample_count(0.0, 40.0, T), 3);
-    hinf::OutputFeedbackProblem problem;
-    problem.design = paper().design;
-    problem.sigma = 0.5;
-    problem.sample_period = T;
-    problem.noise = noise;
-    problem.N = paper_filter().N;
-    problem.Sigma0 = paper_filter().Sigma0;
-    problem.Q = paper_filter().Q;
-    hinf::HinfStateFeedback law(paper().design);
-    const double continuous = rms_last_half(
-        hinf::simulate_output_feedback(problem, law, hinf::Disturbance(paper_w()), paper_q0(), {}, tight), trajectory);
-    ASSERT_GT(continuous, 0.01);
+  const hinf::RowMat noise = hinf::standard_normal_samples(seed, hinf::noise_sample_count(0.0, 40.0, T), 3);
+  hinf::OutputFeedbackProblem problem;
+  problem.design = paper().design;
+  problem.sigma = 0.5;
+  problem.sample_period = T;
+  problem.noise = noise;
+  problem.N = paper_filter().N;
+  problem.Sigma0 = paper_filter().Sigma0;
+  problem.Q = paper_filter().Q;
+  hinf::HinfStateFeedback law(paper().design);
+  const double continuous = rms_last_half(
+      hinf::simulate_output_feedback(problem, law, hinf::Disturbance(paper_w()), paper_q0(), {}, tight), trajectory);
 
-    hinf::OnlineOptions options;
-    options.filter = paper_filter();
-    hinf::OnlineController controller(hinf::SampledLaw::emulated(paper().design, T), options);
-    hinf::SampledLoopOptions loop;
-    loop.simulation = tight;
-    loop.sigma = 0.5;
-    loop.noise = noise;
-    const hinf::SimulationResult r =
-        hinf::simulate_sampled(trajectory, controller, hinf::Disturbance(paper_w()), paper_q0(), loop);
-    ASSERT_EQ(r.status, hinf::RunStatus::Completed);
-    const double sampled = rms_last_half(r, trajectory);
-    std::printf("[output feedback] T = %.2f s: RMS position error %.5f sampled, %.5f continuous; rho/gamma^2 <= %.3f\n",
-                T, sampled, continuous, controller.counts().largest_rho);
-    EXPECT_NEAR(sampled / continuous, 1.0, bound) << "T = " << T;
-    EXPECT_EQ(controller.counts().coupling_violated, 0);
+  hinf::OnlineOptions options;
+  options.filter = paper_filter();
+  options.filter.update = update;
+  hinf::OnlineController controller(hinf::SampledLaw::emulated(paper().design, T), options);
+  hinf::SampledLoopOptions loop;
+  loop.simulation = tight;
+  loop.sigma = 0.5;
+  loop.noise = noise;
+  const hinf::SimulationResult r =
+      hinf::simulate_sampled(trajectory, controller, hinf::Disturbance(paper_w()), paper_q0(), loop);
+  EXPECT_EQ(r.status, hinf::RunStatus::Completed);
+  const double sampled = rms_last_half(r, trajectory);
+  std::printf("[output feedback] T = %.2f s, %s update, seed %llu: RMS position error %.5f sampled, %.5f continuous\n",
+              T, hinf::to_string(update).c_str(), static_cast<unsigned long long>(seed), sampled, continuous);
+  return {continuous * continuous, sampled * sampled, controller.counts().coupling_violated};
+}
+
+TEST(OutputFeedback, Figure2SampledApproachesTheContinuousLoop) {
+  // T = 0.01 s, the paper's seed: within 1%, either update.
+  for (auto update : {hinf::MeasurementUpdate::Sampled, hinf::MeasurementUpdate::Held}) {
+    const Figure2Runs run = figure2_runs(0.01, update, 20000601);
+    ASSERT_GT(run.continuous_ms, 1e-4);
+    EXPECT_NEAR(std::sqrt(run.sampled_ms / run.continuous_ms), 1.0, 0.01) << hinf::to_string(update);
+    EXPECT_EQ(run.coupling_violated, 0);
   }
+  // T = 0.1 s: the RMS over eight noise seeds within 5% (the sampled update, the default).
+  Figure2Runs total;
+  for (std::uint64_t seed : {20000601ull, 1ull, 2ull, 3ull, 4ull, 5ull, 6ull, 7ull}) {
+    const Figure2Runs run = figure2_runs(0.1, hinf::MeasurementUpdate::Sampled, seed);
+    total.continuous_ms += run.continuous_ms;
+    total.sampled_ms += run.sampled_ms;
+    total.coupling_violated += run.coupling_violated;
+  }
+  const double ratio = std::sqrt(total.sampled_ms / total.continuous_ms);
+  std::printf("[output feedback] T = 0.10 s: RMS over 8 seeds %.4f of the continuous loop's\n", ratio);
+  EXPECT_NEAR(ratio, 1.0, 0.05);
+  EXPECT_EQ(total.coupling_violated, 0);
 }
 
 }  // namespace

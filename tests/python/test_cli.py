@@ -87,7 +87,7 @@ def test_sampled_loop_same_results_file(tmp_path, warm_python_cli):
     a.pop("timing_s"), b.pop("timing_s")
     assert a == b
     assert a["sampling"] == {"period": 0.05, "design": "emulated", "delay": 0.02, "compensate_delay": True,
-                             "measurement_period": 0.05}
+                             "measurement_period": 0.05, "measurement_update": "sampled"}
     online = a["online"]
     assert online["steps"] == 800 and online["measurements_used"] == 800 and online["lost"] == 0
     assert online["largest_command"] <= 3.0 and 0.0 < online["largest_rho_over_gamma2"] < 1.0

@@ -310,12 +310,16 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
     for (int i = 0; i < p_; ++i) y_[i] = measurement[i];
     y_.noalias() -= C_ * q_d_;
     if (heading_row_ >= 0) y_[heading_row_] = wrap_angle(y_[heading_row_]);
-    have_y_ = true;
-    y_until_ = t_meas + hold_;
+    if (options_.filter.update == MeasurementUpdate::Sampled) {
+      estimator_->update(t_meas, y_, x_, Sigma_);  // once, now: nothing is held
+    } else {
+      have_y_ = true;
+      y_until_ = t_meas + hold_;
+    }
     x_anchor_ = x_;
     Sigma_anchor_ = Sigma_;
     y_anchor_ = y_;
-    have_y_anchor_ = true;
+    have_y_anchor_ = have_y_;
     y_until_anchor_ = y_until_;
   }
   if (use == MeasurementUse::Used) {

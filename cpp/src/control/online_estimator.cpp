@@ -32,6 +32,10 @@ class Estimator final : public OnlineEstimator {
     if (filter_) {
       C_ = C;
       CtNinv_ = C.transpose() * filter.N.inverse();
+      // R^-1 = hold N^-1: the information of one measurement of the sensor's period.
+      const double hold = filter.hold > 0.0 ? filter.hold : law.period();
+      CtRinv_ = hold * CtNinv_;
+      CtRinvC_ = CtRinv_ * C;
       S_predict_ = inv_gamma2_ * filter.Q;
       S_innovate_ = S_predict_ - CtNinv_ * C_;
       innovation_.setZero(C.rows());
@@ -69,6 +73,41 @@ class Estimator final : public OnlineEstimator {
     }
     x = x_;
     if (filter_) Sigma = Sigma_;
+  }
+
+  void update(double t, const Vec& y_e, Vec& x, Mat& Sigma) noexcept override {
+    interpolate(t);
+    Sigma_ = Sigma;
+    llt_.compute(Sigma_);
+    if (llt_.info() != Eigen::Success) {
+      x.setConstant(NAN);
+      return;
+    }
+    // Sigma+ = (Sigma^-1 + C' R^-1 C)^-1, through the information matrix.
+    S1_.setIdentity();
+    S2_ = llt_.solve(S1_);
+    S2_ += CtRinvC_;
+    llt_.compute(S2_);
+    if (llt_.info() != Eigen::Success) {
+      x.setConstant(NAN);
+      return;
+    }
+    Sigma_ = llt_.solve(S1_);
+    S3_ = Sigma_.transpose();
+    Sigma_ = 0.5 * (Sigma_ + S3_);
+    x_ = x;
+    innovation_ = y_e;
+    innovation_.noalias() -= C_ * x_;
+    if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+    n_tmp_.noalias() = CtRinv_ * innovation_;
+    r_.noalias() = Sigma_ * n_tmp_;
+    gain_lhs_.setIdentity();
+    gain_lhs_.noalias() -= inv_gamma2_ * (Sigma_ * Z_);
+    lu_.compute(gain_lhs_);
+    n_tmp_ = lu_.solve(r_);
+    x_ += n_tmp_;
+    x = x_;
+    Sigma = Sigma_;
   }
 
   double coupling(double t, const Mat& Sigma) noexcept override {
@@ -139,7 +178,8 @@ class Estimator final : public OnlineEstimator {
   double inv_gamma2_;
   double interpolated_at_ = NAN;
   MatPN C_;
-  MatNP CtNinv_;
+  MatNP CtNinv_, CtRinv_;
+  MatN CtRinvC_;
   MatN S_predict_, S_innovate_;  // gamma^-2 Q and gamma^-2 Q - C' N^-1 C
   MatN A_, DDt_, Z_, NN_, gain_lhs_, L_, Sigma_, S1_, S2_, S3_, S4_, S_stage_;
   Mat B_;

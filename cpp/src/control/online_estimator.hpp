@@ -21,6 +21,11 @@ class OnlineEstimator {
   // Sigma (n x n) in and out.
   virtual void integrate(double s, double end, int substeps, const Vec& u, const Vec& y_e, bool innovate, Vec& x,
                          Mat& Sigma) noexcept = 0;
+  // The sampled-measurement update at t of the measured error y_e (p): Sigma+ = (Sigma^-1 +
+  // C' R^-1 C)^-1 with R = N / hold, x += [I - gamma^-2 Sigma+ Z]^-1 Sigma+ C' R^-1 (y_e - C x),
+  // the heading's innovation wrapped. Output feedback only. x becomes NaN when Sigma is not
+  // positive definite or the gain is singular.
+  virtual void update(double t, const Vec& y_e, Vec& x, Mat& Sigma) noexcept = 0;
   // rho(Sigma Z(t)) (+inf when Sigma is not positive definite).
   virtual double coupling(double t, const Mat& Sigma) noexcept = 0;
 };

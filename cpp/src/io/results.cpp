@@ -55,7 +55,8 @@ std::string results_json(const RunResult& r, int indent) {
                      {"design", to_string(sp.design)},
                      {"delay", sp.delay},
                      {"compensate_delay", sp.compensate_delay},
-                     {"measurement_period", sp.measurement_every() * sp.period}};
+                     {"measurement_period", sp.measurement_every() * sp.period},
+                     {"measurement_update", to_string(sp.measurement_update)}};
   }
   if (r.online) {
     // What the online controller's steps did (online_controller.hpp, OnlineCounts).

@@ -183,7 +183,7 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
   if (const toml::table* table = section(root, "sampling", source, false)) {
     TableReader r(*table, "[sampling]", source,
                   {"period", "design", "delay", "compensate_delay", "u_min", "u_max", "rate_max", "max_age",
-                   "measurement_period"});
+                   "measurement_period", "measurement_update"});
     SamplingSpec sp;
     sp.period = r.number("period");
     sp.design = r.enum_or("design", sp.design);
@@ -195,6 +195,7 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
     if (r.has("rate_max")) sp.limits.rate_max = r.vector("rate_max", m, true);
     if (const toml::node* node = r.get("max_age")) sp.max_age = r.as_number(*node, "max_age", true);
     sp.measurement_period = r.number_or("measurement_period", sp.measurement_period);
+    sp.measurement_update = r.enum_or("measurement_update", sp.measurement_update);
     s.sampling = sp;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {

@@ -76,7 +76,8 @@ std::string scenario_toml(const Scenario& s) {
                          {"delay", sp.delay},
                          {"compensate_delay", sp.compensate_delay},
                          {"max_age", sp.max_age},
-                         {"measurement_period", sp.measurement_period}};
+                         {"measurement_period", sp.measurement_period},
+                         {"measurement_update", to_string(sp.measurement_update)}};
     if (sp.limits.u_min.size() > 0) sampling.insert("u_min", vector_toml(sp.limits.u_min));
     if (sp.limits.u_max.size() > 0) sampling.insert("u_max", vector_toml(sp.limits.u_max));
     if (sp.limits.rate_max.size() > 0) sampling.insert("rate_max", vector_toml(sp.limits.rate_max));

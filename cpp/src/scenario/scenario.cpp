@@ -319,6 +319,7 @@ SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& r
     options.filter.Sigma0 = initial_sigma(s);
     options.filter.Q = s.Q;
     options.filter.hold = sp.measurement_every() * sp.period;
+    options.filter.update = sp.measurement_update;
     loop.sigma = ms.sigma;
     loop.noise = noise == nullptr ? scenario_noise(s) : *noise;
   }

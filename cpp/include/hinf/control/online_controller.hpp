@@ -31,12 +31,21 @@
 // linearly between samples: the estimator's drift is the linearization, A(q_hat) q_hat + alpha
 // of (35) less its second-order remainder, so that a step needs nothing of the model but its
 // tables. A measurement y taken at t_meas enters as the measured error y_e = y - C q_d(t_meas)
-// (the heading's component, and the innovation's, wrapped), held from t_meas for `hold` seconds
-// (the sensor's period) and until a newer one is used (the error changes slowly where the
-// vehicle's position does not, so holding it costs little);
-// outside that the innovation terms are off (prediction: the estimator runs open loop and Sigma
-// grows). A measurement that arrives late (t_meas earlier than the last call) is used from its
-// own time: the estimate is integrated again from the last measurement's time, where it is kept.
+// (the heading's component, and the innovation's, wrapped), in one of two ways
+// (OnlineFilter::update):
+//   - sampled (the default): once, at t_meas, as the sampled-measurement form of (35)-(36):
+//         Sigma+ = (Sigma^-1 + C' R^-1 C)^-1,   R = N / hold,
+//         q_hat+ = q_hat + [I - gamma^-2 Sigma+ Z]^-1 Sigma+ C' R^-1 (y_e - C q_hat),
+//     with R the noise covariance of one measurement (N is an intensity, hold the sensor's
+//     period); between measurements the innovation terms are off. The command of the same step
+//     sees the measurement. As hold -> 0 this is (35)-(36) with y held; at gamma = inf it is the
+//     continuous-discrete Kalman filter.
+//   - held: in the innovation terms of (35)-(36) from t_meas for `hold` seconds and until a newer
+//     one is used (the error changes slowly where the vehicle's position does not, so holding it
+//     costs little); the command of the same step does not see it yet.
+// Without a measurement the estimator runs open loop and Sigma grows. A measurement that arrives
+// late (t_meas earlier than the last call) is used from its own time: the estimate is
+// integrated again from the last measurement's time, where it is kept.
 // Then u = u_d(t_now) - K_k q_hat(t_now) as above. The coupling condition rho(Sigma Z) < gamma^2
 // is evaluated at every step (StepReport::rho_sigma_z); where it fails the estimator's gain is
 // singular: the step is still computed, flagged, and counted.
@@ -120,6 +129,20 @@ struct ActuatorLimits {
   void validate(int m) const;
 };
 
+// How a measurement enters the output-feedback estimator.
+enum class MeasurementUpdate {
+  Held,    // held in the innovation of (35)-(36) for `hold` seconds after its time (a continuous
+           // measurement, as the batch loop's held noise)
+  Sampled  // once, at its time, as a jump of the estimate and Sigma (the sampled-measurement form
+           // of (35)-(36), see the top of this file): the command of the same step sees it
+};
+template <>
+struct EnumNames<MeasurementUpdate> {
+  static constexpr const char* what = "measurement update";
+  static constexpr std::array<std::pair<MeasurementUpdate, const char*>, 2> names{
+      {{MeasurementUpdate::Held, "held"}, {MeasurementUpdate::Sampled, "sampled"}}};
+};
+
 // The filter of an output-feedback controller (see the top of this file). An empty N: state
 // feedback (step() takes the full state).
 struct OnlineFilter {
@@ -128,8 +151,10 @@ struct OnlineFilter {
                       // sensor's period T_s, the continuous filter's intensity sigma^2 T_s
   Mat Sigma0;         // n x n, symmetric positive definite: Sigma at reset(), (Q0 - eta I)^-1
   Mat Q;              // n x n, symmetric positive semidefinite: the performance weight in (36)
-  double hold = 0.0;  // s: how long a measurement stays in the innovation after its time
-                      // (the sensor's period); 0: the law's period
+  double hold = 0.0;  // s: the sensor's period; 0: the law's period. Held: how long a measurement
+                      // stays in the innovation after its time; sampled: the noise covariance of
+                      // one measurement is N / hold
+  MeasurementUpdate update = MeasurementUpdate::Sampled;
   bool enabled() const { return N.size() > 0; }
   // InputError naming the matrix, for shapes (p measured outputs, n states) or values that do
   // not fit.

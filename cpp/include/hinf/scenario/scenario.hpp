@@ -53,6 +53,8 @@ struct SamplingSpec {
   ActuatorLimits limits;                          // u_min, u_max, rate_max (empty: none)
   double max_age = INFINITY;                      // s: an older measurement is stale
   double measurement_period = 0.0;                // s: the sensor's period, a multiple of T (0: T)
+  MeasurementUpdate measurement_update = MeasurementUpdate::Sampled;  // how the output-feedback
+                                                  // estimator takes a measurement (online_controller.hpp)
   // The sensor's period in samples of T (>= 1).
   int measurement_every() const;
 };
