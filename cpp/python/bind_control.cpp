@@ -7,6 +7,7 @@
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/controller.hpp"
 #include "hinf/control/discrete_design.hpp"
+#include "hinf/control/discrete_output_feedback.hpp"
 #include "hinf/control/disturbance.hpp"
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
@@ -262,6 +263,73 @@ Examples
 >>> K = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0).gain(0.0)    # the continuous law's
 >>> float(round(np.linalg.norm(design.gain(0) - K) / np.linalg.norm(K), 3))   # first order in T
 0.059)").c_str());
+
+  py::class_<DiscreteOutputFeedback, py::smart_holder>(m, "DiscreteOutputFeedback",
+                                                       doc({"DiscreteOutputFeedback"}, R"(Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+>>> C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+>>> feedback = hc.solve_discrete_output_feedback(design, C, 0.25 * np.eye(3), np.eye(6), np.eye(6))
+>>> bool(feedback.largest_coupling() < 1.0)
+True)").c_str())
+      .def("design", &DiscreteOutputFeedback::design_ptr, doc({"DiscreteOutputFeedback::design"}).c_str())
+      .def("C", &DiscreteOutputFeedback::C, doc({"DiscreteOutputFeedback::C"}).c_str())
+      .def("R", &DiscreteOutputFeedback::R, doc({"DiscreteOutputFeedback::C"}).c_str())
+      .def("Q", &DiscreteOutputFeedback::Q, doc({"DiscreteOutputFeedback::C"}).c_str())
+      .def("steps", &DiscreteOutputFeedback::steps, doc({"DiscreteDesign::steps"}).c_str())
+      .def("Sigma", &DiscreteOutputFeedback::Sigma, py::arg("k"), doc({"DiscreteOutputFeedback::Sigma"}).c_str())
+      .def("coupling", &DiscreteOutputFeedback::coupling, py::arg("k"),
+           doc({"DiscreteOutputFeedback::coupling"}).c_str())
+      .def("largest_coupling", &DiscreteOutputFeedback::largest_coupling,
+           doc({"DiscreteOutputFeedback::largest_coupling"}).c_str());
+
+  m.def("solve_discrete_output_feedback",
+        [](const DiscreteDesignPtr& design, const Mat& C, const Mat& R, const Mat& Sigma0, const Mat& Q) {
+          ComputationScope release;
+          return solve_discrete_output_feedback(design, C, R, Sigma0, Q);
+        },
+        py::arg("design"), py::arg("C"), py::arg("R"), py::arg("Sigma0"), py::arg("Q"),
+        doc({"solve_discrete_output_feedback", "control/discrete_output_feedback.hpp"}, R"(Parameters
+----------
+design : DiscreteDesign
+    The digital design (solve_discrete_game).
+C : array_like, shape (p, n)
+    The measurement matrix (the model's C).
+R : array_like, shape (p, p)
+    The covariance of one measurement (sigma^2 per sample), symmetric positive definite.
+Sigma0 : array_like, shape (n, n)
+    The initial uncertainty, symmetric positive definite.
+Q : array_like, shape (n, n)
+    The game's state weight (the one the design was solved with).
+
+Returns
+-------
+DiscreteOutputFeedback
+
+Raises
+------
+ValueError
+    Bad shapes or weights.
+ConjugatePointError
+    The filter does not exist at some sample (its t_escape is that sample's time).
+CouplingConditionError
+    rho(Sigma_k M_k) >= gamma^2 at some sample (its t is the first such sample's time).
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+>>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+>>> feedback = hc.solve_discrete_output_feedback(design, C, 0.25 * np.eye(3), np.eye(6), np.eye(6))
+>>> round(feedback.largest_coupling(), 3)      # rho(Sigma_k M_k) / gamma^2 < 1 at every sample
+0.835
+>>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 1.5)
+>>> try:
+...     hc.solve_discrete_output_feedback(design, C, 0.25 * np.eye(3), np.eye(6), np.eye(6))
+... except hc.CouplingConditionError as error:
+...     print(error.t, error.rho > error.gamma ** 2)   # at t0: Sigma0 = I is too uncertain for 1.5
+0.0 True)").c_str());
 
   m.def("discrete_conjugate_time",
         [](const SampledLinearization& sampled, const Mat& Q, const Mat& Qf, double gamma) {

@@ -132,6 +132,14 @@ InputError for t outside [t0, t_N).)contract"},
     {"DiscreteDesign::steps", R"contract(The number of samples N.)contract"},
     {"DiscreteDesign::time", R"contract(t_k = t0 + k T (s), k = 0 .. N.)contract"},
     {"DiscreteDesign::worst_case_gain", R"contract(The worst-case disturbance's gain (nw x n): w_k = W_k q_e(t_k); zero for gamma = inf.)contract"},
+    {"DiscreteOutputFeedback", R"contract(The filter Riccati solution along a digital design, with the coupling condition. Immutable;
+may be read from several threads.)contract"},
+    {"DiscreteOutputFeedback::C", R"contract(C (p x n), R (p x p), Q (n x n) as given.)contract"},
+    {"DiscreteOutputFeedback::Sigma", R"contract(Sigma_k (n x n), k = 0 .. steps(). InputError outside.)contract"},
+    {"DiscreteOutputFeedback::coupling", R"contract(rho(Sigma_k M_k) / gamma^2, k = 0 .. steps() (0 at gamma = inf): the coupling condition wants
+< 1. InputError outside.)contract"},
+    {"DiscreteOutputFeedback::design", R"contract(The state-feedback game it completes.)contract"},
+    {"DiscreteOutputFeedback::largest_coupling", R"contract(The largest coupling(k).)contract"},
     {"Disturbance", R"contract(The disturbance w(t, q) applied to a closed loop: signals, plus the worst-case disturbance of
 a design when one is given.)contract"},
     {"Disturbance::D_", R"contract(D of the design's model, when constant)contract"},
@@ -358,10 +366,13 @@ w = [process disturbance (D.cols()), measurement noise (p)], and D is padded wit
     {"MeasurementSpec::seed", R"contract(seed of the noise samples (scenario_noise))contract"},
     {"MeasurementSpec::sigma", R"contract(std of the noise on each measured output)contract"},
     {"MeasurementUpdate", R"contract(How a measurement enters the output-feedback estimator.)contract"},
+    {"MeasurementUpdate::discrete", R"contract(the digital law's own filter: the central controller of the discrete game with
+one-step-delayed measurements (discrete_output_feedback.hpp), run on the law's
+samples (see the top of this file); the digital law only)contract"},
     {"MeasurementUpdate::held", R"contract(held in the innovation of (35)-(36) for `hold` seconds after its time (a continuous
 measurement, as the batch loop's held noise))contract"},
-    {"MeasurementUpdate::sampled", R"contract(once, at its time, as a jump of the estimate and Sigma (the sampled-measurement form
-of (35)-(36), see the top of this file): the command of the same step sees it)contract"},
+    {"MeasurementUpdate::sampled", R"contract(once, at its time, as a jump of the estimate and Sigma (the sampled-measurement
+form of (35)-(36), see the top of this file): the command of the same step sees it)contract"},
     {"MeasurementUse", R"contract(What became of the measurement given to step(). Anything but Used: the estimate was predicted.)contract"},
     {"MeasurementUse::duplicate", R"contract(not newer than the last measurement used (the same one again, or out of order))contract"},
     {"MeasurementUse::future", R"contract(t_meas > t_now)contract"},
@@ -442,13 +453,21 @@ system is singular (the step is then retried with another step size).)contract"}
     {"OnlineController", R"contract(The controller of one vehicle, state or output feedback (see the top of this file).)contract"},
     {"OnlineController::OnlineController", R"contract(InputError for a null law or bad options (a filter whose shapes do not fit the model's
 measurement). Takes all the memory step() uses.)contract"},
+    {"OnlineController::advance_to", R"contract(MeasurementUpdate::Discrete: the estimate advanced from sample k_est_ to k, each sample with
+the mean command applied over it and the measurement pending for it, if any. False when the
+filter failed (the estimate is then lost).)contract"},
     {"OnlineController::counts", R"contract(The counts since reset().)contract"},
+    {"OnlineController::discrete_command", R"contract(MeasurementUpdate::Discrete: the measurement taken in (use may become Stale), the estimate
+advanced to t_now's sample and the command before the limits into u_. False when the
+estimate is lost.)contract"},
     {"OnlineController::entry_at", R"contract(The history entry whose command is applied at t (the latest entry with time <= t).)contract"},
     {"OnlineController::estimate", R"contract(The estimate of q_e at estimate_time() (n), the command held since held_time() (m).)contract"},
     {"OnlineController::estimator_", R"contract(the arithmetic between calls (private))contract"},
     {"OnlineController::have_y_", R"contract(a measurement is held in the innovation ...)contract"},
     {"OnlineController::history_u_", R"contract(m x history)contract"},
     {"OnlineController::law", R"contract(The law and the options it was made with.)contract"},
+    {"OnlineController::limit_and_hold", R"contract(The limits on u_ (the rate from the command held, then the bounds), the command applied
+into u and remembered.)contract"},
     {"OnlineController::lost_", R"contract(the estimate is not finite: every step answers Lost until reset())contract"},
     {"OnlineController::measurement_size", R"contract(The numbers step() takes: n (the state) or p (the measurement y = C q).)contract"},
     {"OnlineController::n", R"contract(The number of states n (of q) and of inputs m (of u).)contract"},
@@ -456,6 +475,7 @@ measurement). Takes all the memory step() uses.)contract"},
     {"OnlineController::p_", R"contract(measured outputs; the row of C that measures the heading)contract"},
     {"OnlineController::predict_to", R"contract(The estimate (x_, and Sigma_ with output feedback) predicted from t_x_ to t along the
 linearization with the applied commands (and the measurement held, while it is).)contract"},
+    {"OnlineController::record_coupling", R"contract(The coupling condition's rho of this step into the report and the counts.)contract"},
     {"OnlineController::reset", R"contract(Starts at time t (in [t0, t_end)) from the state q (n; with output feedback the initial
 estimate of the state, and Sigma = Sigma0): the estimate is q - q_d(t) and the command held is
 u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q or u_held (reset() may
@@ -595,7 +615,9 @@ linearization A_e(t_k), B_e(t_k), D_e(t_k) D_e(t_k)' and the game's value matrix
 for the prediction and the estimator. Immutable.)contract"},
     {"SampledLaw::DDt", R"contract(D_e(t_k) D_e(t_k)' (n x n) and Z_k (n x n: Z(t_k) of the continuous design, M_k of the
 digital one), k = 0 .. steps(); unchecked indices.)contract"},
-    {"SampledLaw::SampledLaw", R"contract(The tables (K: steps() gains; Z: steps() + 1 matrices); use emulated() or digital().)contract"},
+    {"SampledLaw::SampledLaw", R"contract(The tables (K: steps() gains; Z: steps() + 1 matrices); use emulated() or digital(). A
+digital law samples its trajectory again unless `sampled` (of the same trajectory and
+period) is given.)contract"},
     {"SampledLaw::digital", R"contract(The digital design: K_k = F_k of the discrete game (discrete_design.hpp), at its period.)contract"},
     {"SampledLaw::emulated", R"contract(The continuous design emulated: K_k = kappa(t_k) B_e(t_k)' Z(t_k), held over each sample of
 `period` (s). InputError for a period that is not > 0 or longer than the horizon, kappa not
@@ -606,6 +628,9 @@ step(): give u_d as signals: constants, harmonics or tables).)contract"},
     {"SampledLaw::kind", R"contract("emulated" or "digital".)contract"},
     {"SampledLaw::n", R"contract(The number of states n and of inputs m.)contract"},
     {"SampledLaw::period", R"contract(The period T (s).)contract"},
+    {"SampledLaw::sampled", R"contract(The digital law's sampled linearization (discrete_design.hpp: A_k, B_k, D_k of the
+zero-order hold), null for the emulated law; and D_k D_k' / T (n x n), k = 0 .. steps() - 1,
+unchecked index.)contract"},
     {"SampledLaw::steps", R"contract(The number of samples N.)contract"},
     {"SampledLaw::t0", R"contract(The law is defined on [t0, t_end), t_end = t0 + N T <= tf (s).)contract"},
     {"SampledLaw::trajectory", R"contract(The desired trajectory of the design.)contract"},
@@ -978,6 +1003,34 @@ weight of the estimation error and theta = gamma^-2:
     P_{k+1} = F P_k [I - theta S_bar_k P_k + H' R^-1 H P_k]^-1 F' + Q.
 The filter exists while P_k^-1 - theta S_bar_k + H' R^-1 H > 0. gamma = +inf (theta = 0) is the
 Kalman filter in its a-priori form (K_k = P_k H' (H P_k H' + R)^-1).)contract"},
+    {"control/discrete_output_feedback.hpp", R"contract(The digital output feedback: the discrete game of discrete_design.hpp with imperfect, sampled
+measurements, the command of sample k computed from y_0 .. y_k (the current-information
+pattern of Basar & Bernhard, "H-infinity optimal control and related minimax design problems",
+2nd ed. 1995, ch. 6: a computer that measures at t_k and answers within the sample).
+
+The sampled error dynamics of discrete_design.hpp, measured:
+    x_{k+1} = A_k x_k + B_k u_k + D_k w_k,   y_k = C x_k + v_k,
+with the game's cost of discrete_design.hpp less gamma^2 (sum_k |v_k|^2_{R^-1} +
+|x_0|^2_{Sigma0^-1}): R is the covariance of one measurement (sigma^2 per sample, as on a
+datasheet), Sigma0 the initial uncertainty. In the variables that make the game's weights unit
+(u and w scaled by sqrt(T)), its filter Riccati difference equation runs forward from Sigma0:
+    Pi_k          = (Sigma_k^-1 + C' R^-1 C - gamma^-2 T Q)^-1,
+    Sigma_{k+1}   = A_k Pi_k A_k' + D_k D_k' / T,
+and the central controller acts on the worst-case state given y_0 .. y_k,
+    x_w           = x_hat_k + H_k (gamma^-2 M_k x_hat_k + C' R^-1 (y_k - C x_hat_k)),
+    H_k           = (Sigma_k^-1 + C' R^-1 C - gamma^-2 M_k)^-1,
+    u_k           = u_d(t_k) - F_k x_w,
+    x_hat_{k+1}   = A_k x_hat_k + B_k u_k + A_k Pi_k (gamma^-2 T Q x_hat_k + C' R^-1 (y_k - C x_hat_k)),
+with x_hat_0 the initial estimate (without y_k: x_w = (I - gamma^-2 Sigma_k M_k)^-1 x_hat_k and no
+C' R^-1 terms). It exists, and keeps the game's value below gamma^2, when for every k
+    (a) the state-feedback game exists (gamma^2 T I - D_k' M_{k+1} D_k > 0, discrete_design.hpp),
+    (b) Sigma_k^-1 + C' R^-1 C - gamma^-2 T Q > 0 (the filter exists),
+    (c) rho(Sigma_k M_k) < gamma^2 (the coupling condition).
+On a time-invariant plant the smallest gamma that keeps (a)-(c) is the optimal H-infinity norm of
+SLICOT's SB10DD (tests/python/test_discrete_output_feedback.py, to 1e-8), and the closed loop of
+the central controller has an H-infinity norm below gamma. As T -> 0 with R = N / T these become
+the continuous (36) and rho(Sigma Z) < gamma^2; at gamma = inf it is the discrete LQG controller
+(the Kalman filter and the discrete LQR).)contract"},
     {"control/disturbance.hpp", R"contract(The disturbance w applied to the plant (all nw channels of the model):
     w(t, q) = signals(t) [+ w*(t, q)],
 where w* = gamma^-2 D_e(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
@@ -1036,6 +1089,14 @@ tables. A measurement y taken at t_meas enters as the measured error y_e = y - C
   - held: in the innovation terms of (35)-(36) from t_meas for `hold` seconds and until a newer
     one is used (the error changes slowly where the vehicle's position does not, so holding it
     costs little); the command of the same step does not see it yet.
+  - discrete (the digital law only): the central controller of discrete_output_feedback.hpp on
+    the law's samples t_k, with R = N / hold. A measurement of sample k (t_meas in
+    [t_k, t_{k+1})) enters the worst-case state x_w of that sample, and so every command of
+    it from then on, u = u_d(t_now) - F_k x_w, and the estimate of sample k + 1;
+    StepReport::rho_sigma_z is rho(Sigma_k M_k). The estimate is advanced sample by sample with the mean of the commands
+    applied over each sample (less u_d at its middle); a sample without a measurement predicts
+    (its Pi_k without C' R^-1 C). A measurement of a sample the estimate has passed is stale;
+    compensate_delay does not apply (the delay of one sample is the design's).
 Without a measurement the estimator runs open loop and Sigma grows. A measurement that arrives
 late (t_meas earlier than the last call) is used from its own time: the estimate is
 integrated again from the last measurement's time, where it is kept.
@@ -1571,6 +1632,13 @@ bad input; ConjugatePointError when gamma^2 T I - D_k' M_{k+1} D_k is not positi
 some k (its t_escape() is t_k, the latest such sample: gamma is below gamma*_d).
 
 The same, sampling the trajectory at `period` first.)contract"},
+    {"solve_discrete_output_feedback", R"contract(Solves the filter Riccati difference equation forward from Sigma0 along `design` and checks the
+coupling condition at every sample. C (p x n), R (p x p) symmetric positive definite, Sigma0
+(n x n) symmetric positive definite, Q (n x n) the game's state weight (the one `design` was
+solved with), symmetric positive semidefinite. InputError for bad input; ConjugatePointError
+when (b) fails at some k (its t_escape() is t_k: the filter escapes); CouplingConditionError
+when (c) fails (its t() is the first t_k, rho() is rho(Sigma_k M_k)). Both mean gamma is too
+small for this output feedback.)contract"},
     {"solve_filter_riccati", R"contract(Solves the filter Riccati equation (36) forward from Sigma(t0) = Sigma0, with the model's
 measurement matrix C (Model::C), N (p x p) positive definite, Q (n x n) positive
 semidefinite, gamma > 0 (may be +inf: the Kalman-Bucy filter), A = A_e(t).)contract"},

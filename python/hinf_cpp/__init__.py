@@ -53,6 +53,7 @@ from hinf_cpp._core import (
     CouplingConditionError,
     CouplingPolicy,
     DiscreteDesign,
+    DiscreteOutputFeedback,
     Disturbance,
     EstimatorSeries,
     FilterLinearization,
@@ -140,6 +141,7 @@ from hinf_cpp._core import (
     simulate_sampled,
     simulate_state_feedback,
     solve_discrete_game,
+    solve_discrete_output_feedback,
     solve_filter_riccati,
     solve_grde,
     wrap_angle,
@@ -170,7 +172,8 @@ __all__ = [
     "OutputFeedbackProblem", "OutputFeedbackOptions", "FilterLinearization", "CouplingPolicy", "EstimatorSeries",
     "Metrics", "MetricDefinition", "metric_table", "compute_metrics",
     # on a vehicle: the digital design and the online controller
-    "SampledLinearization", "solve_discrete_game", "DiscreteDesign", "discrete_conjugate_time", "gamma_star_discrete",
+    "SampledLinearization", "solve_discrete_game", "DiscreteDesign", "solve_discrete_output_feedback",
+    "DiscreteOutputFeedback", "discrete_conjugate_time", "gamma_star_discrete",
     "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse", "MeasurementUpdate",
     "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
     # errors

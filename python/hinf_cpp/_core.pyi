@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -3819,6 +3819,54 @@ class DiscreteDesign:
         """
         The worst-case disturbance's gain (nw x n): w_k = W_k q_e(t_k); zero for gamma = inf.
         """
+class DiscreteOutputFeedback:
+    """
+    The filter Riccati solution along a digital design, with the coupling condition. Immutable;
+    may be read from several threads.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+    >>> C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+    >>> feedback = hc.solve_discrete_output_feedback(design, C, 0.25 * np.eye(3), np.eye(6), np.eye(6))
+    >>> bool(feedback.largest_coupling() < 1.0)
+    True
+    """
+    def C(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        C (p x n), R (p x p), Q (n x n) as given.
+        """
+    def Q(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        C (p x n), R (p x p), Q (n x n) as given.
+        """
+    def R(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        C (p x n), R (p x p), Q (n x n) as given.
+        """
+    def Sigma(self, k: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        Sigma_k (n x n), k = 0 .. steps(). InputError outside.
+        """
+    def coupling(self, k: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        rho(Sigma_k M_k) / gamma^2, k = 0 .. steps() (0 at gamma = inf): the coupling condition wants
+        < 1. InputError outside.
+        """
+    def design(self) -> DiscreteDesign:
+        """
+        The state-feedback game it completes.
+        """
+    def largest_coupling(self) -> float:
+        """
+        The largest coupling(k).
+        """
+    def steps(self) -> int:
+        """
+        The number of samples N.
+        """
 class SampledLaw:
     """
     The law u = u_d(t) - K_k q_e tabulated at t_k = t0 + k T, k = 0 .. steps() - 1, with the
@@ -3997,8 +4045,12 @@ class MeasurementUpdate:
         held in the innovation of (35)-(36) for `hold` seconds after its time (a continuous
         measurement, as the batch loop's held noise)
     sampled
-        once, at its time, as a jump of the estimate and Sigma (the sampled-measurement form
-        of (35)-(36), see the top of this file): the command of the same step sees it
+        once, at its time, as a jump of the estimate and Sigma (the sampled-measurement
+        form of (35)-(36), see the top of this file): the command of the same step sees it
+    discrete
+        the digital law's own filter: the central controller of the discrete game with
+        one-step-delayed measurements (discrete_output_feedback.hpp), run on the law's
+        samples (see the top of this file); the digital law only
     
     Examples
     --------
@@ -4006,6 +4058,7 @@ class MeasurementUpdate:
     <MeasurementUpdate.sampled: 1>
     """
     __members__: typing.ClassVar[dict[str, MeasurementUpdate]]
+    discrete: typing.ClassVar[MeasurementUpdate]
     held: typing.ClassVar[MeasurementUpdate]
     sampled: typing.ClassVar[MeasurementUpdate]
     def __eq__(self, other: typing.Any) -> bool:
@@ -6960,6 +7013,87 @@ def solve_discrete_game(trajectory: typing.Any, period: typing.SupportsFloat | t
     >>> K = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0).gain(0.0)    # the continuous law's
     >>> float(round(np.linalg.norm(design.gain(0) - K) / np.linalg.norm(K), 3))   # first order in T
     0.059
+    """
+def solve_discrete_output_feedback(design: DiscreteDesign, C: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], R: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> DiscreteOutputFeedback:
+    """
+    Solves the filter Riccati difference equation forward from Sigma0 along `design` and checks the
+    coupling condition at every sample. C (p x n), R (p x p) symmetric positive definite, Sigma0
+    (n x n) symmetric positive definite, Q (n x n) the game's state weight (the one `design` was
+    solved with), symmetric positive semidefinite. InputError for bad input; ConjugatePointError
+    when (b) fails at some k (its t_escape() is t_k: the filter escapes); CouplingConditionError
+    when (c) fails (its t() is the first t_k, rho() is rho(Sigma_k M_k)). Both mean gamma is too
+    small for this output feedback.
+    
+    The digital output feedback: the discrete game of discrete_design.hpp with imperfect, sampled
+    measurements, the command of sample k computed from y_0 .. y_k (the current-information
+    pattern of Basar & Bernhard, "H-infinity optimal control and related minimax design problems",
+    2nd ed. 1995, ch. 6: a computer that measures at t_k and answers within the sample).
+    
+    The sampled error dynamics of discrete_design.hpp, measured:
+        x_{k+1} = A_k x_k + B_k u_k + D_k w_k,   y_k = C x_k + v_k,
+    with the game's cost of discrete_design.hpp less gamma^2 (sum_k |v_k|^2_{R^-1} +
+    |x_0|^2_{Sigma0^-1}): R is the covariance of one measurement (sigma^2 per sample, as on a
+    datasheet), Sigma0 the initial uncertainty. In the variables that make the game's weights unit
+    (u and w scaled by sqrt(T)), its filter Riccati difference equation runs forward from Sigma0:
+        Pi_k          = (Sigma_k^-1 + C' R^-1 C - gamma^-2 T Q)^-1,
+        Sigma_{k+1}   = A_k Pi_k A_k' + D_k D_k' / T,
+    and the central controller acts on the worst-case state given y_0 .. y_k,
+        x_w           = x_hat_k + H_k (gamma^-2 M_k x_hat_k + C' R^-1 (y_k - C x_hat_k)),
+        H_k           = (Sigma_k^-1 + C' R^-1 C - gamma^-2 M_k)^-1,
+        u_k           = u_d(t_k) - F_k x_w,
+        x_hat_{k+1}   = A_k x_hat_k + B_k u_k + A_k Pi_k (gamma^-2 T Q x_hat_k + C' R^-1 (y_k - C x_hat_k)),
+    with x_hat_0 the initial estimate (without y_k: x_w = (I - gamma^-2 Sigma_k M_k)^-1 x_hat_k and no
+    C' R^-1 terms). It exists, and keeps the game's value below gamma^2, when for every k
+        (a) the state-feedback game exists (gamma^2 T I - D_k' M_{k+1} D_k > 0, discrete_design.hpp),
+        (b) Sigma_k^-1 + C' R^-1 C - gamma^-2 T Q > 0 (the filter exists),
+        (c) rho(Sigma_k M_k) < gamma^2 (the coupling condition).
+    On a time-invariant plant the smallest gamma that keeps (a)-(c) is the optimal H-infinity norm of
+    SLICOT's SB10DD (tests/python/test_discrete_output_feedback.py, to 1e-8), and the closed loop of
+    the central controller has an H-infinity norm below gamma. As T -> 0 with R = N / T these become
+    the continuous (36) and rho(Sigma Z) < gamma^2; at gamma = inf it is the discrete LQG controller
+    (the Kalman filter and the discrete LQR).
+    
+    Parameters
+    ----------
+    design : DiscreteDesign
+        The digital design (solve_discrete_game).
+    C : array_like, shape (p, n)
+        The measurement matrix (the model's C).
+    R : array_like, shape (p, p)
+        The covariance of one measurement (sigma^2 per sample), symmetric positive definite.
+    Sigma0 : array_like, shape (n, n)
+        The initial uncertainty, symmetric positive definite.
+    Q : array_like, shape (n, n)
+        The game's state weight (the one the design was solved with).
+    
+    Returns
+    -------
+    DiscreteOutputFeedback
+    
+    Raises
+    ------
+    ValueError
+        Bad shapes or weights.
+    ConjugatePointError
+        The filter does not exist at some sample (its t_escape is that sample's time).
+    CouplingConditionError
+        rho(Sigma_k M_k) >= gamma^2 at some sample (its t is the first such sample's time).
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+    >>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 5.0)
+    >>> feedback = hc.solve_discrete_output_feedback(design, C, 0.25 * np.eye(3), np.eye(6), np.eye(6))
+    >>> round(feedback.largest_coupling(), 3)      # rho(Sigma_k M_k) / gamma^2 < 1 at every sample
+    0.835
+    >>> design = hc.solve_discrete_game(trajectory, 0.1, np.eye(6), np.eye(6), 1.5)
+    >>> try:
+    ...     hc.solve_discrete_output_feedback(design, C, 0.25 * np.eye(3), np.eye(6), np.eye(6))
+    ... except hc.CouplingConditionError as error:
+    ...     print(error.t, error.rho > error.gamma ** 2)   # at t0: Sigma0 = I is too uncertain for 1.5
+    0.0 True
     """
 def solve_filter_riccati(trajectory: Trajectory, N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: SolverOptions = ...) -> FilterRiccatiSolution:
     """

@@ -27,9 +27,9 @@ void check_limit_vector(const Vec& v, int m, const char* name) {
 }  // namespace
 
 SampledLaw::SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K,
-                       std::vector<Mat> Z)
+                       std::vector<Mat> Z, SampledLinearizationPtr sampled)
     : trajectory_(std::move(trajectory)), kind_(std::move(kind)), gamma_(gamma), period_(period), K_(std::move(K)),
-      Z_(std::move(Z)) {
+      Z_(std::move(Z)), sampled_(std::move(sampled)) {
   require(trajectory_ != nullptr, "a sampled law needs its trajectory");
   require(!trajectory_->u_d_signal().is_function(),
           "the online controller needs u_d as signals (constants, harmonics or tables), not a function of t: a "
@@ -62,6 +62,15 @@ SampledLaw::SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma,
     D = model.D(t, q_d);
     DDt_.push_back(D * D.transpose());
   }
+  if (kind_ == "digital") {
+    if (sampled_ == nullptr) sampled_ = std::make_shared<const SampledLinearization>(trajectory_, period_);
+    require(sampled_->trajectory_ptr() == trajectory_ && sampled_->period() == period_ && sampled_->steps() == N,
+            "a digital law's sampled linearization must be of its own trajectory and period");
+    discrete_DDt_.reserve(static_cast<std::size_t>(N));
+    for (int k = 0; k < N; ++k) discrete_DDt_.push_back(sampled_->D(k) * sampled_->D(k).transpose() / period_);
+  } else {
+    sampled_ = nullptr;
+  }
 }
 
 std::shared_ptr<const SampledLaw> SampledLaw::emulated(RiccatiSolutionPtr design, double period, const Signal& kappa) {
@@ -91,7 +100,7 @@ std::shared_ptr<const SampledLaw> SampledLaw::digital(DiscreteDesignPtr design) 
   for (int k = 0; k < design->steps(); ++k) K.push_back(design->gain(k));
   for (int k = 0; k <= design->steps(); ++k) Z.push_back(design->M(k));
   return std::make_shared<const SampledLaw>(design->sampled().trajectory_ptr(), "digital", design->gamma(),
-                                            design->period(), std::move(K), std::move(Z));
+                                            design->period(), std::move(K), std::move(Z), design->sampled_ptr());
 }
 
 void ActuatorLimits::validate(int m) const {
@@ -146,6 +155,12 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
     for (Mat* M : {&Sigma_, &Sigma_anchor_}) M->setZero(n, n);
     x_anchor_.setZero(n);
     for (Vec* v : {&y_, &y_anchor_}) v->setZero(p_);
+    discrete_ = options_.filter.update == MeasurementUpdate::Discrete;
+    require(!discrete_ || law_->kind() == "digital",
+            "the discrete measurement update is the digital design's own filter: it needs a digital law "
+            "(SampledLaw::digital; in a scenario [sampling] design = \"digital\"), got an ", law_->kind(), " law");
+    x_worst_.setZero(n);
+    u_mean_.setZero(m);
   }
   estimator_ = detail::make_online_estimator(*law_, options_.filter, C_, heading_row_);
 }
@@ -180,6 +195,9 @@ void OnlineController::reset(double t, const ConstVecRef& q, const ConstVecRef& 
     have_y_ = have_y_anchor_ = false;
     x_anchor_ = x_;
     Sigma_anchor_ = Sigma_;
+    k_est_ = std::clamp(static_cast<int>(std::floor((t - law_->t0()) / law_->period() + 1e-9)), 0,
+                        law_->steps() - 1);
+    pending_k_ = -1;
   }
   remember(t, u_held_);
   counts_ = OnlineCounts();
@@ -237,6 +255,69 @@ void OnlineController::predict_to(double t) noexcept {
   t_x_ = std::max(t_x_, t);
 }
 
+bool OnlineController::advance_to(int k) noexcept {
+  const SampledLaw& law = *law_;
+  const double T = law.period();
+  const int capacity = options_.history;
+  for (; k_est_ < k; ++k_est_) {
+    // The mean of the commands applied over [t_k, t_{k+1}), less u_d at the sample's middle.
+    const double a = law.t0() + k_est_ * T, b = a + T;
+    u_mean_.setZero();
+    double s = a;
+    while (s < b) {
+      const int entry = entry_at(s);
+      const int next = (entry - history_start_ + capacity) % capacity + 1;
+      double end = b;
+      if (next < history_size_) end = std::min(b, history_t_[static_cast<std::size_t>((history_start_ + next) % capacity)]);
+      u_mean_ += ((end - s) / T) * history_u_.col(entry);
+      s = end;
+    }
+    law.trajectory().u_d(a + 0.5 * T, u_entry_.data());
+    u_mean_ -= u_entry_;
+    const bool measured = pending_k_ == k_est_;
+    if (!estimator_->advance(k_est_, u_mean_, measured ? &y_ : nullptr, x_, Sigma_)) return false;
+    if (measured) pending_k_ = -1;
+  }
+  t_x_ = law.t0() + k_est_ * T;
+  return true;
+}
+
+bool OnlineController::discrete_command(double t_now, const double* measurement, double t_meas, MeasurementUse& use,
+                                        StepReport& report) noexcept {
+  const SampledLaw& law = *law_;
+  auto sample_of = [&law](double t) {
+    return std::clamp(static_cast<int>(std::floor((t - law.t0()) / law.period() + 1e-9)), 0, law.steps() - 1);
+  };
+  if (use == MeasurementUse::Used) {
+    const int j = sample_of(t_meas);
+    if (j < k_est_) {
+      use = MeasurementUse::Stale;  // its sample is already in the estimate
+    } else {
+      if (!advance_to(j)) return false;
+      law.trajectory().q_d(t_meas, q_d_.data(), &q_cursor_);
+      for (int i = 0; i < p_; ++i) y_[i] = measurement[i];
+      y_.noalias() -= C_ * q_d_;
+      if (heading_row_ >= 0) y_[heading_row_] = wrap_angle(y_[heading_row_]);
+      pending_k_ = j;
+      t_meas_last_ = t_meas;
+    }
+  }
+  report.measurement = use;
+  if (use == MeasurementUse::Used)
+    ++counts_.used;
+  else
+    ++counts_.predicted;
+  const int k = sample_of(t_now);
+  if (!advance_to(k)) return false;
+  const double rho = estimator_->worst_case_state(k, x_, Sigma_, pending_k_ == k ? &y_ : nullptr, x_worst_);
+  law.trajectory().u_d(t_now, u_ff_.data());
+  u_.noalias() = -law.gain(k) * x_worst_;
+  u_ += u_ff_;
+  if (!u_.allFinite() || !Sigma_.allFinite()) return false;
+  record_coupling(t_now, rho, report);
+  return true;
+}
+
 StepReport OnlineController::step(double t_now, const double* measurement, double t_meas, double* u) noexcept {
   StepReport report;
   if (!reset_) return report;
@@ -280,6 +361,14 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
   }
   report.measurement = use;
   report.status = StepStatus::Ok;
+  if (discrete_) {
+    if (!discrete_command(t_now, measurement, t_meas, use, report)) {
+      lost_ = true;
+      ++counts_.lost;
+      return hold(StepStatus::Lost);
+    }
+    return limit_and_hold(t_now, report, u);
+  }
 
   // The law acts on the estimate at t_now; without delay compensation, on q_e(t_meas) as the
   // law at t_meas would (the command is one computed for t_meas, applied late).
@@ -337,15 +426,20 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
     ++counts_.lost;
     return hold(StepStatus::Lost);
   }
-  if (filter_) {
-    const double gamma2 = law.gamma() * law.gamma();
-    report.rho_sigma_z = estimator_->coupling(t_now, Sigma_);
-    report.coupling_violated = !(report.rho_sigma_z < gamma2);
-    counts_.coupling_violated += report.coupling_violated;
-    if (report.coupling_violated && std::isnan(counts_.coupling_violation_t)) counts_.coupling_violation_t = t_now;
-    if (std::isfinite(gamma2)) counts_.largest_rho = std::max(counts_.largest_rho, report.rho_sigma_z / gamma2);
-  }
+  if (filter_) record_coupling(t_now, estimator_->coupling(t_now, Sigma_), report);
+  return limit_and_hold(t_now, report, u);
+}
+void OnlineController::record_coupling(double t_now, double rho, StepReport& report) noexcept {
+  const double gamma2 = law_->gamma() * law_->gamma();
+  report.rho_sigma_z = rho;
+  report.coupling_violated = !(rho < gamma2);
+  counts_.coupling_violated += report.coupling_violated;
+  if (report.coupling_violated && std::isnan(counts_.coupling_violation_t)) counts_.coupling_violation_t = t_now;
+  if (std::isfinite(gamma2)) counts_.largest_rho = std::max(counts_.largest_rho, rho / gamma2);
+}
 
+StepReport OnlineController::limit_and_hold(double t_now, StepReport report, double* u) noexcept {
+  const int m = this->m();
   // The limits: the rate from the command held, then the bounds.
   const ActuatorLimits& limits = options_.limits;
   const double dt = t_now - t_held_;

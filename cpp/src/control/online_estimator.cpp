@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include "hinf/control/discrete_design.hpp"
 #include "hinf/core/angles.hpp"
 #include "numerics/size_dispatch.hpp"
 
@@ -36,6 +37,8 @@ class Estimator final : public OnlineEstimator {
       const double hold = filter.hold > 0.0 ? filter.hold : law.period();
       CtRinv_ = hold * CtNinv_;
       CtRinvC_ = CtRinv_ * C;
+      // gamma^-2 T Q: what the discrete filter takes from Sigma^-1 at each sample.
+      TQ_ = inv_gamma2_ * law.period() * filter.Q;
       S_predict_ = inv_gamma2_ * filter.Q;
       S_innovate_ = S_predict_ - CtNinv_ * C_;
       innovation_.setZero(C.rows());
@@ -110,11 +113,89 @@ class Estimator final : public OnlineEstimator {
     Sigma = Sigma_;
   }
 
-  double coupling(double t, const Mat& Sigma) noexcept override {
-    interpolate(t);
-    // rho(Sigma Z) = the largest eigenvalue of L' Z L, Sigma = L L'.
+  bool advance(int k, const Vec& u_e, const Vec* y_e, Vec& x, Mat& Sigma) noexcept override {
+    const SampledLinearization& sampled = *law_.sampled();
+    interpolated_at_ = NAN;  // A_ and Z_ are overwritten below
     Sigma_ = Sigma;
     llt_.compute(Sigma_);
+    if (llt_.info() != Eigen::Success) return false;
+    // Pi^-1 = Sigma^-1 (+ C' R^-1 C) - gamma^-2 T Q
+    S1_.setIdentity();
+    S2_ = llt_.solve(S1_);
+    S2_ -= TQ_;
+    if (y_e != nullptr) S2_ += CtRinvC_;
+    llt_.compute(S2_);
+    if (llt_.info() != Eigen::Success) return false;
+    S3_ = llt_.solve(S1_);  // Pi
+    // x+ = A x + B u_e + A Pi (gamma^-2 T Q x + C' R^-1 (y_e - C x))
+    x_ = x;
+    n_tmp_.noalias() = TQ_ * x_;
+    if (y_e != nullptr) {
+      innovation_ = *y_e;
+      innovation_.noalias() -= C_ * x_;
+      if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+      n_tmp_.noalias() += CtRinv_ * innovation_;
+    }
+    r_.noalias() = S3_ * n_tmp_;
+    n_tmp_ = x_ + r_;
+    A_ = sampled.A(k);
+    x_.noalias() = A_ * n_tmp_;
+    x_.noalias() += sampled.B(k) * u_e;
+    // Sigma+ = A Pi A' + D D' / T
+    NN_.noalias() = A_ * S3_;
+    S4_.noalias() = NN_ * A_.transpose();
+    S4_ += law_.discrete_DDt(k);
+    S2_ = S4_.transpose();
+    Sigma_ = 0.5 * (S4_ + S2_);
+    x = x_;
+    Sigma = Sigma_;
+    return true;
+  }
+
+  double worst_case_state(int k, const Vec& x, const Mat& Sigma, const Vec* y_e, Vec& out) noexcept override {
+    interpolated_at_ = NAN;  // Z_ is overwritten below
+    Z_ = law_.Z(k);
+    Sigma_ = Sigma;
+    const double r = rho(Sigma_);  // leaves the Cholesky factor of Sigma in llt_
+    if (!std::isfinite(r)) {
+      out.setConstant(NAN);
+      return INFINITY;
+    }
+    // H^-1 = Sigma^-1 (+ C' R^-1 C) - gamma^-2 M_k
+    S1_.setIdentity();
+    S2_ = llt_.solve(S1_);
+    S2_.noalias() -= inv_gamma2_ * Z_;
+    x_ = x;
+    n_tmp_.noalias() = inv_gamma2_ * (Z_ * x_);
+    if (y_e != nullptr) {
+      S2_ += CtRinvC_;
+      innovation_ = *y_e;
+      innovation_.noalias() -= C_ * x_;
+      if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
+      n_tmp_.noalias() += CtRinv_ * innovation_;
+    }
+    llt_.compute(S2_);
+    if (llt_.info() != Eigen::Success) {
+      out.setConstant(NAN);
+      return r;
+    }
+    r_ = llt_.solve(n_tmp_);
+    x_ += r_;
+    out = x_;
+    return r;
+  }
+
+  double coupling(double t, const Mat& Sigma) noexcept override {
+    interpolate(t);
+    Sigma_ = Sigma;
+    return rho(Sigma_);
+  }
+
+ private:
+  // rho(Sigma Z_) = the largest eigenvalue of L' Z_ L, Sigma = L L' (+inf when Sigma is not
+  // positive definite).
+  double rho(const MatN& Sigma) noexcept {
+    llt_.compute(Sigma);
     if (llt_.info() != Eigen::Success) return INFINITY;
     L_ = llt_.matrixL();
     NN_.noalias() = Z_ * L_;
@@ -123,7 +204,6 @@ class Estimator final : public OnlineEstimator {
     return eigen_.eigenvalues()[eigen_.eigenvalues().size() - 1];
   }
 
- private:
   // A_e, B_e (and with the filter D_e D_e' and Z) interpolated linearly between the samples around
   // t; nothing when they are already those of t (RK4 asks twice for the midpoint, and for each
   // step's end).
@@ -179,7 +259,7 @@ class Estimator final : public OnlineEstimator {
   double interpolated_at_ = NAN;
   MatPN C_;
   MatNP CtNinv_, CtRinv_;
-  MatN CtRinvC_;
+  MatN CtRinvC_, TQ_;
   MatN S_predict_, S_innovate_;  // gamma^-2 Q and gamma^-2 Q - C' N^-1 C
   MatN A_, DDt_, Z_, NN_, gain_lhs_, L_, Sigma_, S1_, S2_, S3_, S4_, S_stage_;
   Mat B_;

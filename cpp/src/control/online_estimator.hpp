@@ -26,6 +26,16 @@ class OnlineEstimator {
   // the heading's innovation wrapped. Output feedback only. x becomes NaN when Sigma is not
   // positive definite or the gain is singular.
   virtual void update(double t, const Vec& y_e, Vec& x, Mat& Sigma) noexcept = 0;
+  // The discrete central controller (MeasurementUpdate::Discrete, digital law): from sample k to
+  // k + 1 with the command u_e (m, less u_d) and the measured error y_e of sample k (null: none),
+  // x and Sigma in and out. False, leaving them unchanged, when Sigma_k or Pi_k^-1 is not positive
+  // definite.
+  virtual bool advance(int k, const Vec& u_e, const Vec* y_e, Vec& x, Mat& Sigma) noexcept = 0;
+  // The worst-case state of sample k given its measured error y_e (null: none) into out,
+  // x + H (gamma^-2 M_k x + C' R^-1 (y_e - C x)), H = (Sigma^-1 + C' R^-1 C - gamma^-2 M_k)^-1
+  // (discrete_output_feedback.hpp), and rho(Sigma M_k) as the return value (+inf when Sigma is not
+  // positive definite; out is then NaN, as when H^-1 is not positive definite).
+  virtual double worst_case_state(int k, const Vec& x, const Mat& Sigma, const Vec* y_e, Vec& out) noexcept = 0;
   // rho(Sigma Z(t)) (+inf when Sigma is not positive definite).
   virtual double coupling(double t, const Mat& Sigma) noexcept = 0;
 };

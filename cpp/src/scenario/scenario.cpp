@@ -133,6 +133,9 @@ void Scenario::validate_settings() const {
     }
     require(law != Law::Cascade, "[sampling] runs the online controller of the H-infinity or LQR design; the"
             " cascade law has no sampled form: remove [sampling] or choose law = \"hinf\" or \"lqr\"");
+    require(sp.measurement_update != MeasurementUpdate::Discrete || sp.design == SampledDesign::Digital,
+            "[sampling] measurement_update = \"discrete\" is the digital design's own filter: set design = "
+            "\"digital\", or choose measurement_update = \"sampled\" or \"held\"");
     require(sp.design == SampledDesign::Emulated || (kappa.is_constant() && kappa.offset() == 1.0),
             "[controller] kappa scales the continuous law's gain; the digital design ([sampling] design ="
             " \"digital\") has its own gains: remove kappa or use design = \"emulated\"");

@@ -43,6 +43,14 @@
 //   - held: in the innovation terms of (35)-(36) from t_meas for `hold` seconds and until a newer
 //     one is used (the error changes slowly where the vehicle's position does not, so holding it
 //     costs little); the command of the same step does not see it yet.
+//   - discrete (the digital law only): the central controller of discrete_output_feedback.hpp on
+//     the law's samples t_k, with R = N / hold. A measurement of sample k (t_meas in
+//     [t_k, t_{k+1})) enters the worst-case state x_w of that sample, and so every command of
+//     it from then on, u = u_d(t_now) - F_k x_w, and the estimate of sample k + 1;
+//     StepReport::rho_sigma_z is rho(Sigma_k M_k). The estimate is advanced sample by sample with the mean of the commands
+//     applied over each sample (less u_d at its middle); a sample without a measurement predicts
+//     (its Pi_k without C' R^-1 C). A measurement of a sample the estimate has passed is stale;
+//     compensate_delay does not apply (the delay of one sample is the design's).
 // Without a measurement the estimator runs open loop and Sigma grows. A measurement that arrives
 // late (t_meas earlier than the last call) is used from its own time: the estimate is
 // integrated again from the last measurement's time, where it is kept.
@@ -106,16 +114,25 @@ class SampledLaw {
   // digital one), k = 0 .. steps(); unchecked indices.
   const Mat& DDt(int k) const { return DDt_[static_cast<std::size_t>(k)]; }
   const Mat& Z(int k) const { return Z_[static_cast<std::size_t>(k)]; }
+  // The digital law's sampled linearization (discrete_design.hpp: A_k, B_k, D_k of the
+  // zero-order hold), null for the emulated law; and D_k D_k' / T (n x n), k = 0 .. steps() - 1,
+  // unchecked index.
+  const SampledLinearizationPtr& sampled() const { return sampled_; }
+  const Mat& discrete_DDt(int k) const { return discrete_DDt_[static_cast<std::size_t>(k)]; }
 
-  // The tables (K: steps() gains; Z: steps() + 1 matrices); use emulated() or digital().
+  // The tables (K: steps() gains; Z: steps() + 1 matrices); use emulated() or digital(). A
+  // digital law samples its trajectory again unless `sampled` (of the same trajectory and
+  // period) is given.
   SampledLaw(TrajectoryPtr trajectory, std::string kind, double gamma, double period, std::vector<Mat> K,
-             std::vector<Mat> Z);
+             std::vector<Mat> Z, SampledLinearizationPtr sampled = nullptr);
 
  private:
   TrajectoryPtr trajectory_;
   std::string kind_;
   double gamma_, period_;
   std::vector<Mat> K_, A_, B_, DDt_, Z_;
+  SampledLinearizationPtr sampled_;
+  std::vector<Mat> discrete_DDt_;
 };
 
 using SampledLawPtr = std::shared_ptr<const SampledLaw>;
@@ -133,14 +150,19 @@ struct ActuatorLimits {
 enum class MeasurementUpdate {
   Held,    // held in the innovation of (35)-(36) for `hold` seconds after its time (a continuous
            // measurement, as the batch loop's held noise)
-  Sampled  // once, at its time, as a jump of the estimate and Sigma (the sampled-measurement form
-           // of (35)-(36), see the top of this file): the command of the same step sees it
+  Sampled,  // once, at its time, as a jump of the estimate and Sigma (the sampled-measurement
+            // form of (35)-(36), see the top of this file): the command of the same step sees it
+  Discrete  // the digital law's own filter: the central controller of the discrete game with
+            // one-step-delayed measurements (discrete_output_feedback.hpp), run on the law's
+            // samples (see the top of this file); the digital law only
 };
 template <>
 struct EnumNames<MeasurementUpdate> {
   static constexpr const char* what = "measurement update";
-  static constexpr std::array<std::pair<MeasurementUpdate, const char*>, 2> names{
-      {{MeasurementUpdate::Held, "held"}, {MeasurementUpdate::Sampled, "sampled"}}};
+  static constexpr std::array<std::pair<MeasurementUpdate, const char*>, 3> names{
+      {{MeasurementUpdate::Held, "held"},
+       {MeasurementUpdate::Sampled, "sampled"},
+       {MeasurementUpdate::Discrete, "discrete"}}};
 };
 
 // The filter of an output-feedback controller (see the top of this file). An empty N: state
@@ -295,6 +317,20 @@ class OnlineController {
   // The history entry whose command is applied at t (the latest entry with time <= t).
   int entry_at(double t) const noexcept;
   void remember(double t, const Vec& u) noexcept;
+  // MeasurementUpdate::Discrete: the estimate advanced from sample k_est_ to k, each sample with
+  // the mean command applied over it and the measurement pending for it, if any. False when the
+  // filter failed (the estimate is then lost).
+  bool advance_to(int k) noexcept;
+  // MeasurementUpdate::Discrete: the measurement taken in (use may become Stale), the estimate
+  // advanced to t_now's sample and the command before the limits into u_. False when the
+  // estimate is lost.
+  bool discrete_command(double t_now, const double* measurement, double t_meas, MeasurementUse& use,
+                        StepReport& report) noexcept;
+  // The coupling condition's rho of this step into the report and the counts.
+  void record_coupling(double t_now, double rho, StepReport& report) noexcept;
+  // The limits on u_ (the rate from the command held, then the bounds), the command applied
+  // into u and remembered.
+  StepReport limit_and_hold(double t_now, StepReport report, double* u) noexcept;
 
   SampledLawPtr law_;
   OnlineOptions options_;
@@ -329,6 +365,11 @@ class OnlineController {
   Mat Sigma_anchor_;
   bool have_y_anchor_ = false;
   double y_until_anchor_ = 0.0;
+  // MeasurementUpdate::Discrete: the estimate is x_hat_{k_est_} (and Sigma_{k_est_}); the
+  // measured error y_e of sample pending_k_ waits for the step to pending_k_ + 1 (-1: none).
+  bool discrete_ = false;
+  int k_est_ = 0, pending_k_ = -1;
+  Vec x_worst_, u_mean_;
 };
 
 }  // namespace hinf
