@@ -41,12 +41,14 @@ Percentiles percentiles(std::vector<double> seconds) {
 // the filter of the paper's Figure 2, and y = (x, y, psi); with age < 0 every fourth sample still
 // has a measurement (without any, the H-infinity filter's Sigma escapes within seconds and the
 // controller answers Lost).
-void time_steps(const SampledLawPtr& law, bool output_feedback, long steps, double age, std::vector<double>& seconds) {
+void time_steps(const SampledLawPtr& law, bool output_feedback, MeasurementUpdate update, long steps, double age,
+                std::vector<double>& seconds) {
   OnlineOptions options;
   if (output_feedback) {
     options.filter.N = 0.25 * Mat::Identity(3, 3);
     options.filter.Sigma0 = Mat::Identity(6, 6);
     options.filter.Q = Mat::Identity(6, 6);
+    options.filter.update = update;
   }
   options.limits.u_min = Vec::Constant(2, -3.0);
   options.limits.u_max = Vec::Constant(2, 3.0);
@@ -111,34 +113,46 @@ int main(int argc, char** argv) {
   }
   std::printf("step() of the paper's ship (n = 6), T = %.2f s, %ld calls each; load average %.2f %.2f %.2f\n", T,
               steps, load[0], load[1], load[2]);
-  std::printf("%-18s %-34s %10s %10s %10s\n", "law", "measurement", "median us", "p99 us", "max us");
+  std::printf("%-26s %-34s %10s %10s %10s\n", "law", "measurement", "median us", "p99 us", "max us");
   const std::pair<const char*, double> cases[] = {
       {"of the same instant", 0.0}, {"20 ms old (predicted 20 ms)", 0.02}, {"missing (predicted 50 ms)", -1.0}};
   // Rounds: every case runs steps / rounds calls per round, the cases one after the other, so a
   // change of the machine's load falls on all of them alike.
   const int rounds = 10;
-  // State feedback with both laws, then output feedback with both.
-  std::vector<std::vector<double>> seconds(13);
+  // State feedback with both laws, then output feedback: the emulated law with the sampled and
+  // the held update, the digital law with its discrete one.
+  struct Setting {
+    const SampledLaw* law;
+    bool output_feedback;
+    MeasurementUpdate update;
+  };
+  const Setting settings[] = {{laws[0].get(), false, MeasurementUpdate::Sampled},
+                              {laws[1].get(), false, MeasurementUpdate::Sampled},
+                              {laws[0].get(), true, MeasurementUpdate::Sampled},
+                              {laws[0].get(), true, MeasurementUpdate::Held},
+                              {laws[1].get(), true, MeasurementUpdate::Discrete}};
+  const auto law_of = [&laws](const SampledLaw* law) { return law == laws[0].get() ? laws[0] : laws[1]; };
+  std::vector<std::vector<double>> seconds(3 * std::size(settings) + 1);
   for (auto& s : seconds) s.reserve(static_cast<std::size_t>(steps));
   for (int round = 0; round < rounds; ++round) {
     int c = 0;
-    for (bool output_feedback : {false, true})
-      for (const SampledLawPtr& law : laws)
-        for (const auto& [what, age] : cases) time_steps(law, output_feedback, steps / rounds, age, seconds[c++]);
+    for (const Setting& s : settings)
+      for (const auto& [what, age] : cases)
+        time_steps(law_of(s.law), s.output_feedback, s.update, steps / rounds, age, seconds[c++]);
     time_control(design, T, steps / rounds, seconds[c]);
   }
   int c = 0;
-  for (bool output_feedback : {false, true})
-    for (const SampledLawPtr& law : laws)
-      for (const auto& [what, age] : cases) {
-        const Percentiles p = percentiles(seconds[c++]);
-        const std::string name = law->kind() + (output_feedback ? ", output" : ", state");
-        const std::string label = output_feedback && age < 0 ? std::string("3 of 4 ") + what : std::string(what);
-        std::printf("%-18s %-34s %10.3f %10.3f %10.3f\n", name.c_str(), label.c_str(), p.median * 1e6, p.p99 * 1e6,
-                    p.max * 1e6);
-      }
+  for (const Setting& s : settings)
+    for (const auto& [what, age] : cases) {
+      const Percentiles p = percentiles(seconds[c++]);
+      const std::string name =
+          s.law->kind() + (s.output_feedback ? ", output, " + to_string(s.update) : std::string(", state"));
+      const std::string label = s.output_feedback && age < 0 ? std::string("3 of 4 ") + what : std::string(what);
+      std::printf("%-26s %-34s %10.3f %10.3f %10.3f\n", name.c_str(), label.c_str(), p.median * 1e6, p.p99 * 1e6,
+                  p.max * 1e6);
+    }
   const Percentiles p = percentiles(seconds[c]);
-  std::printf("%-18s %-34s %10.3f %10.3f %10.3f\n", "control()", "HinfStateFeedback, of the instant", p.median * 1e6,
+  std::printf("%-26s %-34s %10.3f %10.3f %10.3f\n", "control()", "HinfStateFeedback, of the instant", p.median * 1e6,
               p.p99 * 1e6, p.max * 1e6);
   return 0;
 }
