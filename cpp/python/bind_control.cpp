@@ -386,6 +386,43 @@ Examples
 >>> round(hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6)).gamma_star, 4)
 1.3992)").c_str());
 
+  m.def("gamma_star_discrete_output_feedback",
+        [](const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf, const Mat& C, const Mat& R,
+           const Mat& Sigma0, const GammaStarOptions& options) {
+          ComputationScope release;
+          return gamma_star_discrete_output_feedback(sampled, Q, Qf, C, R, Sigma0, options);
+        },
+        py::arg("sampled"), py::arg("Q"), py::arg("Qf"), py::arg("C"), py::arg("R"), py::arg("Sigma0"),
+        py::arg("options") = GammaStarOptions{}, doc({"gamma_star_discrete_output_feedback"}, R"(Parameters
+----------
+sampled : SampledLinearization
+    The linearization sampled at the controller's period.
+Q : array_like, shape (n, n)
+    Weight of the tracking error, as for solve_discrete_game (and the filter's).
+Qf : array_like, shape (n, n)
+    M_N, as for solve_discrete_game.
+C : array_like, shape (p, n)
+    The measurement matrix.
+R : array_like, shape (p, p)
+    The covariance of one measurement.
+Sigma0 : array_like, shape (n, n)
+    The initial uncertainty.
+options : GammaStarOptions, optional
+    The bracket, tolerance, evaluations and threads.
+
+Returns
+-------
+GammaStarResult
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> sampled = hc.SampledLinearization(trajectory, 0.1)
+>>> C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+>>> result = hc.gamma_star_discrete_output_feedback(sampled, np.eye(6), np.eye(6), C, 0.25 * np.eye(3), np.eye(6))
+>>> result.binding, bool(result.gamma_star > hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6)).gamma_star)
+(<GammaCondition.coupling: 3>, True))").c_str());
+
   py::class_<SampledLaw, py::smart_holder>(m, "SampledLaw", doc({"SampledLaw"}, R"(Examples
 --------
 )" HINF_DESIGN_EXAMPLE R"(

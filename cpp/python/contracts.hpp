@@ -456,6 +456,7 @@ measurement). Takes all the memory step() uses.)contract"},
     {"OnlineController::advance_to", R"contract(MeasurementUpdate::Discrete: the estimate advanced from sample k_est_ to k, each sample with
 the mean command applied over it and the measurement pending for it, if any. False when the
 filter failed (the estimate is then lost).)contract"},
+    {"OnlineController::command_end", R"contract(Until when the command of that entry is applied: the next entry's time, at most t.)contract"},
     {"OnlineController::counts", R"contract(The counts since reset().)contract"},
     {"OnlineController::discrete_command", R"contract(MeasurementUpdate::Discrete: the measurement taken in (use may become Stale), the estimate
 advanced to t_now's sample and the command before the limits into u_. False when the
@@ -1240,6 +1241,10 @@ condition fails at this step. Checks nothing else: the caller checks its inputs 
 (discrete_design.hpp): the smallest gamma that keeps gamma^2 T I - D_k' M_{k+1} D_k > 0 at every
 sample. binding is Grde (the discrete conjugate point) and t_escape_lower the latest sample
 time where the lower end fails. The recursion is exact: options.solver is not used.)contract"},
+    {"gamma_star_discrete_output_feedback", R"contract(The smallest gamma of the digital output feedback (discrete_output_feedback.hpp): the discrete
+game exists (binding Grde), its filter exists from Sigma0 (Filter) and rho(Sigma_k M_k) < gamma^2
+at every sample (Coupling); C, R (the covariance of one measurement) and Sigma0 as for
+solve_discrete_output_feedback. The recursions are exact: options.solver is not used.)contract"},
     {"gamma_star_output_feedback", R"contract(The smallest gamma for the output-feedback design: no conjugate point of the GRDE, the
 filter Riccati equation (36) with A_e(t) bounded and positive definite from Sigma0, and
 rho(Sigma Z) < gamma^2 on [t0, tf]. binding names the condition that limits it.)contract"},

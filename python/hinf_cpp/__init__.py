@@ -126,6 +126,7 @@ from hinf_cpp._core import (
     filter_escape_time,
     gamma_star,
     gamma_star_discrete,
+    gamma_star_discrete_output_feedback,
     gamma_star_output_feedback,
     grde_escape_time,
     max_rho_sigma_z,
@@ -174,8 +175,9 @@ __all__ = [
     # on a vehicle: the digital design and the online controller
     "SampledLinearization", "solve_discrete_game", "DiscreteDesign", "solve_discrete_output_feedback",
     "DiscreteOutputFeedback", "discrete_conjugate_time", "gamma_star_discrete",
-    "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus", "MeasurementUse", "MeasurementUpdate",
-    "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
+    "gamma_star_discrete_output_feedback",
+    "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus",
+    "MeasurementUse", "MeasurementUpdate", "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
     # errors
     "HinfError", "SolverError", "ConjugatePointError", "CouplingConditionError",
     "__version__",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -6187,6 +6187,44 @@ def gamma_star_discrete(sampled: SampledLinearization, Q: typing.Annotated[numpy
     >>> sampled = hc.SampledLinearization(trajectory, 0.1)
     >>> round(hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6)).gamma_star, 4)
     1.3992
+    """
+def gamma_star_discrete_output_feedback(sampled: SampledLinearization, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], C: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], R: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: GammaStarOptions = ...) -> GammaStarResult:
+    """
+    The smallest gamma of the digital output feedback (discrete_output_feedback.hpp): the discrete
+    game exists (binding Grde), its filter exists from Sigma0 (Filter) and rho(Sigma_k M_k) < gamma^2
+    at every sample (Coupling); C, R (the covariance of one measurement) and Sigma0 as for
+    solve_discrete_output_feedback. The recursions are exact: options.solver is not used.
+    
+    Parameters
+    ----------
+    sampled : SampledLinearization
+        The linearization sampled at the controller's period.
+    Q : array_like, shape (n, n)
+        Weight of the tracking error, as for solve_discrete_game (and the filter's).
+    Qf : array_like, shape (n, n)
+        M_N, as for solve_discrete_game.
+    C : array_like, shape (p, n)
+        The measurement matrix.
+    R : array_like, shape (p, p)
+        The covariance of one measurement.
+    Sigma0 : array_like, shape (n, n)
+        The initial uncertainty.
+    options : GammaStarOptions, optional
+        The bracket, tolerance, evaluations and threads.
+    
+    Returns
+    -------
+    GammaStarResult
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> sampled = hc.SampledLinearization(trajectory, 0.1)
+    >>> C = np.hstack([np.zeros((3, 3)), np.eye(3)])
+    >>> result = hc.gamma_star_discrete_output_feedback(sampled, np.eye(6), np.eye(6), C, 0.25 * np.eye(3), np.eye(6))
+    >>> result.binding, bool(result.gamma_star > hc.gamma_star_discrete(sampled, np.eye(6), np.eye(6)).gamma_star)
+    (<GammaCondition.coupling: 3>, True)
     """
 def gamma_star_output_feedback(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], N: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Sigma0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: GammaStarOptions = ...) -> GammaStarResult:
     """

@@ -9,6 +9,7 @@
 #include <system_error>
 #include <thread>
 
+#include "hinf/control/discrete_output_feedback.hpp"
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
 #include "numerics/extremum.hpp"
@@ -217,6 +218,31 @@ GammaStarResult gamma_star_discrete(const SampledLinearizationPtr& sampled, cons
   return bisect([&](double gamma) {
     const double t = discrete_conjugate_time(*sampled, Q, Qf, gamma);
     return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+  }, options);
+}
+
+GammaStarResult gamma_star_discrete_output_feedback(const SampledLinearizationPtr& sampled, const Mat& Q,
+                                                    const Mat& Qf, const Mat& C, const Mat& R, const Mat& Sigma0,
+                                                    const GammaStarOptions& options) {
+  require(sampled != nullptr, "gamma_star_discrete_output_feedback needs a sampled linearization");
+  options.validate();
+  const double inf = std::numeric_limits<double>::infinity();
+  solve_discrete_output_feedback(solve_discrete_game(sampled, Q, Qf, inf), C, R, Sigma0, Q);  // input checks
+  return bisect([&](double gamma) {
+    DiscreteDesignPtr design;
+    try {
+      design = solve_discrete_game(sampled, Q, Qf, gamma);
+    } catch (const ConjugatePointError& e) {
+      return fail(gamma, e.t_escape(), GammaCondition::Grde);
+    }
+    try {
+      solve_discrete_output_feedback(design, C, R, Sigma0, Q);
+    } catch (const ConjugatePointError& e) {
+      return fail(gamma, e.t_escape(), GammaCondition::Filter);
+    } catch (const CouplingConditionError& e) {
+      return fail(gamma, e.t(), GammaCondition::Coupling);
+    }
+    return pass(gamma);
   }, options);
 }
 

@@ -235,16 +235,20 @@ int OnlineController::entry_at(double t) const noexcept {
   return history_start_;
 }
 
-void OnlineController::predict_to(double t) noexcept {
+double OnlineController::command_end(int entry, double t) const noexcept {
   const int capacity = options_.history;
+  const int next = (entry - history_start_ + capacity) % capacity + 1;
+  if (next >= history_size_) return t;
+  return std::min(t, history_t_[static_cast<std::size_t>((history_start_ + next) % capacity)]);
+}
+
+void OnlineController::predict_to(double t) noexcept {
   double s = t_x_;
   while (s < t) {
     // The command applied from s on, until the next one (or t); the measurement held, until it
     // is no longer.
     const int entry = entry_at(s);
-    const int next = (entry - history_start_ + capacity) % capacity + 1;
-    double end = t;
-    if (next < history_size_) end = std::min(t, history_t_[static_cast<std::size_t>((history_start_ + next) % capacity)]);
+    double end = command_end(entry, t);
     const bool innovate = filter_ && have_y_ && s < y_until_;
     if (innovate) end = std::min(end, y_until_);
     const int substeps = std::max(1, static_cast<int>(std::ceil((end - s) / kMaxSubstep - 1e-9)));
@@ -258,7 +262,6 @@ void OnlineController::predict_to(double t) noexcept {
 bool OnlineController::advance_to(int k) noexcept {
   const SampledLaw& law = *law_;
   const double T = law.period();
-  const int capacity = options_.history;
   for (; k_est_ < k; ++k_est_) {
     // The mean of the commands applied over [t_k, t_{k+1}), less u_d at the sample's middle.
     const double a = law.t0() + k_est_ * T, b = a + T;
@@ -266,9 +269,7 @@ bool OnlineController::advance_to(int k) noexcept {
     double s = a;
     while (s < b) {
       const int entry = entry_at(s);
-      const int next = (entry - history_start_ + capacity) % capacity + 1;
-      double end = b;
-      if (next < history_size_) end = std::min(b, history_t_[static_cast<std::size_t>((history_start_ + next) % capacity)]);
+      const double end = command_end(entry, b);
       u_mean_ += ((end - s) / T) * history_u_.col(entry);
       s = end;
     }

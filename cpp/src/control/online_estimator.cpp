@@ -99,15 +99,7 @@ class Estimator final : public OnlineEstimator {
     S3_ = Sigma_.transpose();
     Sigma_ = 0.5 * (Sigma_ + S3_);
     x_ = x;
-    innovation_ = y_e;
-    innovation_.noalias() -= C_ * x_;
-    if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
-    n_tmp_.noalias() = CtRinv_ * innovation_;
-    r_.noalias() = Sigma_ * n_tmp_;
-    gain_lhs_.setIdentity();
-    gain_lhs_.noalias() -= inv_gamma2_ * (Sigma_ * Z_);
-    lu_.compute(gain_lhs_);
-    n_tmp_ = lu_.solve(r_);
+    innovation_gain(Sigma_, x_, y_e, CtRinv_);
     x_ += n_tmp_;
     x = x_;
     Sigma = Sigma_;
@@ -239,17 +231,22 @@ class Estimator final : public OnlineEstimator {
     NN_.noalias() = (innovate ? S_innovate_ : S_predict_) * Sigma;
     dSigma.noalias() += Sigma * NN_;
     if (!innovate) return;
-    // + [I - gamma^-2 Sigma Z]^-1 Sigma C' N^-1 (y_e - C q_hat), the heading's component wrapped
+    innovation_gain(Sigma, x, y_e, CtNinv_);
+    dx += n_tmp_;
+  }
+
+  // [I - gamma^-2 Sigma Z]^-1 Sigma CtW (y_e - C x) into n_tmp_, the heading's innovation wrapped
+  // (CtW: C' N^-1 for the held update's rate, C' R^-1 for the sampled update's jump).
+  void innovation_gain(const MatN& Sigma, const VecN& x, const Vec& y_e, const MatNP& CtW) noexcept {
     innovation_ = y_e;
     innovation_.noalias() -= C_ * x;
     if (heading_row_ >= 0) innovation_[heading_row_] = wrap_angle(innovation_[heading_row_]);
-    n_tmp_.noalias() = CtNinv_ * innovation_;
+    n_tmp_.noalias() = CtW * innovation_;
     r_.noalias() = Sigma * n_tmp_;
     gain_lhs_.setIdentity();
     gain_lhs_.noalias() -= inv_gamma2_ * (Sigma * Z_);
     lu_.compute(gain_lhs_);
     n_tmp_ = lu_.solve(r_);
-    dx += n_tmp_;
   }
 
   const SampledLaw& law_;

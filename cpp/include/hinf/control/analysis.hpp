@@ -95,6 +95,14 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
 GammaStarResult gamma_star_discrete(const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf,
                                     const GammaStarOptions& options = {});
 
+// The smallest gamma of the digital output feedback (discrete_output_feedback.hpp): the discrete
+// game exists (binding Grde), its filter exists from Sigma0 (Filter) and rho(Sigma_k M_k) < gamma^2
+// at every sample (Coupling); C, R (the covariance of one measurement) and Sigma0 as for
+// solve_discrete_output_feedback. The recursions are exact: options.solver is not used.
+GammaStarResult gamma_star_discrete_output_feedback(const SampledLinearizationPtr& sampled, const Mat& Q,
+                                                    const Mat& Qf, const Mat& C, const Mat& R, const Mat& Sigma0,
+                                                    const GammaStarOptions& options = {});
+
 // The largest value of rho(Sigma(t) Z(t)) on [t0, tf] and where it is taken.
 std::pair<double, double> max_rho_sigma_z(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma);
 

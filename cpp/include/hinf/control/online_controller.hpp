@@ -316,6 +316,8 @@ class OnlineController {
   void predict_to(double t) noexcept;
   // The history entry whose command is applied at t (the latest entry with time <= t).
   int entry_at(double t) const noexcept;
+  // Until when the command of that entry is applied: the next entry's time, at most t.
+  double command_end(int entry, double t) const noexcept;
   void remember(double t, const Vec& u) noexcept;
   // MeasurementUpdate::Discrete: the estimate advanced from sample k_est_ to k, each sample with
   // the mean command applied over it and the measurement pending for it, if any. False when the
