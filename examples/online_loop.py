@@ -6,7 +6,8 @@ behind and 1 m aside with a 45 degree heading error): every T seconds the state 
 controller answers with a command, and the command is held until the next sample, optionally
 applied one sample late (a computation delay the controller knows of and predicts over). With
 output feedback (Figure 2's set-up) only x, y, psi are measured, with noise of standard deviation
-0.5 per sample (seeded), and the controller runs the estimator and the H-infinity filter.
+0.5 per sample (seeded), and the controller runs the estimator and the H-infinity filter (with
+the digital law, the discrete game's own filter).
 
     python examples/online_loop.py            # prints the RMS position error of each loop
 
@@ -48,7 +49,10 @@ def run_loop(trajectory, law, period: float, delayed: bool = False, sigma: float
         controller.reset(0.0, q)
     else:
         # Figure 2's filter: N = sigma^2 I, Sigma(t0) = I, Q = I; the estimate starts on the path.
-        f = hc.OnlineFilter(N=sigma**2 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6))
+        # The digital law runs its own filter (the discrete game's), the emulated one the sampled
+        # form of the paper's (docs/online.md).
+        update = hc.MeasurementUpdate.discrete if law.kind() == "digital" else hc.MeasurementUpdate.sampled
+        f = hc.OnlineFilter(N=sigma**2 * np.eye(3), Sigma0=np.eye(6), Q=np.eye(6), update=update)
         controller = hc.OnlineController(law, hc.OnlineOptions(filter=f, limits=limits))
         controller.reset(0.0, trajectory.q_d(0.0))
 
@@ -92,9 +96,11 @@ def main() -> None:
               f"digital {run_loop(trajectory, digital, period):.4f} m, "
               f"emulated one sample late {run_loop(trajectory, emulated, period, delayed=True):.4f} m")
     emulated = hc.SampledLaw.emulated(design, 0.05)
+    digital = hc.SampledLaw.digital(hc.solve_discrete_game(trajectory, 0.05, np.eye(6), np.eye(6), 5.0))
     print(f"output feedback, x, y, psi with sigma = 0.5 per sample, T = 0.05 s: "
           f"{run_loop(trajectory, emulated, 0.05, sigma=0.5):.4f} m, "
-          f"one sample late {run_loop(trajectory, emulated, 0.05, delayed=True, sigma=0.5):.4f} m")
+          f"one sample late {run_loop(trajectory, emulated, 0.05, delayed=True, sigma=0.5):.4f} m, "
+          f"digital law with its discrete filter {run_loop(trajectory, digital, 0.05, sigma=0.5):.4f} m")
 
 
 if __name__ == "__main__":
