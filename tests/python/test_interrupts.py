@@ -154,6 +154,6 @@ def test_ctrl_c_while_planning_is_interrupted_not_an_optimizer_failure(tmp_path)
     status, after, stderr = interrupt_when_busy([BIN / "hinf-cpp", "plan", path, "-o", tmp_path / "out.toml",
                                                  "--no-cache"], 5.0)
     assert status == 130, stderr
-    # CasADi prints a warning of its own about the KeyboardInterrupt before the command's line.
-    assert stderr.splitlines()[-1] == "hinf-cpp: error: interrupted" and "Traceback" not in stderr, stderr
+    # CasADi's own warning about the KeyboardInterrupt is held back: one line.
+    assert stderr.splitlines() == ["hinf-cpp: error: interrupted"], stderr
     assert after < 2.0, after

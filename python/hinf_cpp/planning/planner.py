@@ -33,13 +33,17 @@ absolute.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import hashlib
+import io
 import itertools
 import json
 import math
 import os
 import pathlib
+import sys
+import threading
 import time
 import warnings
 from collections.abc import Sequence
@@ -1029,18 +1033,27 @@ def _solve(ca, F, symbolic: SymbolicModel, q0: np.ndarray, t: np.ndarray, waypoi
     advice = ("Give the waypoints more time, an interval that resolves the manoeuvres, or (if it ran out) "
               "more max_iterations")
     started = time.perf_counter()
+    # CasADi writes its warnings to Python's sys.stderr; they are held until the solve ends and
+    # written then, but for the one it prints when Ctrl-C stops IPOPT (the command then says
+    # "interrupted" in one line). Only on the main thread, where Ctrl-C arrives: sys.stderr is
+    # the process's, and another thread's swap would interleave with this one's.
+    held = io.StringIO()
+    main_thread = threading.current_thread() is threading.main_thread()
     try:
-        solution = opti.solve()
+        with contextlib.redirect_stderr(held) if main_thread else contextlib.nullcontext():
+            solution = opti.solve()
     except RuntimeError:  # Opti raises when IPOPT does not succeed; its stats say why
         if _core.interrupt_requested():
             # Ctrl-C: CasADi takes Python's KeyboardInterrupt and stops IPOPT with an exception
             # of its own; the request the core's SIGINT handler recorded says it was the user.
             _core.clear_interrupt()
             raise KeyboardInterrupt from None
+        sys.stderr.write(held.getvalue())
         stats = opti.stats()
         raise PlanningError(f"the planner's optimizer (IPOPT) stopped without a solution: "
                             f"{stats.get('return_status', 'unknown status')} after {stats.get('iter_count', 0)} "
                             f"iterations. {advice}") from None
+    sys.stderr.write(held.getvalue())
     stats = dict(solution.stats(), seconds=time.perf_counter() - started)
     return _Iterate(q=np.asarray(solution.value(X)).reshape(n, count + 1).T,
                     u=np.asarray(solution.value(U)).reshape(m, count + 1).T,
