@@ -631,7 +631,8 @@ TEST(DiscreteOutputFeedback, KalmanAtInfinityAndTheOnlineRecursionIsTheBatchOne)
   const double Ad = std::exp(a * T), Dd = (Ad - 1.0) / a * d, q = Dd * Dd / T;
   const double b = R * (1.0 - Ad * Ad) - q * c * c;
   const double fixed = (-b + std::sqrt(b * b + 4.0 * c * c * q * R)) / (2.0 * c * c);
-  EXPECT_NEAR(lqg->Sigma(lqg->steps())(0, 0), fixed, 1e-12 * fixed);
+  // A converged recursion against a closed form: round-off of a few ulps per step, compared at 1e-10.
+  EXPECT_NEAR(lqg->Sigma(lqg->steps())(0, 0), fixed, 1e-10 * fixed);
   EXPECT_EQ(lqg->largest_coupling(), 0.0);
 
   const double gamma = 3.0;
@@ -651,8 +652,9 @@ TEST(DiscreteOutputFeedback, KalmanAtInfinityAndTheOnlineRecursionIsTheBatchOne)
     const hinf::StepReport r = controller.step(t, &y, t, &u);
     ASSERT_EQ(r.status, StepStatus::Ok);
     const double sigma = feedback->Sigma(k)(0, 0), M = design->M(k)(0, 0);
-    EXPECT_NEAR(controller.sigma()(0, 0), sigma, 1e-12 * sigma) << "k = " << k;
-    EXPECT_NEAR(r.rho_sigma_z, sigma * M, 1e-12 * sigma * M) << "k = " << k;
+    // Two codes of one recursion (fixed and dynamic sizes): round-off over 150 steps, at 1e-10.
+    EXPECT_NEAR(controller.sigma()(0, 0), sigma, 1e-10 * sigma) << "k = " << k;
+    EXPECT_NEAR(r.rho_sigma_z, sigma * M, 1e-10 * sigma * M) << "k = " << k;
     const double H = 1.0 / (1.0 / sigma + c * c / R - inv_g2 * M);
     const double x_w = x_hat + H * (inv_g2 * M * x_hat + c / R * (y - c * x_hat));
     const double expected = -design->gain(k)(0, 0) * x_w;

@@ -45,9 +45,9 @@ def test_at_gamma_infinity_the_recursions_are_scipys_kalman_and_lqr(trajectory):
     kalman = sl.solve_discrete_are(A.T, C.T, D @ D.T / T, R)
     lqr = sl.solve_discrete_are(A, B / np.sqrt(T), T * Q, np.eye(1))
     # Two computations of the same fixed point, both converged: round-off of a few ulps times
-    # the Riccati equations' conditioning (~1e3 here).
-    assert np.abs(feedback.Sigma(k) - kalman).max() <= 1e-12 * np.abs(kalman).max()
-    assert np.abs(game.M(k) - lqr).max() <= 1e-12 * np.abs(lqr).max()
+    # the Riccati equations' conditioning (~1e3 here; measured 2e-15), compared at 1e-9.
+    assert np.abs(feedback.Sigma(k) - kalman).max() <= 1e-9 * np.abs(kalman).max()
+    assert np.abs(game.M(k) - lqr).max() <= 1e-9 * np.abs(lqr).max()
     assert feedback.largest_coupling() == 0.0
 
 
@@ -139,9 +139,9 @@ def test_the_smallest_gamma_of_the_three_conditions_is_slicots_optimum(trajector
     # controller's norm, on the frequency grid, crosses gamma. Measured: 6e-10 apart.
     assert ours == pytest.approx(slicot, rel=1e-6)
     # SB10DD's controller is the header's central controller: the same closed loop (the norms of
-    # two computations of one transfer function on one grid: ~1e-12 apart, compared at 1e-8).
+    # two computations of one transfer function on one grid: ~1e-12 apart, compared at 1e-6).
     for gamma in (2.5, 4.0):  # above the finite-horizon design's threshold (1.49: Sigma0 = I, Qf = I)
-        assert slicot_loop(gamma)[1] == pytest.approx(closed_loop_norm(trajectory, gamma)[1], rel=1e-8)
+        assert slicot_loop(gamma)[1] == pytest.approx(closed_loop_norm(trajectory, gamma)[1], rel=1e-6)
 
 
 def closed_loop_norm(trajectory, gamma):
