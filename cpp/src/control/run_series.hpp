@@ -9,6 +9,14 @@
 
 namespace hinf {
 
+namespace detail {
+// simulate_state_feedback (simulation.hpp) with the divergence bound given instead of computed from
+// the run's own horizon (the receding horizon's pieces share the mission's bound).
+SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
+                                         const Disturbance& disturbance, const Vec& q0,
+                                         const SimulationOptions& options, const Model* plant, double bound);
+}  // namespace detail
+
 // The output grid of a closed loop over the trajectory's horizon (output_grid), after checking
 // that the run's series (t, q, q_d, u, u_d and w of nw channels) fit in memory.
 std::vector<double> run_grid(const Trajectory& trajectory, double output_dt, int nw);

@@ -81,6 +81,14 @@ void check_plant_sizes(const Model& model, const Model& plant) {
 SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
                                          const Disturbance& disturbance, const Vec& q0,
                                          const SimulationOptions& simulation, const Model* plant) {
+  return detail::simulate_state_feedback(trajectory, controller, disturbance, q0, simulation, plant, NAN);
+}
+
+namespace detail {
+
+SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controller& controller,
+                                         const Disturbance& disturbance, const Vec& q0,
+                                         const SimulationOptions& simulation, const Model* plant, double given_bound) {
   // The design model (sizes, heading) and the vehicle integrated: the plant, or the design model.
   const Model& design_model = trajectory.model();
   const Model& model = plant != nullptr ? *plant : design_model;
@@ -97,7 +105,9 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
   const double t0 = trajectory.t0(), tf = trajectory.tf();
   const std::vector<double> grid = run_grid(trajectory, simulation.output_dt, nw);
   const long count = static_cast<long>(grid.size());
-  const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
+  // NaN: the run's own bound.
+  const double bound = std::isnan(given_bound) ? divergence_bound(trajectory, q0, grid, simulation.divergence_factor)
+                                               : given_bound;
   const int heading = model.heading_index();
 
   const bool constant_GD = model.constant_input_matrices();
@@ -180,6 +190,8 @@ SimulationResult simulate_state_feedback(const Trajectory& trajectory, Controlle
     controller.control(result.t[k], result.q.row(k).transpose(), result.u.row(k).transpose());
   return result;
 }
+
+}  // namespace detail
 
 std::vector<double> run_grid(const Trajectory& trajectory, double output_dt, int nw) {
   const long count = output_count(trajectory.t0(), trajectory.tf(), output_dt);

@@ -1,0 +1,207 @@
+#include "hinf/control/receding_horizon.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "hinf/control/controller.hpp"
+#include "hinf/core/angles.hpp"
+#include "hinf/core/checks.hpp"
+#include "hinf/core/errors.hpp"
+#include "control/run_series.hpp"
+
+namespace hinf {
+
+void RecedingHorizonOptions::validate() const {
+  require(std::isfinite(window) && window > 0.0, "the receding horizon's window must be a finite number of seconds > 0, got ",
+          window);
+  require(std::isfinite(update) && update > 0.0 && update <= window,
+          "the receding horizon's update period must be in (0, window] = (0, ", window, "] s, got ", update);
+}
+
+std::size_t HorizonWindow::memory_bytes() const {
+  return (trajectory ? trajectory->dense().memory_bytes() : 0) + (design ? design->dense().memory_bytes() : 0);
+}
+
+RecedingHorizon::RecedingHorizon(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, Mat Q, Mat Qf, double gamma,
+                                 RecedingHorizonOptions options, SolverOptions solver, TrajectoryOptions trajectory)
+    : model_(std::move(model)),
+      q_d0_(std::move(q_d0)),
+      u_d_(std::move(u_d)),
+      t0_(t0),
+      Q_(std::move(Q)),
+      Qf_(std::move(Qf)),
+      gamma_(gamma),
+      options_(options),
+      solver_(solver),
+      trajectory_options_(trajectory) {
+  require(model_ != nullptr, "the receding horizon needs a model");
+  require(std::isfinite(t0_), "the receding horizon's t0 must be finite, got ", t0_);
+  options_.validate();
+  solver_.validate();
+  const int n = model_->n();
+  check_size(q_d0_, n, "the desired initial state q_d0");
+  check_symmetric_weight(Q_, n, "Q", false);
+  check_symmetric_weight(Qf_, n, "Qf", true);
+  require(gamma_ > 0.0, "gamma must be > 0 (may be inf), got ", gamma_);
+}
+
+int RecedingHorizon::window_at(double t) const {
+  require(std::isfinite(t) && t >= t0_, "t = ", t, " is before the receding horizon's t0 = ", t0_);
+  const double position = (t - t0_) / options_.update;
+  require(position < 2e9, "t = ", t, " is more than 2e9 update periods after t0");
+  return static_cast<int>(std::floor(position + 1e-9));
+}
+
+TrajectoryPtr RecedingHorizon::window_trajectory(int j, const Vec& q_d_start) const {
+  require(j >= 0, "a receding-horizon window's index must be >= 0, got ", j);
+  check_size(q_d_start, n(), str_cat("the desired state at the start of window ", j));
+  const double t_start = window_start(j);
+  return std::make_shared<const Trajectory>(model_, q_d_start, u_d_, t_start, t_start + options_.window,
+                                            trajectory_options_);
+}
+
+HorizonWindow RecedingHorizon::window(int j, const Vec& q_d_start) const {
+  HorizonWindow w;
+  w.index = j;
+  w.t_start = window_start(j);
+  w.t_use_end = window_start(j + 1);
+  w.trajectory = window_trajectory(j, q_d_start);
+  try {
+    w.design = solve_grde(w.trajectory, Q_, Qf_, gamma_, solver_);
+  } catch (const ConjugatePointError& e) {
+    throw ConjugatePointError(str_cat("receding-horizon window ", j, " [", w.t_start, ", ", w.t_start + options_.window,
+                                      "] s: ", e.what()),
+                              e.t_escape(), e.gamma());
+  }
+  return w;
+}
+
+HorizonWindow RecedingHorizon::next(const HorizonWindow& previous) const {
+  require(previous.trajectory != nullptr, "the window before has no trajectory");
+  return window(previous.index + 1, previous.trajectory->q_d(window_start(previous.index + 1)));
+}
+
+namespace {
+
+// The largest |q_d|_inf on the output times of [t_a, t_b] of a window.
+double largest_desired(const Trajectory& trajectory, const std::vector<double>& grid) {
+  Vec q_d(trajectory.n());
+  std::size_t cursor = 0;
+  double largest = 0.0;
+  for (double t : grid) {
+    trajectory.q_d(t, q_d.data(), &cursor);
+    largest = std::max(largest, q_d.cwiseAbs().maxCoeff());
+  }
+  return largest;
+}
+
+// Appends the rows of `piece` after its first (the time the series already end with) to `all`.
+void append_rows(RowMat& all, const RowMat& piece, bool first) {
+  const Eigen::Index skip = first ? 0 : 1, rows = piece.rows() - skip;
+  if (rows <= 0) return;
+  const Eigen::Index old = all.rows();
+  all.conservativeResize(old + rows, piece.cols());
+  all.bottomRows(rows) = piece.bottomRows(rows);
+}
+
+}  // namespace
+
+SimulationResult simulate_receding_horizon(const RecedingHorizon& horizon, const Disturbance& disturbance,
+                                           const Vec& q0, double tf, const SimulationOptions& options,
+                                           const Model* plant, const Signal& kappa, RecedingHorizonReport* report) {
+  const double t0 = horizon.t0();
+  check_horizon(t0, tf);
+  options.validate();
+  const Model& model = horizon.model();
+  check_size(q0, model.n(), "the initial state q0");
+  const int heading = model.heading_index();
+  RecedingHorizonReport summary;
+
+  Vec q_e0(model.n());
+  tracking_error(model.n(), heading, q0.data(), horizon.q_d0().data(), q_e0.data());
+  double scale = std::max(1.0, q_e0.cwiseAbs().maxCoeff());
+
+  SimulationResult result;
+  result.heading_index = heading;
+  Vec q = q0;
+  HorizonWindow current = horizon.first();
+  for (bool first = true;; first = false) {
+    ++summary.windows;
+    summary.grde.steps += current.design->stats().steps;
+    summary.grde.rejected += current.design->stats().rejected;
+    summary.grde.rhs_evals += current.design->stats().rhs_evals;
+    summary.grde.jac_evals += current.design->stats().jac_evals;
+    summary.grde.method = current.design->stats().method;
+    summary.grde.memory_bytes = std::max(summary.grde.memory_bytes, current.design->stats().memory_bytes);
+    summary.largest_window_bytes = std::max(summary.largest_window_bytes, current.memory_bytes());
+
+    // The loop on [t_j, t_{j+1}] (the last piece ends at tf) along the window's trajectory.
+    const double t_end = std::min(current.t_use_end, tf);
+    const bool last = t_end >= tf;
+    const Trajectory& window = *current.trajectory;
+    const Trajectory piece(horizon.model_ptr(), window.q_d(current.t_start), window.u_d_signal(), current.t_start,
+                           t_end, window.dense(), window.stats());
+    scale = std::max(scale, largest_desired(piece, output_grid(current.t_start, t_end, options.output_dt)));
+    summary.divergence_bound = options.divergence_factor * scale;
+    HinfStateFeedback law(current.design, kappa);
+    const SimulationResult part =
+        detail::simulate_state_feedback(piece, law, disturbance, q, options, plant, summary.divergence_bound);
+
+    const Eigen::Index skip = first ? 0 : 1, rows = part.t.size() - skip;
+    if (rows > 0) {
+      const Eigen::Index old = result.t.size();
+      result.t.conservativeResize(old + rows);
+      result.t.tail(rows) = part.t.tail(rows);
+    }
+    append_rows(result.q, part.q, first);
+    append_rows(result.q_d, part.q_d, first);
+    append_rows(result.u, part.u, first);
+    append_rows(result.u_d, part.u_d, first);
+    append_rows(result.w, part.w, first);
+    result.integrator = part.integrator;
+    result.stats.steps += part.stats.steps;
+    result.stats.rejected += part.stats.rejected;
+    result.stats.rhs_evals += part.stats.rhs_evals;
+    result.stats.jac_evals += part.stats.jac_evals;
+    if (part.status != RunStatus::Completed) {
+      result.status = part.status;
+      result.status_message = part.status_message;
+      break;
+    }
+    if (last) break;
+    q = part.q.row(part.q.rows() - 1).transpose();
+    // The next window is solved while the one in use is still held: two at most.
+    HorizonWindow next = horizon.next(current);
+    summary.peak_bytes = std::max(summary.peak_bytes, current.memory_bytes() + next.memory_bytes());
+    current = std::move(next);
+  }
+  summary.peak_bytes = std::max(summary.peak_bytes, summary.largest_window_bytes);
+  if (report != nullptr) *report = summary;
+  return result;
+}
+
+WindowGammaStar receding_horizon_gamma_star(const RecedingHorizon& horizon, double tf, const GammaStarOptions& options) {
+  check_horizon(horizon.t0(), tf);
+  GammaStarOptions search = options;
+  search.solver = horizon.solver();
+  search.validate();
+  WindowGammaStar worst;
+  Vec q_start = horizon.q_d0();
+  for (int j = 0; horizon.window_start(j) < tf; ++j) {
+    const TrajectoryPtr trajectory = horizon.window_trajectory(j, q_start);
+    GammaStarResult r = gamma_star(trajectory, horizon.Q(), horizon.Qf(), search);
+    ++worst.windows;
+    worst.converged = worst.converged && r.converged;
+    if (!(r.gamma_star <= worst.gamma_star)) {  // also the first window (NaN)
+      worst.gamma_star = r.gamma_star;
+      worst.window = j;
+      worst.t_start = horizon.window_start(j);
+      worst.result = std::move(r);
+    }
+    q_start = trajectory->q_d(horizon.window_start(j + 1));
+  }
+  return worst;
+}
+
+}  // namespace hinf

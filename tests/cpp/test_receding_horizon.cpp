@@ -1,0 +1,181 @@
+// The receding-horizon design (control/receding_horizon.hpp):
+//   * windows chain into one desired trajectory: q_d of the windows against one integration over
+//     the whole horizon, within the two integrations' tolerances;
+//   * a window's Z against the full-horizon design's Z at the same times where both are far from
+//     their ends (the GRDE forgets its terminal weight backward in time);
+//   * the paper's Figure 1 under the receding horizon: RMS position error over the last half within
+//     2% of the full-horizon design for H = 5 s and 10 s (updated every second);
+//   * the memory held depends on the window, not on the mission: 400 s and 4000 s of the paper's
+//     path, equal within 10% and under 2 MB;
+//   * the largest gamma* over the windows against gamma* of single windows, and errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "hinf/control/analysis.hpp"
+#include "hinf/control/metrics.hpp"
+#include "hinf/control/receding_horizon.hpp"
+#include "hinf/core/errors.hpp"
+#include "hinf/io/scenario_file.hpp"
+#include "hinf/scenario/scenario.hpp"
+
+namespace {
+
+using hinf::Mat;
+using hinf::Vec;
+
+hinf::Scenario fig1() {
+  return hinf::load_scenario_toml(std::string(HINF_SOURCE_DIR) + "/scenarios/paper_fig1.toml").resolved();
+}
+
+hinf::RecedingHorizon horizon_of(const hinf::Scenario& s, double window, double update) {
+  hinf::RecedingHorizonOptions options;
+  options.window = window;
+  options.update = update;
+  return hinf::RecedingHorizon(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf, s.gamma, options, s.solver);
+}
+
+TEST(RecedingHorizon, WindowsChainIntoTheDesiredTrajectory) {
+  const hinf::Scenario s = fig1();
+  const hinf::RecedingHorizon horizon = horizon_of(s, 5.0, 1.0);
+  const hinf::Trajectory whole(s.model, s.desired_q0, s.desired_u, s.t0, 12.0);
+  hinf::HorizonWindow w = horizon.first();
+  double largest = 0.0;
+  for (int j = 0; j < 8; ++j, w = horizon.next(w)) {
+    EXPECT_EQ(w.index, j);
+    EXPECT_DOUBLE_EQ(w.t_start, static_cast<double>(j));
+    EXPECT_DOUBLE_EQ(w.trajectory->tf(), j + 5.0);
+    for (double t = w.t_start; t <= w.t_start + 5.0; t += 0.25)
+      largest = std::max(largest, (w.trajectory->q_d(t) - whole.q_d(t)).cwiseAbs().maxCoeff());
+  }
+  // Both integrations hold a local error of rtol 1e-10 / atol 1e-12 per step over a path of size
+  // ~10 m: their global difference over 12 s stays far below 1e-7 m.
+  EXPECT_LT(largest, 1e-7);
+}
+
+TEST(RecedingHorizon, WindowZMatchesTheLongDesignFarFromTheEnds) {
+  const hinf::Scenario s = fig1();
+  const hinf::RecedingHorizon horizon = horizon_of(s, 10.0, 1.0);
+  const auto path = std::make_shared<const hinf::Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, 40.0);
+  const hinf::HorizonWindow w = horizon.window(3, path->q_d(3.0));
+  const auto whole = hinf::solve_grde(path, s.Q, s.Qf, s.gamma, s.solver);
+  // At t_j and t_j + 1 the window's terminal weight lies 9-10 s ahead and the long design's 36 s:
+  // the GRDE forgets Qf at the rate of its closed loop (|K| recovers within ~4 s of the end,
+  // issue #22), so the two designs agree to well under a percent there, and not near the window's
+  // end.
+  for (double t : {3.0, 4.0}) {
+    const double rel = (w.design->Z(t) - whole->Z(t)).norm() / whole->Z(t).norm();
+    EXPECT_LT(rel, 1e-3) << "t = " << t;
+  }
+  const double near_end = (w.design->Z(12.9) - whole->Z(12.9)).norm() / whole->Z(12.9).norm();
+  EXPECT_GT(near_end, 1e-2);
+}
+
+// RMS position error over the last half of the run (metrics.hpp).
+double rms_last_half(const hinf::Scenario& s, const hinf::SimulationResult& run) {
+  return hinf::compute_metrics(*s.model, run, s.Q).rms_position_error_last_half;
+}
+
+TEST(RecedingHorizon, Figure1WithinTwoPercentOfTheFullHorizon) {
+  const hinf::Scenario s = fig1();
+  const hinf::RunResult full = hinf::run_scenario(s);
+  ASSERT_EQ(full.simulation.status, hinf::RunStatus::Completed);
+  const double reference = full.metrics.rms_position_error_last_half;
+  for (double window : {5.0, 10.0}) {
+    const hinf::RecedingHorizon horizon = horizon_of(s, window, 1.0);
+    hinf::RecedingHorizonReport report;
+    const hinf::SimulationResult run = hinf::simulate_receding_horizon(
+        horizon, hinf::Disturbance(s.disturbance), s.initial_q0, s.tf, s.simulation_options(), nullptr, s.kappa,
+        &report);
+    ASSERT_EQ(run.status, hinf::RunStatus::Completed);
+    EXPECT_EQ(report.windows, 40);
+    // One regular output grid: the update period is a multiple of dt.
+    ASSERT_EQ(run.t.size(), full.simulation.t.size());
+    EXPECT_NEAR(run.t[run.t.size() - 1], 40.0, 1e-12);
+    const double rms = rms_last_half(s, run);
+    EXPECT_NEAR(rms / reference, 1.0, 0.02) << "H = " << window << ": " << rms << " against " << reference;
+  }
+}
+
+TEST(RecedingHorizon, MemoryDependsOnTheWindowNotTheMission) {
+  hinf::Scenario s = fig1();
+  const hinf::RecedingHorizon horizon = horizon_of(s, 10.0, 5.0);
+  hinf::SimulationOptions options = s.simulation_options();
+  options.output_dt = 1.0;
+  options.solver = hinf::SolverOptions();  // the default (automatic) integrator: a long run at its cheapest
+  std::size_t peak[2] = {0, 0};
+  int i = 0;
+  for (double tf : {400.0, 4000.0}) {
+    hinf::RecedingHorizonReport report;
+    const hinf::SimulationResult run = hinf::simulate_receding_horizon(
+        horizon, hinf::Disturbance(s.disturbance), s.initial_q0, tf, options, nullptr, s.kappa, &report);
+    ASSERT_EQ(run.status, hinf::RunStatus::Completed) << run.status_message;
+    EXPECT_EQ(report.windows, static_cast<int>(tf / 5.0));
+    peak[i++] = report.peak_bytes;
+  }
+  EXPECT_NEAR(static_cast<double>(peak[1]) / static_cast<double>(peak[0]), 1.0, 0.10);
+  EXPECT_LT(peak[1], 2u << 20);
+  // The full-horizon design of 400 s alone holds more than five times as much.
+  const auto whole = std::make_shared<const hinf::Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, 400.0);
+  const auto design = hinf::solve_grde(whole, s.Q, s.Qf, s.gamma, s.solver);
+  EXPECT_GT(whole->dense().memory_bytes() + design->stats().memory_bytes, 5 * peak[0]);
+}
+
+TEST(RecedingHorizon, GammaStarIsTheLargestOverTheWindows) {
+  const hinf::Scenario s = fig1();
+  const hinf::RecedingHorizon horizon = horizon_of(s, 5.0, 5.0);
+  hinf::GammaStarOptions options;
+  options.rtol = 1e-6;
+  const hinf::WindowGammaStar worst = hinf::receding_horizon_gamma_star(horizon, 20.0, options);
+  EXPECT_EQ(worst.windows, 4);
+  ASSERT_GE(worst.window, 0);
+  EXPECT_TRUE(worst.converged);
+  // Each window searched alone (an independent path through gamma_star): none above the largest,
+  // the largest's own search equal to it (the same bisection on the same trajectory: exact).
+  Vec q_start = s.desired_q0;
+  for (int j = 0; j < 4; ++j) {
+    const hinf::TrajectoryPtr trajectory = horizon.window_trajectory(j, q_start);
+    hinf::GammaStarOptions search = options;
+    search.solver = s.solver;
+    const double g = hinf::gamma_star(trajectory, s.Q, s.Qf, search).gamma_star;
+    EXPECT_LE(g, worst.gamma_star);
+    if (j == worst.window) {
+      EXPECT_EQ(g, worst.gamma_star);
+    }
+    q_start = trajectory->q_d(5.0 * (j + 1));
+  }
+  // A gamma below the largest window's gamma* fails in a window, which the error names.
+  const hinf::RecedingHorizon low(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf, 0.95 * worst.gamma_star,
+                                  horizon.options(), s.solver);
+  try {
+    hinf::HorizonWindow w = low.first();
+    for (int j = 0; j < 4; ++j) w = low.next(w);
+    FAIL() << "no window failed below the largest gamma*";
+  } catch (const hinf::ConjugatePointError& e) {
+    EXPECT_NE(std::string(e.what()).find("receding-horizon window"), std::string::npos) << e.what();
+  }
+}
+
+TEST(RecedingHorizon, BadOptionsAreNamed) {
+  const hinf::Scenario s = fig1();
+  auto message = [&](double window, double update) {
+    try {
+      horizon_of(s, window, update);
+    } catch (const hinf::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message(0.0, 1.0).find("window"), std::string::npos);
+  EXPECT_NE(message(5.0, 6.0).find("update"), std::string::npos);
+  EXPECT_NE(message(5.0, NAN).find("update"), std::string::npos);
+  const hinf::RecedingHorizon horizon = horizon_of(s, 5.0, 1.0);
+  EXPECT_THROW(horizon.window(-1, s.desired_q0), hinf::InputError);
+  EXPECT_THROW(horizon.window(0, Vec::Zero(3)), hinf::InputError);
+  EXPECT_THROW(horizon.window_at(-1.0), hinf::InputError);
+  EXPECT_EQ(horizon.window_at(2.9999999999999), 3);
+  EXPECT_EQ(horizon.window_at(2.5), 2);
+}
+
+}  // namespace
