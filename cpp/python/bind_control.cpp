@@ -793,6 +793,195 @@ Examples
 >>> run.status, controller.counts().steps
 (<RunStatus.completed: 0>, 100))").c_str());
 }
+
+// The receding horizon (receding_horizon.hpp).
+void bind_receding_horizon(py::module_& m) {
+  bind_options<RecedingHorizonOptions>(m, "RecedingHorizonOptions", {"RecedingHorizonOptions"}, {}, R"(Raises
+------
+ValueError
+    From RecedingHorizon: a window that is not > 0, an update period outside (0, window].
+
+Examples
+--------
+>>> hc.RecedingHorizonOptions(window=10.0, update=1.0)
+RecedingHorizonOptions(window=10.0, update=1.0))");
+  bind_result<HorizonWindow>(m, "HorizonWindow", {"HorizonWindow"}, {}, R"(Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+>>> window = horizon.next(horizon.first())
+>>> window.index, window.t_start, window.t_use_end, window.trajectory.tf()
+(1, 1.0, 2.0, 11.0))", /*repr=*/false)
+      .def("memory_bytes", &HorizonWindow::memory_bytes, doc({"HorizonWindow::memory_bytes"}).c_str());
+  bind_result<RecedingHorizonReport>(m, "RecedingHorizonReport", {"RecedingHorizonReport"}, {}, R"(Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+>>> report = hc.run_scenario(scenario).receding_horizon
+>>> report.windows, bool(report.peak_bytes < 2**20)
+(40, True))", /*repr=*/true);
+  bind_result<WindowGammaStar>(m, "WindowGammaStar", {"WindowGammaStar"}, {}, R"(Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=5.0, update=5.0))
+>>> worst = hc.receding_horizon_gamma_star(horizon, 20.0)
+>>> worst.windows, worst.window >= 0, bool(worst.gamma_star < 5.0)
+(4, True, True))", /*repr=*/false);
+
+  py::class_<RecedingHorizon, py::smart_holder>(m, "RecedingHorizon",
+      doc({"RecedingHorizon", "RecedingHorizon::RecedingHorizon", "control/receding_horizon.hpp"}, R"(Parameters
+----------
+model : Model
+    The design model.
+q_d0 : array_like, shape (n,)
+    The desired initial state q_d(t0).
+u_d : VectorSignal, callable, or list of Signal or float
+    The desired inputs, m channels, as for Trajectory; defined for every t of the mission.
+t0 : float
+    The start of the mission (s).
+Q : array_like, shape (n, n)
+    Weight of the tracking error, symmetric positive semidefinite.
+Qf : array_like, shape (n, n)
+    Every window's terminal weight Z(t_j + H), symmetric positive definite.
+gamma : float
+    The attenuation level, > 0 (inf: LQR).
+options : RecedingHorizonOptions
+    The window H and the update period (s).
+solver : SolverOptions, optional
+    The integrator of every window's GRDE.
+trajectory_options : TrajectoryOptions, optional
+    Tolerances of every window's desired trajectory.
+
+Raises
+------
+ValueError
+    A bad model, q_d0, u_d, weight, gamma or option.
+
+Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+>>> horizon.window_at(3.5), horizon.window_start(3)
+(3, 3.0)
+>>> first = horizon.first()
+>>> first.design.Z(0.0).shape, first.trajectory.tf()
+((6, 6), 10.0))").c_str())
+      .def(py::init([](ModelPtr model, Vec q_d0, const py::object& u_d, double t0, Mat Q, Mat Qf, double gamma,
+                       const RecedingHorizonOptions& options, const SolverOptions& solver,
+                       const TrajectoryOptions& trajectory_options) {
+             require(model != nullptr, "RecedingHorizon needs a model");
+             VectorSignal inputs = to_vector_signal(u_d, model->m(), "u_d");
+             return std::make_shared<RecedingHorizon>(std::move(model), std::move(q_d0), std::move(inputs), t0,
+                                                      std::move(Q), std::move(Qf), gamma, options, solver,
+                                                      trajectory_options);
+           }),
+           py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("Q"), py::arg("Qf"),
+           py::arg("gamma"), py::arg("options"), py::arg("solver") = SolverOptions{},
+           py::arg("trajectory_options") = TrajectoryOptions{})
+      .def("model", &RecedingHorizon::model_ptr, doc({"RecedingHorizon::model"}).c_str())
+      .def("t0", &RecedingHorizon::t0, "The start of the mission (s).")
+      .def("gamma", &RecedingHorizon::gamma, "The attenuation level of every window.")
+      .def("options", &RecedingHorizon::options, "The window and update period.")
+      .def("window_start", &RecedingHorizon::window_start, py::arg("j"), doc({"RecedingHorizon::window_start"}).c_str())
+      .def("window_at", &RecedingHorizon::window_at, py::arg("t"), doc({"RecedingHorizon::window_at"}).c_str())
+      .def("window", &RecedingHorizon::window, py::arg("j"), py::arg("q_d_start"), py::call_guard<ComputationScope>(),
+           doc({"RecedingHorizon::window"}).c_str())
+      .def("window_trajectory", &RecedingHorizon::window_trajectory, py::arg("j"), py::arg("q_d_start"),
+           py::call_guard<ComputationScope>(), doc({"RecedingHorizon::window_trajectory"}).c_str())
+      .def("first", &RecedingHorizon::first, py::call_guard<ComputationScope>(),
+           doc({"RecedingHorizon::first"}).c_str())
+      .def("next", &RecedingHorizon::next, py::arg("previous"), py::call_guard<ComputationScope>(),
+           doc({"RecedingHorizon::next"}).c_str());
+
+  m.def("simulate_receding_horizon",
+        [](const RecedingHorizon& horizon, const py::object& disturbance, const Vec& q0, double tf,
+           const SimulationOptions& options, const std::optional<ModelPtr>& plant, const py::object& kappa) {
+          const Disturbance w = to_disturbance(disturbance, horizon.model().nw());
+          const Signal gain = to_signal(kappa, "kappa");
+          RecedingHorizonReport report;
+          SimulationResult run;
+          {
+            ComputationScope release;
+            run = simulate_receding_horizon(horizon, w, q0, tf, options, plant ? plant->get() : nullptr, gain,
+                                            &report);
+          }
+          return py::make_tuple(std::move(run), report);
+        },
+        py::arg("horizon"), py::arg("disturbance"), py::arg("q0"), py::arg("tf"),
+        py::arg("options") = SimulationOptions{}, py::arg("plant") = py::none(), py::arg("kappa") = 1.0,
+        doc({"simulate_receding_horizon", "control/receding_horizon.hpp"}, R"(Parameters
+----------
+horizon : RecedingHorizon
+    The windows' design.
+disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+    The disturbance on the model's nw channels, as for simulate_state_feedback.
+q0 : array_like, shape (n,)
+    The initial state q(t0).
+tf : float
+    The end of the mission (s), > t0: any length.
+options : SimulationOptions, optional
+    Output step (s), divergence factor and integrator.
+plant : Model or None, optional
+    The vehicle integrated, of the design model's structure; None: the design model.
+kappa : Signal or float, optional
+    The gain scaling kappa(t) > 0 of the law.
+
+Returns
+-------
+tuple of (SimulationResult, RecedingHorizonReport)
+    The series on the output grid, and what was solved and held.
+
+Raises
+------
+ValueError
+    Sizes that do not match, tf <= t0, bad options.
+ConjugatePointError
+    A window's GRDE has a conjugate point at gamma (the message names the window).
+SolverError
+    An integration failed.
+
+Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+>>> run, report = hc.simulate_receding_horizon(horizon, None, [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4], 100.0)
+>>> run.status, report.windows, bool(np.hypot(*run.q_e()[-1, 3:5]) < 0.01)
+(<RunStatus.completed: 0>, 100, True))").c_str());
+  m.def("receding_horizon_gamma_star", &receding_horizon_gamma_star, py::arg("horizon"), py::arg("tf"),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
+        doc({"receding_horizon_gamma_star", "control/receding_horizon.hpp"}, R"(Parameters
+----------
+horizon : RecedingHorizon
+    The windows' design (its gamma is not used: each window's gamma* is searched).
+tf : float
+    The end of the mission (s): the windows that start before it are searched.
+options : GammaStarOptions, optional
+    The bisection of each window (its solver is replaced by the horizon's).
+
+Returns
+-------
+WindowGammaStar
+    The largest gamma* over the windows, the window where it occurs and its search.
+
+Raises
+------
+ValueError
+    tf <= t0, bad options.
+SolverError
+    An integration failed.
+
+Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=5.0, update=5.0))
+>>> hc.receding_horizon_gamma_star(horizon, 10.0).windows
+2)").c_str());
+}
 }  // namespace
 
 void bind_control(py::module_& m) {
@@ -1747,6 +1936,7 @@ Examples
 (True, True))").c_str());
   bind_digital(m);
   bind_sampled_loop(m);
+  bind_receding_horizon(m);
 }
 
 #undef HINF_DESIGN_EXAMPLE

@@ -72,7 +72,8 @@ Examples
        {"law", "Law (set: also its name)"}, {"cascade", "CascadeGains"},
        {"disturbance", "VectorSignal (set: also a callable, a list of Signal or float, or None)"},
        {"worst_case", "bool"}, {"initial_q0", "ndarray, shape (n,)"}, {"measurement", "MeasurementSpec or None"},
-       {"sampling", "SamplingSpec or None"}, {"solver", "SolverOptions"}, {"output_dt", "float"}, {"divergence_factor", "float"}});
+       {"sampling", "SamplingSpec or None"}, {"receding_horizon", "RecedingHorizonOptions or None"},
+       {"solver", "SolverOptions"}, {"output_dt", "float"}, {"divergence_factor", "float"}});
   const auto member = [](const char* name) { return std::string(contract(str_cat("Scenario::", name))); };
   py::class_<Scenario>(m, "Scenario", doc({"Scenario", "scenario/scenario.hpp"}, scenario_fields + R"(
 
@@ -124,6 +125,7 @@ Examples
       .def_readwrite("initial_q0", &Scenario::initial_q0, member("initial_q0").c_str())
       .def_readwrite("measurement", &Scenario::measurement, member("measurement").c_str())
       .def_readwrite("sampling", &Scenario::sampling, member("sampling").c_str())
+      .def_readwrite("receding_horizon", &Scenario::receding_horizon, member("receding_horizon").c_str())
       .def_readwrite("solver", &Scenario::solver, member("solver").c_str())
       .def_readwrite("output_dt", &Scenario::output_dt, member("output_dt").c_str())
       .def_readwrite("divergence_factor", &Scenario::divergence_factor, member("divergence_factor").c_str())
@@ -145,7 +147,8 @@ True)", /*repr=*/true);
   bind_result<RunResult>(m, "RunResult", {"RunResult"},
                          {{"Z0", "ndarray, shape (n, n)"}, {"plant", "Model or None"},
                           {"solution", "RiccatiSolution or None"}, {"sampling", "SamplingSpec or None"},
-                          {"online", "OnlineCounts or None"}},
+                          {"online", "OnlineCounts or None"},
+                          {"receding_horizon", "RecedingHorizonReport or None"}},
                          R"(Notes
 -----
 gamma_star may be set (a float or None), as for the results file; the other attributes are

@@ -322,6 +322,13 @@ scaling kappa(t) (checked > 0 where the law evaluates it). InputError without a 
     {"HinfStateFeedback::evaluate_at", R"contract(q_d, u_d, K = B'Z and kappa at t, kept until t changes.)contract"},
     {"HinfStateFeedback::name", R"contract("hinf", or "lqr" for a design at gamma = inf.)contract"},
     {"HinfStateFeedback::solution", R"contract(The design Z and the gain scaling kappa(t) of the law.)contract"},
+    {"HorizonWindow", R"contract(One window: its desired trajectory and its design on [t_start, t_start + H].)contract"},
+    {"HorizonWindow::design", R"contract(Z of the GRDE on [t_j, t_j + H], Z(t_j + H) = Qf)contract"},
+    {"HorizonWindow::index", R"contract(j)contract"},
+    {"HorizonWindow::memory_bytes", R"contract(The bytes the window stores (the dense outputs of q_d and of Z).)contract"},
+    {"HorizonWindow::t_start", R"contract(t_j (s))contract"},
+    {"HorizonWindow::t_use_end", R"contract(t_{j+1} = t_j + update: the window's law is used on [t_j, t_{j+1}))contract"},
+    {"HorizonWindow::trajectory", R"contract(q_d, u_d and the linearization on [t_j, t_j + H])contract"},
     {"Hovercraft", R"contract(Its equations are generated from its statement (python/hinf_cpp/models/builtin.py,
 hovercraft(); models/builtin_vehicle.hpp).)contract"},
     {"Hovercraft::Hovercraft", R"contract(InputError unless d and d_r are finite and >= 0.)contract"},
@@ -574,6 +581,38 @@ Gravity is part of f; G depends on theta. epsilon couples the rolling moment int
 acceleration (the slightly non-minimum-phase effect).)contract"},
     {"PlanarVtolParameters::epsilon", R"contract(coupling of the rolling moment into the translation, finite)contract"},
     {"PlanarVtolParameters::g", R"contract(gravity (1: the normalized form), >= 0)contract"},
+    {"RecedingHorizon", R"contract(The windows of a receding-horizon design along the desired trajectory from q_d(t0) = q_d0 with
+the inputs u_d. Immutable: window() is a pure function of its arguments, so windows may be
+solved on any thread.)contract"},
+    {"RecedingHorizon::Q", R"contract(The weights Q and Qf, q_d0 and u_d as given.)contract"},
+    {"RecedingHorizon::RecedingHorizon", R"contract(The model, q_d0 and u_d as for a Trajectory (trajectory.hpp); Q (n x n) symmetric positive
+semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf: LQR), as for
+solve_grde. InputError for any of them, or for bad options.)contract"},
+    {"RecedingHorizon::first", R"contract(Window 0, from q_d0.)contract"},
+    {"RecedingHorizon::gamma", R"contract(The attenuation level of every window (+inf: LQR).)contract"},
+    {"RecedingHorizon::model", R"contract(The design model of every window.)contract"},
+    {"RecedingHorizon::n", R"contract(The model's number of states and of inputs.)contract"},
+    {"RecedingHorizon::next", R"contract(The window after `previous`, from its q_d at the next t_j.)contract"},
+    {"RecedingHorizon::options", R"contract(The window and update period, and the integrator of every window's GRDE.)contract"},
+    {"RecedingHorizon::t0", R"contract(The start of the mission (s).)contract"},
+    {"RecedingHorizon::window", R"contract(Window j (>= 0) from the desired state q_d(t_j) = q_d_start (n). InputError for a bad j or
+q_d_start; SolverError when the integration fails; ConjugatePointError (naming the window)
+when the GRDE of the window has a conjugate point at gamma.)contract"},
+    {"RecedingHorizon::window_at", R"contract(The window whose law is used at t >= t0: floor((t - t0) / update) (a t within 1e-9 of the
+update period's multiple belongs to the later window).)contract"},
+    {"RecedingHorizon::window_start", R"contract(t_j = t0 + j * update (s).)contract"},
+    {"RecedingHorizon::window_trajectory", R"contract(The desired trajectory of window j alone (no design), as window() integrates it.)contract"},
+    {"RecedingHorizonOptions", R"contract(The window of the receding horizon (scenario table [receding_horizon]).)contract"},
+    {"RecedingHorizonOptions::update", R"contract(s: a new window every this long, in (0, H])contract"},
+    {"RecedingHorizonOptions::validate", R"contract(InputError naming the option.)contract"},
+    {"RecedingHorizonOptions::window", R"contract(H (s): the length of every window's design, > 0)contract"},
+    {"RecedingHorizonReport", R"contract(What a receding-horizon run solved and held.)contract"},
+    {"RecedingHorizonReport::divergence_bound", R"contract(the last divergence bound of the run (see simulate_receding_horizon))contract"},
+    {"RecedingHorizonReport::grde", R"contract(the windows' GRDE solves, summed (memory_bytes: the largest))contract"},
+    {"RecedingHorizonReport::largest_window_bytes", R"contract(the largest window's stored dense outputs)contract"},
+    {"RecedingHorizonReport::options", R"contract(the window and update period of the run)contract"},
+    {"RecedingHorizonReport::peak_bytes", R"contract(the most held at once (the window in use and the next))contract"},
+    {"RecedingHorizonReport::windows", R"contract(windows solved)contract"},
     {"RiccatiSolution", R"contract(Z(t) of the GRDE (13).)contract"},
     {"RiccatiSolution::Z", R"contract(Z(t) (n x n) and dZ/dt: value(t) and derivative(t).)contract"},
     {"RiccatiSolution::gain", R"contract(K(t) = B_e(t)' Z(t) (m x n), the gain of the state-feedback law (17), B_e(t) = G(t, q_d(t)).)contract"},
@@ -597,13 +636,16 @@ the results file (scenario_gamma_star))contract"},
     {"RunResult::online", R"contract(with [sampling]: what the online controller's steps did)contract"},
     {"RunResult::output_feedback", R"contract(true with [measurement])contract"},
     {"RunResult::plant", R"contract(the scenario's plant; null when the closed loop integrated the design model)contract"},
+    {"RunResult::receding_horizon", R"contract(with [receding_horizon]: what was solved)contract"},
     {"RunResult::sampling", R"contract(the scenario's [sampling])contract"},
     {"RunResult::scenario_name", R"contract(the scenario's name)contract"},
     {"RunResult::simulation", R"contract(the closed loop's time series)contract"},
-    {"RunResult::solution", R"contract(the law's design; null only for the cascade law with state
-feedback when no design exists at gamma (gamma <= gamma*))contract"},
+    {"RunResult::solution", R"contract(the law's design; null for the cascade law with state feedback
+when no design exists at gamma (gamma <= gamma*), and with
+[receding_horizon] (the windows are not kept))contract"},
     {"RunResult::timing", R"contract(the wall-clock time of its parts)contract"},
-    {"RunResult::trajectory", R"contract(its model is the design model)contract"},
+    {"RunResult::trajectory", R"contract(its model is the design model; with [receding_horizon] the first
+window's desired trajectory (the run's q_d is simulation.q_d))contract"},
     {"RunStatus", R"contract(How a closed-loop run ended.)contract"},
     {"RunStatus::completed", R"contract(integrated over the whole horizon)contract"},
     {"RunStatus::diverged", R"contract(stopped when the tracking error exceeded the divergence bound (see above):
@@ -690,12 +732,16 @@ empty take the defaults that resolved() fills in.)contract"},
     {"Scenario::plant", R"contract([plant]: the vehicle the closed loop integrates (its f, G, D),
 when it differs from the design model; null: the design model.
 Same structure as the model (check_plant).)contract"},
+    {"Scenario::receding_horizon", R"contract([receding_horizon]: the law designed)contract"},
     {"Scenario::resolved", R"contract(A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I (a 1 x 1
 N is that many times I), Q0 = 2 I).)contract"},
     {"Scenario::sampling", R"contract(a sampled loop through the online controller;
 none: the continuous loop)contract"},
     {"Scenario::simulation_options", R"contract(output_dt, divergence_factor and solver, for the closed loop.)contract"},
-    {"Scenario::solver", R"contract(every integration: the Riccati equations and the closed loop)contract"},
+    {"Scenario::solver", R"contract(over a moving window (receding_horizon.hpp), state
+feedback in the continuous loop; none: one design
+over [t0, tf]
+every integration: the Riccati equations and the closed loop)contract"},
     {"Scenario::t0", R"contract([horizon] t0 (s))contract"},
     {"Scenario::tf", R"contract([horizon] tf (s), > t0)contract"},
     {"Scenario::validate", R"contract(Throws InputError naming the first problem found. Call on a resolved scenario.)contract"},
@@ -909,6 +955,14 @@ Any function of t returning a vector of length dim (e.g. a Python callable).)con
     {"VectorSignal::same_signals", R"contract(True when both are channels with equal signals. A function of t equals no signal, itself
 included: functions cannot be compared.)contract"},
     {"VectorSignal::zeros", R"contract(dim zero channels.)contract"},
+    {"WindowGammaStar", R"contract(The largest gamma* (eq. 14) over the windows used on [t0, tf): the gamma a receding-horizon
+run certifies (each window is a game of its own with terminal weight Qf).)contract"},
+    {"WindowGammaStar::converged", R"contract(every window's bisection converged)contract"},
+    {"WindowGammaStar::gamma_star", R"contract(the largest window's gamma*)contract"},
+    {"WindowGammaStar::result", R"contract(that window's search)contract"},
+    {"WindowGammaStar::t_start", R"contract(its t_j (s))contract"},
+    {"WindowGammaStar::window", R"contract(the window where it occurs)contract"},
+    {"WindowGammaStar::windows", R"contract(windows evaluated)contract"},
     {"append_matrix_parameters", R"contract(NAME[i][j] = M(i, j), row by row, appended to `parameters` (named_parameters of a matrix).)contract"},
     {"certify", R"contract(The certificates of the design Z (its trajectory and gamma) for the law (17)/(18) with gain
 scaling kappa(t), and Q, the weight of the GRDE (n x n, symmetric positive semidefinite;
@@ -1134,6 +1188,22 @@ methods restart at first order. Per SolverOptions::method:
   adams  CVODE Adams restarted at every sample (correct but slow).
 SimulationResult::integrator says what was used. The measured heading (and the heading
 innovation) is an angle, wrapped to (-pi, pi] (angles.hpp).)contract"},
+    {"control/receding_horizon.hpp", R"contract(The receding-horizon design: the GRDE (13) solved over a window that moves with time, so that a
+mission of any length is designed with memory that depends on the window, not on the mission.
+
+Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
+  - its desired trajectory is eq. (8) integrated from q_d(t_j) of window j - 1 (q_d0 for
+    j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
+    t_j, whose value differs from one integration over the whole mission by the integration
+    error only (trajectory.hpp);
+  - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
+    check (ConjugatePointError names the window);
+  - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
+    Z in use is always at least H - update before its window's end, where the terminal weight
+    has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
+    seconds; the receding horizon never reaches them).
+The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
+is a finite-horizon game of its own (receding_horizon_gamma_star).)contract"},
     {"control/riccati.hpp", R"contract(The matrix Riccati differential equations of the paper, solved along a desired trajectory.
 
 GRDE, paper eq. (13), solved BACKWARD from Z(tf) = Qf:
@@ -1529,6 +1599,8 @@ scenario), e.g. "kappa = { offset = 1.0 }".)contract"},
     {"physical_memory_bytes", R"contract(Bytes of physical memory of this machine (0 if unknown).)contract"},
     {"read_text_file", R"contract(The whole content of a file; InputError "cannot read <what> '<path>': <reason>" for a file
 that cannot be read (missing, a directory, a read error).)contract"},
+    {"receding_horizon_gamma_star", R"contract(Each window's gamma* (gamma_star, analysis.hpp, with the horizon's solver) from t0 to the last
+window that starts before tf, and the largest. The horizon's gamma is not used.)contract"},
     {"register_model_kind", R"contract(Adds a kind to the table. InputError when the name is empty or taken, or read is empty.
 Safe to call from several threads; scenarios read afterwards know the kind.)contract"},
     {"request_interrupt", R"contract(Requests that the running computations stop at their next step (as Ctrl-C does); safe in a
@@ -1624,6 +1696,15 @@ The measured heading (the row of C that picks the model's heading) and its innov
 angles, wrapped to (-pi, pi].
 The vehicle integrated is `plant` (null: the design's model), with y = C q of the plant; the
 estimator, the filter and the control stay those of the design (its model and trajectory).)contract"},
+    {"simulate_receding_horizon", R"contract(The state-feedback closed loop (simulation.hpp) under the receding-horizon law from q0 at t0 to
+tf (> t0; any length: the mission), the law kappa B_e' Z_j of window j on [t_j, t_{j+1}). The
+loop is integrated window by window, restarting at each t_j (the gain jumps there), and the
+windows are solved as it goes: at most two are held at once. The output grid restarts at each
+t_j (an update period that is a multiple of the output dt gives one regular grid). The
+divergence bound (simulation.hpp) takes the scale of the mission so far: max(1, |q_e(t0)|,
+max |q_d| over the windows used up to t). The series grow with tf / dt: choose dt for the
+mission. q_d in the results is the windows' chained desired trajectory. report (optional) says
+what was solved. Errors as simulate_state_feedback and RecedingHorizon::window.)contract"},
     {"simulate_sampled", R"contract(The loop of `plant` (null: the trajectory's model) under `controller` (reset here at t0 with
 q0), from q0 at t0 to the trajectory's tf. InputError for sizes that do not match (as
 simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;

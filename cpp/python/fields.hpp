@@ -17,6 +17,7 @@
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
+#include "hinf/control/receding_horizon.hpp"
 #include "hinf/control/sampled_loop.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
@@ -124,6 +125,33 @@ struct Fields<StepReport> {
                       field("saturated", &StepReport::saturated), field("rate_limited", &StepReport::rate_limited),
                       field("rho_sigma_z", &StepReport::rho_sigma_z),
                       field("coupling_violated", &StepReport::coupling_violated));
+};
+template <>
+struct Fields<RecedingHorizonOptions> {
+  static constexpr auto list = std::make_tuple(field("window", &RecedingHorizonOptions::window),
+                                               field("update", &RecedingHorizonOptions::update));
+};
+template <>
+struct Fields<HorizonWindow> {
+  static constexpr auto list = std::make_tuple(
+      field("index", &HorizonWindow::index), field("t_start", &HorizonWindow::t_start),
+      field("t_use_end", &HorizonWindow::t_use_end), field("trajectory", &HorizonWindow::trajectory),
+      field("design", &HorizonWindow::design));
+};
+template <>
+struct Fields<RecedingHorizonReport> {
+  static constexpr auto list = std::make_tuple(
+      field("options", &RecedingHorizonReport::options), field("windows", &RecedingHorizonReport::windows),
+      field("largest_window_bytes", &RecedingHorizonReport::largest_window_bytes),
+      field("peak_bytes", &RecedingHorizonReport::peak_bytes), field("grde", &RecedingHorizonReport::grde),
+      field("divergence_bound", &RecedingHorizonReport::divergence_bound));
+};
+template <>
+struct Fields<WindowGammaStar> {
+  static constexpr auto list = std::make_tuple(
+      field("gamma_star", &WindowGammaStar::gamma_star), field("window", &WindowGammaStar::window),
+      field("t_start", &WindowGammaStar::t_start), field("windows", &WindowGammaStar::windows),
+      field("converged", &WindowGammaStar::converged), field("result", &WindowGammaStar::result));
 };
 template <>
 struct Fields<OnlineCounts> {
@@ -265,6 +293,7 @@ struct Fields<RunResult> {
       field("Z_max_eig", &RunResult::Z_max_eig, "Z_min_eig"),
       field("gamma_star", &RunResult::gamma_star), field("simulation", &RunResult::simulation),
       field("sampling", &RunResult::sampling), field("online", &RunResult::online),
+      field("receding_horizon", &RunResult::receding_horizon),
       field("metrics", &RunResult::metrics), field("timing", &RunResult::timing));
 };
 template <>

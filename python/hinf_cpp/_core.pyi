@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -4867,6 +4867,363 @@ class SampledLoopOptions:
     @simulation.setter
     def simulation(self, arg0: SimulationOptions) -> None:
         ...
+class RecedingHorizonOptions:
+    """
+    The window of the receding horizon (scenario table [receding_horizon]).
+    
+    Parameters
+    ----------
+    window : float, default 10.0
+        H (s): the length of every window's design, > 0
+    update : float, default 1.0
+        s: a new window every this long, in (0, H]
+    
+    Raises
+    ------
+    ValueError
+        From RecedingHorizon: a window that is not > 0, an update period outside (0, window].
+    
+    Examples
+    --------
+    >>> hc.RecedingHorizonOptions(window=10.0, update=1.0)
+    RecedingHorizonOptions(window=10.0, update=1.0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('window', 'update')
+    def __eq__(self, arg0: RecedingHorizonOptions) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, window: typing.SupportsFloat | typing.SupportsIndex = 10.0, update: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def update(self) -> float:
+        """
+        s: a new window every this long, in (0, H]
+        """
+    @update.setter
+    def update(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def window(self) -> float:
+        """
+        H (s): the length of every window's design, > 0
+        """
+    @window.setter
+    def window(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class HorizonWindow:
+    """
+    One window: its desired trajectory and its design on [t_start, t_start + H].
+    
+    Attributes
+    ----------
+    index : int
+        j
+    t_start : float
+        t_j (s)
+    t_use_end : float
+        t_{j+1} = t_j + update: the window's law is used on [t_j, t_{j+1})
+    trajectory : Trajectory
+        q_d, u_d and the linearization on [t_j, t_j + H]
+    design : RiccatiSolution
+        Z of the GRDE on [t_j, t_j + H], Z(t_j + H) = Qf
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> window = horizon.next(horizon.first())
+    >>> window.index, window.t_start, window.t_use_end, window.trajectory.tf()
+    (1, 1.0, 2.0, 11.0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('index', 't_start', 't_use_end', 'trajectory', 'design')
+    def __eq__(self, arg0: HorizonWindow) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    def memory_bytes(self) -> int:
+        """
+        The bytes the window stores (the dense outputs of q_d and of Z).
+        """
+    @property
+    def design(self) -> RiccatiSolution:
+        """
+        Z of the GRDE on [t_j, t_j + H], Z(t_j + H) = Qf
+        """
+    @property
+    def index(self) -> int:
+        """
+        j
+        """
+    @property
+    def t_start(self) -> float:
+        """
+        t_j (s)
+        """
+    @property
+    def t_use_end(self) -> float:
+        """
+        t_{j+1} = t_j + update: the window's law is used on [t_j, t_{j+1})
+        """
+    @property
+    def trajectory(self) -> Trajectory:
+        """
+        q_d, u_d and the linearization on [t_j, t_j + H]
+        """
+class RecedingHorizonReport:
+    """
+    What a receding-horizon run solved and held.
+    
+    Attributes
+    ----------
+    options : RecedingHorizonOptions
+        the window and update period of the run
+    windows : int
+        windows solved
+    largest_window_bytes : int
+        the largest window's stored dense outputs
+    peak_bytes : int
+        the most held at once (the window in use and the next)
+    grde : SolveStats
+        the windows' GRDE solves, summed (memory_bytes: the largest)
+    divergence_bound : float
+        the last divergence bound of the run (see simulate_receding_horizon)
+    
+    Examples
+    --------
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+    >>> report = hc.run_scenario(scenario).receding_horizon
+    >>> report.windows, bool(report.peak_bytes < 2**20)
+    (40, True)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('options', 'windows', 'largest_window_bytes', 'peak_bytes', 'grde', 'divergence_bound')
+    def __eq__(self, arg0: RecedingHorizonReport) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def divergence_bound(self) -> float:
+        """
+        the last divergence bound of the run (see simulate_receding_horizon)
+        """
+    @property
+    def grde(self) -> SolveStats:
+        """
+        the windows' GRDE solves, summed (memory_bytes: the largest)
+        """
+    @property
+    def largest_window_bytes(self) -> int:
+        """
+        the largest window's stored dense outputs
+        """
+    @property
+    def options(self) -> RecedingHorizonOptions:
+        """
+        the window and update period of the run
+        """
+    @property
+    def peak_bytes(self) -> int:
+        """
+        the most held at once (the window in use and the next)
+        """
+    @property
+    def windows(self) -> int:
+        """
+        windows solved
+        """
+class WindowGammaStar:
+    """
+    The largest gamma* (eq. 14) over the windows used on [t0, tf): the gamma a receding-horizon
+    run certifies (each window is a game of its own with terminal weight Qf).
+    
+    Attributes
+    ----------
+    gamma_star : float
+        the largest window's gamma*
+    window : int
+        the window where it occurs
+    t_start : float
+        its t_j (s)
+    windows : int
+        windows evaluated
+    converged : bool
+        every window's bisection converged
+    result : GammaStarResult
+        that window's search
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=5.0, update=5.0))
+    >>> worst = hc.receding_horizon_gamma_star(horizon, 20.0)
+    >>> worst.windows, worst.window >= 0, bool(worst.gamma_star < 5.0)
+    (4, True, True)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('gamma_star', 'window', 't_start', 'windows', 'converged', 'result')
+    def __eq__(self, arg0: WindowGammaStar) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def converged(self) -> bool:
+        """
+        every window's bisection converged
+        """
+    @property
+    def gamma_star(self) -> float:
+        """
+        the largest window's gamma*
+        """
+    @property
+    def result(self) -> GammaStarResult:
+        """
+        that window's search
+        """
+    @property
+    def t_start(self) -> float:
+        """
+        its t_j (s)
+        """
+    @property
+    def window(self) -> int:
+        """
+        the window where it occurs
+        """
+    @property
+    def windows(self) -> int:
+        """
+        windows evaluated
+        """
+class RecedingHorizon:
+    """
+    The windows of a receding-horizon design along the desired trajectory from q_d(t0) = q_d0 with
+    the inputs u_d. Immutable: window() is a pure function of its arguments, so windows may be
+    solved on any thread.
+    
+    The model, q_d0 and u_d as for a Trajectory (trajectory.hpp); Q (n x n) symmetric positive
+    semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf: LQR), as for
+    solve_grde. InputError for any of them, or for bad options.
+    
+    The receding-horizon design: the GRDE (13) solved over a window that moves with time, so that a
+    mission of any length is designed with memory that depends on the window, not on the mission.
+    
+    Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
+      - its desired trajectory is eq. (8) integrated from q_d(t_j) of window j - 1 (q_d0 for
+        j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
+        t_j, whose value differs from one integration over the whole mission by the integration
+        error only (trajectory.hpp);
+      - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
+        check (ConjugatePointError names the window);
+      - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
+        Z in use is always at least H - update before its window's end, where the terminal weight
+        has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
+        seconds; the receding horizon never reaches them).
+    The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
+    is a finite-horizon game of its own (receding_horizon_gamma_star).
+    
+    Parameters
+    ----------
+    model : Model
+        The design model.
+    q_d0 : array_like, shape (n,)
+        The desired initial state q_d(t0).
+    u_d : VectorSignal, callable, or list of Signal or float
+        The desired inputs, m channels, as for Trajectory; defined for every t of the mission.
+    t0 : float
+        The start of the mission (s).
+    Q : array_like, shape (n, n)
+        Weight of the tracking error, symmetric positive semidefinite.
+    Qf : array_like, shape (n, n)
+        Every window's terminal weight Z(t_j + H), symmetric positive definite.
+    gamma : float
+        The attenuation level, > 0 (inf: LQR).
+    options : RecedingHorizonOptions
+        The window H and the update period (s).
+    solver : SolverOptions, optional
+        The integrator of every window's GRDE.
+    trajectory_options : TrajectoryOptions, optional
+        Tolerances of every window's desired trajectory.
+    
+    Raises
+    ------
+    ValueError
+        A bad model, q_d0, u_d, weight, gamma or option.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> horizon.window_at(3.5), horizon.window_start(3)
+    (3, 3.0)
+    >>> first = horizon.first()
+    >>> first.design.Z(0.0).shape, first.trajectory.tf()
+    ((6, 6), 10.0)
+    """
+    def __init__(self, model: Model, q_d0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Any, t0: typing.SupportsFloat | typing.SupportsIndex, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: RecedingHorizonOptions, solver: SolverOptions = ..., trajectory_options: TrajectoryOptions = ...) -> None:
+        ...
+    def first(self) -> HorizonWindow:
+        """
+        Window 0, from q_d0.
+        """
+    def gamma(self) -> float:
+        """
+        The attenuation level of every window.
+        """
+    def model(self) -> Model:
+        """
+        The design model of every window.
+        """
+    def next(self, previous: HorizonWindow) -> HorizonWindow:
+        """
+        The window after `previous`, from its q_d at the next t_j.
+        """
+    def options(self) -> RecedingHorizonOptions:
+        """
+        The window and update period.
+        """
+    def t0(self) -> float:
+        """
+        The start of the mission (s).
+        """
+    def window(self, j: typing.SupportsInt | typing.SupportsIndex, q_d_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> HorizonWindow:
+        """
+        Window j (>= 0) from the desired state q_d(t_j) = q_d_start (n). InputError for a bad j or
+        q_d_start; SolverError when the integration fails; ConjugatePointError (naming the window)
+        when the GRDE of the window has a conjugate point at gamma.
+        """
+    def window_at(self, t: typing.SupportsFloat | typing.SupportsIndex) -> int:
+        """
+        The window whose law is used at t >= t0: floor((t - t0) / update) (a t within 1e-9 of the
+        update period's multiple belongs to the later window).
+        """
+    def window_start(self, j: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        t_j = t0 + j * update (s).
+        """
+    def window_trajectory(self, j: typing.SupportsInt | typing.SupportsIndex, q_d_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> Trajectory:
+        """
+        The desired trajectory of window j alone (no design), as window() integrates it.
+        """
 class Law:
     """
     The tracking law of a scenario ([controller] law).
@@ -5346,7 +5703,12 @@ class Scenario:
     sampling : SamplingSpec or None
         a sampled loop through the online controller;
         none: the continuous loop
+    receding_horizon : RecedingHorizonOptions or None
+        [receding_horizon]: the law designed
     solver : SolverOptions
+        over a moving window (receding_horizon.hpp), state
+        feedback in the continuous loop; none: one design
+        over [t0, tf]
         every integration: the Riccati equations and the closed loop
     output_dt : float
         [output] dt
@@ -5535,6 +5897,14 @@ class Scenario:
     def plant(self, arg1: Model | None) -> None:
         ...
     @property
+    def receding_horizon(self) -> RecedingHorizonOptions | None:
+        """
+        [receding_horizon]: the law designed
+        """
+    @receding_horizon.setter
+    def receding_horizon(self, arg0: RecedingHorizonOptions | None) -> None:
+        ...
+    @property
     def sampling(self) -> SamplingSpec | None:
         """
         a sampled loop through the online controller;
@@ -5546,6 +5916,9 @@ class Scenario:
     @property
     def solver(self) -> SolverOptions:
         """
+        over a moving window (receding_horizon.hpp), state
+        feedback in the continuous loop; none: one design
+        over [t0, tf]
         every integration: the Riccati equations and the closed loop
         """
     @solver.setter
@@ -5645,12 +6018,14 @@ class RunResult:
     gamma : float
         of the law's design: the scenario's gamma, inf for lqr
     trajectory : Trajectory
-        its model is the design model
+        its model is the design model; with [receding_horizon] the first
+        window's desired trajectory (the run's q_d is simulation.q_d)
     plant : Model or None
         the scenario's plant; null when the closed loop integrated the design model
     solution : RiccatiSolution or None
-        the law's design; null only for the cascade law with state
-        feedback when no design exists at gamma (gamma <= gamma*)
+        the law's design; null for the cascade law with state feedback
+        when no design exists at gamma (gamma <= gamma*), and with
+        [receding_horizon] (the windows are not kept)
     Z0 : ndarray, shape (n, n)
         Z(t0) (n x n); empty without a design
     Z_min_eig : float
@@ -5666,6 +6041,8 @@ class RunResult:
         the scenario's [sampling]
     online : OnlineCounts or None
         with [sampling]: what the online controller's steps did
+    receding_horizon : RecedingHorizonReport or None
+        with [receding_horizon]: what was solved
     metrics : Metrics
         of the closed loop (metrics.hpp)
     timing : Timing
@@ -5687,7 +6064,7 @@ class RunResult:
     >>> round(result.metrics.final_position_error, 3), result.simulation.q.shape
     (0.084, (1001, 6))
     """
-    __match_args__: typing.ClassVar[tuple] = ('scenario_name', 'law', 'output_feedback', 'gamma', 'trajectory', 'plant', 'solution', 'Z0', 'Z_min_eig', 'Z_max_eig', 'gamma_star', 'simulation', 'sampling', 'online', 'metrics', 'timing')
+    __match_args__: typing.ClassVar[tuple] = ('scenario_name', 'law', 'output_feedback', 'gamma', 'trajectory', 'plant', 'solution', 'Z0', 'Z_min_eig', 'Z_max_eig', 'gamma_star', 'simulation', 'sampling', 'online', 'receding_horizon', 'metrics', 'timing')
     def __getstate__(self) -> tuple:
         ...
     def __setstate__(self, arg0: tuple) -> None:
@@ -5758,6 +6135,11 @@ class RunResult:
         the scenario's plant; null when the closed loop integrated the design model
         """
     @property
+    def receding_horizon(self) -> RecedingHorizonReport | None:
+        """
+        with [receding_horizon]: what was solved
+        """
+    @property
     def sampling(self) -> SamplingSpec | None:
         """
         the scenario's [sampling]
@@ -5775,8 +6157,9 @@ class RunResult:
     @property
     def solution(self) -> RiccatiSolution:
         """
-        the law's design; null only for the cascade law with state
-        feedback when no design exists at gamma (gamma <= gamma*)
+        the law's design; null for the cascade law with state feedback
+        when no design exists at gamma (gamma <= gamma*), and with
+        [receding_horizon] (the windows are not kept)
         """
     @property
     def timing(self) -> Timing:
@@ -5786,7 +6169,8 @@ class RunResult:
     @property
     def trajectory(self) -> Trajectory:
         """
-        its model is the design model
+        its model is the design model; with [receding_horizon] the first
+        window's desired trajectory (the run's q_d is simulation.q_d)
         """
 class StudyOptions:
     """
@@ -6421,6 +6805,57 @@ def parse_signal_toml(text: str, key: str, source: str) -> Signal:
     A signal from a TOML document whose one key is `key` (a number or a signal table, as in a
     scenario), e.g. "kappa = { offset = 1.0 }".
     """
+def receding_horizon_gamma_star(horizon: RecedingHorizon, tf: typing.SupportsFloat | typing.SupportsIndex, options: GammaStarOptions = ...) -> WindowGammaStar:
+    """
+    Each window's gamma* (gamma_star, analysis.hpp, with the horizon's solver) from t0 to the last
+    window that starts before tf, and the largest. The horizon's gamma is not used.
+    
+    The receding-horizon design: the GRDE (13) solved over a window that moves with time, so that a
+    mission of any length is designed with memory that depends on the window, not on the mission.
+    
+    Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
+      - its desired trajectory is eq. (8) integrated from q_d(t_j) of window j - 1 (q_d0 for
+        j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
+        t_j, whose value differs from one integration over the whole mission by the integration
+        error only (trajectory.hpp);
+      - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
+        check (ConjugatePointError names the window);
+      - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
+        Z in use is always at least H - update before its window's end, where the terminal weight
+        has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
+        seconds; the receding horizon never reaches them).
+    The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
+    is a finite-horizon game of its own (receding_horizon_gamma_star).
+    
+    Parameters
+    ----------
+    horizon : RecedingHorizon
+        The windows' design (its gamma is not used: each window's gamma* is searched).
+    tf : float
+        The end of the mission (s): the windows that start before it are searched.
+    options : GammaStarOptions, optional
+        The bisection of each window (its solver is replaced by the horizon's).
+    
+    Returns
+    -------
+    WindowGammaStar
+        The largest gamma* over the windows, the window where it occurs and its search.
+    
+    Raises
+    ------
+    ValueError
+        tf <= t0, bad options.
+    SolverError
+        An integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=5.0, update=5.0))
+    >>> hc.receding_horizon_gamma_star(horizon, 10.0).windows
+    2
+    """
 def request_interrupt() -> None:
     """
     Requests that the running computations stop at their next step (as Ctrl-C does); safe in a
@@ -6857,6 +7292,75 @@ def simulate_output_feedback(problem: OutputFeedbackProblem, controller: Control
     ...                                   [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
     >>> run.estimator.q_hat.shape, round(float(run.estimator.rho_sigma_z.max()), 2)  # < gamma^2 = 25
     ((1001, 6), 20.81)
+    """
+def simulate_receding_horizon(horizon: RecedingHorizon, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], tf: typing.SupportsFloat | typing.SupportsIndex, options: SimulationOptions = ..., plant: Model | None = None, kappa: typing.Any = 1.0) -> tuple[SimulationResult, RecedingHorizonReport]:
+    """
+    The state-feedback closed loop (simulation.hpp) under the receding-horizon law from q0 at t0 to
+    tf (> t0; any length: the mission), the law kappa B_e' Z_j of window j on [t_j, t_{j+1}). The
+    loop is integrated window by window, restarting at each t_j (the gain jumps there), and the
+    windows are solved as it goes: at most two are held at once. The output grid restarts at each
+    t_j (an update period that is a multiple of the output dt gives one regular grid). The
+    divergence bound (simulation.hpp) takes the scale of the mission so far: max(1, |q_e(t0)|,
+    max |q_d| over the windows used up to t). The series grow with tf / dt: choose dt for the
+    mission. q_d in the results is the windows' chained desired trajectory. report (optional) says
+    what was solved. Errors as simulate_state_feedback and RecedingHorizon::window.
+    
+    The receding-horizon design: the GRDE (13) solved over a window that moves with time, so that a
+    mission of any length is designed with memory that depends on the window, not on the mission.
+    
+    Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
+      - its desired trajectory is eq. (8) integrated from q_d(t_j) of window j - 1 (q_d0 for
+        j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
+        t_j, whose value differs from one integration over the whole mission by the integration
+        error only (trajectory.hpp);
+      - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
+        check (ConjugatePointError names the window);
+      - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
+        Z in use is always at least H - update before its window's end, where the terminal weight
+        has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
+        seconds; the receding horizon never reaches them).
+    The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
+    is a finite-horizon game of its own (receding_horizon_gamma_star).
+    
+    Parameters
+    ----------
+    horizon : RecedingHorizon
+        The windows' design.
+    disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+        The disturbance on the model's nw channels, as for simulate_state_feedback.
+    q0 : array_like, shape (n,)
+        The initial state q(t0).
+    tf : float
+        The end of the mission (s), > t0: any length.
+    options : SimulationOptions, optional
+        Output step (s), divergence factor and integrator.
+    plant : Model or None, optional
+        The vehicle integrated, of the design model's structure; None: the design model.
+    kappa : Signal or float, optional
+        The gain scaling kappa(t) > 0 of the law.
+    
+    Returns
+    -------
+    tuple of (SimulationResult, RecedingHorizonReport)
+        The series on the output grid, and what was solved and held.
+    
+    Raises
+    ------
+    ValueError
+        Sizes that do not match, tf <= t0, bad options.
+    ConjugatePointError
+        A window's GRDE has a conjugate point at gamma (the message names the window).
+    SolverError
+        An integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> run, report = hc.simulate_receding_horizon(horizon, None, [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4], 100.0)
+    >>> run.status, report.windows, bool(np.hypot(*run.q_e()[-1, 3:5]) < 0.01)
+    (<RunStatus.completed: 0>, 100, True)
     """
 def simulate_sampled(trajectory: Trajectory, controller: OnlineController, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SampledLoopOptions = ..., plant: Model | None = None) -> SimulationResult:
     """

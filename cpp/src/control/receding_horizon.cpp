@@ -117,6 +117,7 @@ SimulationResult simulate_receding_horizon(const RecedingHorizon& horizon, const
   check_size(q0, model.n(), "the initial state q0");
   const int heading = model.heading_index();
   RecedingHorizonReport summary;
+  summary.options = horizon.options();
 
   Vec q_e0(model.n());
   tracking_error(model.n(), heading, q0.data(), horizon.q_d0().data(), q_e0.data());

@@ -58,6 +58,16 @@ std::string results_json(const RunResult& r, int indent) {
                      {"measurement_period", sp.measurement_every() * sp.period},
                      {"measurement_update", to_string(sp.measurement_update)}};
   }
+  if (r.receding_horizon) {
+    // What the receding horizon solved and held (receding_horizon.hpp, RecedingHorizonReport).
+    const RecedingHorizonReport& rh = *r.receding_horizon;
+    j["receding_horizon"] = {{"window", rh.options.window},
+                             {"update", rh.options.update},
+                             {"windows", rh.windows},
+                             {"largest_window_bytes", rh.largest_window_bytes},
+                             {"peak_bytes", rh.peak_bytes},
+                             {"grde_steps", rh.grde.steps}};
+  }
   if (r.online) {
     // What the online controller's steps did (online_controller.hpp, OnlineCounts).
     const OnlineCounts& c = *r.online;

@@ -21,7 +21,7 @@ namespace {
 
 const std::vector<std::string> kTopLevelKeys{"name",       "description", "model",   "plant",   "horizon",
                                              "desired",    "controller",  "disturbance", "initial", "measurement",
-                                             "sampling",   "solver",      "output"};
+                                             "sampling",   "receding_horizon", "solver", "output"};
 
 // [plant]: a model section with the keys of [model]. Its kind defaults to [model]'s; with the
 // same kind, a key not given is [model]'s (for kind = "casadi", each name of [plant.parameters]
@@ -197,6 +197,13 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
     sp.measurement_period = r.number_or("measurement_period", sp.measurement_period);
     sp.measurement_update = r.enum_or("measurement_update", sp.measurement_update);
     s.sampling = sp;
+  }
+  if (const toml::table* table = section(root, "receding_horizon", source, false)) {
+    TableReader r(*table, "[receding_horizon]", source, {"window", "update"});
+    RecedingHorizonOptions rh;
+    rh.window = r.number("window");
+    rh.update = r.number_or("update", rh.update);
+    s.receding_horizon = rh;
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
     TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});

@@ -83,6 +83,9 @@ std::string scenario_toml(const Scenario& s) {
     if (sp.limits.rate_max.size() > 0) sampling.insert("rate_max", vector_toml(sp.limits.rate_max));
     root.insert("sampling", std::move(sampling));
   }
+  if (s.receding_horizon)
+    root.insert("receding_horizon",
+                toml::table{{"window", s.receding_horizon->window}, {"update", s.receding_horizon->update}});
   root.insert("solver", toml::table{{"method", to_string(s.solver.method)},
                                     {"newton_systems", to_string(s.solver.newton_systems)},
                                     {"rtol", s.solver.rtol},

@@ -140,6 +140,21 @@ void Scenario::validate_settings() const {
             "[controller] kappa scales the continuous law's gain; the digital design ([sampling] design ="
             " \"digital\") has its own gains: remove kappa or use design = \"emulated\"");
   }
+  if (receding_horizon) {
+    try {
+      receding_horizon->validate();
+    } catch (const InputError& e) {
+      throw InputError(str_cat("[receding_horizon] ", e.what()));
+    }
+    require(law != Law::Cascade, "[receding_horizon] designs the H-infinity or LQR law over a moving window; the"
+            " cascade law has no design: remove [receding_horizon] or choose law = \"hinf\" or \"lqr\"");
+    require(!measurement, "[receding_horizon] runs state feedback in the continuous loop; output feedback"
+            " ([measurement]) has no receding-horizon form yet: remove one of the two tables");
+    require(!sampling, "[receding_horizon] runs the continuous loop; the online controller ([sampling]) does not"
+            " swap windows yet: remove one of the two tables");
+    require(!worst_case, "[disturbance] worst_case uses one design over [t0, tf]; with [receding_horizon] there is"
+            " none: remove worst_case or [receding_horizon]");
+  }
 }
 
 void Scenario::validate() const {
@@ -246,6 +261,15 @@ ScenarioDesign design_scenario(const Scenario& s) {
   const auto start = std::chrono::steady_clock::now();
   ScenarioDesign design;
   try {
+    if (s.receding_horizon) {
+      // The windows are solved as the loop runs (simulate_receding_horizon): here only the first
+      // window's trajectory, for the model and the results.
+      design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf,
+                                                               design_gamma(s), *s.receding_horizon, s.solver);
+      design.trajectory = design.horizon->window_trajectory(0, s.desired_q0);
+      design.seconds = seconds_since(start);
+      return design;
+    }
     design.trajectory = trajectory_of(s);
     // The design of the law: Z at gamma (hinf, and the estimator of cascade) or at inf (lqr).
     try {
@@ -284,13 +308,18 @@ void combine(std::size_t& seed, double value) {
 bool same_design(const Scenario& a, const Scenario& b) {
   return a.model->same_as(*b.model) && a.t0 == b.t0 && a.tf == b.tf && same_matrix(a.desired_q0, b.desired_q0) &&
          a.desired_u.same_signals(b.desired_u) && design_gamma(a) == design_gamma(b) && same_matrix(a.Q, b.Q) &&
-         same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b);
+         same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b) &&
+         a.receding_horizon.has_value() == b.receding_horizon.has_value() &&
+         (!a.receding_horizon || (a.receding_horizon->window == b.receding_horizon->window &&
+                                  a.receding_horizon->update == b.receding_horizon->update));
 }
 
 std::size_t design_hash(const Scenario& s) {
   std::size_t seed = std::hash<std::string>{}(s.model->name());
   for (const auto& [name, value] : s.model->named_parameters()) combine(seed, value);
   for (double value : {s.t0, s.tf, design_gamma(s), s.solver.rtol, s.solver.atol}) combine(seed, value);
+  if (s.receding_horizon)
+    for (double value : {s.receding_horizon->window, s.receding_horizon->update}) combine(seed, value);
   for (Eigen::Index i = 0; i < s.desired_q0.size(); ++i) combine(seed, s.desired_q0[i]);
   for (const Mat* M : {&s.Q, &s.Qf})
     for (Eigen::Index i = 0; i < M->size(); ++i) combine(seed, M->data()[i]);
@@ -347,7 +376,7 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
                             bool sigma_eigenvalues) {
   // The cascade law with state feedback does not use the law's design: there it is only
   // reported, and a gamma at or below gamma* leaves it out instead of failing the run.
-  const bool design_needed = s.law != Law::Cascade || s.measurement || s.worst_case;
+  const bool design_needed = (s.law != Law::Cascade || s.measurement || s.worst_case) && !s.receding_horizon;
   if (design.error) std::rethrow_exception(design.error);
   if (!design.solution && design_needed) std::rethrow_exception(design.solution_error);
 
@@ -364,9 +393,13 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
   if (s.law == Law::Cascade) controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
-  else controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
+  else if (result.solution) controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
   const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
-  if (s.sampling) {
+  if (s.receding_horizon) {
+    result.simulation = simulate_receding_horizon(*design.horizon, disturbance, s.initial_q0, s.tf,
+                                                  s.simulation_options(), s.plant.get(), s.kappa,
+                                                  &result.receding_horizon.emplace());
+  } else if (s.sampling) {
     result.sampling = s.sampling;
     result.simulation = simulate_sampled_scenario(s, result, disturbance, noise, result.online.emplace());
   } else if (s.measurement) {

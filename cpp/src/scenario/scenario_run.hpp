@@ -25,6 +25,9 @@ struct ScenarioDesign {
   // [disturbance] worst_case with the lqr law: the H-infinity design at the scenario's gamma
   // (otherwise the worst case uses `solution`).
   RiccatiSolutionPtr game;
+  // [receding_horizon]: the windows' design (solved as the loop runs); trajectory is then its first
+  // window's, and solution null.
+  std::shared_ptr<const RecedingHorizon> horizon;
   // Anything else that failed (the trajectory, a SolverError of a Riccati solve, the game):
   // every run of the design fails with it.
   std::exception_ptr error;

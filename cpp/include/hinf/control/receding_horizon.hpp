@@ -58,16 +58,22 @@ class RecedingHorizon {
   RecedingHorizon(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, Mat Q, Mat Qf, double gamma,
                   RecedingHorizonOptions options, SolverOptions solver = {}, TrajectoryOptions trajectory = {});
 
+  // The design model of every window.
   const Model& model() const { return *model_; }
   const ModelPtr& model_ptr() const { return model_; }
+  // The model's number of states and of inputs.
   int n() const { return model_->n(); }
   int m() const { return model_->m(); }
+  // The start of the mission (s).
   double t0() const { return t0_; }
+  // The attenuation level of every window (+inf: LQR).
   double gamma() const { return gamma_; }
+  // The weights Q and Qf, q_d0 and u_d as given.
   const Mat& Q() const { return Q_; }
   const Mat& Qf() const { return Qf_; }
   const Vec& q_d0() const { return q_d0_; }
   const VectorSignal& u_d_signal() const { return u_d_; }
+  // The window and update period, and the integrator of every window's GRDE.
   const RecedingHorizonOptions& options() const { return options_; }
   const SolverOptions& solver() const { return solver_; }
 
@@ -82,8 +88,9 @@ class RecedingHorizon {
   HorizonWindow window(int j, const Vec& q_d_start) const;
   // The desired trajectory of window j alone (no design), as window() integrates it.
   TrajectoryPtr window_trajectory(int j, const Vec& q_d_start) const;
-  // Window 0, and the window after `previous` (from its q_d at the next t_j).
+  // Window 0, from q_d0.
   HorizonWindow first() const { return window(0, q_d0_); }
+  // The window after `previous`, from its q_d at the next t_j.
   HorizonWindow next(const HorizonWindow& previous) const;
 
  private:
@@ -100,6 +107,7 @@ class RecedingHorizon {
 
 // What a receding-horizon run solved and held.
 struct RecedingHorizonReport {
+  RecedingHorizonOptions options;      // the window and update period of the run
   int windows = 0;                     // windows solved
   std::size_t largest_window_bytes = 0;  // the largest window's stored dense outputs
   std::size_t peak_bytes = 0;          // the most held at once (the window in use and the next)
@@ -131,6 +139,8 @@ struct WindowGammaStar {
   bool converged = true;    // every window's bisection converged
   GammaStarResult result;   // that window's search
 };
+// Each window's gamma* (gamma_star, analysis.hpp, with the horizon's solver) from t0 to the last
+// window that starts before tf, and the largest. The horizon's gamma is not used.
 WindowGammaStar receding_horizon_gamma_star(const RecedingHorizon& horizon, double tf,
                                             const GammaStarOptions& options = {});
 

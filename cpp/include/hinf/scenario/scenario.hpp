@@ -12,6 +12,7 @@
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
+#include "hinf/control/receding_horizon.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/numerics/signal.hpp"
@@ -100,6 +101,10 @@ struct Scenario {
   std::optional<MeasurementSpec> measurement;  // imperfect measurements; none: state feedback
   std::optional<SamplingSpec> sampling;        // a sampled loop through the online controller;
                                                // none: the continuous loop
+  std::optional<RecedingHorizonOptions> receding_horizon;  // [receding_horizon]: the law designed
+                                               // over a moving window (receding_horizon.hpp), state
+                                               // feedback in the continuous loop; none: one design
+                                               // over [t0, tf]
   SolverOptions solver;             // every integration: the Riccati equations and the closed loop
   double output_dt = 0.01;          // [output] dt
   double divergence_factor = 1e3;   // [solver] divergence_factor (simulation.hpp)
@@ -136,10 +141,12 @@ struct RunResult {
   Law law = Law::Hinf;          // the scenario's law
   bool output_feedback = false;  // true with [measurement]
   double gamma = 0.0;           // of the law's design: the scenario's gamma, inf for lqr
-  TrajectoryPtr trajectory;   // its model is the design model
+  TrajectoryPtr trajectory;   // its model is the design model; with [receding_horizon] the first
+                              // window's desired trajectory (the run's q_d is simulation.q_d)
   ModelPtr plant;             // the scenario's plant; null when the closed loop integrated the design model
-  RiccatiSolutionPtr solution;  // the law's design; null only for the cascade law with state
-                                // feedback when no design exists at gamma (gamma <= gamma*)
+  RiccatiSolutionPtr solution;  // the law's design; null for the cascade law with state feedback
+                                // when no design exists at gamma (gamma <= gamma*), and with
+                                // [receding_horizon] (the windows are not kept)
   Mat Z0;                       // Z(t0) (n x n); empty without a design
   double Z_min_eig = NAN, Z_max_eig = NAN;  // m and M of paper eq. (22) over [t0, tf]
   std::optional<double> gamma_star;  // not computed by run_scenario; set by the caller for
@@ -147,6 +154,7 @@ struct RunResult {
   SimulationResult simulation;  // the closed loop's time series
   std::optional<SamplingSpec> sampling;  // the scenario's [sampling]
   std::optional<OnlineCounts> online;    // with [sampling]: what the online controller's steps did
+  std::optional<RecedingHorizonReport> receding_horizon;  // with [receding_horizon]: what was solved
   Metrics metrics;              // of the closed loop (metrics.hpp)
   Timing timing;                // the wall-clock time of its parts
 };

@@ -1,0 +1,113 @@
+"""The receding horizon through the package and scenario files (its numerics are checked in
+tests/cpp/test_receding_horizon.cpp): the binding surface, [receding_horizon] in a scenario file
+and its errors, the results file, pickling, and a study that varies the window."""
+
+import json
+import pickle
+
+import numpy as np
+import pytest
+
+import hinf_cpp as hc
+from hinf_cpp.output.export import save_json
+
+U_D = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]  # paper Fig. 1
+Q0 = [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4]
+
+
+def fig1_text(extra: str) -> str:
+    with open(hc.scenario_path("paper_fig1")) as f:
+        text = f.read()
+    return text.replace("[solver]", extra + "\n[solver]")
+
+
+def test_run_through_the_api_matches_the_scenario_run():
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], U_D, 0.0, np.eye(6), np.eye(6), 5.0,
+                                 hc.RecedingHorizonOptions(window=10.0, update=1.0), scenario.solver)
+    scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+    result = hc.run_scenario(scenario)
+    run, report = hc.simulate_receding_horizon(horizon, scenario.disturbance, scenario.initial_q0, 40.0,
+                                               scenario.simulation_options())
+    # The same windows and the same loop from two front doors: the same code on the same input.
+    assert np.array_equal(run.q, result.simulation.q)
+    assert report.windows == result.receding_horizon.windows == 40
+    assert result.solution is None
+    assert result.trajectory.tf() == 10.0  # the first window's
+    assert isinstance(report, hc.RecedingHorizonReport) and report.options.window == 10.0
+
+
+def test_windows_are_immutable_values_from_any_start():
+    horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], U_D, 0.0, np.eye(6), np.eye(6), 5.0,
+                                 hc.RecedingHorizonOptions(window=6.0, update=2.0))
+    first = horizon.first()
+    second = horizon.next(first)
+    again = horizon.window(1, first.trajectory.q_d(2.0))
+    assert (second.index, second.t_start, second.t_use_end) == (1, 2.0, 4.0)
+    assert np.array_equal(second.design.Z(5.0), again.design.Z(5.0))
+    assert second.memory_bytes() > 0
+    with pytest.raises(ValueError, match="index"):
+        horizon.window(-1, [1, 0, 0, 0, 0, 0])
+    with pytest.raises(ValueError, match="desired state"):
+        horizon.window(0, [1, 0, 0])
+
+
+@pytest.mark.parametrize("options, match", [
+    (dict(window=0.0), "window"),
+    (dict(window=5.0, update=6.0), "update"),
+    (dict(window=float("inf")), "window"),
+])
+def test_bad_options_are_named(options, match):
+    with pytest.raises(ValueError, match=match):
+        hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], U_D, 0.0, np.eye(6), np.eye(6), 5.0,
+                           hc.RecedingHorizonOptions(**options))
+
+
+def test_a_gamma_below_a_windows_gamma_star_names_the_window():
+    horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], U_D, 0.0, np.eye(6), np.eye(6), 1.0,
+                                 hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    with pytest.raises(hc.ConjugatePointError, match="receding-horizon window 0"):
+        hc.simulate_receding_horizon(horizon, None, Q0, 20.0)
+
+
+def test_scenario_file_round_trip_and_results_file(tmp_path):
+    path = tmp_path / "rh.toml"
+    path.write_text(fig1_text("[receding_horizon]\nwindow = 8.0\nupdate = 2.0\n"))
+    scenario = hc.load_scenario(path)
+    assert (scenario.receding_horizon.window, scenario.receding_horizon.update) == (8.0, 2.0)
+    # The scenario written back reads as the same scenario (and so it pickles).
+    again = pickle.loads(pickle.dumps(scenario))
+    assert again.receding_horizon == scenario.receding_horizon
+    document = json.loads(save_json(hc.run_scenario(scenario), tmp_path / "rh.json").read_text())
+    assert document["receding_horizon"]["windows"] == 20
+    assert document["receding_horizon"]["window"] == 8.0
+    assert document["receding_horizon"]["peak_bytes"] > 0
+
+
+@pytest.mark.parametrize("extra, match", [
+    ("[receding_horizon]\nupdate = 1.0\n", "window"),
+    ("[receding_horizon]\nwindow = 5.0\nupdate = 9.0\n", r"\[receding_horizon\] .*update"),
+    ("[receding_horizon]\nwindow = 5.0\nhorizon = 9.0\n", "horizon"),
+    ("[receding_horizon]\nwindow = 5.0\n[sampling]\nperiod = 0.1\n", r"\[sampling\]"),
+])
+def test_scenario_errors_name_the_key(tmp_path, extra, match):
+    path = tmp_path / "bad.toml"
+    path.write_text(fig1_text(extra))
+    with pytest.raises(ValueError, match=match):
+        hc.run_scenario(hc.load_scenario(path))
+
+
+def test_output_feedback_is_refused_with_what_to_do():
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
+    scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0)
+    with pytest.raises(ValueError, match=r"output feedback \(\[measurement\]\)"):
+        hc.run_scenario(scenario)
+
+
+def test_largest_gamma_star_over_windows_is_one_of_the_windows():
+    horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], U_D, 0.0, np.eye(6), np.eye(6), 5.0,
+                                 hc.RecedingHorizonOptions(window=5.0, update=5.0))
+    worst = hc.receding_horizon_gamma_star(horizon, 10.0, hc.GammaStarOptions(rtol=1e-5))
+    assert worst.windows == 2 and worst.window in (0, 1)
+    assert worst.result.gamma_star == worst.gamma_star
+    assert worst.t_start == 5.0 * worst.window
