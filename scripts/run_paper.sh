@@ -7,7 +7,9 @@
 # full shipped studies take minutes: scripts/run_studies.sh), and the sampled-data loops of
 # examples/online_loop.py (the online controller at 20 and 5 Hz, emulated and digital design, a
 # one-sample delay) in online_loop.txt, and Figure 2 on a 20 Hz vehicle computer
-# (scenarios/paper_fig2_sampled.toml: delay, actuator limits) in sampled/ (a few seconds).
+# (scenarios/paper_fig2_sampled.toml: delay, actuator limits) in sampled/ (a few seconds), and
+# the same controller exported as C99 and run in a vehicle loop written in C
+# (examples/vehicle_loop_c.py, docs/export.md) in exported/ (a few seconds).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -22,3 +24,9 @@ OUT="${1:-out/paper}"
 mv "$OUT/online_loop.txt.partial" "$OUT/online_loop.txt"
 .venv/bin/hinf-cpp run scenarios/paper_fig2_sampled.toml --json "$OUT/sampled/paper_fig2_sampled.json" \
   --csv "$OUT/sampled/paper_fig2_sampled.csv" --plot "$OUT/sampled/paper_fig2_sampled.png"
+# The exported controller in a C loop: built in a folder beside, then renamed over the old one.
+rm -rf "$OUT/exported.partial"
+.venv/bin/python examples/vehicle_loop_c.py "$OUT/exported.partial" >"$OUT/exported.partial.txt"
+mv "$OUT/exported.partial.txt" "$OUT/exported.partial/summary.txt"
+rm -rf "$OUT/exported"
+mv "$OUT/exported.partial" "$OUT/exported"

@@ -14,6 +14,7 @@
     hinf-cpp vehicles [--out DIR] [--quiet]
     hinf-cpp planned [--out DIR] [--no-cache] [--quiet]
     hinf-cpp study STUDY.toml --out DIR [--workers N | --scheduler ADDRESS] [--quiet]
+    hinf-cpp export-controller SCENARIO.toml --out DIR [--sample-period T]
 
 Every command takes --trust-code (the same as HINF_TRUST_CODE=1): without it a file that names
 code to run (a [model] of kind "casadi" or "python") is refused before anything is loaded
@@ -460,6 +461,23 @@ def cmd_model_export(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_export_controller(args: argparse.Namespace) -> int:
+    from hinf_cpp.output.export_c import export_scenario
+
+    _check_outputs(folders=[args.out])
+    scenario, planned = _load_with_plan(args.scenario)  # as `run` reads it
+    if planned is not None:
+        print(f"planned u_d through {len(planned.waypoints)} waypoints: {planned.report.summary()}")
+    exported = export_scenario(scenario, args.out, period=args.sample_period)
+    feedback = f"output feedback ({exported.p} measured outputs)" if exported.p else "state feedback"
+    print(f"scenario {scenario.name}: {exported.kind} law, {feedback}, every {exported.period:g} s on "
+          f"[{exported.t0:g}, {exported.t_end:g}) s ({exported.steps} samples)")
+    print(f"  tables {exported.table_bytes} bytes ({exported.table_bytes / 2**20:.2f} MiB); past t_end the "
+          "controller answers past_horizon and holds its command")
+    print(f"wrote {exported.folder}/ (hinf_controller.h, .c, tables, CMakeLists.txt, README.md)")
+    return 0
+
+
 def cmd_paper(args: argparse.Namespace) -> int:
     from hinf_cpp.scenario import scenario_path
     from hinf_cpp.analysis.comparison import compare
@@ -716,6 +734,14 @@ def build_parser() -> argparse.ArgumentParser:
     export.add_argument("model", help="MODULE:CALLABLE or FILE.py:CALLABLE returning a hinf_cpp.models.symbolic.SymbolicModel")
     export.add_argument("--out", required=True, help="output folder")
     export.set_defaults(handler=cmd_model_export)
+
+    exporter = sub.add_parser("export-controller", help="the scenario's online controller as self-contained C99 "
+                                                        "(docs/export.md)")
+    exporter.add_argument("scenario", help="scenario file (TOML); [sampling] gives the period, design and filter")
+    exporter.add_argument("--out", required=True, help="output folder")
+    exporter.add_argument("--sample-period", type=float, metavar="T",
+                          help="the controller's period (s), in place of [sampling] period")
+    exporter.set_defaults(handler=cmd_export_controller)
 
     paper = sub.add_parser("paper", help="the paper's runs: figures, results files, metrics and the "
                                          "comparison of the three laws")

@@ -353,6 +353,7 @@ def subcommand_cases():
         "sweep-gamma --plot": (["sweep-gamma", "{scenario}", "--plot", "{tmp}/sweep.txt"], r"\.png, \.pdf or \.svg"),
         "sweep-gamma --json": (["sweep-gamma", "{scenario}", "--json", bad], r"not a directory"),
         "paper --out a file": (["paper", "--out", "{file}"], r"not a directory"),
+        "export-controller --out a file": (["export-controller", "{scenario}", "--out", "{file}"], r"not a directory"),
     }
 
 
