@@ -1,6 +1,7 @@
 #include "hinf/control/trajectory.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
@@ -11,16 +12,56 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
                        const TrajectoryOptions& options)
     : model_(std::move(model)), q_d0_(std::move(q_d0)), u_d_(std::move(u_d)), t0_(t0), tf_(tf) {
   check_arguments();
-  const int n = model_->n();
-  const int m = model_->m();
   require(options.rtol > 0 && options.atol > 0 && options.max_steps > 0,
           "trajectory tolerances and max_steps must be > 0");
+  dense_ = PiecewisePolynomial(model_->n());
+  Vec y = q_d0_;
+  integrate(t0, tf, y, options, stats_);
+  dense_.finalize();
+  check_declarations();
+}
 
+Trajectory::Trajectory(ModelPtr model, std::vector<double> t_nodes, const RowMat& q_nodes, VectorSignal u_d,
+                       const TrajectoryOptions& options)
+    : model_(std::move(model)), u_d_(std::move(u_d)), node_times_(std::move(t_nodes)) {
+  require(model_ != nullptr, "Trajectory needs a model");
+  const std::size_t count = node_times_.size();
+  require(count >= 2, "a desired trajectory given as states needs at least two nodes, got ", count);
+  for (std::size_t k = 0; k < count; ++k) {
+    require(std::isfinite(node_times_[k]), "the desired states' time ", k, " is not finite");
+    require(k == 0 || node_times_[k] > node_times_[k - 1], "the desired states' times must increase: t[", k,
+            "] = ", node_times_[k], " follows t[", k - 1, "] = ", node_times_[k - 1]);
+  }
+  check_structure(structure_of(*model_));
+  require(q_nodes.rows() == static_cast<Eigen::Index>(count) && q_nodes.cols() == model_->n(),
+          "the desired states need one row of ", model_->n(), " numbers per time (", count, " x ", model_->n(),
+          "), got ", q_nodes.rows(), " x ", q_nodes.cols());
+  require(q_nodes.allFinite(), "the desired states are not all finite");
+  require(options.rtol > 0 && options.atol > 0 && options.max_steps > 0,
+          "trajectory tolerances and max_steps must be > 0");
+  t0_ = node_times_.front();
+  tf_ = node_times_.back();
+  q_d0_ = q_nodes.row(0).transpose();
+  check_arguments();
+  dense_ = PiecewisePolynomial(model_->n());
+  defects_.reserve(count - 1);
+  for (std::size_t k = 0; k + 1 < count; ++k) {
+    Vec y = q_nodes.row(static_cast<Eigen::Index>(k)).transpose();
+    integrate(node_times_[k], node_times_[k + 1], y, options, stats_);
+    defects_.push_back((y - q_nodes.row(static_cast<Eigen::Index>(k + 1)).transpose()).cwiseAbs().maxCoeff());
+  }
+  dense_.finalize();
+  check_declarations();
+}
+
+void Trajectory::integrate(double a, double b, Vec& y, const TrajectoryOptions& options, StepStats& stats) {
+  const int n = model_->n();
+  const int m = model_->m();
   const bool constant_G = model_->constant_input_matrices();
-  Mat G = model_->G(t0, q_d0_);
+  Mat G = model_->G(a, y);
   Vec u(m), f(n);
-  auto rhs = [&](double t, const double* y, double* dydt) {
-    Eigen::Map<const Vec> q(y, n);
+  auto rhs = [&](double t, const double* yy, double* dydt) {
+    Eigen::Map<const Vec> q(yy, n);
     Eigen::Map<Vec> out(dydt, n);
     model_->f(t, q, f);
     u_d_.eval(t, u.data());
@@ -36,32 +77,33 @@ Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, do
       throw InputError(str_cat("the desired input u_d is not finite at t = ", t));
     }
   };
-  dense_ = PiecewisePolynomial(n);
-  Dopri5 stepper(n, options.rtol, options.atol, options.max_steps);
-  Vec y = q_d0_;
+  // The step budget is the whole trajectory's: what the intervals before used counts.
+  const long budget = options.max_steps - stats.steps - stats.rejected;
+  require(budget > 0, "the desired trajectory needs more than max_steps = ", options.max_steps, " steps");
+  Dopri5 stepper(n, options.rtol, options.atol, budget);
   try {
     // A table input is a polynomial between its points only: the integration stops at every
     // point inside the horizon, so that no step straddles a kink (a "linear" table's, say),
     // which the error estimate of a step would not see.
-    double a = t0;
-    for (double b : input_breakpoints(t0, tf)) {
-      stepper.integrate(rhs, a, b, y.data(), [&](const DensePiece& piece) { dense_.append(piece); });
-      a = b;
+    for (double c : input_breakpoints(a, b)) {
+      stepper.integrate(rhs, a, c, y.data(), [&](const DensePiece& piece) { dense_.append(piece); });
+      a = c;
     }
   } catch (const SolverError& e) {
-    throw SolverError(str_cat("the desired trajectory could not be integrated: ", e.what()),
-                      e.t(), e.flag());
+    throw SolverError(str_cat("the desired trajectory could not be integrated: ", e.what()), e.t(), e.flag());
   }
-  dense_.finalize();
-  stats_ = stepper.stats();
-  check_declarations();
+  stats += stepper.stats();
+  stats.method = stepper.stats().method;
 }
 
 Trajectory::Trajectory(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, double tf, PiecewisePolynomial dense,
-                       StepStats stats)
+                       StepStats stats, std::vector<double> node_times, std::vector<double> defects)
     : model_(std::move(model)), q_d0_(std::move(q_d0)), u_d_(std::move(u_d)), t0_(t0), tf_(tf),
-      dense_(std::move(dense)), stats_(stats) {
+      dense_(std::move(dense)), stats_(stats), node_times_(std::move(node_times)), defects_(std::move(defects)) {
   check_arguments();
+  require(node_times_.empty() ? defects_.empty() : defects_.size() + 1 == node_times_.size(),
+          "a trajectory given as states has one defect per interval between its nodes: got ", node_times_.size(),
+          " nodes and ", defects_.size(), " defects");
   require(dense_.dim() == model_->n() && !dense_.empty(), "the dense output of a trajectory needs ", model_->n(),
           " components and at least one piece, got ", dense_.dim(), " components and ", dense_.num_pieces(),
           " pieces");
@@ -98,6 +140,15 @@ void Trajectory::check_arguments() const {
   validate_model(*model_, t0_, q_d0_);
   require(u_d_.dim() == model_->m(), "the desired input u_d has ", u_d_.dim(), " channels, the model '",
           model_->name(), "' has ", model_->m(), " inputs");
+}
+
+double Trajectory::max_defect() const {
+  return defects_.empty() ? 0.0 : *std::max_element(defects_.begin(), defects_.end());
+}
+
+double Trajectory::max_defect_t() const {
+  if (defects_.empty()) return NAN;
+  return node_times_[static_cast<std::size_t>(std::max_element(defects_.begin(), defects_.end()) - defects_.begin())];
 }
 
 void Trajectory::q_d(double t, double* out, std::size_t* cursor) const {
