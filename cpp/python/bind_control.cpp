@@ -536,7 +536,7 @@ True)");
 >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
 >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
 >>> controller.step(0.1, None)[1]
-StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False, rho_sigma_z=nan, coupling_violated=False))", /*repr=*/true);
+StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False, rho_sigma_z=nan, coupling_violated=False, window_stale=False))", /*repr=*/true);
   bind_result<OnlineCounts>(m, "OnlineCounts", {"OnlineCounts"}, {}, R"(Examples
 --------
 )" HINF_DESIGN_EXAMPLE R"(
@@ -951,6 +951,141 @@ Examples
 >>> run, report = hc.simulate_receding_horizon(horizon, None, [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4], 100.0)
 >>> run.status, report.windows, bool(np.hypot(*run.q_e()[-1, 3:5]) < 0.01)
 (<RunStatus.completed: 0>, 100, True))").c_str());
+  bind_result<RecedingOnlineStatus>(m, "RecedingOnlineStatus", {"RecedingOnlineStatus"}, {}, R"(Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+>>> controller = hc.RecedingOnlineController(horizon, 0.05)
+>>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> status = controller.status()
+>>> status.window_in_use, status.windows_solved, status.windows_failed
+(0, 1, 0))", /*repr=*/true);
+
+  py::class_<RecedingOnlineController, py::smart_holder>(m, "RecedingOnlineController",
+      doc({"RecedingOnlineController", "RecedingOnlineController::RecedingOnlineController",
+           "control/online_receding_horizon.hpp"}, R"(Parameters
+----------
+horizon : RecedingHorizon
+    The windows' design.
+period : float
+    The controller's period T (s); the horizon's update period is a whole multiple of it.
+options : OnlineOptions, optional
+    As for OnlineController: limits, delay compensation, a filter for output feedback.
+kappa : Signal or float, optional
+    The gain scaling kappa(t) > 0.
+background : bool, optional
+    Solve the next window on a thread of its own (True); False: synchronize() solves it.
+
+Raises
+------
+ValueError
+    A period that does not divide the update period, bad options, u_d given as a function.
+
+Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+>>> controller = hc.RecedingOnlineController(horizon, 0.05)
+>>> q = np.array([1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+>>> controller.reset(0.0, q)
+>>> for k in range(41):                                         # two seconds at 20 Hz
+...     controller.synchronize(0.05 * k)                        # a simulation waits for the solver
+...     u, report = controller.step(0.05 * k, q)
+>>> controller.status().window_in_use, report.window_stale
+(2, False))").c_str())
+      .def(py::init([](std::shared_ptr<const RecedingHorizon> horizon, double period, const OnlineOptions& options,
+                       const py::object& kappa, bool background) {
+             return std::make_shared<RecedingOnlineController>(std::move(horizon), period, options,
+                                                               to_signal(kappa, "kappa"), background);
+           }),
+           py::arg("horizon"), py::arg("period"), py::arg("options") = OnlineOptions{}, py::arg("kappa") = 1.0,
+           py::arg("background") = true)
+      .def("period", &RecedingOnlineController::period, "The controller's period T (s).")
+      .def("options", &RecedingOnlineController::options, doc({"RecedingOnlineController::options"}).c_str())
+      .def("controller", &RecedingOnlineController::controller, py::return_value_policy::reference_internal,
+           doc({"RecedingOnlineController::controller"}).c_str())
+      .def("reset",
+           [](RecedingOnlineController& c, double t, const Vec& q, const std::optional<Vec>& u_held) {
+             ComputationScope release;
+             c.reset(t, q, u_held.value_or(Vec()));
+           },
+           py::arg("t"), py::arg("q"), py::arg("u_held") = py::none(), doc({"RecedingOnlineController::reset"}).c_str())
+      .def("step",
+           [](RecedingOnlineController& c, double t_now,
+              const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& q,
+              const std::optional<double>& t_meas) {
+             if (c.status().window_in_use < 0) throw InputError("step() before reset(): call reset(t0, q0) first");
+             const int size = c.controller().measurement_size();
+             if (q && (q->ndim() != 1 || q->shape(0) != size))
+               throw InputError(str_cat("q must have shape (", size, ",), got an array of ", q->size(),
+                                        " numbers in ", q->ndim(), " dimensions"));
+             Vec u(c.controller().m());
+             StepReport report;
+             {
+               ComputationScope release;
+               report = c.step(t_now, q ? q->data() : nullptr, t_meas.value_or(t_now), u.data());
+             }
+             if (report.status == StepStatus::NotReset)
+               throw InputError("step() before reset(): call reset(t0, q0) first");
+             return py::make_tuple(u, report);
+           },
+           py::arg("t_now"), py::arg("q") = py::none(), py::arg("t_meas") = py::none(),
+           doc({"RecedingOnlineController::step"}, "As OnlineController.step; raises ValueError before reset().")
+               .c_str())
+      .def("synchronize", &RecedingOnlineController::synchronize, py::arg("t"), py::call_guard<ComputationScope>(),
+           doc({"RecedingOnlineController::synchronize"}).c_str())
+      .def("status", &RecedingOnlineController::status, doc({"RecedingOnlineController::status"}).c_str());
+
+  m.def("simulate_sampled_receding_horizon",
+        [](const Trajectory& trajectory, RecedingOnlineController& controller, const py::object& disturbance,
+           const Vec& q0, const SampledLoopOptions& options, const std::optional<ModelPtr>& plant) {
+          const Disturbance w = to_disturbance(disturbance, trajectory.model().nw());
+          ComputationScope release;
+          return simulate_sampled(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
+        },
+        py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
+        py::arg("options") = SampledLoopOptions{}, py::arg("plant") = py::none(),
+        doc({"simulate_sampled", "control/sampled_loop.hpp"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The reference: the desired trajectory over [t0, tf] from the horizon's q_d0 with its u_d
+    (the run's q_d series and divergence bound; the windows chain into it).
+controller : RecedingOnlineController
+    The controller, reset here at t0; synchronized before every step.
+disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+    The disturbance on the model's nw channels, as for simulate_state_feedback.
+q0 : array_like, shape (n,)
+    The initial state q(t0).
+options : SampledLoopOptions, optional
+    The computation delay (s), the output grid, tolerances, and for output feedback the noise.
+plant : Model or None, optional
+    The vehicle integrated, of the design model's structure; None: the design model.
+
+Returns
+-------
+SimulationResult
+    The series on the output grid (u: the command applied, piecewise constant).
+
+Raises
+------
+ValueError
+    A reference that does not start as the horizon does, sizes that do not match.
+SolverError
+    The integration failed.
+
+Examples
+--------
+>>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+>>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+>>> reference = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 30.0)
+>>> controller = hc.RecedingOnlineController(horizon, 0.05)
+>>> run = hc.simulate_sampled_receding_horizon(reference, controller, None, [1.0, 0.0, 0.0, -1.0, -1.0, 0.5])
+>>> run.status, controller.status().window_in_use
+(<RunStatus.completed: 0>, 29))").c_str());
+
   m.def("receding_horizon_gamma_star", &receding_horizon_gamma_star, py::arg("horizon"), py::arg("tf"),
         py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
         doc({"receding_horizon_gamma_star", "control/receding_horizon.hpp"}, R"(Parameters
@@ -1104,17 +1239,66 @@ array([ 0.981, -0.192,  0.191,  8.814,  3.236,  1.331])
          doc({"Trajectory::A_e"}, "Shape (n, nw) for a number t, (k, n, nw) for a 1-D array of k times.").c_str())
       .def("dense", &Trajectory::dense, py::return_value_policy::reference_internal, doc({"Trajectory::dense"}).c_str())
       .def("stats", &Trajectory::stats, doc({"Trajectory::dense"}).c_str())
+      .def_static("from_states",
+                  [](ModelPtr model, std::vector<double> t, const RowMat& q, const py::object& u_d,
+                     const TrajectoryOptions& options) {
+                    require(model != nullptr, "Trajectory.from_states needs a model");
+                    VectorSignal inputs = to_vector_signal(u_d, model->m(), "u_d");
+                    ComputationScope release;
+                    return std::make_shared<Trajectory>(std::move(model), std::move(t), q, std::move(inputs), options);
+                  },
+                  py::arg("model"), py::arg("t"), py::arg("q"), py::arg("u_d"), py::arg("options") = TrajectoryOptions{},
+                  doc({"Trajectory::Trajectory"}, R"(The desired trajectory given as states and inputs.
+
+Parameters
+----------
+model : Model
+    The design model.
+t : array_like, shape (N + 1,)
+    The nodes t_0 < ... < t_N (s): the horizon [t_0, t_N].
+q : array_like, shape (N + 1, n)
+    The desired states at the nodes.
+u_d : VectorSignal, callable, or list of Signal or float
+    The desired inputs, m channels.
+options : TrajectoryOptions, optional
+    Tolerances of each interval's integration.
+
+Returns
+-------
+Trajectory
+    Each interval integrated from its node; defects() are the misses at the next nodes.
+
+Raises
+------
+ValueError
+    Nodes not increasing or not finite, q not of shape (N + 1, n), a bad model or u_d.
+SolverError
+    An interval's integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> t = np.linspace(0.0, 10.0, 11)
+>>> again = hc.Trajectory.from_states(hc.ShipModel(), t, trajectory.q_d(t), u_d)
+>>> len(again.defects()), bool(again.max_defect() < 1e-8)
+(10, True))").c_str())
+      .def("node_times", &Trajectory::node_times, doc({"Trajectory::node_times"}).c_str())
+      .def("defects", &Trajectory::defects, doc({"Trajectory::node_times"}).c_str())
+      .def("max_defect", &Trajectory::max_defect, doc({"Trajectory::max_defect"}).c_str())
+      .def("max_defect_t", &Trajectory::max_defect_t, doc({"Trajectory::max_defect"}).c_str())
       .def(py::pickle(
           [](const Trajectory& tr) {
             return py::make_tuple<py::return_value_policy::copy>(tr.model_ptr(), tr.q_d0(), tr.u_d_signal(), tr.t0(),
-                                                                 tr.tf(), tr.dense(), tr.stats());
+                                                                 tr.tf(), tr.dense(), tr.stats(), tr.node_times(),
+                                                                 tr.defects());
           },
           [](const py::tuple& state) {
-            check_state(state, 7, "Trajectory");
+            check_state(state, 9, "Trajectory");
             return std::make_shared<Trajectory>(state[0].cast<ModelPtr>(), state[1].cast<Vec>(),
                                                 state[2].cast<VectorSignal>(), state[3].cast<double>(),
                                                 state[4].cast<double>(), state[5].cast<PiecewisePolynomial>(),
-                                                state[6].cast<StepStats>());
+                                                state[6].cast<StepStats>(), state[7].cast<std::vector<double>>(),
+                                                state[8].cast<std::vector<double>>());
           }));
 
   // ---- Riccati equations ----

@@ -45,6 +45,23 @@ Examples
 >>> measurement.sigma, measurement.sample_period, measurement.filter_A
 (0.5, 0.01, <FilterLinearization.estimate: 0>))");
 
+  bind_options<DesiredStates>(m, "DesiredStates", {"DesiredStates"}, {{"q", "array_like, shape (N + 1, n)"}},
+                              R"(Notes
+-----
+The values are checked with the scenario (Scenario.validate()) and when its trajectory is made;
+docs/scenarios.md has [desired] states.
+
+Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.tf = 2.0
+>>> t = [0.0, 1.0, 2.0]
+>>> trajectory = hc.Trajectory(scenario.model, scenario.desired_q0, scenario.desired_u, 0.0, 2.0)
+>>> scenario.desired_states = hc.DesiredStates(t=t, q=trajectory.q_d(np.array(t)))
+>>> result = hc.run_scenario(scenario)
+>>> len(result.trajectory.node_times()), bool(result.trajectory.max_defect() < 1e-8)
+(3, True))");
+
   bind_enum<SampledDesign>(m, "SampledDesign", R"(Examples
 --------
 >>> hc.SamplingSpec(period=0.05, design="digital").design
@@ -67,7 +84,8 @@ Examples
       "Scenario", "Attributes",
       {{"name", "str"}, {"description", "str"}, {"model", "Model"}, {"plant", "Model or None"},
        {"t0", "float"}, {"tf", "float"}, {"desired_q0", "ndarray, shape (n,)"},
-       {"desired_u", "VectorSignal (set: also a callable or a list of Signal or float)"}, {"gamma", "float"},
+       {"desired_u", "VectorSignal (set: also a callable or a list of Signal or float)"},
+       {"desired_states", "DesiredStates or None"}, {"gamma", "float"},
        {"Q", "ndarray, shape (n, n)"}, {"Qf", "ndarray, shape (n, n)"}, {"kappa", "Signal (set: also a float)"},
        {"law", "Law (set: also its name)"}, {"cascade", "CascadeGains"},
        {"disturbance", "VectorSignal (set: also a callable, a list of Signal or float, or None)"},
@@ -108,6 +126,7 @@ Examples
                       require(s.model != nullptr, "set Scenario.model before desired_u");
                       s.desired_u = to_vector_signal(v, s.model->m(), "desired_u");
                     }, member("desired_u").c_str())
+      .def_readwrite("desired_states", &Scenario::desired_states, member("desired_states").c_str())
       .def_readwrite("gamma", &Scenario::gamma, member("gamma").c_str())
       .def_readwrite("Q", &Scenario::Q, member("Q").c_str())
       .def_readwrite("Qf", &Scenario::Qf, member("Qf").c_str())

@@ -119,6 +119,11 @@ order) as a piece from the step's start to its end; valid until the next call.)c
     {"DensePiece::theta", R"contract(theta of time t (clamped to [0, 1]).
 At t == t_start the start (theta = 0) even for a step shorter than the spacing of doubles
 (t_end == t_start): the value at the start of an integration is its initial value.)contract"},
+    {"DesiredStates", R"contract([desired] states: the desired trajectory given as states and inputs (trajectory.hpp), e.g. a
+plan of an open-loop-unstable vehicle.)contract"},
+    {"DesiredStates::max_defect", R"contract(the largest defect d_k of an interval allowed (the states' units, > 0))contract"},
+    {"DesiredStates::q", R"contract(the desired states at the nodes, (N + 1) x n; row 0 is [desired] q0)contract"},
+    {"DesiredStates::t", R"contract(the nodes t_0 = t0 < ... < t_N = tf (s))contract"},
     {"DiscreteDesign", R"contract(The solution of the game Riccati difference equation: M_k and the gains F_k of the law.
 Immutable; may be read from several threads.)contract"},
     {"DiscreteDesign::M", R"contract(M_k (n x n, symmetric), k = 0 .. steps(); M_steps = Qf. InputError outside.)contract"},
@@ -458,6 +463,8 @@ system is singular (the step is then retried with another step size).)contract"}
     {"NewtonSystems::dense", R"contract(the packed Jacobian (n(n+1)/2 unknowns) and LU: O(n^6) per factorization)contract"},
     {"NewtonSystems::lyapunov", R"contract(Schur form and Bartels-Stewart: O(n^3) per factorization and per solve)contract"},
     {"OnlineController", R"contract(The controller of one vehicle, state or output feedback (see the top of this file).)contract"},
+    {"OnlineController::Handover", R"contract(Where the handover stands: Empty (none offered), Offered (set_successor, not yet switched
+to), Switched (step() switched; take_retired() makes it Empty again).)contract"},
     {"OnlineController::OnlineController", R"contract(InputError for a null law or bad options (a filter whose shapes do not fit the model's
 measurement). Takes all the memory step() uses.)contract"},
     {"OnlineController::advance_to", R"contract(MeasurementUpdate::Discrete: the estimate advanced from sample k_est_ to k, each sample with
@@ -488,12 +495,21 @@ linearization with the applied commands (and the measurement held, while it is).
 estimate of the state, and Sigma = Sigma0): the estimate is q - q_d(t) and the command held is
 u_held (m; empty: u_d(t) within the limits). InputError for a bad t, q or u_held (reset() may
 allocate and throw; step() does neither).)contract"},
+    {"OnlineController::set_successor", R"contract(The receding horizon (receding_horizon.hpp, online_receding_horizon.hpp): the law to use from
+its first sample on, handed over whole. `next` must be an emulated law of the same model,
+gamma and period whose t0 is a later sample of this controller's law (InputError otherwise,
+or when a successor is still pending: see successor_state()). step() switches to it at its
+first call with t_now >= next->t0(), without allocating or freeing: the law it leaves is kept
+until take_retired(). The estimate, Sigma and the commands remembered carry over; a prediction
+that reaches back before the new law's t0 uses its first sample's tables there. May be called
+from another thread than step(): the handover is a release/acquire pair, no lock.)contract"},
     {"OnlineController::sigma", R"contract(The filter's Sigma at estimate_time() (n x n; empty for state feedback).)contract"},
     {"OnlineController::step", R"contract(One sample: the measurement (measurement_size() numbers: q, or y with output feedback; null:
 none) taken at t_meas, the command for t_now into u (m numbers). Never throws, never
 allocates.)contract"},
     {"OnlineController::t_last_", R"contract(the last call's t_now)contract"},
     {"OnlineController::t_meas_last_", R"contract(the last measurement used)contract"},
+    {"OnlineController::take_retired", R"contract(After a switch: the law switched away from (and Empty again); null before one.)contract"},
     {"OnlineController::u_entry_", R"contract(a command of the history, for the prediction)contract"},
     {"OnlineController::y_", R"contract(the measured error y - C q_d(t_meas) held)contract"},
     {"OnlineController::y_until_", R"contract(... until this time)contract"},
@@ -613,6 +629,32 @@ update period's multiple belongs to the later window).)contract"},
     {"RecedingHorizonReport::options", R"contract(the window and update period of the run)contract"},
     {"RecedingHorizonReport::peak_bytes", R"contract(the most held at once (the window in use and the next))contract"},
     {"RecedingHorizonReport::windows", R"contract(windows solved)contract"},
+    {"RecedingOnlineController", R"contract(The online controller of one vehicle over a receding horizon (see the top of this file).)contract"},
+    {"RecedingOnlineController::RecedingOnlineController", R"contract(horizon: the windows' design; period: the controller's T (s), with update a whole multiple of
+it; options as for OnlineController (a filter gives output feedback); kappa the gain scaling.
+InputError for a null horizon, a period that does not divide the update period, or bad
+options.)contract"},
+    {"RecedingOnlineController::controller", R"contract(The online controller that steps (its law is the window in use); InputError before reset().)contract"},
+    {"RecedingOnlineController::finished_", R"contract(the highest window index solved or failed)contract"},
+    {"RecedingOnlineController::options", R"contract(The options of every window's OnlineController.)contract"},
+    {"RecedingOnlineController::reset", R"contract(Starts at t >= t0 from q (as OnlineController::reset): the windows' trajectories are chained
+from q_d0 up to the window of t, which is solved here (blocking; ConjugatePointError when it
+has no design at gamma), and the solver's thread starts on the next one. Stops a thread that
+runs. May allocate and throw; step() does neither.)contract"},
+    {"RecedingOnlineController::status", R"contract(What the horizon has done (takes a lock: not from the stepping thread in real time).)contract"},
+    {"RecedingOnlineController::step", R"contract(One sample, as OnlineController::step; report.window_stale when the law in use is past its
+update period. Never throws, never allocates, takes no lock.)contract"},
+    {"RecedingOnlineController::synchronize", R"contract(Blocks until every window that starts at or before t has been solved (handed over, or
+failed). For simulations and tests, not for a vehicle's loop.)contract"},
+    {"RecedingOnlineController::work_once", R"contract(One unit of the solver's work: take back a law left behind, or solve and hand over the next
+window. False when there is nothing to do now.)contract"},
+    {"RecedingOnlineStatus", R"contract(What the receding horizon of an online controller has done since reset().)contract"},
+    {"RecedingOnlineStatus::failed_t_start", R"contract(the t_j of the last window that failed (s))contract"},
+    {"RecedingOnlineStatus::last_failure", R"contract(its error message; empty when none failed)contract"},
+    {"RecedingOnlineStatus::stale_steps", R"contract(steps with StepReport::window_stale)contract"},
+    {"RecedingOnlineStatus::window_in_use", R"contract(the index j of the window whose law step() uses)contract"},
+    {"RecedingOnlineStatus::windows_failed", R"contract(windows whose solve failed (not handed over))contract"},
+    {"RecedingOnlineStatus::windows_solved", R"contract(windows solved and handed over (the first, at reset(), included))contract"},
     {"RiccatiSolution", R"contract(Z(t) of the GRDE (13).)contract"},
     {"RiccatiSolution::Z", R"contract(Z(t) (n x n) and dZ/dt: value(t) and derivative(t).)contract"},
     {"RiccatiSolution::gain", R"contract(K(t) = B_e(t)' Z(t) (m x n), the gain of the state-feedback law (17), B_e(t) = G(t, q_d(t)).)contract"},
@@ -718,10 +760,12 @@ empty take the defaults that resolved() fills in.)contract"},
     {"Scenario::cascade", R"contract(the gains of the cascade law)contract"},
     {"Scenario::description", R"contract(free text)contract"},
     {"Scenario::desired_q0", R"contract(q_d(t0))contract"},
+    {"Scenario::desired_states", R"contract([desired] states: q_d given at nodes, each)contract"},
     {"Scenario::desired_u", R"contract(u_d(t), m channels)contract"},
     {"Scenario::disturbance", R"contract(w(t), nw channels (dim 0: all zero))contract"},
     {"Scenario::divergence_factor", R"contract([solver] divergence_factor (simulation.hpp))contract"},
-    {"Scenario::gamma", R"contract(> 0, may be +inf (LQR))contract"},
+    {"Scenario::gamma", R"contract(interval integrated from its node; none: q_d integrated from q0
+> 0, may be +inf (LQR))contract"},
     {"Scenario::initial_q0", R"contract(q(t0))contract"},
     {"Scenario::kappa", R"contract(gain scaling kappa(t) of the law (17)/(18), > 0)contract"},
     {"Scenario::law", R"contract(the tracking law)contract"},
@@ -867,6 +911,8 @@ gain is singular))contract"},
 feedback))contract"},
     {"StepReport::saturated", R"contract(a bound of u_min / u_max was active)contract"},
     {"StepReport::status", R"contract(what step() did)contract"},
+    {"StepReport::window_stale", R"contract(receding horizon (online_receding_horizon.hpp): the law in use is
+past its update period (the next window is late or failed))contract"},
     {"StepStats", R"contract(The counts of one integration (the desired trajectory's, Trajectory::stats()).)contract"},
     {"StepStats::jac_evals", R"contract(Jacobian evaluations (implicit methods))contract"},
     {"StepStats::method", R"contract(what integrated: "erk", "bdf", "adams", "erk, then bdf from t = ...")contract"},
@@ -927,14 +973,27 @@ channels) over [t0, tf] (s), t0 < tf. InputError for a bad model (check_structur
 validate_model at (t0, q_d0)), q_d0 of another size or not finite, u_d with another number
 of channels, a bad horizon or options; SolverError when the integration fails.
 
-A trajectory from a dense output integrated before (by the constructor above; e.g. read
-back from a pickle): the same input checks, and `dense` must have n components and cover
-[t0, tf].)contract"},
+The desired trajectory given as states and inputs: q_d(t_k) = row k of q_nodes ((N + 1) x n)
+at the nodes t_0 < t_1 < ... < t_N (t0 = t_0, tf = t_N), and on each interval [t_k, t_{k+1}]
+eq. (8) integrated from row k with u_d. The end of interval k misses node k + 1 by its defect
+d_k = |q(t_{k+1}-) - q_{k+1}|_inf, and q_d jumps by d_k there: small wherever the nodes are
+a trajectory of the model (a planner's, say), also for an open-loop-unstable vehicle, along
+which one integration over [t0, tf] from q_d0 would drift away. InputError as the
+constructor above, and for nodes that are not finite and increasing (N >= 1) or q_nodes of
+another shape or not finite; SolverError when an interval's integration fails.
+
+A trajectory from a dense output integrated before (by a constructor above; e.g. read back
+from a pickle): the same input checks, and `dense` must have n components and cover
+[t0, tf]; the nodes and defects of a trajectory given as states, if it was one.)contract"},
     {"Trajectory::check_arguments", R"contract(The checks of the constructors' arguments (not of the dense output).)contract"},
     {"Trajectory::dense", R"contract(The dense output of q_d (n components) and the counts of its integration.)contract"},
     {"Trajectory::input_breakpoints", R"contract(The points of u_d's tables inside (t0, tf), and tf: where the integration restarts.)contract"},
+    {"Trajectory::integrate", R"contract(Eq. (8) integrated from y at a to b (restarting at u_d's table points), appending to dense_.)contract"},
+    {"Trajectory::max_defect", R"contract(The largest defect (0 without nodes) and the start of its interval (NaN without nodes).)contract"},
     {"Trajectory::model", R"contract(The model integrated: the design model of everything built on this trajectory.)contract"},
     {"Trajectory::n", R"contract(The model's number of states and of inputs.)contract"},
+    {"Trajectory::node_times", R"contract(A trajectory given as states: its nodes t_0 .. t_N (s) and the defect d_k of each interval
+(N numbers, in the states' units); both empty for a trajectory integrated from q_d0 alone.)contract"},
     {"Trajectory::q_d", R"contract(The desired state q_d(t) (n) from the dense output; t outside [t0, tf] is an InputError.)contract"},
     {"Trajectory::q_d0", R"contract(The desired initial state q_d(t0) and the desired inputs u_d, as given.)contract"},
     {"Trajectory::t0", R"contract(The horizon [t0, tf] (s).)contract"},
@@ -1158,6 +1217,23 @@ integrated again from the last measurement's time, where it is kept.
 Then u = u_d(t_now) - K_k q_hat(t_now) as above. The coupling condition rho(Sigma Z) < gamma^2
 is evaluated at every step (StepReport::rho_sigma_z); where it fails the estimator's gain is
 singular: the step is still computed, flagged, and counted.)contract"},
+    {"control/online_receding_horizon.hpp", R"contract(The online controller over a receding horizon (receding_horizon.hpp): the design of window j,
+emulated at the controller's period (SampledLaw::emulated), is the law from t_j on.
+
+Double buffering: while window j runs, the next window is solved on a thread of its own and
+handed over whole (OnlineController::set_successor); step() switches to it at its first sample
+by swapping two pointers. step() never waits for a solve, allocates nothing, takes no lock and
+never throws: the solver's thread allocates, and frees the laws left behind.
+
+A window that fails (its GRDE has a conjugate point at gamma, or an integration fails) is not
+handed over: the controller keeps the last good window, which serves until its own end t_j + H
+(StepReport::window_stale says so; past that end step() answers PastHorizon), status() names the
+failure, and the window after it is tried next. So does a window that is late (its solve took
+longer than the update period).
+
+With background = false nothing runs on another thread: synchronize(t) solves what is due.
+Simulations call synchronize(t) before every step in either mode, so that their results do not
+depend on how fast the windows are solved (simulate_sampled of sampled_loop.hpp).)contract"},
     {"control/output_feedback.hpp", R"contract(Imperfect measurements (paper §4): the H-infinity filter, the estimator and the
 output-feedback tracking law, simulated together with the nonlinear plant.
 
@@ -1258,7 +1334,10 @@ integrated forward once with Dormand-Prince 5(4) at tight tolerances (restarting
 of table inputs, where u_d is not smooth) and kept as its dense output, so q_d(t), u_d(t) and
 the linearization along it (paper eq. 10, model.hpp)
     A_e(t) = d/dq [f + G u_d](t, q_d(t)),  B_e(t) = G(t, q_d(t)),  D_e(t) = D(t, q_d(t))
-are available at any t in [t0, tf]. A Trajectory is immutable once made: its const functions
+are available at any t in [t0, tf]. A desired trajectory may also be given as states and inputs
+(a plan's nodes): each interval between nodes is then integrated from its node, so that an
+open-loop-unstable vehicle's growth acts over one interval only (second constructor).
+A Trajectory is immutable once made: its const functions
 keep no state (lookups take caller-owned cursors), so one trajectory may be read from several
 threads at once (run_scenarios shares one between runs, study.hpp).)contract"},
     {"core/angles.hpp", R"contract(Angles, and the tracking error of a model whose state has a heading angle.
@@ -1708,7 +1787,13 @@ what was solved. Errors as simulate_state_feedback and RecedingHorizon::window.)
     {"simulate_sampled", R"contract(The loop of `plant` (null: the trajectory's model) under `controller` (reset here at t0 with
 q0), from q0 at t0 to the trajectory's tf. InputError for sizes that do not match (as
 simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;
-SolverError when the integration fails.)contract"},
+SolverError when the integration fails.
+
+The same loop under the receding horizon's online controller (online_receding_horizon.hpp),
+synchronized before every step (the run does not depend on how fast its windows are solved).
+`trajectory` is the reference of the run's q_d series and divergence bound: the desired
+trajectory integrated over [t0, tf] from the horizon's q_d0 with its u_d (the windows chain into
+it within their integration error); InputError when it does not start as the horizon does.)contract"},
     {"simulate_state_feedback", R"contract(The closed loop of `plant` (null: the trajectory's model) under `controller`: the plant's f,
 G and D are integrated; the trajectory (of the design model) gives q_d and the divergence
 bound. A plant other than the design model is the model error of a robustness study.)contract"},

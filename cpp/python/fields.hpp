@@ -17,6 +17,7 @@
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
 #include "hinf/control/output_feedback.hpp"
+#include "hinf/control/online_receding_horizon.hpp"
 #include "hinf/control/receding_horizon.hpp"
 #include "hinf/control/sampled_loop.hpp"
 #include "hinf/control/simulation.hpp"
@@ -124,7 +125,13 @@ struct Fields<StepReport> {
       std::make_tuple(field("status", &StepReport::status), field("measurement", &StepReport::measurement),
                       field("saturated", &StepReport::saturated), field("rate_limited", &StepReport::rate_limited),
                       field("rho_sigma_z", &StepReport::rho_sigma_z),
-                      field("coupling_violated", &StepReport::coupling_violated));
+                      field("coupling_violated", &StepReport::coupling_violated),
+                      field("window_stale", &StepReport::window_stale));
+};
+template <>
+struct Fields<DesiredStates> {
+  static constexpr auto list = std::make_tuple(field("t", &DesiredStates::t), field("q", &DesiredStates::q),
+                                               field("max_defect", &DesiredStates::max_defect));
 };
 template <>
 struct Fields<RecedingHorizonOptions> {
@@ -145,6 +152,16 @@ struct Fields<RecedingHorizonReport> {
       field("largest_window_bytes", &RecedingHorizonReport::largest_window_bytes),
       field("peak_bytes", &RecedingHorizonReport::peak_bytes), field("grde", &RecedingHorizonReport::grde),
       field("divergence_bound", &RecedingHorizonReport::divergence_bound));
+};
+template <>
+struct Fields<RecedingOnlineStatus> {
+  static constexpr auto list = std::make_tuple(
+      field("window_in_use", &RecedingOnlineStatus::window_in_use),
+      field("windows_solved", &RecedingOnlineStatus::windows_solved),
+      field("windows_failed", &RecedingOnlineStatus::windows_failed),
+      field("failed_t_start", &RecedingOnlineStatus::failed_t_start),
+      field("last_failure", &RecedingOnlineStatus::last_failure),
+      field("stale_steps", &RecedingOnlineStatus::stale_steps));
 };
 template <>
 struct Fields<WindowGammaStar> {

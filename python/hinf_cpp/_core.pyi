@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -2219,7 +2219,10 @@ class Trajectory:
     of table inputs, where u_d is not smooth) and kept as its dense output, so q_d(t), u_d(t) and
     the linearization along it (paper eq. 10, model.hpp)
         A_e(t) = d/dq [f + G u_d](t, q_d(t)),  B_e(t) = G(t, q_d(t)),  D_e(t) = D(t, q_d(t))
-    are available at any t in [t0, tf]. A Trajectory is immutable once made: its const functions
+    are available at any t in [t0, tf]. A desired trajectory may also be given as states and inputs
+    (a plan's nodes): each interval between nodes is then integrated from its node, so that an
+    open-loop-unstable vehicle's growth acts over one interval only (second constructor).
+    A Trajectory is immutable once made: its const functions
     keep no state (lookups take caller-owned cursors), so one trajectory may be read from several
     threads at once (run_scenarios shares one between runs, study.hpp).
     
@@ -2256,6 +2259,63 @@ class Trajectory:
     >>> trajectory.A_e(np.array([0.0, 5.0])).shape, trajectory.B_e(0.0).shape
     ((2, 6, 6), (6, 2))
     """
+    @staticmethod
+    def from_states(model: Model, t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], u_d: typing.Any, options: TrajectoryOptions = ...) -> Trajectory:
+        """
+        Integrates eq. (8) forward from q_d(t0) = q_d0 (n numbers) with the inputs u_d (m
+        channels) over [t0, tf] (s), t0 < tf. InputError for a bad model (check_structure,
+        validate_model at (t0, q_d0)), q_d0 of another size or not finite, u_d with another number
+        of channels, a bad horizon or options; SolverError when the integration fails.
+        
+        The desired trajectory given as states and inputs: q_d(t_k) = row k of q_nodes ((N + 1) x n)
+        at the nodes t_0 < t_1 < ... < t_N (t0 = t_0, tf = t_N), and on each interval [t_k, t_{k+1}]
+        eq. (8) integrated from row k with u_d. The end of interval k misses node k + 1 by its defect
+        d_k = |q(t_{k+1}-) - q_{k+1}|_inf, and q_d jumps by d_k there: small wherever the nodes are
+        a trajectory of the model (a planner's, say), also for an open-loop-unstable vehicle, along
+        which one integration over [t0, tf] from q_d0 would drift away. InputError as the
+        constructor above, and for nodes that are not finite and increasing (N >= 1) or q_nodes of
+        another shape or not finite; SolverError when an interval's integration fails.
+        
+        A trajectory from a dense output integrated before (by a constructor above; e.g. read back
+        from a pickle): the same input checks, and `dense` must have n components and cover
+        [t0, tf]; the nodes and defects of a trajectory given as states, if it was one.
+        
+        The desired trajectory given as states and inputs.
+        
+        Parameters
+        ----------
+        model : Model
+            The design model.
+        t : array_like, shape (N + 1,)
+            The nodes t_0 < ... < t_N (s): the horizon [t_0, t_N].
+        q : array_like, shape (N + 1, n)
+            The desired states at the nodes.
+        u_d : VectorSignal, callable, or list of Signal or float
+            The desired inputs, m channels.
+        options : TrajectoryOptions, optional
+            Tolerances of each interval's integration.
+        
+        Returns
+        -------
+        Trajectory
+            Each interval integrated from its node; defects() are the misses at the next nodes.
+        
+        Raises
+        ------
+        ValueError
+            Nodes not increasing or not finite, q not of shape (N + 1, n), a bad model or u_d.
+        SolverError
+            An interval's integration failed.
+        
+        Examples
+        --------
+        >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+        >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+        >>> t = np.linspace(0.0, 10.0, 11)
+        >>> again = hc.Trajectory.from_states(hc.ShipModel(), t, trajectory.q_d(t), u_d)
+        >>> len(again.defects()), bool(again.max_defect() < 1e-8)
+        (10, True)
+        """
     def A_e(self, t: typing.Any) -> typing.Any:
         """
         A_e(t) = d/dq [f + G u_d] at q_d(t), B_e(t) = G(t, q_d(t)), D_e(t) = D(t, q_d(t)).
@@ -2274,12 +2334,17 @@ class Trajectory:
         
         Shape (n, nw) for a number t, (k, n, nw) for a 1-D array of k times.
         """
-    def __getstate__(self) -> tuple[Model, typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], VectorSignal, float, float, PiecewisePolynomial, StepStats]:
+    def __getstate__(self) -> tuple[Model, typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], VectorSignal, float, float, PiecewisePolynomial, StepStats, list[float], list[float]]:
         ...
     def __init__(self, model: Model, q_d0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Any, t0: typing.SupportsFloat | typing.SupportsIndex, tf: typing.SupportsFloat | typing.SupportsIndex, options: TrajectoryOptions = ...) -> None:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
+    def defects(self) -> list[float]:
+        """
+        A trajectory given as states: its nodes t_0 .. t_N (s) and the defect d_k of each interval
+        (N numbers, in the states' units); both empty for a trajectory integrated from q_d0 alone.
+        """
     def dense(self) -> PiecewisePolynomial:
         """
         The dense output of q_d (n components) and the counts of its integration.
@@ -2288,6 +2353,14 @@ class Trajectory:
         """
         The model's number of states and of inputs.
         """
+    def max_defect(self) -> float:
+        """
+        The largest defect (0 without nodes) and the start of its interval (NaN without nodes).
+        """
+    def max_defect_t(self) -> float:
+        """
+        The largest defect (0 without nodes) and the start of its interval (NaN without nodes).
+        """
     def model(self) -> Model:
         """
         The model integrated: the design model of everything built on this trajectory.
@@ -2295,6 +2368,11 @@ class Trajectory:
     def n(self) -> int:
         """
         The model's number of states and of inputs.
+        """
+    def node_times(self) -> list[float]:
+        """
+        A trajectory given as states: its nodes t_0 .. t_N (s) and the defect d_k of each interval
+        (N numbers, in the states' units); both empty for a trajectory integrated from q_d0 alone.
         """
     def q_d(self, t: typing.Any) -> typing.Any:
         """
@@ -4411,6 +4489,9 @@ class StepReport:
     coupling_violated : bool
         output feedback: rho(Sigma Z) >= gamma^2 (the estimator's
         gain is singular)
+    window_stale : bool
+        receding horizon (online_receding_horizon.hpp): the law in use is
+        past its update period (the next window is late or failed)
     
     Examples
     --------
@@ -4420,10 +4501,10 @@ class StepReport:
     >>> controller = hc.OnlineController(hc.SampledLaw.emulated(design, 0.1))
     >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
     >>> controller.step(0.1, None)[1]
-    StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False, rho_sigma_z=nan, coupling_violated=False)
+    StepReport(status='ok', measurement='missing', saturated=False, rate_limited=False, rho_sigma_z=nan, coupling_violated=False, window_stale=False)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('status', 'measurement', 'saturated', 'rate_limited', 'rho_sigma_z', 'coupling_violated')
+    __match_args__: typing.ClassVar[tuple] = ('status', 'measurement', 'saturated', 'rate_limited', 'rho_sigma_z', 'coupling_violated', 'window_stale')
     def __eq__(self, arg0: StepReport) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -4463,6 +4544,12 @@ class StepReport:
     def status(self) -> StepStatus:
         """
         what step() did
+        """
+    @property
+    def window_stale(self) -> bool:
+        """
+        receding horizon (online_receding_horizon.hpp): the law in use is
+        past its update period (the next window is late or failed)
         """
 class OnlineCounts:
     """
@@ -5224,6 +5311,172 @@ class RecedingHorizon:
         """
         The desired trajectory of window j alone (no design), as window() integrates it.
         """
+class RecedingOnlineStatus:
+    """
+    What the receding horizon of an online controller has done since reset().
+    
+    Attributes
+    ----------
+    window_in_use : int
+        the index j of the window whose law step() uses
+    windows_solved : int
+        windows solved and handed over (the first, at reset(), included)
+    windows_failed : int
+        windows whose solve failed (not handed over)
+    failed_t_start : float
+        the t_j of the last window that failed (s)
+    last_failure : str
+        its error message; empty when none failed
+    stale_steps : int
+        steps with StepReport::window_stale
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> controller = hc.RecedingOnlineController(horizon, 0.05)
+    >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+    >>> status = controller.status()
+    >>> status.window_in_use, status.windows_solved, status.windows_failed
+    (0, 1, 0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('window_in_use', 'windows_solved', 'windows_failed', 'failed_t_start', 'last_failure', 'stale_steps')
+    def __eq__(self, arg0: RecedingOnlineStatus) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def failed_t_start(self) -> float:
+        """
+        the t_j of the last window that failed (s)
+        """
+    @property
+    def last_failure(self) -> str:
+        """
+        its error message; empty when none failed
+        """
+    @property
+    def stale_steps(self) -> int:
+        """
+        steps with StepReport::window_stale
+        """
+    @property
+    def window_in_use(self) -> int:
+        """
+        the index j of the window whose law step() uses
+        """
+    @property
+    def windows_failed(self) -> int:
+        """
+        windows whose solve failed (not handed over)
+        """
+    @property
+    def windows_solved(self) -> int:
+        """
+        windows solved and handed over (the first, at reset(), included)
+        """
+class RecedingOnlineController:
+    """
+    The online controller of one vehicle over a receding horizon (see the top of this file).
+    
+    horizon: the windows' design; period: the controller's T (s), with update a whole multiple of
+    it; options as for OnlineController (a filter gives output feedback); kappa the gain scaling.
+    InputError for a null horizon, a period that does not divide the update period, or bad
+    options.
+    
+    The online controller over a receding horizon (receding_horizon.hpp): the design of window j,
+    emulated at the controller's period (SampledLaw::emulated), is the law from t_j on.
+    
+    Double buffering: while window j runs, the next window is solved on a thread of its own and
+    handed over whole (OnlineController::set_successor); step() switches to it at its first sample
+    by swapping two pointers. step() never waits for a solve, allocates nothing, takes no lock and
+    never throws: the solver's thread allocates, and frees the laws left behind.
+    
+    A window that fails (its GRDE has a conjugate point at gamma, or an integration fails) is not
+    handed over: the controller keeps the last good window, which serves until its own end t_j + H
+    (StepReport::window_stale says so; past that end step() answers PastHorizon), status() names the
+    failure, and the window after it is tried next. So does a window that is late (its solve took
+    longer than the update period).
+    
+    With background = false nothing runs on another thread: synchronize(t) solves what is due.
+    Simulations call synchronize(t) before every step in either mode, so that their results do not
+    depend on how fast the windows are solved (simulate_sampled of sampled_loop.hpp).
+    
+    Parameters
+    ----------
+    horizon : RecedingHorizon
+        The windows' design.
+    period : float
+        The controller's period T (s); the horizon's update period is a whole multiple of it.
+    options : OnlineOptions, optional
+        As for OnlineController: limits, delay compensation, a filter for output feedback.
+    kappa : Signal or float, optional
+        The gain scaling kappa(t) > 0.
+    background : bool, optional
+        Solve the next window on a thread of its own (True); False: synchronize() solves it.
+    
+    Raises
+    ------
+    ValueError
+        A period that does not divide the update period, bad options, u_d given as a function.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> controller = hc.RecedingOnlineController(horizon, 0.05)
+    >>> q = np.array([1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
+    >>> controller.reset(0.0, q)
+    >>> for k in range(41):                                         # two seconds at 20 Hz
+    ...     controller.synchronize(0.05 * k)                        # a simulation waits for the solver
+    ...     u, report = controller.step(0.05 * k, q)
+    >>> controller.status().window_in_use, report.window_stale
+    (2, False)
+    """
+    def __init__(self, horizon: RecedingHorizon, period: typing.SupportsFloat | typing.SupportsIndex, options: OnlineOptions = ..., kappa: typing.Any = 1.0, background: bool = True) -> None:
+        ...
+    def controller(self) -> OnlineController:
+        """
+        The online controller that steps (its law is the window in use); InputError before reset().
+        """
+    def options(self) -> OnlineOptions:
+        """
+        The options of every window's OnlineController.
+        """
+    def period(self) -> float:
+        """
+        The controller's period T (s).
+        """
+    def reset(self, t: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_held: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"] | None = None) -> None:
+        """
+        Starts at t >= t0 from q (as OnlineController::reset): the windows' trajectories are chained
+        from q_d0 up to the window of t, which is solved here (blocking; ConjugatePointError when it
+        has no design at gamma), and the solver's thread starts on the next one. Stops a thread that
+        runs. May allocate and throw; step() does neither.
+        """
+    def status(self) -> RecedingOnlineStatus:
+        """
+        What the horizon has done (takes a lock: not from the stepping thread in real time).
+        """
+    def step(self, t_now: typing.SupportsFloat | typing.SupportsIndex, q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] | None = None, t_meas: typing.SupportsFloat | typing.SupportsIndex | None = None) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], StepReport]:
+        """
+        One sample, as OnlineController::step; report.window_stale when the law in use is past its
+        update period. Never throws, never allocates, takes no lock.
+        
+        As OnlineController.step; raises ValueError before reset().
+        """
+    def synchronize(self, t: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Blocks until every window that starts at or before t has been solved (handed over, or
+        failed). For simulations and tests, not for a vehicle's loop.
+        """
 class Law:
     """
     The tracking law of a scenario ([controller] law).
@@ -5476,6 +5729,72 @@ class MeasurementSpec:
     @sigma.setter
     def sigma(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+class DesiredStates:
+    """
+    [desired] states: the desired trajectory given as states and inputs (trajectory.hpp), e.g. a
+    plan of an open-loop-unstable vehicle.
+    
+    Parameters
+    ----------
+    t : list of float, optional
+        the nodes t_0 = t0 < ... < t_N = tf (s)
+    q : array_like, shape (N + 1, n), optional
+        the desired states at the nodes, (N + 1) x n; row 0 is [desired] q0
+    max_defect : float, default 1e-06
+        the largest defect d_k of an interval allowed (the states' units, > 0)
+    
+    Notes
+    -----
+    The values are checked with the scenario (Scenario.validate()) and when its trajectory is made;
+    docs/scenarios.md has [desired] states.
+    
+    Examples
+    --------
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.tf = 2.0
+    >>> t = [0.0, 1.0, 2.0]
+    >>> trajectory = hc.Trajectory(scenario.model, scenario.desired_q0, scenario.desired_u, 0.0, 2.0)
+    >>> scenario.desired_states = hc.DesiredStates(t=t, q=trajectory.q_d(np.array(t)))
+    >>> result = hc.run_scenario(scenario)
+    >>> len(result.trajectory.node_times()), bool(result.trajectory.max_defect() < 1e-8)
+    (3, True)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('t', 'q', 'max_defect')
+    def __eq__(self, arg0: DesiredStates) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] = [], q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] = ..., max_defect: typing.SupportsFloat | typing.SupportsIndex = 1e-06) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def max_defect(self) -> float:
+        """
+        the largest defect d_k of an interval allowed (the states' units, > 0)
+        """
+    @max_defect.setter
+    def max_defect(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def q(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        the desired states at the nodes, (N + 1) x n; row 0 is [desired] q0
+        """
+    @q.setter
+    def q(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def t(self) -> list[float]:
+        """
+        the nodes t_0 = t0 < ... < t_N = tf (s)
+        """
+    @t.setter
+    def t(self, arg0: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> None:
+        ...
 class SampledDesign:
     """
     Which design a sampled loop runs ([sampling] design).
@@ -5678,7 +5997,10 @@ class Scenario:
         q_d(t0)
     desired_u : VectorSignal (set: also a callable or a list of Signal or float)
         u_d(t), m channels
+    desired_states : DesiredStates or None
+        [desired] states: q_d given at nodes, each
     gamma : float
+        interval integrated from its node; none: q_d integrated from q0
         > 0, may be +inf (LQR)
     Q : ndarray, shape (n, n)
         empty: identity
@@ -5799,6 +6121,14 @@ class Scenario:
     def desired_q0(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> None:
         ...
     @property
+    def desired_states(self) -> DesiredStates | None:
+        """
+        [desired] states: q_d given at nodes, each
+        """
+    @desired_states.setter
+    def desired_states(self, arg0: DesiredStates | None) -> None:
+        ...
+    @property
     def desired_u(self) -> VectorSignal:
         """
         u_d(t), m channels
@@ -5825,6 +6155,7 @@ class Scenario:
     @property
     def gamma(self) -> float:
         """
+        interval integrated from its node; none: q_d integrated from q0
         > 0, may be +inf (LQR)
         """
     @gamma.setter
@@ -7369,6 +7700,12 @@ def simulate_sampled(trajectory: Trajectory, controller: OnlineController, distu
     simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;
     SolverError when the integration fails.
     
+    The same loop under the receding horizon's online controller (online_receding_horizon.hpp),
+    synchronized before every step (the run does not depend on how fast its windows are solved).
+    `trajectory` is the reference of the run's q_d series and divergence bound: the desired
+    trajectory integrated over [t0, tf] from the horizon's q_d0 with its u_d (the windows chain into
+    it within their integration error); InputError when it does not start as the horizon does.
+    
     The sampled-data closed loop, as on a vehicle: the plant integrated continuously,
         dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),
     its full state measured at t_k = t0 + k T (T the law's period), the measurement handed to the
@@ -7425,6 +7762,75 @@ def simulate_sampled(trajectory: Trajectory, controller: OnlineController, distu
     >>> run = hc.simulate_sampled(trajectory, controller, [w, w, w, 0, 0, 0], q0, hc.SampledLoopOptions(delay=0.1))
     >>> run.status, controller.counts().steps
     (<RunStatus.completed: 0>, 100)
+    """
+def simulate_sampled_receding_horizon(trajectory: Trajectory, controller: RecedingOnlineController, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SampledLoopOptions = ..., plant: Model | None = None) -> SimulationResult:
+    """
+    The loop of `plant` (null: the trajectory's model) under `controller` (reset here at t0 with
+    q0), from q0 at t0 to the trajectory's tf. InputError for sizes that do not match (as
+    simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;
+    SolverError when the integration fails.
+    
+    The same loop under the receding horizon's online controller (online_receding_horizon.hpp),
+    synchronized before every step (the run does not depend on how fast its windows are solved).
+    `trajectory` is the reference of the run's q_d series and divergence bound: the desired
+    trajectory integrated over [t0, tf] from the horizon's q_d0 with its u_d (the windows chain into
+    it within their integration error); InputError when it does not start as the horizon does.
+    
+    The sampled-data closed loop, as on a vehicle: the plant integrated continuously,
+        dq/dt = f(t, q) + G(t, q) u + D(t, q) w(t),
+    its full state measured at t_k = t0 + k T (T the law's period), the measurement handed to the
+    online controller (online_controller.hpp) at t_k + delay, and the command it returns applied
+    from then on and held. The loop calls exactly the code a vehicle runs: OnlineController::step.
+    Between events (samples, commands, output times) the plant is integrated by Dormand-Prince
+    5(4) at the solver options' tolerances, restarted at each event (the command jumps there).
+    The time series are those of simulate_state_feedback (simulation.hpp): u is the command
+    applied; a run that leaves the neighbourhood of the desired trajectory stops as Diverged.
+    Past the law's last sample (t_end <= tf) the controller answers PastHorizon and the last
+    command stays held; controller.counts() tells.
+    An output-feedback controller (OnlineController::output_feedback()) is handed the measurement
+    y_k = C q(t_k) + sigma v_k instead (C the plant's, v_k row k of the noise: standard normal
+    samples, one per sample and measured output, as noise_sample_count and
+    standard_normal_samples of output_feedback.hpp give them for the law's period), and starts
+    from the estimate q_hat(t0) = 0 (the state q_d(t0)), as the paper's estimator.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The reference: the desired trajectory over [t0, tf] from the horizon's q_d0 with its u_d
+        (the run's q_d series and divergence bound; the windows chain into it).
+    controller : RecedingOnlineController
+        The controller, reset here at t0; synchronized before every step.
+    disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
+        The disturbance on the model's nw channels, as for simulate_state_feedback.
+    q0 : array_like, shape (n,)
+        The initial state q(t0).
+    options : SampledLoopOptions, optional
+        The computation delay (s), the output grid, tolerances, and for output feedback the noise.
+    plant : Model or None, optional
+        The vehicle integrated, of the design model's structure; None: the design model.
+    
+    Returns
+    -------
+    SimulationResult
+        The series on the output grid (u: the command applied, piecewise constant).
+    
+    Raises
+    ------
+    ValueError
+        A reference that does not start as the horizon does, sizes that do not match.
+    SolverError
+        The integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> reference = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 30.0)
+    >>> controller = hc.RecedingOnlineController(horizon, 0.05)
+    >>> run = hc.simulate_sampled_receding_horizon(reference, controller, None, [1.0, 0.0, 0.0, -1.0, -1.0, 0.5])
+    >>> run.status, controller.status().window_in_use
+    (<RunStatus.completed: 0>, 29)
     """
 def simulate_state_feedback(trajectory: Trajectory, controller: Controller, disturbance: typing.Any, q0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], options: SimulationOptions = ..., plant: Model | None = None) -> SimulationResult:
     """

@@ -29,6 +29,7 @@
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/discrete_output_feedback.hpp"
 #include "hinf/control/online_controller.hpp"
+#include "hinf/control/online_receding_horizon.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/sampled_loop.hpp"
@@ -43,12 +44,13 @@
 // operator new returned: here both are malloc and free.
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 namespace {
-std::atomic<bool> g_counting{false};
+// Only the thread that counts: the receding horizon's solver allocates on a thread of its own.
+thread_local bool g_counting = false;
 std::atomic<long> g_allocations{0};
 }  // namespace
 
 void* operator new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (g_counting) g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
@@ -224,6 +226,45 @@ TEST(OnlineController, StepAllocatesNothing) {
   EXPECT_GT(saturated, 0);
   EXPECT_GT(predicted, 20000);
   EXPECT_GT(controller.counts().rate_limited, 0);
+}
+
+hinf::OnlineFilter paper_filter();  // the paper's Figure-2 filter (below)
+
+// The receding horizon's controller: its windows are solved on another thread and handed over
+// while the vehicle steps, for state and output feedback; the stepping thread allocates nothing
+// through the switches (and frees nothing: the solver's thread takes the laws left behind).
+TEST(OnlineController, RecedingHorizonStepAllocatesNothingThroughSwitches) {
+  for (bool output_feedback : {false, true}) {
+    SCOPED_TRACE(output_feedback ? "output feedback" : "state feedback");
+    hinf::RecedingHorizonOptions rh;
+    rh.window = 5.0;
+    rh.update = 0.5;
+    auto horizon = std::make_shared<const hinf::RecedingHorizon>(
+        paper().trajectory->model_ptr(), paper().trajectory->q_d0(), paper().trajectory->u_d_signal(), 0.0,
+        Mat::Identity(6, 6), Mat::Identity(6, 6), 5.0, rh);
+    hinf::OnlineOptions options;
+    options.limits.rate_max = Vec::Constant(2, 4.0);
+    if (output_feedback) options.filter = paper_filter();
+    hinf::RecedingOnlineController controller(horizon, 0.05, options);
+    controller.reset(0.0, paper_q0());
+    Vec measurement = output_feedback ? Vec(paper_q0().tail(3)) : paper_q0(), u(2);
+    long switches = 0;
+    int in_use = 0;
+    g_allocations = 0;
+    for (int k = 0; k < 600; ++k) {  // 30 s: 59 switches
+      const double t = 0.05 * k;
+      controller.synchronize(t);  // outside the count: it waits for the solver's thread
+      g_counting = true;
+      controller.step(t, measurement.data(), t, u.data());
+      g_counting = false;
+      const int now = controller.status().window_in_use;
+      switches += now != in_use;
+      in_use = now;
+    }
+    EXPECT_EQ(g_allocations.load(), 0) << "heap allocations on the stepping thread";
+    EXPECT_EQ(switches, 59);
+    EXPECT_EQ(controller.controller().counts().lost, 0);
+  }
 }
 
 TEST(OnlineController, PredictionUsesTheAppliedCommand) {

@@ -15,6 +15,8 @@
 
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/metrics.hpp"
+#include "hinf/control/online_receding_horizon.hpp"
+#include "hinf/control/sampled_loop.hpp"
 #include "hinf/control/receding_horizon.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/io/scenario_file.hpp"
@@ -179,3 +181,136 @@ TEST(RecedingHorizon, BadOptionsAreNamed) {
 }
 
 }  // namespace
+
+// ---- the online controller over the receding horizon (online_receding_horizon.hpp) ----
+
+namespace online {
+
+std::shared_ptr<const hinf::RecedingHorizon> shared_horizon(const hinf::Scenario& s, double window, double update,
+                                                            double gamma) {
+  hinf::RecedingHorizonOptions options;
+  options.window = window;
+  options.update = update;
+  return std::make_shared<const hinf::RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf, gamma,
+                                                       options, s.solver);
+}
+
+hinf::SampledLoopOptions loop_options(const hinf::Scenario& s) {
+  hinf::SampledLoopOptions loop;
+  loop.simulation = s.simulation_options();
+  return loop;
+}
+
+TEST(RecedingOnline, Figure1SampledWithinTwoPercentAndIndependentOfTheThread) {
+  const hinf::Scenario s = fig1();
+  const double T = 0.02;
+  const auto trajectory = std::make_shared<const hinf::Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
+  const auto design = hinf::solve_grde(trajectory, s.Q, s.Qf, s.gamma, s.solver);
+  hinf::OnlineController full(hinf::SampledLaw::emulated(design, T));
+  const hinf::SimulationResult reference =
+      hinf::simulate_sampled(*trajectory, full, hinf::Disturbance(s.disturbance), s.initial_q0, loop_options(s));
+  const double rms_full = rms_last_half(s, reference);
+  hinf::SimulationResult runs[2];
+  for (int background = 0; background < 2; ++background) {
+    hinf::RecedingOnlineController controller(shared_horizon(s, 10.0, 1.0, s.gamma), T, {}, hinf::Signal(1.0),
+                                              background == 1);
+    runs[background] = hinf::simulate_sampled(*trajectory, controller, hinf::Disturbance(s.disturbance),
+                                              s.initial_q0, loop_options(s));
+    const hinf::RecedingOnlineStatus status = controller.status();
+    EXPECT_EQ(status.windows_solved, 40);
+    EXPECT_EQ(status.windows_failed, 0);
+    EXPECT_EQ(status.stale_steps, 0);
+    EXPECT_EQ(status.window_in_use, 39);
+  }
+  // The same windows, handed over at the same samples: the same numbers whichever thread solved
+  // them.
+  EXPECT_TRUE(runs[0].q == runs[1].q);
+  EXPECT_NEAR(rms_last_half(s, runs[0]) / rms_full, 1.0, 0.02);
+}
+
+TEST(RecedingOnline, Figure2OutputFeedbackWithinTwoPercent) {
+  hinf::Scenario s = hinf::load_scenario_toml(std::string(HINF_SOURCE_DIR) + "/scenarios/paper_fig2_sampled.toml")
+                         .resolved();
+  const auto trajectory = std::make_shared<const hinf::Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
+  const hinf::RowMat noise = hinf::scenario_noise(s);
+  const hinf::SamplingSpec& sp = *s.sampling;
+  hinf::OnlineOptions options;
+  options.filter.N = s.measurement->N;
+  options.filter.Sigma0 = (s.measurement->Q0 - s.measurement->eta * Mat::Identity(6, 6)).inverse();
+  options.filter.Q = s.Q;
+  hinf::SampledLoopOptions loop = loop_options(s);
+  loop.sigma = s.measurement->sigma;
+  loop.noise = noise;
+  const auto design = hinf::solve_grde(trajectory, s.Q, s.Qf, s.gamma, s.solver);
+  hinf::OnlineController full(hinf::SampledLaw::emulated(design, sp.period), options);
+  const double rms_full = rms_last_half(
+      s, hinf::simulate_sampled(*trajectory, full, hinf::Disturbance(s.disturbance), s.initial_q0, loop));
+  for (double window : {5.0, 10.0}) {
+    hinf::RecedingOnlineController controller(shared_horizon(s, window, 1.0, s.gamma), sp.period, options);
+    const hinf::SimulationResult run =
+        hinf::simulate_sampled(*trajectory, controller, hinf::Disturbance(s.disturbance), s.initial_q0, loop);
+    ASSERT_EQ(run.status, hinf::RunStatus::Completed) << run.status_message;
+    EXPECT_EQ(controller.controller().counts().lost, 0);
+    // The filter's Sigma runs on across the windows (it is the estimator's, not the design's).
+    EXPECT_NEAR(rms_last_half(s, run) / rms_full, 1.0, 0.02) << "H = " << window;
+  }
+}
+
+TEST(RecedingOnline, AFailedWindowKeepsTheLastGoodOneAndSaysSo) {
+  hinf::Scenario s = fig1();
+  // A turn to starboard after 20 s: its window needs a larger gamma than the ones before it (each
+  // window has a gamma* of its own, searched here; the test needs the largest after the first).
+  s.desired_u = hinf::VectorSignal(std::vector<hinf::Signal>{
+      hinf::Signal(1.0), hinf::Signal::table({0.0, 20.0, 25.0, 60.0}, {0.3, 0.3, -0.5, -0.5}, hinf::Interpolation::Linear)});
+  const auto probe = shared_horizon(s, 10.0, 5.0, s.gamma);
+  std::vector<double> stars;
+  Vec q_start = s.desired_q0;
+  for (int j = 0; j < 6; ++j) {
+    const hinf::TrajectoryPtr trajectory = probe->window_trajectory(j, q_start);
+    hinf::GammaStarOptions search;
+    search.solver = s.solver;
+    search.rtol = 1e-5;
+    stars.push_back(hinf::gamma_star(trajectory, s.Q, s.Qf, search).gamma_star);
+    q_start = trajectory->q_d(5.0 * (j + 1));
+  }
+  int worst = 0;
+  for (int j = 1; j < 6; ++j)
+    if (stars[static_cast<std::size_t>(j)] > stars[static_cast<std::size_t>(worst)]) worst = j;
+  ASSERT_GT(worst, 0) << "the first window has the largest gamma*: no later window can fail alone";
+  double below = 0.0;  // the largest gamma* of the windows before the worst
+  for (int j = 0; j < worst; ++j) below = std::max(below, stars[static_cast<std::size_t>(j)]);
+  // Apart by far more than the bisections' tolerance (1e-5 relative).
+  ASSERT_GT(stars[static_cast<std::size_t>(worst)] - below, 1e-3);
+  const double gamma = 0.5 * (below + stars[static_cast<std::size_t>(worst)]);
+  hinf::RecedingOnlineController controller(shared_horizon(s, 10.0, 5.0, gamma), 0.05);
+  controller.reset(0.0, s.initial_q0);
+  const double t_fail = 5.0 * worst;
+  Vec u(2);
+  bool stale_seen = false;
+  for (int k = 0; 0.05 * k < t_fail + 5.0 - 1e-9; ++k) {
+    const double t = 0.05 * k;
+    controller.synchronize(t);
+    const hinf::StepReport report = controller.step(t, nullptr, t, u.data());
+    ASSERT_EQ(report.status, hinf::StepStatus::Ok) << "t = " << t;
+    EXPECT_EQ(report.window_stale, t >= t_fail - 1e-9) << "t = " << t;
+    stale_seen = stale_seen || report.window_stale;
+  }
+  EXPECT_TRUE(stale_seen);
+  const hinf::RecedingOnlineStatus status = controller.status();
+  EXPECT_GE(status.windows_failed, 1);
+  EXPECT_DOUBLE_EQ(status.failed_t_start, t_fail);
+  EXPECT_EQ(status.window_in_use, worst - 1);  // the last good window serves to its end
+  EXPECT_NE(status.last_failure.find("receding-horizon window"), std::string::npos) << status.last_failure;
+}
+
+TEST(RecedingOnline, ErrorsAreNamed) {
+  const hinf::Scenario s = fig1();
+  EXPECT_THROW(hinf::RecedingOnlineController(nullptr, 0.05), hinf::InputError);
+  EXPECT_THROW(hinf::RecedingOnlineController(shared_horizon(s, 10.0, 1.0, s.gamma), 0.3), hinf::InputError);
+  EXPECT_THROW(hinf::RecedingOnlineController(shared_horizon(s, 10.0, 1.0, s.gamma), -1.0), hinf::InputError);
+  hinf::RecedingOnlineController controller(shared_horizon(s, 10.0, 1.0, s.gamma), 0.05);
+  EXPECT_THROW(controller.synchronize(0.0), hinf::InputError);  // before reset
+  EXPECT_THROW(controller.reset(0.0, Vec::Zero(3)), hinf::InputError);
+}
+
+}  // namespace online

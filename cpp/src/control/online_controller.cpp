@@ -166,8 +166,38 @@ OnlineController::OnlineController(SampledLawPtr law, const OnlineOptions& optio
 }
 
 OnlineController::~OnlineController() = default;
+
 OnlineController::OnlineController(OnlineController&&) noexcept = default;
 OnlineController& OnlineController::operator=(OnlineController&&) noexcept = default;
+
+void OnlineController::set_successor(SampledLawPtr next) {
+  require(next != nullptr, "the successor of an online controller's law is null");
+  require(successor_state() == Handover::Empty,
+          "the online controller has a successor law pending (or one switched from, not taken back): wait for "
+          "the switch and take_retired() first");
+  const SampledLaw& law = *law_;
+  require(law.kind() == "emulated" && next->kind() == "emulated",
+          "a law is handed over between windows of the receding horizon: both must be emulated laws");
+  require(next->trajectory().model_ptr() == law.trajectory().model_ptr(),
+          "the successor law is of another model than the controller's");
+  require(next->gamma() == law.gamma() && next->period() == law.period(), "the successor law has gamma = ",
+          next->gamma(), " and period ", next->period(), " s, the controller's law ", law.gamma(), " and ",
+          law.period(), " s");
+  const double samples = (next->t0() - law.t0()) / law.period();
+  require(samples >= 1.0 - 1e-9 && std::abs(samples - std::round(samples)) <= 1e-9 * std::max(1.0, samples),
+          "the successor law starts at t = ", next->t0(), ", not at a later sample of the controller's law (t0 = ",
+          law.t0(), ", period ", law.period(), " s)");
+  handover_law_ = std::move(next);
+  handover_.value.store(static_cast<int>(Handover::Offered), std::memory_order_release);
+}
+
+SampledLawPtr OnlineController::take_retired() {
+  if (successor_state() != Handover::Switched) return nullptr;
+  SampledLawPtr retired = std::move(handover_law_);
+  handover_law_ = nullptr;
+  handover_.value.store(static_cast<int>(Handover::Empty), std::memory_order_release);
+  return retired;
+}
 
 void OnlineController::reset(double t, const ConstVecRef& q, const ConstVecRef& u_held) {
   require(std::isfinite(t) && t >= law_->t0() && t < law_->t_end(), "reset at t = ", t, " outside the law's samples [",
@@ -336,6 +366,15 @@ StepReport OnlineController::step(double t_now, const double* measurement, doubl
   if (!std::isfinite(t_now) || t_now < t_last_) {
     ++counts_.refused;
     return hold(StepStatus::Refused);
+  }
+  // The receding horizon's successor law, from its first sample on: a swap of two pointers (the
+  // law left stays in handover_law_ for take_retired).
+  if (handover_.value.load(std::memory_order_acquire) == static_cast<int>(Handover::Offered) &&
+      t_now >= handover_law_->t0() - 1e-9 * law_->period()) {
+    law_.swap(handover_law_);
+    estimator_->set_law(*law_);
+    q_cursor_ = 0;
+    handover_.value.store(static_cast<int>(Handover::Switched), std::memory_order_release);
   }
   if (t_now >= law_->t_end()) {
     ++counts_.past_horizon;

@@ -24,7 +24,7 @@ class Estimator final : public OnlineEstimator {
   using MatNP = Eigen::Matrix<double, N, Eigen::Dynamic>;  // n x p
 
   Estimator(const SampledLaw& law, const OnlineFilter& filter, const Mat& C, int heading_row)
-      : law_(law), filter_(filter.enabled()), heading_row_(heading_row),
+      : law_(&law), filter_(filter.enabled()), heading_row_(heading_row),
         inv_gamma2_(std::isinf(law.gamma()) ? 0.0 : 1.0 / (law.gamma() * law.gamma())),
         // Sized here, not assigned later: Eigen's sized constructors leave the status fields
         // unset, and a copy of them is undefined behaviour.
@@ -48,6 +48,11 @@ class Estimator final : public OnlineEstimator {
     B_.setZero(n, m);
     u_d_.setZero(m);
     ue_.setZero(m);
+  }
+
+  void set_law(const SampledLaw& law) noexcept override {
+    law_ = &law;
+    interpolated_at_ = NAN;
   }
 
   void integrate(double s, double end, int substeps, const Vec& u, const Vec& y_e, bool innovate, Vec& x,
@@ -106,7 +111,7 @@ class Estimator final : public OnlineEstimator {
   }
 
   bool advance(int k, const Vec& u_e, const Vec* y_e, Vec& x, Mat& Sigma) noexcept override {
-    const SampledLinearization& sampled = *law_.sampled();
+    const SampledLinearization& sampled = *law_->sampled();
     interpolated_at_ = NAN;  // A_ and Z_ are overwritten below
     Sigma_ = Sigma;
     llt_.compute(Sigma_);
@@ -136,7 +141,7 @@ class Estimator final : public OnlineEstimator {
     // Sigma+ = A Pi A' + D D' / T
     NN_.noalias() = A_ * S3_;
     S4_.noalias() = NN_ * A_.transpose();
-    S4_ += law_.discrete_DDt(k);
+    S4_ += law_->discrete_DDt(k);
     S2_ = S4_.transpose();
     Sigma_ = 0.5 * (S4_ + S2_);
     x = x_;
@@ -146,7 +151,7 @@ class Estimator final : public OnlineEstimator {
 
   double worst_case_state(int k, const Vec& x, const Mat& Sigma, const Vec* y_e, Vec& out) noexcept override {
     interpolated_at_ = NAN;  // Z_ is overwritten below
-    Z_ = law_.Z(k);
+    Z_ = law_->Z(k);
     Sigma_ = Sigma;
     const double r = rho(Sigma_);  // leaves the Cholesky factor of Sigma in llt_
     if (!std::isfinite(r)) {
@@ -202,14 +207,14 @@ class Estimator final : public OnlineEstimator {
   void interpolate(double t) noexcept {
     if (t == interpolated_at_) return;
     interpolated_at_ = t;
-    const double position = (t - law_.t0()) / law_.period();
-    const int k = std::clamp(static_cast<int>(std::floor(position)), 0, law_.steps() - 1);
+    const double position = (t - law_->t0()) / law_->period();
+    const int k = std::clamp(static_cast<int>(std::floor(position)), 0, law_->steps() - 1);
     const double theta = std::clamp(position - k, 0.0, 1.0);
-    A_ = (1.0 - theta) * law_.A(k) + theta * law_.A(k + 1);
-    B_ = (1.0 - theta) * law_.B(k) + theta * law_.B(k + 1);
+    A_ = (1.0 - theta) * law_->A(k) + theta * law_->A(k + 1);
+    B_ = (1.0 - theta) * law_->B(k) + theta * law_->B(k + 1);
     if (!filter_) return;
-    DDt_ = (1.0 - theta) * law_.DDt(k) + theta * law_.DDt(k + 1);
-    Z_ = (1.0 - theta) * law_.Z(k) + theta * law_.Z(k + 1);
+    DDt_ = (1.0 - theta) * law_->DDt(k) + theta * law_->DDt(k + 1);
+    Z_ = (1.0 - theta) * law_->Z(k) + theta * law_->Z(k + 1);
   }
 
   // The prediction of the error (state feedback), or (35) and (36) (output feedback), at t (see
@@ -217,7 +222,7 @@ class Estimator final : public OnlineEstimator {
   void derivative(double t, const VecN& x, const MatN& Sigma, const Vec& u, const Vec& y_e, bool innovate, VecN& dx,
                   MatN& dSigma) noexcept {
     interpolate(t);
-    law_.trajectory().u_d(t, u_d_.data());
+    law_->trajectory().u_d(t, u_d_.data());
     ue_ = u - u_d_;
     dx.noalias() = A_ * x;
     dx.noalias() += B_ * ue_;
@@ -249,7 +254,7 @@ class Estimator final : public OnlineEstimator {
     n_tmp_ = lu_.solve(r_);
   }
 
-  const SampledLaw& law_;
+  const SampledLaw* law_;  // the law's tables (replaced by set_law)
   bool filter_;  // output feedback
   int heading_row_;
   double inv_gamma2_;

@@ -15,6 +15,9 @@ namespace hinf::detail {
 class OnlineEstimator {
  public:
   virtual ~OnlineEstimator() = default;
+  // The tables of another law from now on (of the same sizes, gamma and period: the successor of
+  // OnlineController::set_successor).
+  virtual void set_law(const SampledLaw& law) noexcept = 0;
   // `substeps` equal Runge-Kutta steps from s to end with the command u applied (m): of
   // dx/dt = A_e x + B_e (u - u_d) for state feedback (Sigma and y_e unused), of (35)-(36) for
   // output feedback, the measured error y_e (p) held in the innovation when `innovate`; x (n) and

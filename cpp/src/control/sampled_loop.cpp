@@ -23,27 +23,44 @@ void SampledLoopOptions::validate(double period) const {
   simulation.validate();
 }
 
-SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController& controller,
-                                  const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options,
-                                  const Model* plant) {
+namespace {
+
+// The loop of simulate_sampled for a Controller: OnlineController, or RecedingOnlineController
+// (synchronized before each step, so that the run does not depend on how fast its windows are
+// solved). `online` is the OnlineController that steps (after reset: its law).
+struct Plain {
+  OnlineController& c;
+  const OnlineController& online() const { return c; }
+  void reset(double t, const Vec& q) { c.reset(t, q); }
+  void step(double t, const double* y, double t_meas, double* u) { c.step(t, y, t_meas, u); }
+};
+struct Receding {
+  RecedingOnlineController& c;
+  const OnlineController& online() const { return c.controller(); }
+  void reset(double t, const Vec& q) { c.reset(t, q); }
+  void step(double t, const double* y, double t_meas, double* u) {
+    c.synchronize(t);
+    c.step(t, y, t_meas, u);
+  }
+};
+
+template <class Controller>
+SimulationResult run_sampled(const Trajectory& trajectory, Controller controller_of, double T, bool output_feedback, int p,
+                             const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options,
+                             const Model* plant) {
   const Model& design_model = trajectory.model();
   const Model& model = plant != nullptr ? *plant : design_model;
   check_plant_sizes(design_model, model);
   const int n = model.n(), m = model.m(), nw = model.nw();
-  require(&controller.law().trajectory() == &trajectory,
-          "the controller's law was designed along another trajectory than the one given");
   check_size(q0, n, "the initial state q0");
   check_finite(q0, "the initial state q0");
   require(disturbance.dim() == nw, "the disturbance has ", disturbance.dim(), " channels, the model '", model.name(),
           "' has ", nw);
-  const double T = controller.law().period();
   options.validate(T);
   const double t0 = trajectory.t0(), tf = trajectory.tf();
-  const bool output_feedback = controller.output_feedback();
   Mat C;
   if (output_feedback) {
     C = model.C(t0);
-    const int p = controller.measurement_size();
     require(C.rows() == p && C.cols() == n, "the plant '", model.name(), "' measures C of shape (", C.rows(), ", ",
             C.cols(), "), the controller's filter expects (", p, ", ", n, ")");
     const long samples = noise_sample_count(t0, tf, T);
@@ -63,8 +80,8 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
   const double bound = divergence_bound(trajectory, q0, grid, simulation.divergence_factor);
   const int heading = model.heading_index();
 
-  controller.reset(t0, output_feedback ? trajectory.q_d0() : q0);
-  Vec u = controller.held_command(), w(nw);
+  controller_of.reset(t0, output_feedback ? trajectory.q_d0() : q0);
+  Vec u = controller_of.online().held_command(), w(nw);
   auto rhs = [&](double t, const double* y, double* dydt) {
     Eigen::Map<const Vec> q(y, n);
     Eigen::Map<Vec> out(dydt, n);
@@ -78,7 +95,7 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
   result.heading_index = heading;
   result.q.resize(count, n);
   result.u.resize(count, m);
-  Vec y = q0, measured(controller.measurement_size());
+  Vec y = q0, measured(output_feedback ? p : n);
   double t = t0, measured_at = t0, apply_at = t0;
   bool pending = false, pending_measured = false;
   long sample = 0, next_out = 0;
@@ -89,7 +106,7 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
     // The events at t, in the order a vehicle sees them: a command computed earlier is applied,
     // then the state is measured (and, without delay, answered at once), then the outputs.
     if (pending && due(apply_at, t)) {
-      controller.step(apply_at, pending_measured ? measured.data() : nullptr, measured_at, u.data());
+      controller_of.step(apply_at, pending_measured ? measured.data() : nullptr, measured_at, u.data());
       pending = false;
     }
     if (sample_time(sample) < tf && due(sample_time(sample), t)) {
@@ -105,7 +122,7 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
       measured_at = sample_time(sample);
       ++sample;
       if (options.delay == 0.0) {
-        controller.step(measured_at, measuring ? measured.data() : nullptr, measured_at, u.data());
+        controller_of.step(measured_at, measuring ? measured.data() : nullptr, measured_at, u.data());
       } else {
         pending = true;
         pending_measured = measuring;
@@ -142,6 +159,30 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController
   record_reference_series(trajectory, disturbance, grid, next_out, result);
   result.u.conservativeResize(next_out, m);
   return result;
+}
+
+}  // namespace
+
+SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController& controller,
+                                  const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options,
+                                  const Model* plant) {
+  require(&controller.law().trajectory() == &trajectory,
+          "the controller's law was designed along another trajectory than the one given");
+  return run_sampled(trajectory, Plain{controller}, controller.law().period(), controller.output_feedback(),
+                     controller.measurement_size(), disturbance, q0, options, plant);
+}
+
+SimulationResult simulate_sampled(const Trajectory& trajectory, RecedingOnlineController& controller,
+                                  const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options,
+                                  const Model* plant) {
+  const RecedingHorizon& horizon = controller.horizon();
+  require(trajectory.model().same_as(horizon.model()) && trajectory.t0() == horizon.t0() &&
+              trajectory.q_d0() == horizon.q_d0() && trajectory.u_d_signal().same_signals(horizon.u_d_signal()),
+          "the reference trajectory must start where the receding horizon's does: its model, t0, q_d0 and u_d");
+  const bool output_feedback = controller.options().filter.enabled();
+  const int p = output_feedback ? static_cast<int>(horizon.model().C(horizon.t0()).rows()) : horizon.n();
+  return run_sampled(trajectory, Receding{controller}, controller.period(), output_feedback, p, disturbance, q0,
+                     options, plant);
 }
 
 }  // namespace hinf

@@ -83,7 +83,7 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
   }
   {
     const toml::table& desired = *section(root, "desired", source, true);
-    std::vector<std::string> known{"q0"};
+    std::vector<std::string> known{"q0", "states", "max_defect"};
     if (sized) {
       for (int i = 1; i <= m; ++i) known.push_back(str_cat("u", i));
     } else {
@@ -98,9 +98,25 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
                                  "with hinf-cpp run, or write the planned scenario with hinf-cpp plan FILE -o "
                                  "PLANNED.toml and run that"));
     TableReader r(desired, "[desired]", source, known);
-    s.desired_q0 = r.vector("q0", n);
+    if (const toml::node* node = r.get("states")) {
+      // states = { t = [...], q = [[...], ...] }: the desired trajectory at nodes (trajectory.hpp).
+      const toml::table* table = node->as_table();
+      if (table == nullptr) r.fail("states", "expected a table { t = [...], q = [[...], ...] }, got " + type_name(*node));
+      TableReader states(*table, "[desired] states", source, {"t", "q"});
+      DesiredStates ds;
+      const toml::node* t = states.get("t");
+      if (t == nullptr) states.fail("t", "is required");
+      const Vec times = states.as_vector(*t, "t", -1);
+      ds.t.assign(times.data(), times.data() + times.size());
+      ds.q = states.matrix("q", static_cast<int>(ds.t.size()), n, false);
+      ds.max_defect = r.number_or("max_defect", ds.max_defect);
+      s.desired_states = std::move(ds);
+    } else if (r.has("max_defect")) {
+      r.fail("max_defect", "applies to [desired] states only");
+    }
+    s.desired_q0 = s.desired_states && !r.has("q0") ? Vec(s.desired_states->q.row(0).transpose()) : r.vector("q0", n);
     std::vector<Signal> inputs;
-    for (std::size_t i = 1; i < known.size(); ++i) inputs.push_back(r.signal(known[i]));
+    for (std::size_t i = 3; i < known.size(); ++i) inputs.push_back(r.signal(known[i]));
     if (sized) s.desired_u = VectorSignal(std::move(inputs));
   }
   {

@@ -42,6 +42,12 @@ std::string scenario_toml(const Scenario& s) {
   if (s.plant) root.insert("plant", detail::model_section(*s.plant));
   root.insert("horizon", toml::table{{"t0", s.t0}, {"tf", s.tf}});
   toml::table desired{{"q0", vector_toml(s.desired_q0)}};
+  if (s.desired_states) {
+    toml::array t;
+    for (double value : s.desired_states->t) t.push_back(value);
+    desired.insert("states", toml::table{{"t", std::move(t)}, {"q", matrix_toml(s.desired_states->q)}});
+    desired.insert("max_defect", s.desired_states->max_defect);
+  }
   insert_vector_signal(desired, "u", s.desired_u, "[desired] u_d", /*all_channels=*/true);
   root.insert("desired", std::move(desired));
   toml::table controller{{"gamma", s.gamma}, {"law", to_string(s.law)}};

@@ -140,7 +140,17 @@ void Scenario::validate_settings() const {
             "[controller] kappa scales the continuous law's gain; the digital design ([sampling] design ="
             " \"digital\") has its own gains: remove kappa or use design = \"emulated\"");
   }
+  if (desired_states) {
+    const DesiredStates& ds = *desired_states;
+    require(ds.t.size() >= 2, "[desired] states.t needs at least two times, got ", ds.t.size());
+    require(ds.t.front() == t0 && ds.t.back() == tf, "[desired] states.t must run from [horizon] t0 = ", t0,
+            " to tf = ", tf, ", got ", ds.t.front(), " .. ", ds.t.back());
+    require(std::isfinite(ds.max_defect) && ds.max_defect > 0.0, "[desired] max_defect must be > 0, got ",
+            ds.max_defect);
+  }
   if (receding_horizon) {
+    require(!desired_states, "[receding_horizon] integrates each window from the end of the one before; [desired]"
+            " states (a trajectory given at nodes) has no receding-horizon form yet: remove one of the two");
     try {
       receding_horizon->validate();
     } catch (const InputError& e) {
@@ -148,10 +158,17 @@ void Scenario::validate_settings() const {
     }
     require(law != Law::Cascade, "[receding_horizon] designs the H-infinity or LQR law over a moving window; the"
             " cascade law has no design: remove [receding_horizon] or choose law = \"hinf\" or \"lqr\"");
-    require(!measurement, "[receding_horizon] runs state feedback in the continuous loop; output feedback"
-            " ([measurement]) has no receding-horizon form yet: remove one of the two tables");
-    require(!sampling, "[receding_horizon] runs the continuous loop; the online controller ([sampling]) does not"
-            " swap windows yet: remove one of the two tables");
+    require(!measurement || sampling, "[receding_horizon] with [measurement] runs through the online controller:"
+            " add [sampling] (the continuous output-feedback loop has no receding-horizon form)");
+    if (sampling) {
+      require(sampling->design == SampledDesign::Emulated, "[receding_horizon] hands the windows' continuous designs"
+              " to the online controller: [sampling] design = \"emulated\" (the digital design has no"
+              " receding-horizon form yet)");
+      const double ratio = receding_horizon->update / sampling->period;
+      require(std::isfinite(ratio) && ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio,
+              "[receding_horizon] update must be a whole multiple of [sampling] period = ", sampling->period,
+              " s (a window's law starts at a sample), got ", receding_horizon->update);
+    }
     require(!worst_case, "[disturbance] worst_case uses one design over [t0, tf]; with [receding_horizon] there is"
             " none: remove worst_case or [receding_horizon]");
   }
@@ -164,6 +181,14 @@ void Scenario::validate() const {
   const int n = model->n(), m = model->m(), nw = model->nw();
   check_size(desired_q0, n, "[desired] q0");
   validate_model(*model, t0, desired_q0);
+  if (desired_states) {
+    const RowMat& q = desired_states->q;
+    require(q.rows() == static_cast<Eigen::Index>(desired_states->t.size()) && q.cols() == n,
+            "[desired] states.q needs one row of ", n, " numbers per time of states.t (",
+            desired_states->t.size(), " x ", n, "), got ", q.rows(), " x ", q.cols());
+    require(q.allFinite(), "[desired] states.q is not all finite");
+    require(q.row(0).transpose() == desired_q0, "[desired] states.q[0] must be q0 (the desired state at t0)");
+  }
   if (plant) {
     check_plant(*model, *plant, t0);
     try {
@@ -241,7 +266,16 @@ Mat initial_sigma(const Scenario& s) {
 }
 
 TrajectoryPtr trajectory_of(const Scenario& s) {
-  return std::make_shared<const Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
+  if (!s.desired_states) return std::make_shared<const Trajectory>(s.model, s.desired_q0, s.desired_u, s.t0, s.tf);
+  const DesiredStates& ds = *s.desired_states;
+  auto trajectory = std::make_shared<const Trajectory>(s.model, ds.t, ds.q, s.desired_u);
+  // Feasibility per interval: a defect beyond the tolerance means the states are not a trajectory
+  // of the model under u_d.
+  require(trajectory->max_defect() <= ds.max_defect, "[desired] states are not a trajectory of the model '",
+          s.model->name(), "' under u_d: the interval from t = ", trajectory->max_defect_t(), " s ends ",
+          trajectory->max_defect(), " from the next state, more than max_defect = ", ds.max_defect,
+          " (plan again with a smaller interval or more substeps, or raise [desired] max_defect)");
+  return trajectory;
 }
 
 }  // namespace
@@ -299,6 +333,13 @@ bool same_matrix(const Mat& a, const Mat& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() && a == b;
 }
 
+bool same_states(const Scenario& a, const Scenario& b) {
+  if (a.desired_states.has_value() != b.desired_states.has_value()) return false;
+  if (!a.desired_states) return true;
+  const DesiredStates &x = *a.desired_states, &y = *b.desired_states;
+  return x.t == y.t && same_matrix(x.q, y.q) && x.max_defect == y.max_defect;
+}
+
 void combine(std::size_t& seed, double value) {
   seed ^= std::hash<double>{}(value) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
 }
@@ -307,7 +348,8 @@ void combine(std::size_t& seed, double value) {
 
 bool same_design(const Scenario& a, const Scenario& b) {
   return a.model->same_as(*b.model) && a.t0 == b.t0 && a.tf == b.tf && same_matrix(a.desired_q0, b.desired_q0) &&
-         a.desired_u.same_signals(b.desired_u) && design_gamma(a) == design_gamma(b) && same_matrix(a.Q, b.Q) &&
+         a.desired_u.same_signals(b.desired_u) && same_states(a, b) && design_gamma(a) == design_gamma(b) &&
+         same_matrix(a.Q, b.Q) &&
          same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b) &&
          a.receding_horizon.has_value() == b.receding_horizon.has_value() &&
          (!a.receding_horizon || (a.receding_horizon->window == b.receding_horizon->window &&
@@ -321,6 +363,8 @@ std::size_t design_hash(const Scenario& s) {
   if (s.receding_horizon)
     for (double value : {s.receding_horizon->window, s.receding_horizon->update}) combine(seed, value);
   for (Eigen::Index i = 0; i < s.desired_q0.size(); ++i) combine(seed, s.desired_q0[i]);
+  if (s.desired_states)
+    for (double t : s.desired_states->t) combine(seed, t);
   for (const Mat* M : {&s.Q, &s.Qf})
     for (Eigen::Index i = 0; i < M->size(); ++i) combine(seed, M->data()[i]);
   return seed;
@@ -330,13 +374,10 @@ namespace {
 
 // The loop of [sampling]: the online controller of the law's design (emulated, or the discrete
 // game at the period), with the filter of [measurement] when there is one.
-SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& result, const Disturbance& disturbance,
-                                           const RowMat* noise, OnlineCounts& counts) {
+SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& result, const ScenarioDesign& design,
+                                           const Disturbance& disturbance, const RowMat* noise, OnlineCounts& counts,
+                                           std::optional<RecedingHorizonReport>& receding) {
   const SamplingSpec& sp = *s.sampling;
-  const SampledLawPtr law =
-      sp.design == SampledDesign::Emulated
-          ? SampledLaw::emulated(result.solution, sp.period, s.kappa)
-          : SampledLaw::digital(solve_discrete_game(result.trajectory, sp.period, s.Q, s.Qf, design_gamma(s)));
   OnlineOptions options;
   options.limits = sp.limits;
   options.max_age = sp.max_age;
@@ -355,11 +396,31 @@ SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& r
     loop.sigma = ms.sigma;
     loop.noise = noise == nullptr ? scenario_noise(s) : *noise;
   }
-  OnlineController controller(law, options);
-  SimulationResult r = simulate_sampled(*result.trajectory, controller, disturbance, s.initial_q0, loop, s.plant.get());
-  counts = controller.counts();
+  SimulationResult r;
+  if (design.horizon) {
+    // The windows on the solver's thread, handed over at their first samples; the desired
+    // trajectory over [t0, tf] is the run's reference (its q_d series and divergence bound).
+    RecedingOnlineController controller(design.horizon, sp.period, options, s.kappa);
+    r = simulate_sampled(*trajectory_of(s), controller, disturbance, s.initial_q0, loop, s.plant.get());
+    counts = controller.controller().counts();
+    const RecedingOnlineStatus status = controller.status();
+    if (status.windows_failed > 0)
+      throw ConjugatePointError(status.last_failure + " (the online controller kept the window before it)",
+                                status.failed_t_start, design.horizon->gamma());
+    RecedingHorizonReport& report = receding.emplace();
+    report.options = design.horizon->options();
+    report.windows = status.windows_solved;
+  } else {
+    const SampledLawPtr law =
+        sp.design == SampledDesign::Emulated
+            ? SampledLaw::emulated(result.solution, sp.period, s.kappa)
+            : SampledLaw::digital(solve_discrete_game(result.trajectory, sp.period, s.Q, s.Qf, design_gamma(s)));
+    OnlineController controller(law, options);
+    r = simulate_sampled(*result.trajectory, controller, disturbance, s.initial_q0, loop, s.plant.get());
+    counts = controller.counts();
+  }
   if (s.measurement && s.measurement->on_coupling_violation == CouplingPolicy::Error && counts.coupling_violated > 0) {
-    const double gamma = law->gamma();
+    const double gamma = design_gamma(s);
     throw CouplingConditionError(
         str_cat("coupling condition violated at t = ", counts.coupling_violation_t, " in the sampled loop: rho(Sigma Z)"
                 " >= gamma^2 = ", gamma * gamma, " at ", counts.coupling_violated, " of ", counts.steps, " steps (paper"
@@ -395,13 +456,14 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   if (s.law == Law::Cascade) controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
   else if (result.solution) controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
   const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
-  if (s.receding_horizon) {
+  if (s.receding_horizon && !s.sampling) {
     result.simulation = simulate_receding_horizon(*design.horizon, disturbance, s.initial_q0, s.tf,
                                                   s.simulation_options(), s.plant.get(), s.kappa,
                                                   &result.receding_horizon.emplace());
   } else if (s.sampling) {
     result.sampling = s.sampling;
-    result.simulation = simulate_sampled_scenario(s, result, disturbance, noise, result.online.emplace());
+    result.simulation =
+        simulate_sampled_scenario(s, result, design, disturbance, noise, result.online.emplace(), result.receding_horizon);
   } else if (s.measurement) {
     const MeasurementSpec& ms = *s.measurement;
     OutputFeedbackProblem problem;

@@ -59,6 +59,7 @@
 // singular: the step is still computed, flagged, and counted.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -250,6 +251,8 @@ struct StepReport {
                               // feedback)
   bool coupling_violated = false;  // output feedback: rho(Sigma Z) >= gamma^2 (the estimator's
                                    // gain is singular)
+  bool window_stale = false;  // receding horizon (online_receding_horizon.hpp): the law in use is
+                              // past its update period (the next window is late or failed)
 };
 
 // Counts since reset().
@@ -300,6 +303,22 @@ class OnlineController {
   // allocates.
   StepReport step(double t_now, const double* measurement, double t_meas, double* u) noexcept;
 
+  // The receding horizon (receding_horizon.hpp, online_receding_horizon.hpp): the law to use from
+  // its first sample on, handed over whole. `next` must be an emulated law of the same model,
+  // gamma and period whose t0 is a later sample of this controller's law (InputError otherwise,
+  // or when a successor is still pending: see successor_state()). step() switches to it at its
+  // first call with t_now >= next->t0(), without allocating or freeing: the law it leaves is kept
+  // until take_retired(). The estimate, Sigma and the commands remembered carry over; a prediction
+  // that reaches back before the new law's t0 uses its first sample's tables there. May be called
+  // from another thread than step(): the handover is a release/acquire pair, no lock.
+  void set_successor(SampledLawPtr next);
+  // Where the handover stands: Empty (none offered), Offered (set_successor, not yet switched
+  // to), Switched (step() switched; take_retired() makes it Empty again).
+  enum class Handover { Empty = 0, Offered = 1, Switched = 2 };
+  Handover successor_state() const noexcept { return static_cast<Handover>(handover_.value.load(std::memory_order_acquire)); }
+  // After a switch: the law switched away from (and Empty again); null before one.
+  SampledLawPtr take_retired();
+
   // The estimate of q_e at estimate_time() (n), the command held since held_time() (m).
   const Vec& estimate() const { return x_; }
   double estimate_time() const { return t_x_; }
@@ -335,6 +354,17 @@ class OnlineController {
   StepReport limit_and_hold(double t_now, StepReport report, double* u) noexcept;
 
   SampledLawPtr law_;
+  // The handover of set_successor: the successor while Offered, the law left while Switched.
+  SampledLawPtr handover_law_;
+  struct HandoverFlag {  // an atomic that moves with the controller (moved only when no thread steps it)
+    std::atomic<int> value{0};
+    HandoverFlag() = default;
+    HandoverFlag(HandoverFlag&& other) noexcept : value(other.value.load()) {}
+    HandoverFlag& operator=(HandoverFlag&& other) noexcept {
+      value.store(other.value.load());
+      return *this;
+    }
+  } handover_;
   OnlineOptions options_;
   int heading_;
   bool reset_ = false;

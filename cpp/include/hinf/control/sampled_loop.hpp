@@ -18,6 +18,7 @@
 
 #include "hinf/control/disturbance.hpp"
 #include "hinf/control/online_controller.hpp"
+#include "hinf/control/online_receding_horizon.hpp"
 #include "hinf/control/simulation.hpp"
 
 namespace hinf {
@@ -40,6 +41,14 @@ struct SampledLoopOptions {
 // simulate_state_feedback), a controller on another trajectory than `trajectory`, bad options;
 // SolverError when the integration fails.
 SimulationResult simulate_sampled(const Trajectory& trajectory, OnlineController& controller,
+                                  const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options = {},
+                                  const Model* plant = nullptr);
+// The same loop under the receding horizon's online controller (online_receding_horizon.hpp),
+// synchronized before every step (the run does not depend on how fast its windows are solved).
+// `trajectory` is the reference of the run's q_d series and divergence bound: the desired
+// trajectory integrated over [t0, tf] from the horizon's q_d0 with its u_d (the windows chain into
+// it within their integration error); InputError when it does not start as the horizon does.
+SimulationResult simulate_sampled(const Trajectory& trajectory, RecedingOnlineController& controller,
                                   const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options = {},
                                   const Model* plant = nullptr);
 

@@ -32,6 +32,14 @@ struct MeasurementSpec {
   CouplingPolicy on_coupling_violation = CouplingPolicy::Error;   // what a violation does
 };
 
+// [desired] states: the desired trajectory given as states and inputs (trajectory.hpp), e.g. a
+// plan of an open-loop-unstable vehicle.
+struct DesiredStates {
+  std::vector<double> t;  // the nodes t_0 = t0 < ... < t_N = tf (s)
+  RowMat q;               // the desired states at the nodes, (N + 1) x n; row 0 is [desired] q0
+  double max_defect = 1e-6;  // the largest defect d_k of an interval allowed (the states' units, > 0)
+};
+
 // Which design a sampled loop runs ([sampling] design).
 enum class SampledDesign {
   Emulated,  // the continuous design held over each sample (SampledLaw::emulated)
@@ -87,6 +95,8 @@ struct Scenario {
   double tf = 0.0;            // [horizon] tf (s), > t0
   Vec desired_q0;             // q_d(t0)
   VectorSignal desired_u;     // u_d(t), m channels
+  std::optional<DesiredStates> desired_states;  // [desired] states: q_d given at nodes, each
+                              // interval integrated from its node; none: q_d integrated from q0
   double gamma = 0.0;         // > 0, may be +inf (LQR)
   Mat Q;                      // empty: identity
   Mat Qf;                     // empty: identity
