@@ -16,7 +16,11 @@ evaluated exactly where it is. The planned u_d is stored as tables with interpol
 own integrator (``hc.Trajectory``: Dormand-Prince at rtol 1e-10, restarting at the table's
 points) re-simulates q_d from it. The
 open-loop mismatch between the planned states and the re-simulated ones is the report's
-``position_mismatch``; the substeps are doubled until it is below ``max_mismatch``.
+``position_mismatch``; the substeps are doubled until it is below ``max_mismatch``. Along a
+plan where the vehicle is open-loop unstable that mismatch is the growth of the integrator's
+own errors, which no refinement removes: the planner detects it and gives the desired
+trajectory as the planned states and inputs (``hc.Trajectory.from_states``: each interval
+integrated from its node), checked per interval (its defect below ``max_mismatch``).
 
 The waypoint conditions are soft in the optimization (exact penalty with slacks), so that the
 problem always has a solution: a waypoint the inputs cannot reach shows as a miss of the
@@ -61,8 +65,33 @@ __all__ = ["FeasibilityReport", "Plan", "PlanOptions", "PlanningError", "Unreach
 # What the plan cache keeps, and where else to keep it, for the messages about its folder.
 CACHE_WHAT = "planned trajectories"
 CACHE_HINT = "Set HINF_CPP_CACHE to a folder of your own (plans go to $HINF_CPP_CACHE/plans), or pass cache_dir="
-# Part of every cache key (planned_scenario.py): a change to the formulation changes it.
-PLANNER_VERSION = 1
+# Part of every cache key (planned_scenario.py): a change to the formulation changes it. 2: the
+# default grid follows the waypoints, and a plan may be given as states (open-loop unstable).
+PLANNER_VERSION = 2
+# The layout of a cache entry; an entry of another format is planned anew, never misread.
+CACHE_FORMAT = 2
+# The default spacing of the nodes: at most the horizon / DEFAULT_INTERVALS, and at least
+# LEG_INTERVALS intervals between consecutive key times (t0, the waypoints' times, tf). The
+# input is linear between nodes: over one or two pieces a leg can only ramp the input, while
+# the usual manoeuvre between two waypoints (turn towards the next, hold, straighten onto its
+# heading) needs it to rise, hold and fall back: four pieces. Per leg rather than one spacing
+# for the whole horizon, so that one short leg does not refine all the others. The shipped
+# planned scenarios keep their grids (their shortest default leg has 14 intervals).
+DEFAULT_INTERVALS = 60
+LEG_INTERVALS = 4
+# Open-loop instability along a plan (plan(): _unstable). The re-simulation from q0 is repeated
+# with its integrator's relative tolerance 10 times tighter (STRICT_RTOL); where the flow
+# amplifies errors, the two differ by the growth of the integrator's own errors (the built-in
+# AUV at 1 m/s over 120 s: 1.3e-3 m; the paper's ship on the shipped lane change: 1e-11 m).
+STRICT_RTOL = 1e-11
+# The largest |lambda h| of a Runge-Kutta step for the fastest mode lambda of the vehicle at the
+# start (_stable_substeps): inside the method's stability region (2.79 on the real axis) with a
+# margin. The shipped planned scenarios need at most 2 steps per interval by it (their first
+# solves take 2: unchanged).
+RK4_STEP = 2.0
+# A classical Runge-Kutta error falls 16 times when the substeps double; a mismatch that falls
+# by less than SHRINK is not the plan's discretization error.
+SHRINK = 2.0
 # Weights of a waypoint condition's slack (per tolerance). An exact penalty meets every
 # reachable waypoint once it exceeds the condition's multiplier; the first weight is enough for
 # most plans and keeps IPOPT fast when a waypoint is out of reach, and a miss is confirmed with
@@ -213,12 +242,17 @@ class PlanOptions:
     rate_weight : float, optional
         Weight of int |du/dt / s|^2 dt (>= 0; default 1; not both 0).
     interval : float, optional
-        Largest spacing of the input's nodes (s); default the horizon / 60.
+        Largest spacing of the input's nodes (s), the same between every two key times (t0,
+        the waypoints' times, tf). Default: the horizon / 60, and between two consecutive key
+        times at least 4 intervals (so at most a quarter of the time between two waypoints):
+        the manoeuvre between two waypoints needs an input that can rise, hold and fall back,
+        and a short leg gets its nodes without refining the others.
     substeps : int, optional
         Runge-Kutta steps per interval (doubled until the mismatch is met; default 8).
     max_mismatch : float, optional
         Largest distance of the re-simulated from the planned positions (unit of length;
-        default 1e-6).
+        default 1e-6); for a plan given as states (a vehicle open-loop unstable along it),
+        the largest defect of an interval (the states' units).
     max_iterations : int, optional
         IPOPT's iteration limit per solve (default 1000).
 
@@ -243,9 +277,9 @@ class PlanOptions:
     input_scale: tuple[float, ...] | None = None  # s of the cost; default max(|u_min|, |u_max|) or 1
     effort_weight: float = 1.0
     rate_weight: float = 1.0
-    interval: float | None = None  # largest spacing of the input's nodes (s); default horizon / 60
+    interval: float | None = None  # largest spacing of the nodes (s); default horizon / 60, >= 4 per leg
     substeps: int = 8  # Runge-Kutta steps per interval (doubled until the mismatch is met)
-    max_mismatch: float = 1e-6  # re-simulated against planned positions (unit of length)
+    max_mismatch: float = 1e-6  # re-simulated against planned positions; states given: largest defect
     max_iterations: int = 1000  # of IPOPT
 
     def checked(self, m: int) -> "PlanOptions":
@@ -307,16 +341,21 @@ class FeasibilityReport:
     """How well the plan is feasible for the model, checked by re-simulating it.
 
     The report of a :class:`Plan`: the planned inputs are integrated again by the project's
-    integrator (``hc.Trajectory``) and compared with the planned states; the waypoint errors
-    are those of the re-simulated trajectory (what is tracked). ``summary()`` gives it in one
-    line, ``to_dict()`` as a dictionary.
+    integrator (``hc.Trajectory``) from q0 and compared with the planned states; the waypoint
+    errors are those of the desired trajectory (what is tracked). When the vehicle is
+    open-loop unstable along the plan (``states_given``), that re-simulation drifts away and
+    the desired trajectory is given as the planned states instead, each interval integrated
+    from its node: its check is the largest defect of an interval (``max_defect``).
+    ``summary()`` gives it in one line, ``to_dict()`` as a dictionary (a number that is not
+    finite as None).
 
     Parameters
     ----------
     position_mismatch : float
-        Max over the nodes of |p_planned - p_re-simulated| (unit of length).
+        Max over the nodes of |p_planned - p_re-simulated| (unit of length); inf when the
+        re-simulation from q0 failed (left the finite numbers).
     position_mismatch_t : float
-        The time where it is largest (s).
+        The time where it is largest (s; NaN when the re-simulation failed).
     state_mismatch : float
         Max over the nodes and states of |q_planned - q_re-simulated|.
     waypoint_errors : list of float
@@ -339,6 +378,20 @@ class FeasibilityReport:
         IPOPT's return status of the final solve.
     cache_hit : bool, optional
         True: read back from the plan cache (default False).
+    states_given : bool, optional
+        True: the vehicle is open-loop unstable along the plan, and the desired trajectory is
+        the planned states and inputs (``hc.Trajectory.from_states``); False (default): q_d is
+        the re-simulation from q0.
+    max_defect : float, optional
+        States given: the largest defect of an interval, |end of interval k - q_{k+1}|_inf
+        (the states' units), at most ``max_mismatch``; else None.
+    max_defect_t : float, optional
+        States given: the start of that interval (s); else None.
+    resimulation_sensitivity : float, optional
+        Computed when the re-simulation from q0 missed ``max_mismatch``: max over the nodes of
+        the distance between the positions re-simulated at the integrator's relative tolerance
+        (1e-10) and at 1e-11, the growth of the integrator's own error along the plan (inf:
+        the second integration failed); else None.
 
     Examples
     --------
@@ -369,15 +422,25 @@ class FeasibilityReport:
     intervals: int  # of the input's time grid
     status: str  # IPOPT's return status of the final solve
     cache_hit: bool = False  # True: read back from the plan cache (planned_scenario.py)
+    states_given: bool = False  # True: open-loop unstable along the plan; q_d given as the planned states
+    max_defect: float | None = None  # states given: largest |end of interval k - q_{k+1}|_inf
+    max_defect_t: float | None = None  # states given: the start of that interval (s)
+    resimulation_sensitivity: float | None = None  # re-simulation at rtol 1e-10 against 1e-11, when computed
 
     def summary(self) -> str:
         how = "from the cache" if self.cache_hit else f"{self.iterations} IPOPT iterations, {self.seconds:.2f} s"
-        return (f"{self.intervals} intervals x {self.substeps} RK4 steps, {how}; re-simulation mismatch "
-                f"{self.position_mismatch:.2e} (max over the nodes), waypoints met within "
-                f"{max(self.waypoint_errors, default=0.0):.3g}")
+        met = f"waypoints met within {max(self.waypoint_errors, default=0.0):.3g}"
+        if not self.states_given:
+            return (f"{self.intervals} intervals x {self.substeps} RK4 steps, {how}; re-simulation mismatch "
+                    f"{self.position_mismatch:.2e} (max over the nodes), {met}")
+        return (f"{self.intervals} intervals x {self.substeps} RK4 steps, {how}; the vehicle is open-loop unstable "
+                f"along the plan (its re-simulation from q0 drifts {self.position_mismatch:.3g} away by t = "
+                f"{self.position_mismatch_t:g}): q_d is given as the planned states, largest defect of an interval "
+                f"{self.max_defect:.2e} (at t = {self.max_defect_t:g}), {met}")
 
     def to_dict(self) -> dict:
-        return dataclasses.asdict(self)
+        return {key: None if isinstance(value, float) and not math.isfinite(value) else value
+                for key, value in dataclasses.asdict(self).items()}
 
 
 @dataclasses.dataclass
@@ -385,10 +448,14 @@ class Plan:
     """A desired trajectory planned for a model: what :func:`plan` returns.
 
     The inputs u_d (as signals and at the nodes; linear in between), the planned states at the
-    nodes, and q_d re-simulated from u_d by the project's integrator. ``inputs()`` gives u_d
-    as an ``hc.VectorSignal`` (one "linear" table per input), ``input_tables()`` in the form of
-    a scenario file's [desired] (``{"u1": {"table": {...}}, ...}``); ``t0``, ``tf`` and ``q0``
-    are the first and last node and the planned state at t0.
+    nodes, and q_d re-simulated from u_d by the project's integrator, or, when the vehicle is
+    open-loop unstable along the plan (``states_given``), q_d given as the planned states with
+    each interval integrated from its node (``hc.Trajectory.from_states``). ``inputs()`` gives
+    u_d as an ``hc.VectorSignal`` (one "linear" table per input), ``input_tables()`` in the
+    form of a scenario file's [desired] (``{"u1": {"table": {...}}, ...}``),
+    ``desired_states()`` the planned states in the form of its ``states`` key (for a plan given
+    as states); ``t0``, ``tf`` and ``q0`` are the first and last node and the planned state at
+    t0.
 
     Parameters
     ----------
@@ -405,10 +472,14 @@ class Plan:
     u : numpy.ndarray, shape (N + 1, m)
         The inputs at the nodes; linear in between.
     trajectory : hinf_cpp.Trajectory
-        q_d re-simulated from u_d (Dormand-Prince at rtol 1e-10): the desired trajectory to
+        q_d re-simulated from u_d (Dormand-Prince at rtol 1e-10), or given as the states (each
+        interval integrated from its node) when ``states_given``: the desired trajectory to
         design for (``hc.solve_grde``) and track.
     report : FeasibilityReport
         The feasibility check.
+    states_given : bool, optional
+        True: the vehicle is open-loop unstable along the plan and ``trajectory`` is made from
+        the planned states and inputs; False (default): from q0 and the inputs.
 
     Examples
     --------
@@ -433,8 +504,9 @@ class Plan:
     t: np.ndarray  # the nodes, (N + 1,)
     q: np.ndarray  # planned states at the nodes, (N + 1, n)
     u: np.ndarray  # inputs at the nodes, (N + 1, m); linear in between
-    trajectory: _core.Trajectory  # q_d re-simulated from u_d
+    trajectory: _core.Trajectory  # q_d re-simulated from u_d, or from the states (states_given)
     report: FeasibilityReport
+    states_given: bool = False  # True: q_d given as the planned states (open-loop unstable along the plan)
 
     @property
     def q0(self) -> np.ndarray:
@@ -457,6 +529,11 @@ class Plan:
         return {f"u{i + 1}": {"table": {"t": self.t.tolist(), "value": self.u[:, i].tolist(),
                                         "interpolation": "linear"}}
                 for i in range(self.u.shape[1])}
+
+    def desired_states(self) -> dict:
+        """The planned states in the form of a scenario file's [desired] states: {"t": [...],
+        "q": [[...], ...]} (the nodes, and the states at them, row 0 the plan's q0)."""
+        return {"t": self.t.tolist(), "q": self.q.tolist()}
 
 
 def _input_signal(t: np.ndarray, u: np.ndarray) -> _core.VectorSignal:
@@ -566,13 +643,13 @@ def resolve_times(waypoints: Sequence[Waypoint], start: Sequence[float], t0: flo
     return resolved
 
 
-def time_grid(t0: float, tf: float, key_times: Sequence[float], interval: float) -> np.ndarray:
+def time_grid(t0: float, tf: float, key_times: Sequence[float], interval: float, divisions: int = 1) -> np.ndarray:
     """Nodes from t0 to tf that contain every key time, equally spaced between consecutive key
-    times at most `interval` apart."""
+    times at most `interval` apart, and at least `divisions` intervals between them."""
     knots = sorted({t0, tf, *key_times})
     nodes = [t0]
     for a, b in zip(knots[:-1], knots[1:]):
-        count = max(1, math.ceil((b - a) / interval - 1e-9))
+        count = max(divisions, math.ceil((b - a) / interval - 1e-9))
         nodes += [a + (b - a) * i / count for i in range(1, count)] + [b]
     return np.array(nodes)
 
@@ -585,7 +662,12 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     effort and rate from the state q0 at t0 to tf subject to the model's dynamics, the input
     bounds and the waypoint conditions, by direct multiple shooting with CasADi and IPOPT.
     The planned inputs are re-simulated by the project's integrator and checked against the
-    planned states and the waypoints. Units are the model's; times are absolute (s).
+    planned states and the waypoints. When the re-simulation's mismatch is the open-loop growth
+    of errors along the plan (it changes with the integrator's tolerance by more than
+    ``max_mismatch``, is too large for the doublings of the substeps left to remove, or falls
+    by less than half when the substeps double), the vehicle is unstable along the plan: the desired trajectory is then the planned states and inputs
+    (``Plan.states_given``), each interval integrated from its node and checked by its defect.
+    Units are the model's; times are absolute (s).
 
     Parameters
     ----------
@@ -628,7 +710,9 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
         more than 3 times as far as the vehicle's top speed takes it (simulated with constant
         inputs at the bounds) is refused before optimizing.
     PlanningError
-        IPOPT fails, or the plan cannot be made accurate enough.
+        IPOPT fails, or the plan cannot be made accurate enough (its re-simulation mismatch,
+        or given as states its largest defect, stays above ``max_mismatch`` with 16 times the
+        substeps).
 
     Examples
     --------
@@ -664,11 +748,12 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     t0 = float(t0)
     waypoints = resolve_times(waypoints, q0[positions], t0, tf, options.speed)
     tf = waypoints[-1].t if tf is None else float(tf)
-    interval = options.interval or (tf - t0) / 60.0
-    if not (tf - t0) / interval <= MAX_INTERVALS:
+    interval = options.interval or (tf - t0) / DEFAULT_INTERVALS
+    divisions = 1 if options.interval else LEG_INTERVALS
+    if not ((tf - t0) / interval <= MAX_INTERVALS and divisions * (len(waypoints) + 1) <= MAX_INTERVALS):
         raise ValueError(f"the horizon from t0 = {t0:g} to tf = {tf:g} s in intervals of at most {interval:g} s "
                          f"needs more than {MAX_INTERVALS} intervals: give a larger interval or a shorter horizon")
-    t = time_grid(t0, tf, [w.t for w in waypoints], interval)
+    t = time_grid(t0, tf, [w.t for w in waypoints], interval, divisions)
     nodes = [int(np.searchsorted(t, w.t)) for w in waypoints]
 
     dynamics = _dynamics_function(ca, symbolic)
@@ -683,10 +768,16 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     iterate = _Iterate(*_initial_guess(dynamics, symbolic, q0, t, waypoints, nodes, options))
     # A first solve with a quarter of the substeps finds the solution (or the unreachable
     # waypoint) at a quarter of the cost per iteration; each solve after it starts from the
-    # previous one's primal and dual values and takes a few iterations.
-    substeps = min(options.substeps, max(2, options.substeps // 4))
+    # previous one's primal and dual values and takes a few iterations. No solve takes
+    # Runge-Kutta steps beyond the stability of the vehicle's fastest mode at the start.
+    least = _stable_substeps(dynamics, q0, t, iterate.u[0])
+    accurate = max(options.substeps, least)
+    substeps = min(accurate, max(2, options.substeps // 4, least))
     penalties = list(PENALTIES)
     iterations, solve_seconds = 0, 0.0
+    # The re-simulation mismatch after each accurate solve, its sensitivity to the integrator's
+    # tolerance, and whether the plan is given as states (the vehicle open-loop unstable along it).
+    history, sensitivity, states_given = [], None, False
     while True:
         iterate = _solve(ca, dynamics, symbolic, q0, t, waypoints, nodes, options, substeps, penalties[0], iterate)
         iterations += iterate.stats["iter_count"]
@@ -695,8 +786,8 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
         if missed and len(penalties) > 1:  # a larger penalty confirms a miss (or meets the waypoint)
             penalties.pop(0)
             continue
-        if substeps < options.substeps:  # the accurate solve, also to confirm a miss
-            substeps = options.substeps
+        if substeps < accurate:  # the accurate solve, also to confirm a miss
+            substeps = accurate
             continue
         if len(missed) > 1:  # which one is out of reach: meet the earlier ones first
             iterate = _solve(ca, dynamics, symbolic, q0, t, waypoints, nodes, options, substeps, penalties[0],
@@ -704,11 +795,28 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
             missed = _missed_waypoints(symbolic, iterate.q, dynamics, t, iterate.u, waypoints, nodes, options) or missed
         if missed:
             raise _unreachable(missed, waypoints, options)
-        trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, iterate.u), t0, tf)
-        mismatch = _mismatch(trajectory, t, iterate.q, positions)
-        if mismatch[0] <= options.max_mismatch:
-            break
-        if substeps >= 16 * options.substeps:
+        inputs = _input_signal(t, iterate.u)
+        resimulated, mismatch = _resimulate(cpp_model, q0, inputs, t, iterate.q, positions)
+        if not states_given:
+            if mismatch[0] <= options.max_mismatch:
+                trajectory, q_nodes = resimulated, iterate.q
+                break
+            history.append(mismatch[0])
+            sensitivity = _sensitivity(cpp_model, q0, inputs, t, resimulated, positions)
+            states_given = _unstable(history, sensitivity, options, round(math.log2(16 * accurate / substeps)))
+        if states_given:  # the planned states themselves, checked interval by interval
+            q_nodes = iterate.q.copy()
+            q_nodes[0] = q0  # the plan's constraint X[:, 0] == q0, met to IPOPT's round-off: exactly
+            trajectory = _core.Trajectory.from_states(cpp_model, t, q_nodes, inputs)
+            if trajectory.max_defect() <= options.max_mismatch:
+                break
+        if substeps >= 16 * accurate:
+            if states_given:
+                raise PlanningError(
+                    f"the vehicle is open-loop unstable along the plan, and its planned states miss the integration "
+                    f"of an interval by up to {trajectory.max_defect():.3g} (the interval from t = "
+                    f"{trajectory.max_defect_t():g}) with {substeps} Runge-Kutta steps per interval, more than "
+                    f"max_mismatch = {options.max_mismatch:g}: give a smaller interval")
             raise PlanningError(f"the planned states stay {mismatch[0]:.3g} from their re-simulation (at t = "
                                 f"{mismatch[1]:g}) with {substeps} Runge-Kutta steps per interval, more than "
                                 f"max_mismatch = {options.max_mismatch:g}: give a smaller interval")
@@ -717,8 +825,11 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
         position_mismatch=mismatch[0], position_mismatch_t=mismatch[1], state_mismatch=mismatch[2],
         waypoint_errors=[], heading_errors=[], speed_errors=[], iterations=iterations,
         solve_seconds=solve_seconds, seconds=0.0, substeps=substeps, intervals=len(t) - 1,
-        status=iterate.stats["return_status"])
-    result = Plan(cpp_model, waypoints, nodes, t, iterate.q, iterate.u, trajectory, report)
+        status=iterate.stats["return_status"], resimulation_sensitivity=sensitivity)
+    if states_given:
+        report.states_given = True
+        report.max_defect, report.max_defect_t = trajectory.max_defect(), trajectory.max_defect_t()
+    result = Plan(cpp_model, waypoints, nodes, t, q_nodes, iterate.u, trajectory, report, states_given)
     _check_waypoints(result, options)
     report.seconds = time.perf_counter() - started
     if cache_path is not None:
@@ -761,28 +872,50 @@ def _cache_key(F, cpp_model, q0, t0, tf, waypoints, options) -> str:
 
 
 def _read_cached(path: pathlib.Path, cpp_model, waypoints, nodes, t, q0, options, started) -> Plan | None:
-    """The cached plan, re-simulated and checked again; None if absent, unreadable, damaged or
-    failing its checks (then it is planned anew and the entry replaced): an entry never makes
+    """The cached plan, re-simulated (given as states: its intervals integrated) and checked
+    again; None if absent, unreadable, of another format, damaged or failing its checks (then it is planned anew and the entry replaced): an entry never makes
     planning fail."""
     try:
         data = json.loads(path.read_text())
+        if data.get("format") != CACHE_FORMAT:  # an entry of another layout: planned anew
+            return None
         q, u = np.array(data["q"], dtype=float), np.array(data["u"], dtype=float)
         stats = data["stats"]
         iterations, solve_seconds = int(stats["iterations"]), float(stats["solve_seconds"])
         substeps, status = int(stats["substeps"]), str(stats["status"])
-        if not (np.array_equal(np.array(data["t"]), t) and q.shape == (len(t), len(q0))
-                and u.shape == (len(t), cpp_model.m()) and np.all(np.isfinite(q)) and np.all(np.isfinite(u))):
+        states_given = data["states_given"]
+        if not (isinstance(states_given, bool) and np.array_equal(np.array(data["t"]), t)
+                and q.shape == (len(t), len(q0)) and u.shape == (len(t), cpp_model.m())
+                and np.all(np.isfinite(q)) and np.all(np.isfinite(u))):
             return None
-        trajectory = _core.Trajectory(cpp_model, q0, _input_signal(t, u), float(t[0]), float(t[-1]))
-        mismatch = _mismatch(trajectory, t, q, list(cpp_model.position_indices()))
-        if not mismatch[0] <= options.max_mismatch:  # NaN too
-            return None
+        inputs = _input_signal(t, u)
+        if states_given:
+            # The check of a plan given as states: the defect of every interval. Its re-simulation
+            # from q0 (which drifts away) is not repeated: the numbers of the report are kept.
+            kept = stats["resimulation"]
+            mismatch = tuple(float(kept[key]) for key in ("position_mismatch", "position_mismatch_t",
+                                                          "state_mismatch"))
+            sensitivity = float(kept["sensitivity"])
+            if not np.array_equal(q[0], q0):
+                return None
+            trajectory = _core.Trajectory.from_states(cpp_model, t, q, inputs)
+            if not trajectory.max_defect() <= options.max_mismatch:  # NaN too
+                return None
+        else:
+            trajectory = _core.Trajectory(cpp_model, q0, inputs, float(t[0]), float(t[-1]))
+            mismatch = _mismatch(trajectory, t, q, list(cpp_model.position_indices()))
+            sensitivity = None
+            if not mismatch[0] <= options.max_mismatch:  # NaN too
+                return None
         report = FeasibilityReport(
             position_mismatch=mismatch[0], position_mismatch_t=mismatch[1], state_mismatch=mismatch[2],
             waypoint_errors=[], heading_errors=[], speed_errors=[], iterations=iterations,
             solve_seconds=solve_seconds, seconds=0.0, substeps=substeps, intervals=len(t) - 1, status=status,
-            cache_hit=True)
-        result = Plan(cpp_model, waypoints, nodes, t, q, u, trajectory, report)
+            cache_hit=True, resimulation_sensitivity=sensitivity)
+        if states_given:
+            report.states_given = True
+            report.max_defect, report.max_defect_t = trajectory.max_defect(), trajectory.max_defect_t()
+        result = Plan(cpp_model, waypoints, nodes, t, q, u, trajectory, report, states_given)
         _check_waypoints(result, options)
     except Exception:  # noqa: BLE001 - whatever is wrong with an entry (its file, its JSON, its numbers), plan anew
         return None
@@ -794,9 +927,15 @@ def _write_cached(path: pathlib.Path, result: Plan) -> None:
     """Keeps the plan (written whole or not at all, replacing a damaged entry) in a folder made
     private (0700); a cache that cannot be written is a warning."""
     r = result.report
-    data = {"t": result.t.tolist(), "q": result.q.tolist(), "u": result.u.tolist(),
+    data = {"format": CACHE_FORMAT, "states_given": result.states_given,
+            "t": result.t.tolist(), "q": result.q.tolist(), "u": result.u.tolist(),
             "stats": {"iterations": r.iterations, "solve_seconds": r.solve_seconds, "substeps": r.substeps,
                       "status": r.status}}
+    if result.states_given:  # the re-simulation from q0, not repeated when read (json keeps inf and NaN)
+        data["stats"]["resimulation"] = {"position_mismatch": r.position_mismatch,
+                                         "position_mismatch_t": r.position_mismatch_t,
+                                         "state_mismatch": r.state_mismatch,
+                                         "sensitivity": r.resimulation_sensitivity}
     try:
         make_cache_folder(path.parent, CACHE_WHAT, CACHE_HINT)
         _write_atomically(path, lambda temporary: temporary.write_text(json.dumps(data)))
@@ -1107,9 +1246,83 @@ def _mismatch(trajectory: _core.Trajectory, t: np.ndarray, q: np.ndarray, positi
     return float(distance[k]), float(t[k]), float(np.max(np.abs(resimulated - q)))
 
 
+def _stable_substeps(F, q0: np.ndarray, t: np.ndarray, u0: np.ndarray) -> int:
+    """The fewest Runge-Kutta steps per interval that keep the step h on the longest interval
+    within RK4_STEP / rho, rho the spectral radius of d(f + G u)/dq at (t0, q0, u0). Beyond the
+    stability region of the classical Runge-Kutta method (-2.79 on the real axis, +-2.83i on
+    the imaginary) the discrete plan's fast modes grow from step to step and IPOPT fails (the
+    paper's ship, rho = 1.73 /s, on a 300 s horizon: 5 s intervals in 2 steps, "Restoration
+    failed")."""
+    ca = _casadi()
+    symbol = ca.SX if F.is_a("SXFunction") else ca.MX
+    q = symbol.sym("q", len(q0))
+    jacobian = ca.Function("A", [q], [ca.jacobian(F(float(t[0]), q, ca.DM(u0)), q)])
+    A = np.asarray(jacobian(q0), dtype=float)
+    rho = float(np.max(np.abs(np.linalg.eigvals(A)))) if np.all(np.isfinite(A)) else 0.0
+    return max(1, math.ceil(float(np.max(np.diff(t))) * rho / RK4_STEP - 1e-9))
+
+
+def _resimulate(cpp_model, q0: np.ndarray, inputs: _core.VectorSignal, t: np.ndarray, q: np.ndarray,
+                positions: list[int], options: _core.TrajectoryOptions | None = None):
+    """The model integrated from q0 with the planned inputs over the nodes, and its mismatch
+    (_mismatch) to the planned states q; (None, (inf, NaN, inf)) when the integration fails or
+    leaves the finite numbers (an open-loop-unstable vehicle may diverge so far)."""
+    try:
+        trajectory = _core.Trajectory(cpp_model, q0, inputs, float(t[0]), float(t[-1]),
+                                      *([] if options is None else [options]))
+        mismatch = _mismatch(trajectory, t, q, positions)
+    except _core.SolverError:
+        return None, (math.inf, math.nan, math.inf)
+    if not all(math.isfinite(value) for value in (mismatch[0], mismatch[2])):
+        return None, (math.inf, math.nan, math.inf)
+    return trajectory, mismatch
+
+
+def _sensitivity(cpp_model, q0: np.ndarray, inputs: _core.VectorSignal, t: np.ndarray,
+                 resimulated: _core.Trajectory | None, positions: list[int]) -> float:
+    """Max over the nodes of the distance between the positions of the re-simulation (rtol
+    1e-10) and of one at STRICT_RTOL: an estimate of the re-simulation's own error, grown along
+    the plan; inf when either integration failed."""
+    if resimulated is None:
+        return math.inf
+    options = _core.TrajectoryOptions()
+    options.rtol = STRICT_RTOL
+    q = np.array([resimulated.q_d(float(tk)) for tk in t])
+    return _resimulate(cpp_model, q0, inputs, t, q, positions, options)[1][0]
+
+
+def _unstable(history: list[float], sensitivity: float, options: PlanOptions, doublings_left: int) -> bool:
+    """Whether the re-simulation mismatch (history: after each accurate solve, all above
+    max_mismatch) is the open-loop growth of errors along the plan rather than the plan's
+    discretization error, which doubling the substeps would shrink. Either
+
+    - the re-simulation failed, or changes by more than max_mismatch when its integrator's
+      tolerance is made 10 times tighter (sensitivity): its own errors, relative 1e-10 at each
+      step, grow beyond what it is to check, so no refinement of the plan can pass the check
+      (found after the first accurate solve, without solving again; the AUV at 1 m/s);
+    - the mismatch is more than 16 times max_mismatch per doubling of the substeps left: even
+      falling as a Runge-Kutta error (16 times per doubling) it would still miss at the last
+      one, where the planner gave up before (a directionally unstable vessel whose growth,
+      about 1e5 along its plan, multiplies the plan's discretization error: 0.18 m with 8
+      steps per interval, still 6.4e-6 m with 128); or
+    - the mismatch fell by less than SHRINK over the last doubling of the substeps, where a
+      classical Runge-Kutta error falls 16 times (a mismatch that grows with the nonlinearity
+      can fall fast at first, then stalls on the integrator's amplified error).
+
+    For a stable plan the sensitivity is about 1e-11 m (the shipped planned scenarios) and a
+    doubling divides the mismatch by about 16 (the ship's lawnmower: 2.1e-6 to 1.3e-7 m): the
+    plan is refined as it always was."""
+    if not math.isfinite(history[-1]) or not sensitivity <= options.max_mismatch:
+        return True
+    if history[-1] > options.max_mismatch * 16.0**doublings_left:
+        return True
+    return len(history) >= 2 and history[-1] > history[-2] / SHRINK
+
+
 def _check_waypoints(result: Plan, options: PlanOptions) -> None:
-    """Fills the report's waypoint errors from the re-simulated trajectory (what is tracked) and
-    raises PlanningError if one is outside its tolerance."""
+    """Fills the report's waypoint errors from the desired trajectory (what is tracked: the
+    re-simulated one, or the one given as states) and raises PlanningError if one is outside
+    its tolerance."""
     model, report = result.model, result.report
     positions, heading = list(model.position_indices()), model.heading_index()
     report.waypoint_errors, report.heading_errors, report.speed_errors = [], [], []
@@ -1128,5 +1341,6 @@ def _check_waypoints(result: Plan, options: PlanOptions) -> None:
                                         ("heading", report.heading_errors, options.heading_tolerance),
                                         ("speed", report.speed_errors, options.speed_tolerance)):
             if errors[j] is not None and errors[j] > tolerance:
-                raise PlanningError(f"waypoints[{j}] {w.describe()}: the re-simulated trajectory misses its {name} "
+                what = "desired trajectory (given as states)" if result.states_given else "re-simulated trajectory"
+                raise PlanningError(f"waypoints[{j}] {w.describe()}: the {what} misses its {name} "
                                     f"by {errors[j]:.4g}, more than the tolerance {tolerance:g}")

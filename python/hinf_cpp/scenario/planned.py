@@ -2,7 +2,10 @@
 
 The planner (``hinf_cpp.planning.planner``) turns the waypoints into inputs u_d, which take the place of
 the planning keys in [desired] as tables with interpolation = "linear"; the scenario then goes
-through the one C++ reader like any other. Plans are cached by the content of what they depend
+through the one C++ reader like any other. For a vehicle that is open-loop unstable along the
+plan, the planned states come too ([desired] states = { t, q } and max_defect = the planner's
+max_mismatch): the desired trajectory is then made from the states and inputs, each interval
+integrated from its node. Plans are cached by the content of what they depend
 on (``hinf_cpp.planning.planner.default_cache_dir``), so running a file again does not optimize again.
 ``hinf-sim`` does not plan: it refuses these keys and says to run ``hinf-cpp run`` or to write
 the planned scenario with ``hinf-cpp plan FILE -o PLANNED.toml`` (:func:`planned_scenario_toml`:
@@ -63,8 +66,10 @@ class PlannedScenario:
         The plan: inputs, planned and re-simulated states, feasibility report.
     document : dict
         The scenario file's dictionary with the planned inputs in [desired] (``u1``, ``u2``,
-        ...: tables with interpolation = "linear") in place of the planning keys; written as
-        TOML it is a scenario ``hinf-sim`` runs (``hinf-cpp plan FILE -o PLANNED.toml``).
+        ...: tables with interpolation = "linear") in place of the planning keys, and for a
+        plan given as states (``plan.states_given``) the planned states (``states = {t, q}``)
+        and ``max_defect``; written as TOML it is a scenario ``hinf-sim`` runs (``hinf-cpp
+        plan FILE -o PLANNED.toml``).
     source : str
         The scenario file (or the name given to a dictionary), for messages.
 
@@ -177,7 +182,9 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     optionally ``plan`` (the :class:`hinf_cpp.planning.PlanOptions`) instead of the inputs.
     The rest of the document is checked by the C++ reader first; the planner
     (:func:`hinf_cpp.planning.plan`) then finds the inputs u_d from [desired] q0 at t0 to tf,
-    and they take the place of the planning keys as tables with interpolation = "linear".
+    and they take the place of the planning keys as tables with interpolation = "linear"; for
+    a vehicle open-loop unstable along the plan the planned states come too ([desired]
+    ``states`` and ``max_defect``), and the scenario's desired trajectory is made from them.
 
     Parameters
     ----------
@@ -234,6 +241,10 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     if inputs:
         raise ValueError(f"{source}: [desired] {inputs[0]}: give the inputs or {next(iter(planning))} "
                          "(planned inputs), not both")
+    for key in ("states", "max_defect"):
+        if key in desired:
+            raise ValueError(f"{source}: [desired] {key}: the planner gives the states when the vehicle is open-loop "
+                             f"unstable along the plan; leave it out with {next(iter(planning))}")
     allow_code = code_allowed(trust_code)
     # Everything but the inputs and the sizes the model sets, checked before the model (which may
     # be a program) is loaded; then everything, with zero inputs in their place.
@@ -265,6 +276,11 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
         raise ValueError(f"{source}: {section} {text}") from None
     document = copy.deepcopy(root)
     document["desired"] = dict(skeleton["desired"], **result.input_tables())
+    if result.states_given:
+        # The vehicle is open-loop unstable along the plan: the desired trajectory is made from the
+        # planned states, each interval integrated from its node, and refused where an interval's
+        # defect exceeds what the planner checked (its max_mismatch).
+        document["desired"].update(states=result.desired_states(), max_defect=options.max_mismatch)
     scenario = _core.parse_scenario_toml(toml_text(document, source), source, allow_code)
     return PlannedScenario(scenario, result, document, source)
 
