@@ -894,7 +894,15 @@ Examples
       .def("first", &RecedingHorizon::first, py::call_guard<ComputationScope>(),
            doc({"RecedingHorizon::first"}).c_str())
       .def("next", &RecedingHorizon::next, py::arg("previous"), py::call_guard<ComputationScope>(),
-           doc({"RecedingHorizon::next"}).c_str());
+           doc({"RecedingHorizon::next"}).c_str())
+      .def("with_path_change",
+           [](const RecedingHorizon& h, double t_join, const py::object& u_d) {
+             return h.with_path_change(t_join, to_vector_signal(u_d, h.m(), "u_d"));
+           },
+           py::arg("t_join"), py::arg("u_d"), doc({"RecedingHorizon::with_path_change"}).c_str())
+      .def("path_changes", &RecedingHorizon::path_changes, doc({"RecedingHorizon::path_changes"}).c_str())
+      .def("window_inputs", &RecedingHorizon::window_inputs, py::arg("j"),
+           doc({"RecedingHorizon::window_inputs"}).c_str());
 
   m.def("simulate_receding_horizon",
         [](const RecedingHorizon& horizon, const py::object& disturbance, const Vec& q0, double tf,
@@ -1036,7 +1044,12 @@ Examples
                .c_str())
       .def("synchronize", &RecedingOnlineController::synchronize, py::arg("t"), py::call_guard<ComputationScope>(),
            doc({"RecedingOnlineController::synchronize"}).c_str())
-      .def("status", &RecedingOnlineController::status, doc({"RecedingOnlineController::status"}).c_str());
+      .def("status", &RecedingOnlineController::status, doc({"RecedingOnlineController::status"}).c_str())
+      .def("change_path",
+           [](RecedingOnlineController& c, double t_join, const py::object& u_d) {
+             c.change_path(t_join, to_vector_signal(u_d, c.horizon().m(), "u_d"));
+           },
+           py::arg("t_join"), py::arg("u_d"), doc({"RecedingOnlineController::change_path"}).c_str());
 
   m.def("simulate_sampled_receding_horizon",
         [](const Trajectory& trajectory, RecedingOnlineController& controller, const py::object& disturbance,

@@ -62,6 +62,19 @@ Examples
 >>> len(result.trajectory.node_times()), bool(result.trajectory.max_defect() < 1e-8)
 (3, True))");
 
+  bind_options<PathChange>(m, "PathChange", {"PathChange"}, {}, R"(Notes
+-----
+Checked with the scenario (Scenario.validate()); docs/scenarios.md has [path_change].
+
+Examples
+--------
+>>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+>>> scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+>>> scenario.path_change = hc.PathChange(t=20.0, u_d=hc.VectorSignal([hc.Signal(1.0), hc.Signal(-0.2)]))
+>>> result = hc.run_scenario(scenario)
+>>> bool(np.hypot(*result.simulation.q_e()[-1, 3:5]) < 0.1)      # on the new path at tf
+True)");
+
   bind_enum<SampledDesign>(m, "SampledDesign", R"(Examples
 --------
 >>> hc.SamplingSpec(period=0.05, design="digital").design
@@ -85,7 +98,7 @@ Examples
       {{"name", "str"}, {"description", "str"}, {"model", "Model"}, {"plant", "Model or None"},
        {"t0", "float"}, {"tf", "float"}, {"desired_q0", "ndarray, shape (n,)"},
        {"desired_u", "VectorSignal (set: also a callable or a list of Signal or float)"},
-       {"desired_states", "DesiredStates or None"}, {"gamma", "float"},
+       {"desired_states", "DesiredStates or None"}, {"path_change", "PathChange or None"}, {"gamma", "float"},
        {"Q", "ndarray, shape (n, n)"}, {"Qf", "ndarray, shape (n, n)"}, {"kappa", "Signal (set: also a float)"},
        {"law", "Law (set: also its name)"}, {"cascade", "CascadeGains"},
        {"disturbance", "VectorSignal (set: also a callable, a list of Signal or float, or None)"},
@@ -127,6 +140,7 @@ Examples
                       s.desired_u = to_vector_signal(v, s.model->m(), "desired_u");
                     }, member("desired_u").c_str())
       .def_readwrite("desired_states", &Scenario::desired_states, member("desired_states").c_str())
+      .def_readwrite("path_change", &Scenario::path_change, member("path_change").c_str())
       .def_readwrite("gamma", &Scenario::gamma, member("gamma").c_str())
       .def_readwrite("Q", &Scenario::Q, member("Q").c_str())
       .def_readwrite("Qf", &Scenario::Qf, member("Qf").c_str())

@@ -567,6 +567,10 @@ the output grid).)contract"},
     {"OutputFeedbackProblem::sigma", R"contract(noise standard deviation: E w = sigma v on the noise channels)contract"},
     {"PackedScratch", R"contract(Scratch space for one packed symmetric n x n matrix: on the stack up to n = 16, on the heap
 beyond (lookups in hot loops should not allocate for the usual sizes).)contract"},
+    {"PathChange", R"contract([path_change]: the path changed under way, with [receding_horizon] (receding_horizon.hpp): from
+the window that starts at t on, the desired trajectory continues from q_d(t) with the inputs u_d.)contract"},
+    {"PathChange::t", R"contract(s: a window's start after t0)contract"},
+    {"PathChange::u_d", R"contract(the new desired inputs, m channels)contract"},
     {"PiecewisePolynomial", R"contract(The dense output y(t) in R^dim of one solve: one polynomial piece per integrator step.)contract"},
     {"PiecewisePolynomial::append", R"contract(Adds a step's piece (of this dimension); pieces must be appended in integration order.)contract"},
     {"PiecewisePolynomial::backward_", R"contract(integrated toward decreasing t (the pieces were reversed))contract"},
@@ -610,14 +614,19 @@ solve_grde. InputError for any of them, or for bad options.)contract"},
     {"RecedingHorizon::n", R"contract(The model's number of states and of inputs.)contract"},
     {"RecedingHorizon::next", R"contract(The window after `previous`, from its q_d at the next t_j.)contract"},
     {"RecedingHorizon::options", R"contract(The window and update period, and the integrator of every window's GRDE.)contract"},
+    {"RecedingHorizon::path_changes", R"contract(The path changes so far: (t_join, u_d), in order.)contract"},
     {"RecedingHorizon::t0", R"contract(The start of the mission (s).)contract"},
     {"RecedingHorizon::window", R"contract(Window j (>= 0) from the desired state q_d(t_j) = q_d_start (n). InputError for a bad j or
 q_d_start; SolverError when the integration fails; ConjugatePointError (naming the window)
 when the GRDE of the window has a conjugate point at gamma.)contract"},
     {"RecedingHorizon::window_at", R"contract(The window whose law is used at t >= t0: floor((t - t0) / update) (a t within 1e-9 of the
 update period's multiple belongs to the later window).)contract"},
+    {"RecedingHorizon::window_inputs", R"contract(The desired inputs of window j: u_d, or those of the last change at or before t_j.)contract"},
     {"RecedingHorizon::window_start", R"contract(t_j = t0 + j * update (s).)contract"},
     {"RecedingHorizon::window_trajectory", R"contract(The desired trajectory of window j alone (no design), as window() integrates it.)contract"},
+    {"RecedingHorizon::with_path_change", R"contract(The changed horizon: from the window that starts at t_join on, u_d is `u_d` (m channels),
+the desired trajectory continuing from q_d(t_join). t_join must be a window start after t0
+and after the last change (InputError otherwise). This horizon stays as it is.)contract"},
     {"RecedingHorizonOptions", R"contract(The window of the receding horizon (scenario table [receding_horizon]).)contract"},
     {"RecedingHorizonOptions::update", R"contract(s: a new window every this long, in (0, H])contract"},
     {"RecedingHorizonOptions::validate", R"contract(InputError naming the option.)contract"},
@@ -634,6 +643,11 @@ update period's multiple belongs to the later window).)contract"},
 it; options as for OnlineController (a filter gives output feedback); kappa the gain scaling.
 InputError for a null horizon, a period that does not divide the update period, or bad
 options.)contract"},
+    {"RecedingOnlineController::change_path", R"contract(A path changed under way (RecedingHorizon::with_path_change): the windows from the one that
+starts at t_join on follow u_d (a new plan from the desired state there). t_join must be the
+start of a window not yet solved: at least one update period after the window last handed
+over, and not the one being solved (InputError otherwise, or before reset()). Takes the
+solver's lock: from any thread but not in the stepping thread's real-time loop.)contract"},
     {"RecedingOnlineController::controller", R"contract(The online controller that steps (its law is the window in use); InputError before reset().)contract"},
     {"RecedingOnlineController::finished_", R"contract(the highest window index solved or failed)contract"},
     {"RecedingOnlineController::options", R"contract(The options of every window's OnlineController.)contract"},
@@ -641,11 +655,13 @@ options.)contract"},
 from q_d0 up to the window of t, which is solved here (blocking; ConjugatePointError when it
 has no design at gamma), and the solver's thread starts on the next one. Stops a thread that
 runs. May allocate and throw; step() does neither.)contract"},
+    {"RecedingOnlineController::solving_", R"contract(the window being solved outside the lock (-1: none))contract"},
     {"RecedingOnlineController::status", R"contract(What the horizon has done (takes a lock: not from the stepping thread in real time).)contract"},
     {"RecedingOnlineController::step", R"contract(One sample, as OnlineController::step; report.window_stale when the law in use is past its
 update period. Never throws, never allocates, takes no lock.)contract"},
     {"RecedingOnlineController::synchronize", R"contract(Blocks until every window that starts at or before t has been solved (handed over, or
 failed). For simulations and tests, not for a vehicle's loop.)contract"},
+    {"RecedingOnlineController::update_", R"contract(the horizon's update period and t0, for step())contract"},
     {"RecedingOnlineController::work_once", R"contract(One unit of the solver's work: take back a law left behind, or solve and hand over the next
 window. False when there is nothing to do now.)contract"},
     {"RecedingOnlineStatus", R"contract(What the receding horizon of an online controller has done since reset().)contract"},
@@ -773,6 +789,8 @@ empty take the defaults that resolved() fills in.)contract"},
     {"Scenario::model", R"contract(the design model: desired trajectory, GRDE, controller, estimator)contract"},
     {"Scenario::name", R"contract(for results and messages (a file's stem by default))contract"},
     {"Scenario::output_dt", R"contract([output] dt)contract"},
+    {"Scenario::path_change", R"contract([path_change]: a new path from t on (with
+[receding_horizon] in the continuous loop))contract"},
     {"Scenario::plant", R"contract([plant]: the vehicle the closed loop integrates (its f, G, D),
 when it differs from the design model; null: the design model.
 Same structure as the model (check_plant).)contract"},
@@ -1279,7 +1297,11 @@ Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
     has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
     seconds; the receding horizon never reaches them).
 The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
-is a finite-horizon game of its own (receding_horizon_gamma_star).)contract"},
+is a finite-horizon game of its own (receding_horizon_gamma_star).
+
+A path changed under way (with_path_change): from the window that starts at t_join on, the
+windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
+that state); the windows before it keep the old inputs to their ends.)contract"},
     {"control/riccati.hpp", R"contract(The matrix Riccati differential equations of the paper, solved along a desired trajectory.
 
 GRDE, paper eq. (13), solved BACKWARD from Z(tf) = Qf:

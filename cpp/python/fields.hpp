@@ -129,6 +129,10 @@ struct Fields<StepReport> {
                       field("window_stale", &StepReport::window_stale));
 };
 template <>
+struct Fields<PathChange> {
+  static constexpr auto list = std::make_tuple(field("t", &PathChange::t), field("u_d", &PathChange::u_d));
+};
+template <>
 struct Fields<DesiredStates> {
   static constexpr auto list = std::make_tuple(field("t", &DesiredStates::t), field("q", &DesiredStates::q),
                                                field("max_defect", &DesiredStates::max_defect));
@@ -367,6 +371,8 @@ bool same(const V& a, const V& b) {
   } else if constexpr (is_vector<V>::value) {
     return std::equal(a.begin(), a.end(), b.begin(), b.end(),
                       [](const auto& x, const auto& y) { return same(x, y); });
+  } else if constexpr (std::is_same_v<V, VectorSignal>) {
+    return a.same_signals(b);
   } else if constexpr (std::is_same_v<V, Metrics>) {
     for (const MetricDefinition& d : metric_table())
       if (!same(a.*(d.value), b.*(d.value))) return false;
@@ -493,12 +499,14 @@ void def_fields(py::class_<T, Options...>& cls, bool writable) {
 }
 
 // The keyword argument of field I with its default from `defaults`; an array's default shows as
-// "..." in the signature (its repr, "array([], shape=(0, 0), dtype=float64)", says nothing).
+// "..." in the signature (its repr, "array([], shape=(0, 0), dtype=float64)", says nothing), an
+// empty VectorSignal as the expression that makes one.
 template <class T, std::size_t I>
 py::arg_v field_arg(const T& defaults) {
   const auto& f = std::get<I>(Fields<T>::list);
   using V = typename std::decay_t<decltype(f)>::Value;
   if constexpr (std::is_base_of_v<Eigen::EigenBase<V>, V>) return py::arg_v(f.name, defaults.*(f.member), "...");
+  else if constexpr (std::is_same_v<V, VectorSignal>) return py::arg_v(f.name, defaults.*(f.member), "VectorSignal([])");
   else return py::arg(f.name) = defaults.*(f.member);
 }
 

@@ -99,6 +99,7 @@ from hinf_cpp._core import (
     RecedingOnlineStatus,
     simulate_sampled_receding_horizon,
     DesiredStates,
+    PathChange,
     RecedingHorizonOptions,
     RecedingHorizonReport,
     HorizonWindow,
@@ -191,7 +192,7 @@ __all__ = [
     "MeasurementUse", "MeasurementUpdate", "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
     "RecedingHorizon", "RecedingHorizonOptions", "HorizonWindow", "RecedingHorizonReport", "simulate_receding_horizon",
     "WindowGammaStar", "receding_horizon_gamma_star", "RecedingOnlineController", "RecedingOnlineStatus",
-    "simulate_sampled_receding_horizon", "DesiredStates",
+    "simulate_sampled_receding_horizon", "DesiredStates", "PathChange",
     # errors
     "HinfError", "SolverError", "ConjugatePointError", "CouplingConditionError",
     "__version__",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -5227,6 +5227,10 @@ class RecedingHorizon:
     The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
     is a finite-horizon game of its own (receding_horizon_gamma_star).
     
+    A path changed under way (with_path_change): from the window that starts at t_join on, the
+    windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
+    that state); the windows before it keep the old inputs to their ends.
+    
     Parameters
     ----------
     model : Model
@@ -5288,6 +5292,10 @@ class RecedingHorizon:
         """
         The window and update period.
         """
+    def path_changes(self) -> list[tuple[float, VectorSignal]]:
+        """
+        The path changes so far: (t_join, u_d), in order.
+        """
     def t0(self) -> float:
         """
         The start of the mission (s).
@@ -5303,6 +5311,10 @@ class RecedingHorizon:
         The window whose law is used at t >= t0: floor((t - t0) / update) (a t within 1e-9 of the
         update period's multiple belongs to the later window).
         """
+    def window_inputs(self, j: typing.SupportsInt | typing.SupportsIndex) -> VectorSignal:
+        """
+        The desired inputs of window j: u_d, or those of the last change at or before t_j.
+        """
     def window_start(self, j: typing.SupportsInt | typing.SupportsIndex) -> float:
         """
         t_j = t0 + j * update (s).
@@ -5310,6 +5322,12 @@ class RecedingHorizon:
     def window_trajectory(self, j: typing.SupportsInt | typing.SupportsIndex, q_d_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> Trajectory:
         """
         The desired trajectory of window j alone (no design), as window() integrates it.
+        """
+    def with_path_change(self, t_join: typing.SupportsFloat | typing.SupportsIndex, u_d: typing.Any) -> RecedingHorizon:
+        """
+        The changed horizon: from the window that starts at t_join on, u_d is `u_d` (m channels),
+        the desired trajectory continuing from q_d(t_join). t_join must be a window start after t0
+        and after the last change (InputError otherwise). This horizon stays as it is.
         """
 class RecedingOnlineStatus:
     """
@@ -5442,6 +5460,14 @@ class RecedingOnlineController:
     """
     def __init__(self, horizon: RecedingHorizon, period: typing.SupportsFloat | typing.SupportsIndex, options: OnlineOptions = ..., kappa: typing.Any = 1.0, background: bool = True) -> None:
         ...
+    def change_path(self, t_join: typing.SupportsFloat | typing.SupportsIndex, u_d: typing.Any) -> None:
+        """
+        A path changed under way (RecedingHorizon::with_path_change): the windows from the one that
+        starts at t_join on follow u_d (a new plan from the desired state there). t_join must be the
+        start of a window not yet solved: at least one update period after the window last handed
+        over, and not the one being solved (InputError otherwise, or before reset()). Takes the
+        solver's lock: from any thread but not in the stepping thread's real-time loop.
+        """
     def controller(self) -> OnlineController:
         """
         The online controller that steps (its law is the window in use); InputError before reset().
@@ -5795,6 +5821,59 @@ class DesiredStates:
     @t.setter
     def t(self, arg0: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> None:
         ...
+class PathChange:
+    """
+    [path_change]: the path changed under way, with [receding_horizon] (receding_horizon.hpp): from
+    the window that starts at t on, the desired trajectory continues from q_d(t) with the inputs u_d.
+    
+    Parameters
+    ----------
+    t : float, default 0.0
+        s: a window's start after t0
+    u_d : VectorSignal, optional
+        the new desired inputs, m channels
+    
+    Notes
+    -----
+    Checked with the scenario (Scenario.validate()); docs/scenarios.md has [path_change].
+    
+    Examples
+    --------
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+    >>> scenario.path_change = hc.PathChange(t=20.0, u_d=hc.VectorSignal([hc.Signal(1.0), hc.Signal(-0.2)]))
+    >>> result = hc.run_scenario(scenario)
+    >>> bool(np.hypot(*result.simulation.q_e()[-1, 3:5]) < 0.1)      # on the new path at tf
+    True
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('t', 'u_d')
+    def __eq__(self, arg0: PathChange) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, t: typing.SupportsFloat | typing.SupportsIndex = 0.0, u_d: VectorSignal = ...) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def t(self) -> float:
+        """
+        s: a window's start after t0
+        """
+    @t.setter
+    def t(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def u_d(self) -> VectorSignal:
+        """
+        the new desired inputs, m channels
+        """
+    @u_d.setter
+    def u_d(self, arg0: VectorSignal) -> None:
+        ...
 class SampledDesign:
     """
     Which design a sampled loop runs ([sampling] design).
@@ -5999,6 +6078,9 @@ class Scenario:
         u_d(t), m channels
     desired_states : DesiredStates or None
         [desired] states: q_d given at nodes, each
+    path_change : PathChange or None
+        [path_change]: a new path from t on (with
+        [receding_horizon] in the continuous loop)
     gamma : float
         interval integrated from its node; none: q_d integrated from q0
         > 0, may be +inf (LQR)
@@ -6216,6 +6298,15 @@ class Scenario:
         """
     @output_dt.setter
     def output_dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def path_change(self) -> PathChange | None:
+        """
+        [path_change]: a new path from t on (with
+        [receding_horizon] in the continuous loop)
+        """
+    @path_change.setter
+    def path_change(self, arg0: PathChange | None) -> None:
         ...
     @property
     def plant(self) -> Model | None:
@@ -7158,6 +7249,10 @@ def receding_horizon_gamma_star(horizon: RecedingHorizon, tf: typing.SupportsFlo
     The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
     is a finite-horizon game of its own (receding_horizon_gamma_star).
     
+    A path changed under way (with_path_change): from the window that starts at t_join on, the
+    windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
+    that state); the windows before it keep the old inputs to their ends.
+    
     Parameters
     ----------
     horizon : RecedingHorizon
@@ -7652,6 +7747,10 @@ def simulate_receding_horizon(horizon: RecedingHorizon, disturbance: typing.Any,
         seconds; the receding horizon never reaches them).
     The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
     is a finite-horizon game of its own (receding_horizon_gamma_star).
+    
+    A path changed under way (with_path_change): from the window that starts at t_join on, the
+    windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
+    that state); the windows before it keep the old inputs to their ends.
     
     Parameters
     ----------

@@ -314,3 +314,74 @@ TEST(RecedingOnline, ErrorsAreNamed) {
 }
 
 }  // namespace online
+
+// ---- a path changed under way ----
+
+namespace path_change {
+
+hinf::VectorSignal turn(double rate) {
+  return hinf::VectorSignal(std::vector<hinf::Signal>{hinf::Signal(1.0), hinf::Signal(rate)});
+}
+
+TEST(PathChange, TheVehicleJoinsTheNewPath) {
+  const hinf::Scenario s = fig1();
+  const hinf::RecedingHorizon horizon = horizon_of(s, 10.0, 1.0);
+  const auto changed = horizon.with_path_change(20.0, turn(-0.2));
+  hinf::RecedingHorizonReport report;
+  const hinf::SimulationResult run = hinf::simulate_receding_horizon(
+      *changed, hinf::Disturbance(s.disturbance), s.initial_q0, s.tf, s.simulation_options(), nullptr, s.kappa,
+      &report);
+  ASSERT_EQ(run.status, hinf::RunStatus::Completed) << run.status_message;
+  // The new path: from q_d(20) of the old one, turning at -0.2 rad/s (an independent integration
+  // from the state the old path has at 20 s).
+  const hinf::Trajectory old_path(s.model, s.desired_q0, s.desired_u, 0.0, 20.0);
+  const hinf::Trajectory new_path(s.model, old_path.q_d(20.0), turn(-0.2), 20.0, 40.0);
+  const Eigen::Index last = run.t.size() - 1;
+  // q_d of the run is the new path (two integrations at rtol 1e-10 over 40 s)...
+  EXPECT_LT((run.q_d.row(last).transpose() - new_path.q_d(40.0)).cwiseAbs().maxCoeff(), 1e-6);
+  // ... more than a metre away from the old one ...
+  const hinf::Trajectory unchanged(s.model, s.desired_q0, s.desired_u, 0.0, 40.0);
+  EXPECT_GT((new_path.q_d(40.0) - unchanged.q_d(40.0)).head(5).tail(2).norm(), 1.0);
+  // ... and the vehicle is on it: the paper's run ends within 0.04 m of its path; a join 20 s
+  // before the end leaves it as close (the disturbance, not the join, sets the final error).
+  const double final_error = run.q_e().row(last).segment(3, 2).norm();
+  EXPECT_LT(final_error, 0.1);
+}
+
+TEST(PathChange, WindowsUseTheInputsOfTheirStart) {
+  const hinf::Scenario s = fig1();
+  const hinf::RecedingHorizon horizon = horizon_of(s, 10.0, 1.0);
+  const auto changed = horizon.with_path_change(20.0, turn(-0.2))->with_path_change(30.0, turn(0.1));
+  EXPECT_TRUE(changed->window_inputs(19).same_signals(s.desired_u));
+  EXPECT_TRUE(changed->window_inputs(20).same_signals(turn(-0.2)));
+  EXPECT_TRUE(changed->window_inputs(29).same_signals(turn(-0.2)));
+  EXPECT_TRUE(changed->window_inputs(35).same_signals(turn(0.1)));
+  EXPECT_TRUE(horizon.path_changes().empty());  // the horizon changed is a copy
+  EXPECT_THROW(horizon.with_path_change(20.5, turn(0.0)), hinf::InputError);   // not a window start
+  EXPECT_THROW(horizon.with_path_change(0.0, turn(0.0)), hinf::InputError);    // at t0
+  EXPECT_THROW(changed->with_path_change(25.0, turn(0.0)), hinf::InputError);  // before the last change
+  EXPECT_THROW(horizon.with_path_change(25.0, hinf::VectorSignal::zeros(3)), hinf::InputError);
+}
+
+TEST(PathChange, OnlineControllerTakesItAheadOfTheWindow) {
+  const hinf::Scenario s = fig1();
+  hinf::RecedingOnlineController controller(online::shared_horizon(s, 10.0, 1.0, s.gamma), 0.05);
+  controller.reset(0.0, s.initial_q0);
+  Vec u(2), q = s.initial_q0;
+  for (int k = 0; k <= 300; ++k) {  // to 15 s
+    controller.synchronize(0.05 * k);
+    controller.step(0.05 * k, q.data(), 0.05 * k, u.data());
+  }
+  // Window 16 solved (synchronize waits for it) and offered: too late to change it.
+  controller.synchronize(16.0);
+  EXPECT_THROW(controller.change_path(16.0, turn(-0.2)), hinf::InputError);
+  controller.change_path(20.0, turn(-0.2));
+  for (int k = 301; k <= 420; ++k) {  // to 21 s
+    controller.synchronize(0.05 * k);
+    controller.step(0.05 * k, q.data(), 0.05 * k, u.data());
+  }
+  EXPECT_EQ(controller.status().window_in_use, 21);
+  EXPECT_TRUE(controller.controller().law().trajectory().u_d_signal().same_signals(turn(-0.2)));
+}
+
+}  // namespace path_change

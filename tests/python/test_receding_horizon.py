@@ -184,3 +184,40 @@ def test_desired_states_round_trip_and_defects(tmp_path):
     path.write_text(re.sub(r"max_defect = \S+", "max_defect = -1.0", text))
     with pytest.raises(ValueError, match="max_defect"):
         hc.run_scenario(hc.load_scenario(path))
+
+
+def test_path_change_in_a_scenario_file_and_online(tmp_path):
+    path = tmp_path / "change.toml"
+    path.write_text(fig1_text("[receding_horizon]\nwindow = 10.0\n\n[path_change]\nt = 20.0\nu1 = 1.0\nu2 = -0.2\n"))
+    scenario = hc.load_scenario(path)
+    assert scenario.path_change.t == 20.0
+    again = pickle.loads(pickle.dumps(scenario))
+    assert again.path_change == scenario.path_change
+    result = hc.run_scenario(scenario)
+    unchanged = hc.Trajectory(scenario.model, scenario.desired_q0, scenario.desired_u, 0.0, 40.0)
+    # The run's q_d is the new path (the C++ tests check it against its own integration).
+    assert np.hypot(*(result.simulation.q_d[-1, 3:5] - unchanged.q_d(40.0)[3:5])) > 1.0
+    horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], U_D, 0.0, np.eye(6), np.eye(6), 5.0,
+                                 hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    changed = horizon.with_path_change(20.0, [1.0, -0.2])
+    assert [t for t, _ in changed.path_changes()] == [20.0] and horizon.path_changes() == []
+    controller = hc.RecedingOnlineController(horizon, 0.1, background=False)
+    with pytest.raises(ValueError, match="before reset"):
+        controller.change_path(20.0, [1.0, -0.2])
+    controller.reset(0.0, Q0)
+    controller.change_path(20.0, [1.0, -0.2])
+    with pytest.raises(ValueError, match="window's start"):
+        controller.change_path(25.5, [1.0, 0.0])
+
+
+@pytest.mark.parametrize("extra, match", [
+    ("[path_change]\nt = 20.0\nu1 = 1.0\nu2 = 0.0\n", r"add \[receding_horizon\]"),
+    ("[receding_horizon]\nwindow = 10.0\n[path_change]\nt = 50.0\nu1 = 1.0\nu2 = 0.0\n", "inside the horizon"),
+    ("[receding_horizon]\nwindow = 10.0\n[path_change]\nt = 20.5\nu1 = 1.0\nu2 = 0.0\n", "window's start"),
+    ("[receding_horizon]\nwindow = 10.0\n[path_change]\nu1 = 1.0\nu2 = 0.0\n", "t"),
+])
+def test_path_change_errors(tmp_path, extra, match):
+    path = tmp_path / "bad.toml"
+    path.write_text(fig1_text(extra))
+    with pytest.raises(ValueError, match=match):
+        hc.run_scenario(hc.load_scenario(path))

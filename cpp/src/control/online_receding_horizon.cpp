@@ -15,6 +15,7 @@ RecedingOnlineController::RecedingOnlineController(std::shared_ptr<const Recedin
   require(horizon_ != nullptr, "the receding-horizon controller needs a RecedingHorizon");
   require(std::isfinite(period_) && period_ > 0.0, "the controller's period must be > 0 s, got ", period_);
   update_ = horizon_->options().update;
+  t0_ = horizon_->t0();
   const double ratio = update_ / period_;
   require(ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio,
           "the receding horizon's update period (", update_, " s) must be a whole multiple of the controller's period ",
@@ -79,12 +80,15 @@ bool RecedingOnlineController::work_once() {
   }
   int j;
   Vec q_start;
+  std::shared_ptr<const RecedingHorizon> horizon;  // as it is now: a path change may replace it
   {
     std::lock_guard<std::mutex> lock(mutex_);
     j = next_window_;
     q_start = next_q_start_;
+    horizon = horizon_;
+    solving_ = j;
   }
-  const RecedingHorizon& h = *horizon_;
+  const RecedingHorizon& h = *horizon;
   std::string failure;
   TrajectoryPtr trajectory;
   SampledLawPtr law;
@@ -97,6 +101,7 @@ bool RecedingOnlineController::work_once() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     ++next_window_;
+    solving_ = -1;
     if (trajectory) {
       next_q_start_ = trajectory->q_d(h.window_start(j + 1));
     } else {
@@ -133,7 +138,9 @@ void RecedingOnlineController::run_thread() {
 
 void RecedingOnlineController::synchronize(double t) {
   require(controller_ != nullptr, "synchronize() before reset()");
-  const int j = horizon_->window_at(t);
+  require(std::isfinite(t) && t >= t0_, "synchronize at t = ", t, " before the horizon's t0 = ", t0_);
+  // horizon_->window_at(t), without reading horizon_ (change_path may replace it meanwhile).
+  const int j = static_cast<int>(std::floor((t - t0_) / update_ + 1e-9));
   if (!background_) {
     for (;;) {
       bool stopped;
@@ -153,7 +160,7 @@ StepReport RecedingOnlineController::step(double t_now, const double* measuremen
   if (controller_ == nullptr) return StepReport();
   StepReport report = controller_->step(t_now, measurement, t_meas, u);
   const SampledLaw& law = controller_->law();
-  const int j = static_cast<int>(std::lround((law.t0() - horizon_->t0()) / update_));
+  const int j = static_cast<int>(std::lround((law.t0() - t0_) / update_));
   in_use_.store(j, std::memory_order_relaxed);
   // The law in use is older than its update period: the next window is late or failed.
   if (report.status == StepStatus::Ok && t_now >= law.t0() + update_ * (1.0 - 1e-9)) {
@@ -161,6 +168,19 @@ StepReport RecedingOnlineController::step(double t_now, const double* measuremen
     stale_steps_.fetch_add(1, std::memory_order_relaxed);
   }
   return report;
+}
+
+void RecedingOnlineController::change_path(double t_join, VectorSignal u_d) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  require(controller_ != nullptr, "change_path() before reset()");
+  require(!u_d.is_function(), "the online controller needs the new path's u_d as signals (constants, harmonics or"
+          " tables), not a function of t");
+  std::shared_ptr<const RecedingHorizon> changed = horizon_->with_path_change(t_join, std::move(u_d));
+  const int j = horizon_->window_at(t_join);
+  const int first_free = solving_ >= 0 ? solving_ + 1 : next_window_;
+  require(j >= first_free, "the path change at t = ", t_join, " s joins window ", j, ", which is solved already: the"
+          " first window free to change starts at ", horizon_->window_start(first_free), " s");
+  horizon_ = std::move(changed);
 }
 
 RecedingOnlineStatus RecedingOnlineController::status() const {

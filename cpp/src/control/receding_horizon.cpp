@@ -53,11 +53,33 @@ int RecedingHorizon::window_at(double t) const {
   return static_cast<int>(std::floor(position + 1e-9));
 }
 
+std::shared_ptr<const RecedingHorizon> RecedingHorizon::with_path_change(double t_join, VectorSignal u_d) const {
+  require(std::isfinite(t_join) && t_join > t0_, "a path change joins after t0 = ", t0_, " s, got t_join = ", t_join);
+  const int j = window_at(t_join);
+  require(std::abs(window_start(j) - t_join) <= 1e-9 * std::max(1.0, std::abs(t_join)),
+          "a path change joins at a window's start t0 + j * update (update = ", options_.update, " s), got t_join = ",
+          t_join, " (the nearest: ", window_start(j), " s)");
+  require(changes_.empty() || t_join > changes_.back().first, "a path change joins after the last one (at ",
+          changes_.empty() ? t0_ : changes_.back().first, " s), got t_join = ", t_join);
+  require(u_d.dim() == model_->m(), "the new path's u_d has ", u_d.dim(), " channels, the model '", model_->name(),
+          "' has ", model_->m(), " inputs");
+  auto changed = std::make_shared<RecedingHorizon>(*this);
+  changed->changes_.emplace_back(window_start(j), std::move(u_d));
+  return changed;
+}
+
+const VectorSignal& RecedingHorizon::window_inputs(int j) const {
+  const double t = window_start(j) + 1e-9 * options_.update;
+  for (auto it = changes_.rbegin(); it != changes_.rend(); ++it)
+    if (it->first <= t) return it->second;
+  return u_d_;
+}
+
 TrajectoryPtr RecedingHorizon::window_trajectory(int j, const Vec& q_d_start) const {
   require(j >= 0, "a receding-horizon window's index must be >= 0, got ", j);
   check_size(q_d_start, n(), str_cat("the desired state at the start of window ", j));
   const double t_start = window_start(j);
-  return std::make_shared<const Trajectory>(model_, q_d_start, u_d_, t_start, t_start + options_.window,
+  return std::make_shared<const Trajectory>(model_, q_d_start, window_inputs(j), t_start, t_start + options_.window,
                                             trajectory_options_);
 }
 

@@ -21,7 +21,7 @@ namespace {
 
 const std::vector<std::string> kTopLevelKeys{"name",       "description", "model",   "plant",   "horizon",
                                              "desired",    "controller",  "disturbance", "initial", "measurement",
-                                             "sampling",   "receding_horizon", "solver", "output"};
+                                             "sampling",   "receding_horizon", "path_change", "solver", "output"};
 
 // [plant]: a model section with the keys of [model]. Its kind defaults to [model]'s; with the
 // same kind, a key not given is [model]'s (for kind = "casadi", each name of [plant.parameters]
@@ -220,6 +220,21 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
     rh.window = r.number("window");
     rh.update = r.number_or("update", rh.update);
     s.receding_horizon = rh;
+  }
+  if (const toml::table* table = section(root, "path_change", source, false)) {
+    std::vector<std::string> known{"t"};
+    if (sized) {
+      for (int i = 1; i <= m; ++i) known.push_back(str_cat("u", i));
+    } else {
+      for (const std::string& key : numbered_keys(*table, "u")) known.push_back(key);
+    }
+    TableReader r(*table, "[path_change]", source, known);
+    PathChange change;
+    change.t = r.number("t");
+    std::vector<Signal> inputs;
+    for (std::size_t i = 1; i < known.size(); ++i) inputs.push_back(r.signal(known[i]));
+    if (sized) change.u_d = VectorSignal(std::move(inputs));
+    s.path_change = std::move(change);
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
     TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});

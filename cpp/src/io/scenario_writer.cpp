@@ -89,6 +89,11 @@ std::string scenario_toml(const Scenario& s) {
     if (sp.limits.rate_max.size() > 0) sampling.insert("rate_max", vector_toml(sp.limits.rate_max));
     root.insert("sampling", std::move(sampling));
   }
+  if (s.path_change) {
+    toml::table change{{"t", s.path_change->t}};
+    insert_vector_signal(change, "u", s.path_change->u_d, "[path_change] u_d", /*all_channels=*/true);
+    root.insert("path_change", std::move(change));
+  }
   if (s.receding_horizon)
     root.insert("receding_horizon",
                 toml::table{{"window", s.receding_horizon->window}, {"update", s.receding_horizon->update}});

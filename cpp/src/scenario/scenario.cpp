@@ -148,6 +148,13 @@ void Scenario::validate_settings() const {
     require(std::isfinite(ds.max_defect) && ds.max_defect > 0.0, "[desired] max_defect must be > 0, got ",
             ds.max_defect);
   }
+  if (path_change) {
+    require(receding_horizon.has_value() && !sampling, "[path_change] changes the path of a receding-horizon run in"
+            " the continuous loop: add [receding_horizon] (without [sampling]; the online controller takes a path"
+            " change through RecedingOnlineController.change_path)");
+    require(std::isfinite(path_change->t) && path_change->t > t0 && path_change->t < tf,
+            "[path_change] t must be inside the horizon (", t0, ", ", tf, ") s, got ", path_change->t);
+  }
   if (receding_horizon) {
     require(!desired_states, "[receding_horizon] integrates each window from the end of the one before; [desired]"
             " states (a trajectory given at nodes) has no receding-horizon form yet: remove one of the two");
@@ -181,6 +188,9 @@ void Scenario::validate() const {
   const int n = model->n(), m = model->m(), nw = model->nw();
   check_size(desired_q0, n, "[desired] q0");
   validate_model(*model, t0, desired_q0);
+  if (path_change)
+    require(path_change->u_d.dim() == m, "[path_change] needs ", m, " input signals (u1..u", m, "), got ",
+            path_change->u_d.dim());
   if (desired_states) {
     const RowMat& q = desired_states->q;
     require(q.rows() == static_cast<Eigen::Index>(desired_states->t.size()) && q.cols() == n,
@@ -300,6 +310,7 @@ ScenarioDesign design_scenario(const Scenario& s) {
       // window's trajectory, for the model and the results.
       design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf,
                                                                design_gamma(s), *s.receding_horizon, s.solver);
+      if (s.path_change) design.horizon = design.horizon->with_path_change(s.path_change->t, s.path_change->u_d);
       design.trajectory = design.horizon->window_trajectory(0, s.desired_q0);
       design.seconds = seconds_since(start);
       return design;
@@ -353,7 +364,9 @@ bool same_design(const Scenario& a, const Scenario& b) {
          same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b) &&
          a.receding_horizon.has_value() == b.receding_horizon.has_value() &&
          (!a.receding_horizon || (a.receding_horizon->window == b.receding_horizon->window &&
-                                  a.receding_horizon->update == b.receding_horizon->update));
+                                  a.receding_horizon->update == b.receding_horizon->update)) &&
+         a.path_change.has_value() == b.path_change.has_value() &&
+         (!a.path_change || (a.path_change->t == b.path_change->t && a.path_change->u_d.same_signals(b.path_change->u_d)));
 }
 
 std::size_t design_hash(const Scenario& s) {
@@ -409,7 +422,7 @@ SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& r
                                 status.failed_t_start, design.horizon->gamma());
     RecedingHorizonReport& report = receding.emplace();
     report.options = design.horizon->options();
-    report.windows = status.windows_solved;
+    report.windows = status.window_in_use + 1;  // used (one more may be solved ahead, by the thread's timing)
   } else {
     const SampledLawPtr law =
         sp.design == SampledDesign::Emulated

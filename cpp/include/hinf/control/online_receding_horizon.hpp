@@ -73,6 +73,12 @@ class RecedingOnlineController {
   void synchronize(double t);
   // What the horizon has done (takes a lock: not from the stepping thread in real time).
   RecedingOnlineStatus status() const;
+  // A path changed under way (RecedingHorizon::with_path_change): the windows from the one that
+  // starts at t_join on follow u_d (a new plan from the desired state there). t_join must be the
+  // start of a window not yet solved: at least one update period after the window last handed
+  // over, and not the one being solved (InputError otherwise, or before reset()). Takes the
+  // solver's lock: from any thread but not in the stepping thread's real-time loop.
+  void change_path(double t_join, VectorSignal u_d);
 
  private:
   // One unit of the solver's work: take back a law left behind, or solve and hand over the next
@@ -94,13 +100,14 @@ class RecedingOnlineController {
   std::thread thread_;
   bool stop_ = false;
   int next_window_ = 0;
+  int solving_ = -1;  // the window being solved outside the lock (-1: none)
   Vec next_q_start_;
   RecedingOnlineStatus status_;
   std::atomic<int> finished_{-1};  // the highest window index solved or failed
   // The stepping side.
   std::atomic<int> in_use_{-1};
   std::atomic<long> stale_steps_{0};
-  double update_ = 0.0;
+  double update_ = 0.0, t0_ = 0.0;  // the horizon's update period and t0, for step()
 };
 
 }  // namespace hinf

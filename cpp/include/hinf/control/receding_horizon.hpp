@@ -14,10 +14,17 @@
 //     seconds; the receding horizon never reaches them).
 // The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
 // is a finite-horizon game of its own (receding_horizon_gamma_star).
+//
+// A path changed under way (with_path_change): from the window that starts at t_join on, the
+// windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
+// that state); the windows before it keep the old inputs to their ends.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "hinf/control/analysis.hpp"
 #include "hinf/control/disturbance.hpp"
@@ -77,6 +84,15 @@ class RecedingHorizon {
   const RecedingHorizonOptions& options() const { return options_; }
   const SolverOptions& solver() const { return solver_; }
 
+  // The changed horizon: from the window that starts at t_join on, u_d is `u_d` (m channels),
+  // the desired trajectory continuing from q_d(t_join). t_join must be a window start after t0
+  // and after the last change (InputError otherwise). This horizon stays as it is.
+  std::shared_ptr<const RecedingHorizon> with_path_change(double t_join, VectorSignal u_d) const;
+  // The path changes so far: (t_join, u_d), in order.
+  const std::vector<std::pair<double, VectorSignal>>& path_changes() const { return changes_; }
+  // The desired inputs of window j: u_d, or those of the last change at or before t_j.
+  const VectorSignal& window_inputs(int j) const;
+
   // t_j = t0 + j * update (s).
   double window_start(int j) const { return t0_ + j * options_.update; }
   // The window whose law is used at t >= t0: floor((t - t0) / update) (a t within 1e-9 of the
@@ -103,6 +119,7 @@ class RecedingHorizon {
   RecedingHorizonOptions options_;
   SolverOptions solver_;
   TrajectoryOptions trajectory_options_;
+  std::vector<std::pair<double, VectorSignal>> changes_;
 };
 
 // What a receding-horizon run solved and held.

@@ -40,6 +40,13 @@ struct DesiredStates {
   double max_defect = 1e-6;  // the largest defect d_k of an interval allowed (the states' units, > 0)
 };
 
+// [path_change]: the path changed under way, with [receding_horizon] (receding_horizon.hpp): from
+// the window that starts at t on, the desired trajectory continues from q_d(t) with the inputs u_d.
+struct PathChange {
+  double t = 0.0;     // s: a window's start after t0
+  VectorSignal u_d;   // the new desired inputs, m channels
+};
+
 // Which design a sampled loop runs ([sampling] design).
 enum class SampledDesign {
   Emulated,  // the continuous design held over each sample (SampledLaw::emulated)
@@ -111,6 +118,8 @@ struct Scenario {
   std::optional<MeasurementSpec> measurement;  // imperfect measurements; none: state feedback
   std::optional<SamplingSpec> sampling;        // a sampled loop through the online controller;
                                                // none: the continuous loop
+  std::optional<PathChange> path_change;  // [path_change]: a new path from t on (with
+                                          // [receding_horizon] in the continuous loop)
   std::optional<RecedingHorizonOptions> receding_horizon;  // [receding_horizon]: the law designed
                                                // over a moving window (receding_horizon.hpp), state
                                                // feedback in the continuous loop; none: one design
