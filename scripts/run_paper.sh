@@ -9,7 +9,8 @@
 # one-sample delay) in online_loop.txt, and Figure 2 on a 20 Hz vehicle computer
 # (scenarios/paper_fig2_sampled.toml: delay, actuator limits) in sampled/ (a few seconds), and
 # the same controller exported as C99 and run in a vehicle loop written in C
-# (examples/vehicle_loop_c.py, docs/export.md) in exported/ (a few seconds).
+# (examples/vehicle_loop_c.py, docs/export.md) in exported/ (a few seconds), and an hour's
+# mission and Figure 2 over the receding horizon (docs/online.md) in receding/ (a few seconds).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -30,3 +31,9 @@ rm -rf "$OUT/exported.partial"
 mv "$OUT/exported.partial.txt" "$OUT/exported.partial/summary.txt"
 rm -rf "$OUT/exported"
 mv "$OUT/exported.partial" "$OUT/exported"
+# Missions of any length: an hour under the receding horizon with the path changed at 1800 s, and
+# Figure 2 on the 20 Hz computer over the receding horizon (a few seconds).
+.venv/bin/hinf-cpp run scenarios/mission_hour.toml --json "$OUT/receding/mission_hour.json" \
+  --plot "$OUT/receding/mission_hour.png"
+.venv/bin/hinf-cpp run scenarios/paper_fig2_receding.toml --json "$OUT/receding/paper_fig2_receding.json" \
+  --plot "$OUT/receding/paper_fig2_receding.png"
