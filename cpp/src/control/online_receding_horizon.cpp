@@ -128,8 +128,23 @@ void RecedingOnlineController::run_thread() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (!stop_) {
     lock.unlock();
-    const bool worked = work_once();
+    bool worked = true;
+    std::string failure;
+    try {
+      worked = work_once();
+    } catch (const std::exception& e) {
+      // Nothing may leave the thread (that would end the program): the windows stop here, the
+      // last good one serves to its end, and status() says why.
+      failure = e.what();
+    }
     lock.lock();
+    if (!failure.empty()) {
+      ++status_.windows_failed;
+      status_.last_failure = "the receding horizon's solver stopped: " + failure;
+      stop_ = true;
+      wake_.notify_all();
+      break;
+    }
     // Waiting for the switch to the offered window: step() takes no lock, so the thread looks
     // again every millisecond instead of being woken.
     if (!worked) wake_.wait_for(lock, std::chrono::milliseconds(1), [this] { return stop_; });
