@@ -964,7 +964,7 @@ Examples
 >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
 >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
 ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
->>> controller = hc.RecedingOnlineController(horizon, 0.05)
+>>> controller = hc.RecedingOnlineController(horizon, 0.05, background=False)   # no thread: synchronize solves
 >>> controller.reset(0.0, [1.0, 0.0, 0.0, -1.0, -1.0, 0.0])
 >>> status = controller.status()
 >>> status.window_in_use, status.windows_solved, status.windows_failed

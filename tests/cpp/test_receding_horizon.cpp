@@ -217,7 +217,9 @@ TEST(RecedingOnline, Figure1SampledWithinTwoPercentAndIndependentOfTheThread) {
     runs[background] = hinf::simulate_sampled(*trajectory, controller, hinf::Disturbance(s.disturbance),
                                               s.initial_q0, loop_options(s));
     const hinf::RecedingOnlineStatus status = controller.status();
-    EXPECT_EQ(status.windows_solved, 40);
+    // 40 used; the thread may have solved the one after the last before the run ends.
+    EXPECT_GE(status.windows_solved, 40);
+    EXPECT_LE(status.windows_solved, background == 1 ? 41 : 40);
     EXPECT_EQ(status.windows_failed, 0);
     EXPECT_EQ(status.stale_steps, 0);
     EXPECT_EQ(status.window_in_use, 39);
@@ -282,7 +284,9 @@ TEST(RecedingOnline, AFailedWindowKeepsTheLastGoodOneAndSaysSo) {
   // Apart by far more than the bisections' tolerance (1e-5 relative).
   ASSERT_GT(stars[static_cast<std::size_t>(worst)] - below, 1e-3);
   const double gamma = 0.5 * (below + stars[static_cast<std::size_t>(worst)]);
-  hinf::RecedingOnlineController controller(shared_horizon(s, 10.0, 5.0, gamma), 0.05);
+  // Without the thread, so that no window after the run's end is tried (its failure would be the
+  // last one reported).
+  hinf::RecedingOnlineController controller(shared_horizon(s, 10.0, 5.0, gamma), 0.05, {}, hinf::Signal(1.0), false);
   controller.reset(0.0, s.initial_q0);
   const double t_fail = 5.0 * worst;
   Vec u(2);
