@@ -983,7 +983,8 @@ options : OnlineOptions, optional
 kappa : Signal or float, optional
     The gain scaling kappa(t) > 0.
 background : bool, optional
-    Solve the next window on a thread of its own (True); False: synchronize() solves it.
+    Solve the next window on a thread of its own (True); False: synchronize() solves it. A model
+    implemented in Python is always solved by synchronize() (the thread would need the GIL).
 
 Raises
 ------
@@ -1005,8 +1006,13 @@ Examples
 (2, False))").c_str())
       .def(py::init([](std::shared_ptr<const RecedingHorizon> horizon, double period, const OnlineOptions& options,
                        const py::object& kappa, bool background) {
+             require(horizon != nullptr, "RecedingOnlineController needs a RecedingHorizon");
+             // A model implemented in Python is solved on the calling thread: the solver's thread
+             // would wait for the GIL, which Python holds when it deletes the controller (and the
+             // destructor joins that thread).
+             const bool thread = background && !implemented_in_python(&horizon->model());
              return std::make_shared<RecedingOnlineController>(std::move(horizon), period, options,
-                                                               to_signal(kappa, "kappa"), background);
+                                                               to_signal(kappa, "kappa"), thread);
            }),
            py::arg("horizon"), py::arg("period"), py::arg("options") = OnlineOptions{}, py::arg("kappa") = 1.0,
            py::arg("background") = true)

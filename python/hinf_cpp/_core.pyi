@@ -5437,7 +5437,8 @@ class RecedingOnlineController:
     kappa : Signal or float, optional
         The gain scaling kappa(t) > 0.
     background : bool, optional
-        Solve the next window on a thread of its own (True); False: synchronize() solves it.
+        Solve the next window on a thread of its own (True); False: synchronize() solves it. A model
+        implemented in Python is always solved by synchronize() (the thread would need the GIL).
     
     Raises
     ------
