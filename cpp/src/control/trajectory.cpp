@@ -27,11 +27,12 @@ Trajectory::Trajectory(ModelPtr model, std::vector<double> t_nodes, const RowMat
   require(model_ != nullptr, "Trajectory needs a model");
   const std::size_t count = node_times_.size();
   require(count >= 2, "a desired trajectory given as states needs at least two nodes, got ", count);
-  for (std::size_t k = 0; k < count; ++k) {
+  for (std::size_t k = 0; k < count; ++k)
     require(std::isfinite(node_times_[k]), "the desired states' time ", k, " is not finite");
-    require(k == 0 || node_times_[k] > node_times_[k - 1], "the desired states' times must increase: t[", k,
-            "] = ", node_times_[k], " follows t[", k - 1, "] = ", node_times_[k - 1]);
-  }
+  // From k = 1: require() evaluates its message's arguments before it tests the condition.
+  for (std::size_t k = 1; k < count; ++k)
+    require(node_times_[k] > node_times_[k - 1], "the desired states' times must increase: t[", k, "] = ",
+            node_times_[k], " follows t[", k - 1, "] = ", node_times_[k - 1]);
   check_structure(structure_of(*model_));
   require(q_nodes.rows() == static_cast<Eigen::Index>(count) && q_nodes.cols() == model_->n(),
           "the desired states need one row of ", model_->n(), " numbers per time (", count, " x ", model_->n(),
