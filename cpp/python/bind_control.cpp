@@ -796,6 +796,10 @@ Examples
 
 // The receding horizon (receding_horizon.hpp).
 void bind_receding_horizon(py::module_& m) {
+  bind_enum<TerminalWeight>(m, "TerminalWeight", R"(Examples
+--------
+>>> hc.RecedingHorizonOptions(window=10.0, terminal="stationary").terminal
+<TerminalWeight.stationary: 1>)");
   bind_options<RecedingHorizonOptions>(m, "RecedingHorizonOptions", {"RecedingHorizonOptions"}, {}, R"(Raises
 ------
 ValueError
@@ -902,7 +906,13 @@ Examples
            py::arg("t_join"), py::arg("u_d"), doc({"RecedingHorizon::with_path_change"}).c_str())
       .def("path_changes", &RecedingHorizon::path_changes, doc({"RecedingHorizon::path_changes"}).c_str())
       .def("window_inputs", &RecedingHorizon::window_inputs, py::arg("j"),
-           doc({"RecedingHorizon::window_inputs"}).c_str());
+           doc({"RecedingHorizon::window_inputs"}).c_str())
+      .def("terminal_weight", &RecedingHorizon::terminal_weight, py::arg("j"), py::arg("window"),
+           doc({"RecedingHorizon::terminal_weight"}).c_str())
+      .def("desired_state", &RecedingHorizon::desired_state, py::arg("t"), py::call_guard<ComputationScope>(),
+           doc({"RecedingHorizon::desired_state"}).c_str())
+      .def("reference", &RecedingHorizon::reference, py::arg("tf"), py::call_guard<ComputationScope>(),
+           doc({"RecedingHorizon::reference"}).c_str());
 
   m.def("simulate_receding_horizon",
         [](const RecedingHorizon& horizon, const py::object& disturbance, const Vec& q0, double tf,
@@ -1070,7 +1080,8 @@ Examples
 ----------
 trajectory : Trajectory
     The reference: the desired trajectory over [t0, tf] from the horizon's q_d0 with its u_d
-    (the run's q_d series and divergence bound; the windows chain into it).
+    (the run's q_d series and divergence bound; the windows chain into it);
+    ``horizon.reference(tf)`` gives it, path changes included.
 controller : RecedingOnlineController
     The controller, reset here at t0; synchronized before every step.
 disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
@@ -1444,6 +1455,40 @@ array([ 0.219, 20.815])
 >>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), np.inf)
 >>> bool(np.all(np.linalg.eigvalsh(design.Z(0.0) - lqr.Z(0.0)) >= 0))  # Z grows as gamma falls
 True)").c_str());
+  m.def("solve_game_are", &solve_game_are, py::arg("A"), py::arg("B"), py::arg("D"), py::arg("Q"), py::arg("gamma"),
+        doc({"solve_game_are", "control/riccati.hpp"}, R"(Parameters
+----------
+A : array_like, shape (n, n)
+    The state matrix.
+B : array_like, shape (n, m)
+    The input matrix.
+D : array_like, shape (n, nw)
+    The disturbance matrix.
+Q : array_like, shape (n, n)
+    Weight of the state, symmetric positive semidefinite.
+gamma : float
+    The attenuation level; ``np.inf`` gives the LQR equation.
+
+Returns
+-------
+numpy.ndarray, shape (n, n)
+    The stabilizing solution P.
+
+Raises
+------
+ValueError
+    Bad sizes or values, or no stabilizing solution (gamma at or below the stationary game's
+    gamma*, or (A, B) not stabilizable).
+
+Examples
+--------
+>>> P = hc.solve_game_are([[0.0, 1.0], [0.0, 0.0]], [[0.0], [1.0]], [[0.0], [1.0]], np.eye(2), np.inf)
+>>> np.round(P, 6)                     # the double integrator's LQR: [[sqrt 3, 1], [1, sqrt 3]]
+array([[1.732051, 1.      ],
+       [1.      , 1.732051]])
+>>> P = hc.solve_game_are([[1.0]], [[1.0]], [[1.0]], [[1.0]], 2.0)   # 2 P + 1 - 0.75 P^2 = 0
+>>> round(float(P[0, 0]), 6), round((2 + np.sqrt(7)) / 1.5, 6)
+(3.097168, 3.097168))").c_str());
   m.def("solve_filter_riccati", &solve_filter_riccati, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},
         py::call_guard<ComputationScope>(), doc({"solve_filter_riccati"}, R"(Parameters

@@ -61,6 +61,7 @@ enum class MeasurementUse;        // control/online_controller.hpp
 enum class Law;                   // scenario/scenario.hpp
 enum class SampledDesign;         // scenario/scenario.hpp
 enum class RunOutcome;            // scenario/study.hpp
+enum class TerminalWeight;        // control/receding_horizon.hpp
 }  // namespace hinf
 
 // ---- enums from their names ----
@@ -102,6 +103,7 @@ HINF_ENUM_CASTER(MeasurementUse);
 HINF_ENUM_CASTER(Law);
 HINF_ENUM_CASTER(SampledDesign);
 HINF_ENUM_CASTER(RunOutcome);
+HINF_ENUM_CASTER(TerminalWeight);
 #undef HINF_ENUM_CASTER
 
 }  // namespace pybind11::detail

@@ -608,6 +608,8 @@ solved on any thread.)contract"},
     {"RecedingHorizon::RecedingHorizon", R"contract(The model, q_d0 and u_d as for a Trajectory (trajectory.hpp); Q (n x n) symmetric positive
 semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf: LQR), as for
 solve_grde. InputError for any of them, or for bad options.)contract"},
+    {"RecedingHorizon::desired_state", R"contract(q_d(t) of the chained windows (path changes included), t >= t0: the windows' trajectories
+integrated from q_d0 up to the window that holds t.)contract"},
     {"RecedingHorizon::first", R"contract(Window 0, from q_d0.)contract"},
     {"RecedingHorizon::gamma", R"contract(The attenuation level of every window (+inf: LQR).)contract"},
     {"RecedingHorizon::model", R"contract(The design model of every window.)contract"},
@@ -615,7 +617,14 @@ solve_grde. InputError for any of them, or for bad options.)contract"},
     {"RecedingHorizon::next", R"contract(The window after `previous`, from its q_d at the next t_j.)contract"},
     {"RecedingHorizon::options", R"contract(The window and update period, and the integrator of every window's GRDE.)contract"},
     {"RecedingHorizon::path_changes", R"contract(The path changes so far: (t_join, u_d), in order.)contract"},
+    {"RecedingHorizon::reference", R"contract(The desired trajectory of a run on [t0, tf] (tf > t0), the reference of its q_d series:
+without path changes one integration from q_d0; with them the chained q_d given as states
+at the window starts (Trajectory's states form), each interval integrated with the inputs in
+effect (a function of t, so not for the online controller, which takes the windows').)contract"},
     {"RecedingHorizon::t0", R"contract(The start of the mission (s).)contract"},
+    {"RecedingHorizon::terminal_weight", R"contract(The weight Z(t_j + H) of window j whose desired trajectory is `window` (window_trajectory):
+Qf, or the stationary game ARE's solution at the window's end (options().terminal).
+InputError naming the window when the ARE has no stabilizing, positive definite solution.)contract"},
     {"RecedingHorizon::window", R"contract(Window j (>= 0) from the desired state q_d(t_j) = q_d_start (n). InputError for a bad j or
 q_d_start; SolverError when the integration fails; ConjugatePointError (naming the window)
 when the GRDE of the window has a conjugate point at gamma.)contract"},
@@ -628,6 +637,7 @@ update period's multiple belongs to the later window).)contract"},
 the desired trajectory continuing from q_d(t_join). t_join must be a window start after t0
 and after the last change (InputError otherwise). This horizon stays as it is.)contract"},
     {"RecedingHorizonOptions", R"contract(The window of the receding horizon (scenario table [receding_horizon]).)contract"},
+    {"RecedingHorizonOptions::terminal", R"contract(the weight at every window's end)contract"},
     {"RecedingHorizonOptions::update", R"contract(s: a new window every this long, in (0, H])contract"},
     {"RecedingHorizonOptions::validate", R"contract(InputError naming the option.)contract"},
     {"RecedingHorizonOptions::window", R"contract(H (s): the length of every window's design, > 0)contract"},
@@ -979,6 +989,9 @@ over the neighbouring steps.)contract"},
     {"SymmetricSolution::t0", R"contract(The horizon [t0, tf] (s), the trajectory's.)contract"},
     {"SymmetricSolution::trajectory", R"contract(The desired trajectory it was solved along.)contract"},
     {"SymmetricSolution::value", R"contract(X(t) (n x n, symmetric) from the dense output; t outside [t0, tf] is an InputError.)contract"},
+    {"TerminalWeight", R"contract(The weight Z(t_j + H) at the end of every window.)contract"},
+    {"TerminalWeight::qf", R"contract(the design's Qf)contract"},
+    {"TerminalWeight::stationary", R"contract(the stabilizing solution of the stationary game ARE at the window's end)contract"},
     {"Timing", R"contract(The wall-clock time of a run's parts (s).)contract"},
     {"Timing::analysis", R"contract(metrics)contract"},
     {"Timing::design", R"contract(desired trajectory, GRDE, eigenvalue bounds of Z)contract"},
@@ -1033,7 +1046,7 @@ Any function of t returning a vector of length dim (e.g. a Python callable).)con
 included: functions cannot be compared.)contract"},
     {"VectorSignal::zeros", R"contract(dim zero channels.)contract"},
     {"WindowGammaStar", R"contract(The largest gamma* (eq. 14) over the windows used on [t0, tf): the gamma a receding-horizon
-run certifies (each window is a game of its own with terminal weight Qf).)contract"},
+run certifies (each window is a game of its own with its terminal weight).)contract"},
     {"WindowGammaStar::converged", R"contract(every window's bisection converged)contract"},
     {"WindowGammaStar::gamma_star", R"contract(the largest window's gamma*)contract"},
     {"WindowGammaStar::result", R"contract(that window's search)contract"},
@@ -1290,8 +1303,12 @@ Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
     j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
     t_j, whose value differs from one integration over the whole mission by the integration
     error only (trajectory.hpp);
-  - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
-    check (ConjugatePointError names the window);
+  - its design is the GRDE solved backward from Z(t_j + H) = the terminal weight, with its own
+    conjugate-point check (ConjugatePointError names the window). The terminal weight is Qf
+    (TerminalWeight::Qf), or the stabilizing solution of the stationary game ARE of the
+    linearization frozen at the window's end (TerminalWeight::Stationary, solve_game_are): the
+    cost-to-go of an infinite horizon beyond the window, so that the window's Z is that of a
+    longer horizon already at its start (for a slowly varying trajectory);
   - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
     Z in use is always at least H - update before its window's end, where the terminal weight
     has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
@@ -1540,8 +1557,8 @@ masses), w4..w6 the measurement-noise channels (D has zero columns there); the m
 y = C q = [x, y, heading] (position and heading or roll angle), noise on w4..w6; the tracking
 error of the heading (roll) angle is wrapped. The error split is the Model default and there
 is no analytic remainder bound (NaN: certificates use their sampled estimate).)contract"},
-    {"needs_planning_toml", R"contract(Whether a scenario document's [desired] gives waypoints, a path or plan options (the planner
-of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
+    {"needs_planning_toml", R"contract(Whether a scenario document's [desired] or [path_change] gives waypoints, a path or plan
+options (the planner of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
 (an InputError for what it refuses).)contract"},
     {"noise_sample_count", R"contract(Number of noise samples held over `period` that cover [t0, tf] (the last may be partial).)contract"},
     {"numerics/cvode.hpp", R"contract(RAII wrapper of SUNDIALS CVODE (6.4) for dy/dt = rhs(t, y), y in R^dim.
@@ -1701,7 +1718,8 @@ scenario), e.g. "kappa = { offset = 1.0 }".)contract"},
     {"read_text_file", R"contract(The whole content of a file; InputError "cannot read <what> '<path>': <reason>" for a file
 that cannot be read (missing, a directory, a read error).)contract"},
     {"receding_horizon_gamma_star", R"contract(Each window's gamma* (gamma_star, analysis.hpp, with the horizon's solver) from t0 to the last
-window that starts before tf, and the largest. The horizon's gamma is not used.)contract"},
+window that starts before tf, and the largest. The horizon's gamma is used only by the
+stationary terminal weight (the ARE at the design's gamma; the search keeps it fixed).)contract"},
     {"register_model_kind", R"contract(Adds a kind to the table. InputError when the name is empty or taken, or read is empty.
 Safe to call from several threads; scenarios read afterwards know the kind.)contract"},
     {"request_interrupt", R"contract(Requests that the running computations stop at their next step (as Ctrl-C does); safe in a
@@ -1835,6 +1853,12 @@ small for this output feedback.)contract"},
     {"solve_filter_riccati", R"contract(Solves the filter Riccati equation (36) forward from Sigma(t0) = Sigma0, with the model's
 measurement matrix C (Model::C), N (p x p) positive definite, Q (n x n) positive
 semidefinite, gamma > 0 (may be +inf: the Kalman-Bucy filter), A = A_e(t).)contract"},
+    {"solve_game_are", R"contract(The stabilizing solution P of the stationary game Riccati equation, the GRDE (13) with its
+derivative zero at constant A, B, D (n x n, n x m, n x nw):
+    A' P + P A + Q - P (B B' - gamma^-2 D D') P = 0,   A - (B B' - gamma^-2 D D') P stable.
+Q (n x n) symmetric positive semidefinite, gamma > 0 (may be +inf: the LQR equation).
+InputError for bad sizes or values, or when there is no stabilizing, positive semidefinite
+solution (gamma at or below the stationary game's gamma*, or (A, B) not stabilizable).)contract"},
     {"solve_grde", R"contract(Solves the GRDE (13) backward from Z(tf) = Qf over the trajectory's horizon.
 Q (n x n) symmetric positive semidefinite, Qf symmetric positive definite, gamma > 0
 (may be +inf). Throws InputError, SolverError or ConjugatePointError.)contract"},

@@ -140,7 +140,8 @@ struct Fields<DesiredStates> {
 template <>
 struct Fields<RecedingHorizonOptions> {
   static constexpr auto list = std::make_tuple(field("window", &RecedingHorizonOptions::window),
-                                               field("update", &RecedingHorizonOptions::update));
+                                               field("update", &RecedingHorizonOptions::update),
+                                               field("terminal", &RecedingHorizonOptions::terminal));
 };
 template <>
 struct Fields<HorizonWindow> {

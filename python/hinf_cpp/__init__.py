@@ -101,6 +101,7 @@ from hinf_cpp._core import (
     DesiredStates,
     PathChange,
     RecedingHorizonOptions,
+    TerminalWeight,
     RecedingHorizonReport,
     HorizonWindow,
     WindowGammaStar,
@@ -157,6 +158,7 @@ from hinf_cpp._core import (
     solve_discrete_output_feedback,
     solve_filter_riccati,
     solve_grde,
+    solve_game_are,
     wrap_angle,
 )
 from hinf_cpp.scenario import load_scenario, scenario_from_dict, scenario_path, signal_from_spec
@@ -175,7 +177,7 @@ __all__ = [
     "GeneratedModel",
     # the design
     "Trajectory", "TrajectoryOptions", "SolverOptions", "Method", "NewtonSystems", "StepStats", "PiecewisePolynomial",
-    "solve_grde", "SymmetricSolution", "RiccatiSolution", "SolveStats", "solve_filter_riccati",
+    "solve_grde", "solve_game_are", "SymmetricSolution", "RiccatiSolution", "SolveStats", "solve_filter_riccati",
     "FilterRiccatiSolution", "grde_escape_time", "filter_escape_time", "gamma_star", "gamma_star_output_feedback",
     "GammaStarOptions", "GammaStarResult", "GammaTrial", "GammaCondition", "max_rho_sigma_z", "certify",
     "Certificates",
@@ -190,7 +192,7 @@ __all__ = [
     "gamma_star_discrete_output_feedback",
     "SampledLaw", "ActuatorLimits", "OnlineFilter", "OnlineOptions", "OnlineController", "StepReport", "StepStatus",
     "MeasurementUse", "MeasurementUpdate", "OnlineCounts", "simulate_sampled", "SampledLoopOptions",
-    "RecedingHorizon", "RecedingHorizonOptions", "HorizonWindow", "RecedingHorizonReport", "simulate_receding_horizon",
+    "RecedingHorizon", "RecedingHorizonOptions", "TerminalWeight", "HorizonWindow", "RecedingHorizonReport", "simulate_receding_horizon",
     "WindowGammaStar", "receding_horizon_gamma_star", "RecedingOnlineController", "RecedingOnlineStatus",
     "simulate_sampled_receding_horizon", "DesiredStates", "PathChange",
     # errors

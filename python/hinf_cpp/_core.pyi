@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -4954,6 +4954,64 @@ class SampledLoopOptions:
     @simulation.setter
     def simulation(self, arg0: SimulationOptions) -> None:
         ...
+class TerminalWeight:
+    """
+    The weight Z(t_j + H) at the end of every window.
+    
+    Parameters
+    ----------
+    value : int
+        The member's number, as its repr shows it.
+    name : str
+        The member's name, one of those below.
+    
+    Attributes
+    ----------
+    qf
+        the design's Qf
+    stationary
+        the stabilizing solution of the stationary game ARE at the window's end
+    
+    Examples
+    --------
+    >>> hc.RecedingHorizonOptions(window=10.0, terminal="stationary").terminal
+    <TerminalWeight.stationary: 1>
+    """
+    __members__: typing.ClassVar[dict[str, TerminalWeight]]
+    qf: typing.ClassVar[TerminalWeight]
+    stationary: typing.ClassVar[TerminalWeight]
+    def __eq__(self: TerminalWeight | str, other: typing.Any) -> bool:
+        ...
+    def __getstate__(self) -> int:
+        ...
+    def __hash__(self) -> int:
+        ...
+    def __index__(self: TerminalWeight | str) -> int:
+        ...
+    @typing.overload
+    def __init__(self, value: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @typing.overload
+    def __init__(self, name: str) -> None:
+        """
+        The member of that name (ValueError listing the names for another).
+        """
+    def __int__(self: TerminalWeight | str) -> int:
+        ...
+    def __ne__(self: TerminalWeight | str, other: typing.Any) -> bool:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, state: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    def __str__(self) -> str:
+        ...
+    @property
+    def name(self) -> str:
+        ...
+    @property
+    def value(self) -> int:
+        ...
 class RecedingHorizonOptions:
     """
     The window of the receding horizon (scenario table [receding_horizon]).
@@ -4964,6 +5022,8 @@ class RecedingHorizonOptions:
         H (s): the length of every window's design, > 0
     update : float, default 1.0
         s: a new window every this long, in (0, H]
+    terminal : TerminalWeight or str, default 'qf'
+        the weight at every window's end
     
     Raises
     ------
@@ -4976,16 +5036,24 @@ class RecedingHorizonOptions:
     RecedingHorizonOptions(window=10.0, update=1.0)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('window', 'update')
+    __match_args__: typing.ClassVar[tuple] = ('window', 'update', 'terminal')
     def __eq__(self, arg0: RecedingHorizonOptions) -> bool:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, window: typing.SupportsFloat | typing.SupportsIndex = 10.0, update: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+    def __init__(self, window: typing.SupportsFloat | typing.SupportsIndex = 10.0, update: typing.SupportsFloat | typing.SupportsIndex = 1.0, terminal: TerminalWeight | str = TerminalWeight.qf) -> None:
         ...
     def __repr__(self) -> str:
         ...
     def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def terminal(self) -> TerminalWeight:
+        """
+        the weight at every window's end
+        """
+    @terminal.setter
+    def terminal(self, arg1: TerminalWeight | str) -> None:
         ...
     @property
     def update(self) -> float:
@@ -5136,7 +5204,7 @@ class RecedingHorizonReport:
 class WindowGammaStar:
     """
     The largest gamma* (eq. 14) over the windows used on [t0, tf): the gamma a receding-horizon
-    run certifies (each window is a game of its own with terminal weight Qf).
+    run certifies (each window is a game of its own with its terminal weight).
     
     Attributes
     ----------
@@ -5218,8 +5286,12 @@ class RecedingHorizon:
         j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
         t_j, whose value differs from one integration over the whole mission by the integration
         error only (trajectory.hpp);
-      - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
-        check (ConjugatePointError names the window);
+      - its design is the GRDE solved backward from Z(t_j + H) = the terminal weight, with its own
+        conjugate-point check (ConjugatePointError names the window). The terminal weight is Qf
+        (TerminalWeight::Qf), or the stabilizing solution of the stationary game ARE of the
+        linearization frozen at the window's end (TerminalWeight::Stationary, solve_game_are): the
+        cost-to-go of an infinite horizon beyond the window, so that the window's Z is that of a
+        longer horizon already at its start (for a slowly varying trajectory);
       - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
         Z in use is always at least H - update before its window's end, where the terminal weight
         has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
@@ -5272,6 +5344,11 @@ class RecedingHorizon:
     """
     def __init__(self, model: Model, q_d0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Any, t0: typing.SupportsFloat | typing.SupportsIndex, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: RecedingHorizonOptions, solver: SolverOptions = ..., trajectory_options: TrajectoryOptions = ...) -> None:
         ...
+    def desired_state(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        q_d(t) of the chained windows (path changes included), t >= t0: the windows' trajectories
+        integrated from q_d0 up to the window that holds t.
+        """
     def first(self) -> HorizonWindow:
         """
         Window 0, from q_d0.
@@ -5296,9 +5373,22 @@ class RecedingHorizon:
         """
         The path changes so far: (t_join, u_d), in order.
         """
+    def reference(self, tf: typing.SupportsFloat | typing.SupportsIndex) -> Trajectory:
+        """
+        The desired trajectory of a run on [t0, tf] (tf > t0), the reference of its q_d series:
+        without path changes one integration from q_d0; with them the chained q_d given as states
+        at the window starts (Trajectory's states form), each interval integrated with the inputs in
+        effect (a function of t, so not for the online controller, which takes the windows').
+        """
     def t0(self) -> float:
         """
         The start of the mission (s).
+        """
+    def terminal_weight(self, j: typing.SupportsInt | typing.SupportsIndex, window: Trajectory) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        The weight Z(t_j + H) of window j whose desired trajectory is `window` (window_trajectory):
+        Qf, or the stationary game ARE's solution at the window's end (options().terminal).
+        InputError naming the window when the ARE has no stabilizing, positive definite solution.
         """
     def window(self, j: typing.SupportsInt | typing.SupportsIndex, q_d_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]) -> HorizonWindow:
         """
@@ -7175,8 +7265,8 @@ def metric_table() -> list[MetricDefinition]:
     """
 def needs_planning_toml(text: str, source: str) -> bool:
     """
-    Whether a scenario document's [desired] gives waypoints, a path or plan options (the planner
-    of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
+    Whether a scenario document's [desired] or [path_change] gives waypoints, a path or plan
+    options (the planner of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
     (an InputError for what it refuses).
     """
 def noise_sample_count(t0: typing.SupportsFloat | typing.SupportsIndex, tf: typing.SupportsFloat | typing.SupportsIndex, period: typing.SupportsFloat | typing.SupportsIndex) -> int:
@@ -7231,7 +7321,8 @@ def parse_signal_toml(text: str, key: str, source: str) -> Signal:
 def receding_horizon_gamma_star(horizon: RecedingHorizon, tf: typing.SupportsFloat | typing.SupportsIndex, options: GammaStarOptions = ...) -> WindowGammaStar:
     """
     Each window's gamma* (gamma_star, analysis.hpp, with the horizon's solver) from t0 to the last
-    window that starts before tf, and the largest. The horizon's gamma is not used.
+    window that starts before tf, and the largest. The horizon's gamma is used only by the
+    stationary terminal weight (the ARE at the design's gamma; the search keeps it fixed).
     
     The receding-horizon design: the GRDE (13) solved over a window that moves with time, so that a
     mission of any length is designed with memory that depends on the window, not on the mission.
@@ -7241,8 +7332,12 @@ def receding_horizon_gamma_star(horizon: RecedingHorizon, tf: typing.SupportsFlo
         j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
         t_j, whose value differs from one integration over the whole mission by the integration
         error only (trajectory.hpp);
-      - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
-        check (ConjugatePointError names the window);
+      - its design is the GRDE solved backward from Z(t_j + H) = the terminal weight, with its own
+        conjugate-point check (ConjugatePointError names the window). The terminal weight is Qf
+        (TerminalWeight::Qf), or the stabilizing solution of the stationary game ARE of the
+        linearization frozen at the window's end (TerminalWeight::Stationary, solve_game_are): the
+        cost-to-go of an infinite horizon beyond the window, so that the window's Z is that of a
+        longer horizon already at its start (for a slowly varying trajectory);
       - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
         Z in use is always at least H - update before its window's end, where the terminal weight
         has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
@@ -7740,8 +7835,12 @@ def simulate_receding_horizon(horizon: RecedingHorizon, disturbance: typing.Any,
         j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
         t_j, whose value differs from one integration over the whole mission by the integration
         error only (trajectory.hpp);
-      - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
-        check (ConjugatePointError names the window);
+      - its design is the GRDE solved backward from Z(t_j + H) = the terminal weight, with its own
+        conjugate-point check (ConjugatePointError names the window). The terminal weight is Qf
+        (TerminalWeight::Qf), or the stabilizing solution of the stationary game ARE of the
+        linearization frozen at the window's end (TerminalWeight::Stationary, solve_game_are): the
+        cost-to-go of an infinite horizon beyond the window, so that the window's Z is that of a
+        longer horizon already at its start (for a slowly varying trajectory);
       - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
         Z in use is always at least H - update before its window's end, where the terminal weight
         has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
@@ -7897,7 +7996,8 @@ def simulate_sampled_receding_horizon(trajectory: Trajectory, controller: Recedi
     ----------
     trajectory : Trajectory
         The reference: the desired trajectory over [t0, tf] from the horizon's q_d0 with its u_d
-        (the run's q_d series and divergence bound; the windows chain into it).
+        (the run's q_d series and divergence bound; the windows chain into it);
+        ``horizon.reference(tf)`` gives it, path changes included.
     controller : RecedingOnlineController
         The controller, reset here at t0; synchronized before every step.
     disturbance : Disturbance, VectorSignal, callable, list of Signal or float, or None
@@ -8186,6 +8286,70 @@ def solve_filter_riccati(trajectory: Trajectory, N: typing.Annotated[numpy.typin
     >>> Sigma = hc.solve_filter_riccati(trajectory, 0.25 * np.eye(3), np.eye(6), 5.0, np.eye(6))
     >>> np.round(Sigma.eigenvalue_bounds(), 3)
     array([0.101, 1.005])
+    """
+def solve_game_are(A: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], B: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], D: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+    """
+    The stabilizing solution P of the stationary game Riccati equation, the GRDE (13) with its
+    derivative zero at constant A, B, D (n x n, n x m, n x nw):
+        A' P + P A + Q - P (B B' - gamma^-2 D D') P = 0,   A - (B B' - gamma^-2 D D') P stable.
+    Q (n x n) symmetric positive semidefinite, gamma > 0 (may be +inf: the LQR equation).
+    InputError for bad sizes or values, or when there is no stabilizing, positive semidefinite
+    solution (gamma at or below the stationary game's gamma*, or (A, B) not stabilizable).
+    
+    The matrix Riccati differential equations of the paper, solved along a desired trajectory.
+    
+    GRDE, paper eq. (13), solved BACKWARD from Z(tf) = Qf:
+        -dZ/dt = A_e' Z + Z A_e + Q - Z (B B' - gamma^-2 D D') Z.
+    Sign convention: Z > 0 is the cost-to-go matrix, V(t, q_e) = q_e' Z(t) q_e; the
+    state-feedback law (17)/(18) is u = u_d - kappa B' Z q_e. gamma = +inf gives LQR. Here
+    A = A_e(t), B = B_e(t) and D = D_e(t), the linearization along the desired trajectory
+    (model.hpp, trajectory.hpp).
+    
+    Filter Riccati equation, paper eq. (36), solved FORWARD from Sigma(t0) = (Q0 - eta I)^-1:
+        dSigma/dt = A Sigma + Sigma A' - Sigma (C' N^-1 C - gamma^-2 Q) Sigma + D D',
+    here with A = A_e(t) (the linearization along the desired path; the output-feedback
+    simulation also offers A(q_hat(t)), see output_feedback.hpp).
+    
+    Both solutions are kept as the integrator's dense output (symmetric half, types.hpp), so
+    they are available at any t in [t0, tf] with the integrator's accuracy. A finite escape
+    (a conjugate point: gamma <= gamma*, eq. 14) raises ConjugatePointError with the
+    estimated escape time. A solution is immutable once solved (no caches; lookups take
+    caller-owned cursors): several threads may evaluate one at once (run_scenarios shares one
+    between runs, study.hpp).
+    
+    Parameters
+    ----------
+    A : array_like, shape (n, n)
+        The state matrix.
+    B : array_like, shape (n, m)
+        The input matrix.
+    D : array_like, shape (n, nw)
+        The disturbance matrix.
+    Q : array_like, shape (n, n)
+        Weight of the state, symmetric positive semidefinite.
+    gamma : float
+        The attenuation level; ``np.inf`` gives the LQR equation.
+    
+    Returns
+    -------
+    numpy.ndarray, shape (n, n)
+        The stabilizing solution P.
+    
+    Raises
+    ------
+    ValueError
+        Bad sizes or values, or no stabilizing solution (gamma at or below the stationary game's
+        gamma*, or (A, B) not stabilizable).
+    
+    Examples
+    --------
+    >>> P = hc.solve_game_are([[0.0, 1.0], [0.0, 0.0]], [[0.0], [1.0]], [[0.0], [1.0]], np.eye(2), np.inf)
+    >>> np.round(P, 6)                     # the double integrator's LQR: [[sqrt 3, 1], [1, sqrt 3]]
+    array([[1.732051, 1.      ],
+           [1.      , 1.732051]])
+    >>> P = hc.solve_game_are([[1.0]], [[1.0]], [[1.0]], [[1.0]], 2.0)   # 2 P + 1 - 0.75 P^2 = 0
+    >>> round(float(P[0, 0]), 6), round((2 + np.sqrt(7)) / 1.5, 6)
+    (3.097168, 3.097168)
     """
 def solve_grde(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: SolverOptions = ...) -> RiccatiSolution:
     """

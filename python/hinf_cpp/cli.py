@@ -132,15 +132,32 @@ def _number(x):
 
 
 def _load_with_plan(path: str):
-    """(scenario, plan or None): a file whose [desired] gives waypoints or a path is planned
-    (cached; docs/planning.md)."""
+    """(scenario, PlannedScenario or None): a file whose [desired] or [path_change] gives
+    waypoints or a path is planned (cached; docs/planning.md)."""
     from hinf_cpp.scenario.planned import load_planned
 
     planned = load_planned(path)
     if planned is None:
         return load_scenario(path), None
     load_scenario(path)  # the warnings of the file (the plan comes from the cache)
-    return planned.scenario, planned.plan
+    return planned.scenario, planned
+
+
+def _planned_what(planned, table: str, plan) -> str:
+    """What a plan of a planned scenario is, for the lines that report it."""
+    if table == "[path_change]":
+        return f"the path change at t = {plan.t0:g} s through {len(plan.waypoints)} waypoints"
+    return f"u_d through {len(plan.waypoints)} waypoints"
+
+
+def _print_plans(planned) -> None:
+    for table, plan in planned.plans():
+        print(f"planned {_planned_what(planned, table, plan)}: {plan.report.summary()}")
+
+
+def _planned_waypoints(planned) -> list:
+    """The waypoints of every plan of a planned scenario (none without one), for the x-y figure."""
+    return [w for _, plan in planned.plans() for w in plan.waypoints] if planned is not None else []
 
 
 def _load_with_settings(path: str, settings: list[str], seed: int | None):
@@ -169,7 +186,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     else:
         scenario, planned = _load_with_plan(args.scenario)
     if planned is not None:
-        print(f"planned u_d through {len(planned.waypoints)} waypoints: {planned.report.summary()}")
+        _print_plans(planned)
     result = _core.run_scenario(scenario)
     if args.gamma_star:
         result.gamma_star = _core.scenario_gamma_star(scenario).gamma_star
@@ -182,7 +199,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         from hinf_cpp.output.plotting import save_figure, xy_figure
 
-        save_figure(xy_figure(result, waypoints=planned.waypoints if planned is not None else ()), args.plot)
+        save_figure(xy_figure(result, waypoints=_planned_waypoints(planned)), args.plot)
     print(summary(result))
     if result.simulation.status != _core.RunStatus.completed:
         print(f"hinf-cpp: warning: the run {result.simulation.status.name}: {result.simulation.status_message}",
@@ -197,22 +214,30 @@ def planned_scenario_text(planned, output) -> str:
     into a cache."""
     from hinf_cpp.scenario.planned import planned_scenario_toml
 
-    plan, report = planned.plan, planned.plan.report
-    lines = [f"# Planned by hinf-cpp plan from {planned.source}: u_d through the waypoints below,",
-             "# as tables with interpolation = \"linear\" (the optimizer's inputs, docs/planning.md).",
-             f"# {report.summary()}.",
-             "# Waypoints:"]
-    lines += [f"#   {j}: {w.describe()}" for j, w in enumerate(plan.waypoints)]
+    lines = []
+    for table, plan in planned.plans():
+        what = "u_d" if table == "[desired]" else f"the inputs of [path_change] (the path from t = {plan.t0:g} s)"
+        lines += [f"# Planned by hinf-cpp plan from {planned.source}: {what} through the waypoints below,",
+                  "# as tables with interpolation = \"linear\" (the optimizer's inputs, docs/planning.md).",
+                  f"# {plan.report.summary()}.",
+                  "# Waypoints:"]
+        lines += [f"#   {j}: {w.describe()}" for j, w in enumerate(plan.waypoints)]
     return "\n".join(lines) + "\n" + planned_scenario_toml(planned, output)
 
 
 def plan_dict(planned) -> dict:
-    """The plan's report for --json: the feasibility check, the solver's effort, the waypoints."""
+    """The plans' reports for --json: the feasibility check, the solver's effort, the waypoints;
+    those of [desired] at the top level, those of [path_change] under "path_change" (with its t)."""
     import dataclasses
 
-    return {"scenario": planned.scenario.name, "model": planned.plan.model.name(),
-            "waypoints": [dataclasses.asdict(w) for w in planned.plan.waypoints],
-            "report": planned.plan.report.to_dict()}
+    document = {"scenario": planned.scenario.name, "model": planned.scenario.model.name()}
+    for table, plan in planned.plans():
+        entry = {"waypoints": [dataclasses.asdict(w) for w in plan.waypoints], "report": plan.report.to_dict()}
+        if table == "[path_change]":
+            document["path_change"] = dict(t=plan.t0, **entry)
+        else:
+            document.update(entry)
+    return document
 
 
 def cmd_plan(args: argparse.Namespace) -> int:
@@ -222,20 +247,24 @@ def cmd_plan(args: argparse.Namespace) -> int:
     planned = load_planned(args.scenario, cache=not args.no_cache)
     if planned is None:
         load_scenario(args.scenario)  # a file that cannot be read or parsed: the reader's message
-        raise ValueError(f"{args.scenario}: [desired] gives no waypoints or path: there is nothing to plan "
-                         "(docs/planning.md)")
+        raise ValueError(f"{args.scenario}: neither [desired] nor [path_change] gives waypoints or a path: there is "
+                         "nothing to plan (docs/planning.md)")
     write_text(args.output, planned_scenario_text(planned, args.output))
-    report = planned.plan.report
-    print(f"scenario {planned.scenario.name}: planned u_d for the {planned.plan.model.name()} model through "
-          f"{len(planned.plan.waypoints)} waypoints")
-    print(f"  {report.summary()}")
-    print(f"  waypoint errors (re-simulated): max {max(report.waypoint_errors):.3g}; IPOPT {report.status}")
+    for table, plan in planned.plans():
+        report = plan.report
+        print(f"scenario {planned.scenario.name}: planned {_planned_what(planned, table, plan)} for the "
+              f"{plan.model.name()} model")
+        print(f"  {report.summary()}")
+        print(f"  waypoint errors (re-simulated): max {max(report.waypoint_errors):.3g}; IPOPT {report.status}")
     if args.json is not None:
         write_text(args.json, json.dumps(plan_dict(planned), indent=2) + "\n")
     if args.plot is not None:
         from hinf_cpp.output.plotting import plan_figure, save_figure
 
-        save_figure(plan_figure(planned.plan, title=f"{planned.scenario.name}: planned"), args.plot)
+        # The plan of [desired], else that of [path_change].
+        table, plan = planned.plans()[0]
+        title = f"{planned.scenario.name}: planned" + ("" if table == "[desired]" else f" {table}")
+        save_figure(plan_figure(plan, title=title), args.plot)
     print(f"wrote {args.output}")
     return 0
 
@@ -467,7 +496,7 @@ def cmd_export_controller(args: argparse.Namespace) -> int:
     _check_outputs(folders=[args.out])
     scenario, planned = _load_with_plan(args.scenario)  # as `run` reads it
     if planned is not None:
-        print(f"planned u_d through {len(planned.waypoints)} waypoints: {planned.report.summary()}")
+        _print_plans(planned)
     exported = export_scenario(scenario, args.out, period=args.sample_period)
     feedback = f"output feedback ({exported.p} measured outputs)" if exported.p else "state feedback"
     print(f"scenario {scenario.name}: {exported.kind} law, {feedback}, every {exported.period:g} s on "

@@ -434,6 +434,60 @@ TEST(GrdeMatrix, LongHorizonApproachesTheAlgebraicRiccatiSolution) {
   for (Eigen::Index i = 0; i < eig.size(); ++i) EXPECT_LT(eig[i].real(), 0.0);
 }
 
+// The stationary game ARE (solve_game_are) against the limit of the GRDE above (lti3, lti6 over
+// 30 s, BDF at rtol 1e-9: Z(0) is the limit within ~1e-8 relative; it was checked against the
+// ARE's residual there) and against closed forms.
+TEST(GameAre, EqualsTheLongHorizonLimitOfTheGrde) {
+  for (const LtiCase& c : {lti3(), lti6()}) {
+    const auto trajectory = lti_trajectory(c.A, c.B, c.D, 0.0, 30.0);
+    const Mat Z0 = hinf::solve_grde(trajectory, c.Q, c.Qf, c.gamma, options_for(Method::BDF, 1e-9, 1e-11))->Z(0.0);
+    const Mat P = hinf::solve_game_are(c.A, c.B, c.D, c.Q, c.gamma);
+    EXPECT_EQ((P - P.transpose()).cwiseAbs().maxCoeff(), 0.0) << c.label;
+    // Two computations: the GRDE's global error ~1e-8 relative (above) and the sign iteration's
+    // ~1e-13; 1e-6 is loose.
+    EXPECT_LT((P - Z0).norm() / Z0.norm(), 1e-6) << c.label;
+  }
+}
+
+TEST(GameAre, ClosedForms) {
+  // Scalar: 2 a P + q - s P^2 = 0, s = b^2 - d^2 / gamma^2 > 0: P = (a + sqrt(a^2 + q s)) / s.
+  for (double gamma : {kInf, 5.0, 2.0, 1.2}) {
+    const double a = 1.0, b = 1.0, d = 1.0, q = 1.0, s = b * b - d * d / (gamma * gamma);
+    const Mat P = hinf::solve_game_are(Mat::Constant(1, 1, a), Mat::Constant(1, 1, b), Mat::Constant(1, 1, d),
+                                       Mat::Constant(1, 1, q), gamma);
+    EXPECT_NEAR(P(0, 0), (a + std::sqrt(a * a + q * s)) / s, 1e-12 * P(0, 0)) << "gamma = " << gamma;
+  }
+  // The double integrator's LQR with Q = I, R = 1: P = [[sqrt 3, 1], [1, sqrt 3]].
+  Mat A(2, 2), B(2, 1);
+  A << 0.0, 1.0, 0.0, 0.0;
+  B << 0.0, 1.0;
+  const Mat P = hinf::solve_game_are(A, B, B, Mat::Identity(2, 2), kInf);
+  Mat exact(2, 2);
+  exact << std::sqrt(3.0), 1.0, 1.0, std::sqrt(3.0);
+  EXPECT_LT((P - exact).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(GameAre, NoStabilizingSolutionIsNamed) {
+  const Mat one = Mat::Constant(1, 1, 1.0);
+  // Scalar, a = b = d = q = 1: s = 1 - gamma^-2. For gamma in (1/sqrt 2, 1) the stabilizing root
+  // is negative (no cost-to-go); below 1/sqrt 2 the Hamiltonian's eigenvalues are imaginary.
+  for (double gamma : {0.9, 0.5}) {
+    try {
+      hinf::solve_game_are(one, one, one, one, gamma);
+      ADD_FAILURE() << "gamma = " << gamma << " below the game's gamma* = 1 was accepted";
+    } catch (const hinf::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("raise gamma"), std::string::npos) << e.what();
+    }
+  }
+  // (A, B) not stabilizable: an unstable mode the input does not reach.
+  Mat A(2, 2), B(2, 1);
+  A << 1.0, 0.0, 0.0, -1.0;
+  B << 0.0, 1.0;
+  EXPECT_THROW(hinf::solve_game_are(A, B, B, Mat::Identity(2, 2), kInf), hinf::InputError);
+  EXPECT_THROW(hinf::solve_game_are(A, Mat::Zero(3, 1), B, Mat::Identity(2, 2), kInf), hinf::InputError);
+  EXPECT_THROW(hinf::solve_game_are(A, B, B, Mat::Identity(2, 2), -1.0), hinf::InputError);
+}
+
 // ======================================================================= the ship
 
 hinf::VectorSignal paper_u_d() {

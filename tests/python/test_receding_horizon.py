@@ -85,11 +85,38 @@ def test_scenario_file_round_trip_and_results_file(tmp_path):
     assert document["receding_horizon"]["peak_bytes"] > 0
 
 
+def test_stationary_terminal_weight_from_a_scenario_file(tmp_path):
+    path = tmp_path / "rh.toml"
+    path.write_text(fig1_text("[receding_horizon]\nwindow = 2.0\nterminal = \"stationary\"\n"))
+    scenario = hc.load_scenario(path)
+    assert scenario.receding_horizon.terminal == hc.TerminalWeight.stationary
+    assert pickle.loads(pickle.dumps(scenario)).receding_horizon == scenario.receding_horizon
+    # The rule reaches the windows: the first window's Z at its end is the game ARE's solution
+    # of the linearization there (SciPy's solve_continuous_are with the indefinite weight
+    # diag(I, -gamma^2 I) on [B D]: an independent solver; both are accurate to ~1e-12 relative).
+    horizon = hc.RecedingHorizon(scenario.model, scenario.desired_q0, scenario.desired_u, 0.0, scenario.Q,
+                                 scenario.Qf, scenario.gamma, scenario.receding_horizon, scenario.solver)
+    window = horizon.first()
+    trajectory, gamma = window.trajectory, scenario.gamma
+    A, B, D = trajectory.A_e(2.0), trajectory.B_e(2.0), trajectory.D_e(2.0)
+    import scipy.linalg
+    weights = np.diag([1.0] * B.shape[1] + [-gamma**2] * D.shape[1])
+    oracle = scipy.linalg.solve_continuous_are(A, np.hstack([B, D]), scenario.Q, weights)
+    assert np.abs(window.design.Z(2.0) - oracle).max() <= 1e-9 * np.abs(oracle).max()
+    # A 2 s window with this rule tracks as the full-horizon design does (tests/cpp: within 2%).
+    result = hc.run_scenario(scenario)
+    assert result.receding_horizon.windows == 40
+    full = hc.run_scenario(hc.load_scenario(hc.scenario_path("paper_fig1")))
+    assert result.metrics.rms_position_error_last_half == pytest.approx(full.metrics.rms_position_error_last_half,
+                                                                         rel=0.02)
+
+
 @pytest.mark.parametrize("extra, match", [
     ("[receding_horizon]\nupdate = 1.0\n", "window"),
     ("[receding_horizon]\nwindow = 5.0\nupdate = 9.0\n", r"\[receding_horizon\] .*update"),
     ("[receding_horizon]\nwindow = 5.0\nhorizon = 9.0\n", "horizon"),
     ("[receding_horizon]\nwindow = 5.0\n[measurement]\nsigma = 0.5\n", r"add \[sampling\]"),
+    ("[receding_horizon]\nwindow = 5.0\nterminal = \"are\"\n", r"terminal.*'qf', 'stationary'|terminal.*qf.*stationary"),
 ])
 def test_scenario_errors_name_the_key(tmp_path, extra, match):
     path = tmp_path / "bad.toml"

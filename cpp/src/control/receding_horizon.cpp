@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
+
 #include "hinf/control/controller.hpp"
 #include "hinf/core/angles.hpp"
 #include "hinf/core/checks.hpp"
@@ -83,14 +85,67 @@ TrajectoryPtr RecedingHorizon::window_trajectory(int j, const Vec& q_d_start) co
                                             trajectory_options_);
 }
 
+Mat RecedingHorizon::terminal_weight(int j, const Trajectory& window) const {
+  if (options_.terminal == TerminalWeight::Qf) return Qf_;
+  const double t_end = window.tf();
+  const std::string where = str_cat("receding-horizon window ", j, ": the stationary terminal weight at t = ", t_end,
+                                    " s: ");
+  Mat P;
+  try {
+    P = solve_game_are(window.A_e(t_end), window.B_e(t_end), window.D_e(t_end), Q_, gamma_);
+  } catch (const InputError& e) {
+    throw InputError(str_cat(where, e.what(), "; or use the terminal weight Qf (terminal = \"qf\")"));
+  }
+  // solve_grde needs a definite weight: a mode Q leaves unweighted and that needs no control
+  // gives P a zero eigenvalue.
+  const double smallest = Eigen::SelfAdjointEigenSolver<Mat>(P, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  require(smallest > 1e-12 * std::max(1.0, P.norm()), where, "the game ARE's solution is only semidefinite (smallest"
+          " eigenvalue ", smallest, "): weight every state in Q, or use the terminal weight Qf (terminal = \"qf\")");
+  return P;
+}
+
+Vec RecedingHorizon::desired_state(double t) const {
+  const int last = window_at(t);
+  Vec q = q_d0_;
+  for (int j = 0; j < last; ++j) q = window_trajectory(j, q)->q_d(window_start(j + 1));
+  return last == 0 && t == t0_ ? q : window_trajectory(last, q)->q_d(t);
+}
+
+TrajectoryPtr RecedingHorizon::reference(double tf) const {
+  check_horizon(t0_, tf);
+  if (changes_.empty()) return std::make_shared<const Trajectory>(model_, q_d0_, u_d_, t0_, tf, trajectory_options_);
+  std::vector<double> t_nodes;
+  std::vector<Vec> q_nodes;
+  Vec q = q_d0_;
+  for (int j = 0; window_start(j) < tf; ++j) {
+    t_nodes.push_back(window_start(j));
+    q_nodes.push_back(q);
+    q = window_trajectory(j, q)->q_d(std::min(window_start(j + 1), tf));
+  }
+  t_nodes.push_back(tf);
+  q_nodes.push_back(q);
+  RowMat q_rows(static_cast<Eigen::Index>(q_nodes.size()), n());
+  for (std::size_t k = 0; k < q_nodes.size(); ++k) q_rows.row(static_cast<Eigen::Index>(k)) = q_nodes[k].transpose();
+  // The inputs in effect at t: those of the last change at or before t (as window_inputs).
+  auto inputs = [base = u_d_, changes = changes_](double t) {
+    const VectorSignal* in_effect = &base;
+    for (const auto& [t_join, u_d] : changes)
+      if (t_join <= t) in_effect = &u_d;
+    return (*in_effect)(t);
+  };
+  return std::make_shared<const Trajectory>(model_, std::move(t_nodes), q_rows, VectorSignal(m(), inputs),
+                                            trajectory_options_);
+}
+
 HorizonWindow RecedingHorizon::window(int j, const Vec& q_d_start) const {
   HorizonWindow w;
   w.index = j;
   w.t_start = window_start(j);
   w.t_use_end = window_start(j + 1);
   w.trajectory = window_trajectory(j, q_d_start);
+  const Mat Z_end = terminal_weight(j, *w.trajectory);
   try {
-    w.design = solve_grde(w.trajectory, Q_, Qf_, gamma_, solver_);
+    w.design = solve_grde(w.trajectory, Q_, Z_end, gamma_, solver_);
   } catch (const ConjugatePointError& e) {
     throw ConjugatePointError(str_cat("receding-horizon window ", j, " [", w.t_start, ", ", w.t_start + options_.window,
                                       "] s: ", e.what()),
@@ -213,7 +268,7 @@ WindowGammaStar receding_horizon_gamma_star(const RecedingHorizon& horizon, doub
   Vec q_start = horizon.q_d0();
   for (int j = 0; horizon.window_start(j) < tf; ++j) {
     const TrajectoryPtr trajectory = horizon.window_trajectory(j, q_start);
-    GammaStarResult r = gamma_star(trajectory, horizon.Q(), horizon.Qf(), search);
+    GammaStarResult r = gamma_star(trajectory, horizon.Q(), horizon.terminal_weight(j, *trajectory), search);
     ++worst.windows;
     worst.converged = worst.converged && r.converged;
     if (!(r.gamma_star <= worst.gamma_star)) {  // also the first window (NaN)

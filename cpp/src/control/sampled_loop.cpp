@@ -176,9 +176,13 @@ SimulationResult simulate_sampled(const Trajectory& trajectory, RecedingOnlineCo
                                   const Disturbance& disturbance, const Vec& q0, const SampledLoopOptions& options,
                                   const Model* plant) {
   const RecedingHorizon& horizon = controller.horizon();
+  // With path changes the reference's inputs are a function of t (RecedingHorizon::reference),
+  // which compares equal to nothing.
   require(trajectory.model().same_as(horizon.model()) && trajectory.t0() == horizon.t0() &&
-              trajectory.q_d0() == horizon.q_d0() && trajectory.u_d_signal().same_signals(horizon.u_d_signal()),
-          "the reference trajectory must start where the receding horizon's does: its model, t0, q_d0 and u_d");
+              trajectory.q_d0() == horizon.q_d0() &&
+              (!horizon.path_changes().empty() || trajectory.u_d_signal().same_signals(horizon.u_d_signal())),
+          "the reference trajectory must start where the receding horizon's does: its model, t0, q_d0 and u_d"
+          " (RecedingHorizon.reference gives it)");
   const bool output_feedback = controller.options().filter.enabled();
   const int p = output_feedback ? static_cast<int>(horizon.model().C(horizon.t0()).rows()) : horizon.n();
   return run_sampled(trajectory, Receding{controller}, controller.period(), output_feedback, p, disturbance, q0,

@@ -215,10 +215,11 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
     s.sampling = sp;
   }
   if (const toml::table* table = section(root, "receding_horizon", source, false)) {
-    TableReader r(*table, "[receding_horizon]", source, {"window", "update"});
+    TableReader r(*table, "[receding_horizon]", source, {"window", "update", "terminal"});
     RecedingHorizonOptions rh;
     rh.window = r.number("window");
     rh.update = r.number_or("update", rh.update);
+    rh.terminal = r.enum_or("terminal", rh.terminal);
     s.receding_horizon = rh;
   }
   if (const toml::table* table = section(root, "path_change", source, false)) {
@@ -228,6 +229,12 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
     } else {
       for (const std::string& key : numbered_keys(*table, "u")) known.push_back(key);
     }
+    for (const char* key : {"waypoints", "path", "plan"})
+      if (table->contains(key))
+        throw InputError(str_cat(source, ": [path_change] ", key, ": a new path planned from waypoints or a path "
+                                 "needs the planner of the Python package (docs/planning.md): run this file with "
+                                 "hinf-cpp run, or write the planned scenario with hinf-cpp plan FILE -o PLANNED.toml "
+                                 "and run that"));
     TableReader r(*table, "[path_change]", source, known);
     PathChange change;
     change.t = r.number("t");
@@ -305,10 +312,12 @@ void check_scenario_toml(const std::string& text, const std::string& source) {
 
 bool needs_planning_toml(const std::string& text, const std::string& source) {
   const toml::table root = detail::parse_toml(text, source);
-  const toml::table* desired = root["desired"].as_table();
-  if (desired == nullptr) return false;
-  for (const char* key : {"waypoints", "path", "plan"})
-    if (desired->contains(key)) return true;
+  for (const char* name : {"desired", "path_change"}) {
+    const toml::table* table = root[name].as_table();
+    if (table == nullptr) continue;
+    for (const char* key : {"waypoints", "path", "plan"})
+      if (table->contains(key)) return true;
+  }
   return false;
 }
 

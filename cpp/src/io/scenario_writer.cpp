@@ -96,7 +96,9 @@ std::string scenario_toml(const Scenario& s) {
   }
   if (s.receding_horizon)
     root.insert("receding_horizon",
-                toml::table{{"window", s.receding_horizon->window}, {"update", s.receding_horizon->update}});
+                toml::table{{"window", s.receding_horizon->window},
+                            {"update", s.receding_horizon->update},
+                            {"terminal", to_string(s.receding_horizon->terminal)}});
   root.insert("solver", toml::table{{"method", to_string(s.solver.method)},
                                     {"newton_systems", to_string(s.solver.newton_systems)},
                                     {"rtol", s.solver.rtol},

@@ -149,9 +149,8 @@ void Scenario::validate_settings() const {
             ds.max_defect);
   }
   if (path_change) {
-    require(receding_horizon.has_value() && !sampling, "[path_change] changes the path of a receding-horizon run in"
-            " the continuous loop: add [receding_horizon] (without [sampling]; the online controller takes a path"
-            " change through RecedingOnlineController.change_path)");
+    require(receding_horizon.has_value(), "[path_change] changes the path of a receding-horizon run: add"
+            " [receding_horizon] (one design over [t0, tf] has one desired trajectory)");
     require(std::isfinite(path_change->t) && path_change->t > t0 && path_change->t < tf,
             "[path_change] t must be inside the horizon (", t0, ", ", tf, ") s, got ", path_change->t);
   }
@@ -364,7 +363,8 @@ bool same_design(const Scenario& a, const Scenario& b) {
          same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b) &&
          a.receding_horizon.has_value() == b.receding_horizon.has_value() &&
          (!a.receding_horizon || (a.receding_horizon->window == b.receding_horizon->window &&
-                                  a.receding_horizon->update == b.receding_horizon->update)) &&
+                                  a.receding_horizon->update == b.receding_horizon->update &&
+                                  a.receding_horizon->terminal == b.receding_horizon->terminal)) &&
          a.path_change.has_value() == b.path_change.has_value() &&
          (!a.path_change || (a.path_change->t == b.path_change->t && a.path_change->u_d.same_signals(b.path_change->u_d)));
 }
@@ -412,9 +412,10 @@ SimulationResult simulate_sampled_scenario(const Scenario& s, const RunResult& r
   SimulationResult r;
   if (design.horizon) {
     // The windows on the solver's thread, handed over at their first samples; the desired
-    // trajectory over [t0, tf] is the run's reference (its q_d series and divergence bound).
+    // trajectory over [t0, tf], path changes included, is the run's reference (its q_d series
+    // and divergence bound).
     RecedingOnlineController controller(design.horizon, sp.period, options, s.kappa);
-    r = simulate_sampled(*trajectory_of(s), controller, disturbance, s.initial_q0, loop, s.plant.get());
+    r = simulate_sampled(*design.horizon->reference(s.tf), controller, disturbance, s.initial_q0, loop, s.plant.get());
     counts = controller.controller().counts();
     const RecedingOnlineStatus status = controller.status();
     if (status.windows_failed > 0)

@@ -60,7 +60,7 @@ from hinf_cpp.models.symbolic import SymbolicModel, _casadi
 from hinf_cpp.models.builtin import symbolic_model
 
 __all__ = ["FeasibilityReport", "Plan", "PlanOptions", "PlanningError", "UnreachableWaypointError", "Waypoint",
-           "default_cache_dir", "plan", "waypoints_from_path"]
+           "default_cache_dir", "plan", "plan_path_change", "waypoints_from_path"]
 
 # What the plan cache keeps, and where else to keep it, for the messages about its folder.
 CACHE_WHAT = "planned trajectories"
@@ -213,7 +213,8 @@ class Waypoint:
 
 @dataclasses.dataclass(frozen=True)
 class PlanOptions:
-    """The planner's settings; each is also a key of a scenario file's [desired.plan].
+    """The planner's settings; each is also a key of a scenario file's [desired.plan] (and of a
+    planned [path_change]'s ``plan``).
 
     The options are checked by :meth:`checked` (which :func:`plan` calls), not at
     construction. Units are the model's: length, s, rad.
@@ -452,7 +453,8 @@ class Plan:
     open-loop unstable along the plan (``states_given``), q_d given as the planned states with
     each interval integrated from its node (``hc.Trajectory.from_states``). ``inputs()`` gives
     u_d as an ``hc.VectorSignal`` (one "linear" table per input), ``input_tables()`` in the
-    form of a scenario file's [desired] (``{"u1": {"table": {...}}, ...}``),
+    form of a scenario file's [desired] (``{"u1": {"table": {...}}, ...}``), both with
+    ``hold_until=T`` the inputs at tf held up to T (for receding-horizon windows beyond tf),
     ``desired_states()`` the planned states in the form of its ``states`` key (for a plan given
     as states); ``t0``, ``tf`` and ``q0`` are the first and last node and the planned state at
     t0.
@@ -493,6 +495,9 @@ class Plan:
     (0.0, 20.0, [10, 20])
     >>> sorted(result.input_tables())
     ['u1', 'u2']
+    >>> held = result.inputs(hold_until=25.0)  # the inputs at tf held to t = 25 s
+    >>> bool(np.array_equal(held(25.0), held(20.0))), bool(held(20.0)[0] == result.u[-1, 0])
+    (True, True)
     >>> q_d = result.trajectory.q_d(20.0)  # [u, v, r, x, y, psi] at the last waypoint
     >>> bool(np.hypot(q_d[3] - 20.0, q_d[4] - 2.0) <= 0.05)
     True
@@ -520,15 +525,28 @@ class Plan:
     def tf(self) -> float:
         return float(self.t[-1])
 
-    def inputs(self) -> _core.VectorSignal:
-        """u_d as signals: one table per input, interpolation "linear" (the optimizer's)."""
-        return _input_signal(self.t, self.u)
+    def inputs(self, hold_until: float | None = None) -> _core.VectorSignal:
+        """u_d as signals: one table per input, interpolation "linear" (the optimizer's); with
+        `hold_until` > tf, the last inputs held from tf to it (a receding horizon's windows
+        reach a window beyond the mission's end)."""
+        t, u = self._held(hold_until)
+        return _input_signal(t, u)
 
-    def input_tables(self) -> dict:
-        """u_d in the form of a scenario file's [desired]: {"u1": {"table": {...}}, ...}."""
-        return {f"u{i + 1}": {"table": {"t": self.t.tolist(), "value": self.u[:, i].tolist(),
-                                        "interpolation": "linear"}}
-                for i in range(self.u.shape[1])}
+    def input_tables(self, hold_until: float | None = None) -> dict:
+        """u_d in the form of a scenario file's [desired]: {"u1": {"table": {...}}, ...};
+        `hold_until` as for :meth:`inputs`."""
+        t, u = self._held(hold_until)
+        return {f"u{i + 1}": {"table": {"t": t.tolist(), "value": u[:, i].tolist(), "interpolation": "linear"}}
+                for i in range(u.shape[1])}
+
+    def _held(self, hold_until: float | None) -> tuple[np.ndarray, np.ndarray]:
+        """The nodes and inputs, with a last node at `hold_until` repeating the inputs at tf
+        (linear between equal values: held) when it is after tf."""
+        if hold_until is None or not hold_until > self.tf:
+            return self.t, self.u
+        if not math.isfinite(hold_until):
+            raise ValueError(f"hold_until must be a finite time (s), got {hold_until!r}")
+        return np.append(self.t, float(hold_until)), np.vstack([self.u, self.u[-1:]])
 
     def desired_states(self) -> dict:
         """The planned states in the form of a scenario file's [desired] states: {"t": [...],
@@ -834,6 +852,125 @@ def plan(model, waypoints: Sequence[Waypoint], q0: Sequence[float], t0: float = 
     report.seconds = time.perf_counter() - started
     if cache_path is not None:
         _write_cached(cache_path, result)
+    return result
+
+
+def plan_path_change(horizon: _core.RecedingHorizon, t_join: float, waypoints: Sequence[Waypoint],
+                     tf: float | None = None, options: PlanOptions | None = None,
+                     cache_dir: str | os.PathLike | None = None, *, model=None) -> Plan:
+    """Plan a new path for a receding-horizon run, from its desired state where a window starts.
+
+    A path changed under way (docs/planning.md, "A path changed under way"): :func:`plan` runs
+    from the horizon's desired state ``horizon.desired_state(t_join)`` (q_d of the chained
+    windows at t_join, earlier path changes included) at t0 = t_join, with the horizon's model,
+    through `waypoints` to tf. Give the plan's inputs to the horizon
+    (``horizon.with_path_change(t_join, result.inputs(hold_until=...))``) or to the online
+    controller (``controller.change_path(t_join, ...)``): the windows from the one that starts
+    at t_join on follow them, and the desired trajectory continues from q_d(t_join), so it is
+    continuous there. The inputs end at tf; the windows of a run to t_end reach up to
+    ``update + window`` beyond it, so hold the last inputs that far
+    (``result.inputs(hold_until=t_end + update + window)``).
+
+    Parameters
+    ----------
+    horizon : hinf_cpp.RecedingHorizon
+        The receding horizon whose path changes (with its path changes so far).
+    t_join : float
+        Where the new path joins (s): a window's start t0 + j * update after t0 and after the
+        horizon's last path change.
+    waypoints : sequence of Waypoint
+        The new path's waypoints, their times (given or resolved) after t_join.
+    tf : float, optional
+        The end of the plan (s; default the last waypoint's time).
+    options : PlanOptions, optional
+        The planner's settings (default ``PlanOptions()``).
+    cache_dir : str or os.PathLike, optional
+        The plan cache, as for :func:`plan` (default None: no cache).
+    model : hinf_cpp.models.SymbolicModel, optional
+        The model to plan with when the horizon's model has no CasADi form of its own (a
+        SymbolicModel compiled into the horizon's GeneratedModel); it must have the horizon
+        model's numbers of states and inputs. Default: ``horizon.model()``.
+
+    Returns
+    -------
+    Plan
+        The new path from the desired state at t_join: its ``t0`` is t_join and its ``q0`` that
+        state; ``inputs()`` are the u_d for the change.
+
+    Raises
+    ------
+    ValueError
+        t_join is not a window's start (the message gives the nearest), not after t0 or after
+        the last path change; `model` does not fit the horizon; the plan had to be given as
+        states (the vehicle is open-loop unstable along the new path: a path change takes
+        inputs only); and as :func:`plan` (bad waypoints or options).
+    UnreachableWaypointError
+        A ValueError: a waypoint cannot be reached from the desired state at t_join.
+    PlanningError
+        As :func:`plan`.
+
+    Examples
+    --------
+    Figure 1's ship (``paper_fig1``) leaves its S-curve at t = 10 s for a waypoint to the
+    north:
+
+    >>> from hinf_cpp.planning import PlanOptions, Waypoint, plan_path_change
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]
+    >>> horizon = hc.RecedingHorizon(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, np.eye(6), np.eye(6), 5.0,
+    ...                              hc.RecedingHorizonOptions(window=10.0, update=1.0))
+    >>> new_path = plan_path_change(horizon, 10.0, [Waypoint(6.0, 16.0, t=25.0)],
+    ...                             options=PlanOptions(u_min=(0.0, -0.5), u_max=(2.0, 0.5)))
+    >>> bool(np.array_equal(new_path.q0, horizon.desired_state(10.0))), new_path.t0, new_path.tf
+    (True, 10.0, 25.0)
+    >>> changed = horizon.with_path_change(10.0, new_path.inputs(hold_until=25.0 + 1.0 + 10.0))
+    >>> q_d = changed.desired_state(25.0)  # [u, v, r, x, y, psi] of the chained windows
+    >>> bool(np.hypot(q_d[3] - 6.0, q_d[4] - 16.0) <= 0.05)  # the waypoint, within its tolerance
+    True
+    >>> plan_path_change(horizon, 10.5, [Waypoint(6.0, 16.0, t=25.0)])
+    Traceback (most recent call last):
+        ...
+    ValueError: t_join = 10.5 s is not a window's start: a path change joins where a window starts, at
+    t0 + j * update (t0 = 0 s, update = 1 s); the nearest is 10 s
+    """
+    t0, update = horizon.t0(), horizon.options().update
+    try:
+        t_join = float(t_join)
+    except (TypeError, ValueError):
+        raise ValueError(f"t_join must be a time (s), got {t_join!r}") from None
+    if not (math.isfinite(t_join) and t_join > t0):
+        raise ValueError(f"t_join = {t_join:.10g} s: a path change joins after the horizon's t0 = {t0:.10g} s, at a "
+                         f"window's start t0 + j * update with j >= 1 (update = {update:.10g} s), e.g. "
+                         f"{horizon.window_start(1):.10g} s")
+    j = horizon.window_at(t_join)
+    start = horizon.window_start(j)
+    if abs(start - t_join) > 1e-9 * max(1.0, abs(t_join)):  # as RecedingHorizon.with_path_change
+        nearest = min(start, horizon.window_start(j + 1), key=lambda s: abs(s - t_join))
+        raise ValueError(f"t_join = {t_join:.10g} s is not a window's start: a path change joins where a window "
+                         f"starts, at t0 + j * update (t0 = {t0:.10g} s, update = {update:.10g} s); the nearest is "
+                         f"{nearest:.10g} s")
+    changes = horizon.path_changes()
+    if changes and not start > changes[-1][0]:
+        raise ValueError(f"t_join = {t_join:.10g} s: a path change joins after the horizon's last one (at "
+                         f"{changes[-1][0]:.10g} s); give a later window's start, or change the horizon before that "
+                         "change")
+    design_model = horizon.model()
+    if model is None:
+        model = design_model
+    else:
+        symbolic = symbolic_model(model)
+        if (symbolic.n, symbolic.m) != (design_model.n(), design_model.m()):
+            raise ValueError(f"model '{symbolic.name}' has {symbolic.n} states and {symbolic.m} inputs, the horizon's "
+                             f"model '{design_model.name()}' {design_model.n()} and {design_model.m()}: plan with the "
+                             "model of the horizon")
+    q_join = np.asarray(horizon.desired_state(start), dtype=float)
+    result = plan(model, waypoints, q0=q_join, t0=start, tf=tf, options=options, cache_dir=cache_dir)
+    if result.states_given:
+        raise ValueError(
+            f"the new path from t_join = {start:.10g} s: the vehicle is open-loop unstable along it (its re-simulation "
+            f"from the desired state at t_join drifts {result.report.position_mismatch:.3g} away by t = "
+            f"{result.report.position_mismatch_t:.10g} s, so the planner gives it as states), and a path change takes "
+            "inputs only (the windows integrate them from the desired state at t_join). Plan over a shorter time (an "
+            "earlier tf or last waypoint), or along a path where the vehicle is stable (e.g. slower)")
     return result
 
 

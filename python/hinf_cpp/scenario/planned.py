@@ -1,8 +1,11 @@
-"""Scenario files whose [desired] gives waypoints or a path instead of inputs (docs/planning.md).
+"""Scenario files whose [desired] or [path_change] gives waypoints or a path instead of inputs
+(docs/planning.md).
 
 The planner (``hinf_cpp.planning.planner``) turns the waypoints into inputs u_d, which take the place of
 the planning keys in [desired] as tables with interpolation = "linear"; the scenario then goes
-through the one C++ reader like any other. For a vehicle that is open-loop unstable along the
+through the one C++ reader like any other. A [path_change] (a receding-horizon run's path changed
+under way) is planned likewise, from the run's desired state at its t
+(:func:`hinf_cpp.planning.plan_path_change`), after [desired]. For a vehicle that is open-loop unstable along the
 plan, the planned states come too ([desired] states = { t, q } and max_defect = the planner's
 max_mismatch): the desired trajectory is then made from the states and inputs, each interval
 integrated from its node. Plans are cached by the content of what they depend
@@ -24,6 +27,7 @@ cache). For example::
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import dataclasses
 import json
@@ -38,14 +42,17 @@ from hinf_cpp import _core
 from hinf_cpp.models.codegen import _write_atomically
 from hinf_cpp.models.codegen import default_cache_dir as compile_cache_dir
 from hinf_cpp.planning.planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
-                      waypoints_from_path)
+                                       plan_path_change, waypoints_from_path)
 from hinf_cpp.scenario.documents import code_allowed, resolve_callable, toml_text
 
 __all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario",
            "planned_scenario_toml"]
 
-#: The keys of [desired] that ask for planning (docs/planning.md).
+#: The keys of [desired] and [path_change] that ask for planning (docs/planning.md).
 PLANNING_KEYS = ("waypoints", "path", "plan")
+#: The tables that may ask for planning, in the order they are planned ([path_change] starts from
+#: the desired trajectory of [desired]).
+PLANNED_SECTIONS = ("desired", "path_change")
 WAYPOINT_KEYS = ("x", "y", "t", "heading", "speed")
 PATH_KEYS = ("x", "y", "speed")
 PER_INPUT = ("u_min", "u_max", "input_scale")
@@ -54,7 +61,8 @@ INTEGERS = ("substeps", "max_iterations")
 
 @dataclasses.dataclass
 class PlannedScenario:
-    """A scenario whose desired inputs were planned from waypoints or a path.
+    """A scenario whose desired inputs, or those of its path change, were planned from
+    waypoints or a path.
 
     What :func:`plan_scenario` and :func:`load_planned` return.
 
@@ -62,16 +70,22 @@ class PlannedScenario:
     ----------
     scenario : hinf_cpp.Scenario
         The scenario with the planned inputs, as the C++ reader built it.
-    plan : hinf_cpp.planning.Plan
-        The plan: inputs, planned and re-simulated states, feasibility report.
+    plan : hinf_cpp.planning.Plan or None
+        The plan of [desired]: inputs, planned and re-simulated states, feasibility report;
+        None when [desired] gives its inputs and only [path_change] is planned.
     document : dict
-        The scenario file's dictionary with the planned inputs in [desired] (``u1``, ``u2``,
-        ...: tables with interpolation = "linear") in place of the planning keys, and for a
-        plan given as states (``plan.states_given``) the planned states (``states = {t, q}``)
-        and ``max_defect``; written as TOML it is a scenario ``hinf-sim`` runs (``hinf-cpp
-        plan FILE -o PLANNED.toml``).
+        The scenario file's dictionary with the planned inputs in [desired] and [path_change]
+        (``u1``, ``u2``, ...: tables with interpolation = "linear") in place of the planning
+        keys, and for a [desired] plan given as states (``plan.states_given``) the planned
+        states (``states = {t, q}``) and ``max_defect``; written as TOML it is a scenario
+        ``hinf-sim`` runs (``hinf-cpp plan FILE -o PLANNED.toml``). With [receding_horizon]
+        the tables hold their last inputs from tf to the end of the last window a run solves
+        (``t0 + (j + 1) * update + window``, j the window of tf).
     source : str
         The scenario file (or the name given to a dictionary), for messages.
+    path_change_plan : hinf_cpp.planning.Plan or None, optional
+        The plan of [path_change] (:func:`hinf_cpp.planning.plan_path_change`: from the run's
+        desired state at its t to tf); None (default) when [path_change] is not planned.
 
     Examples
     --------
@@ -89,12 +103,21 @@ class PlannedScenario:
     'linear'
     >>> planned.plan.u.shape  # 40 intervals of 1 s: 41 nodes, 2 inputs
     (41, 2)
+    >>> planned.path_change_plan is None, [table for table, _ in planned.plans()]  # no [path_change]
+    (True, ['[desired]'])
     """
 
     scenario: _core.Scenario
-    plan: Plan
+    plan: Plan | None  # of [desired]; None when only [path_change] is planned
     document: dict
     source: str
+    path_change_plan: Plan | None = None  # of [path_change]
+
+    def plans(self) -> list[tuple[str, Plan]]:
+        """(table, plan) of each planned table, in the order planned: ``("[desired]", plan)``
+        and ``("[path_change]", path_change_plan)`` where they are planned."""
+        return [(name, plan) for name, plan in (("[desired]", self.plan), ("[path_change]", self.path_change_plan))
+                if plan is not None]
 
 
 def needs_planning(root) -> bool:
@@ -108,8 +131,8 @@ def needs_planning(root) -> bool:
     Returns
     -------
     bool
-        True when its [desired] has one of the keys ``waypoints``, ``path`` or ``plan``
-        (:data:`PLANNING_KEYS`).
+        True when its [desired] or its [path_change] has one of the keys ``waypoints``,
+        ``path`` or ``plan`` (:data:`PLANNING_KEYS`).
 
     Examples
     --------
@@ -118,13 +141,21 @@ def needs_planning(root) -> bool:
     True
     >>> needs_planning({"desired": {"u1": 1.0, "u2": 0.0}})
     False
+    >>> needs_planning({"desired": {"u1": 1.0, "u2": 0.0},
+    ...                 "path_change": {"t": 20.0, "waypoints": [{"x": 30.0, "y": 4.0, "t": 40.0}]}})
+    True
     """
-    desired = root.get("desired") if isinstance(root, dict) else None
-    return isinstance(desired, dict) and any(key in desired for key in PLANNING_KEYS)
+    return isinstance(root, dict) and any(_planning_keys(root.get(name)) for name in PLANNED_SECTIONS)
+
+
+def _planning_keys(table) -> dict:
+    """The planning keys of a [desired] or [path_change] table (empty: it gives its inputs)."""
+    return {key: table[key] for key in PLANNING_KEYS if key in table} if isinstance(table, dict) else {}
 
 
 def load_planned(path: str | os.PathLike, cache: bool = True, trust_code: bool | None = None) -> PlannedScenario | None:
-    """The planned scenario of a file whose [desired] asks for planning, else None.
+    """The planned scenario of a file whose [desired] or [path_change] asks for planning, else
+    None.
 
     :func:`hinf_cpp.load_scenario` calls it first for every file.
 
@@ -186,11 +217,19 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     a vehicle open-loop unstable along the plan the planned states come too ([desired]
     ``states`` and ``max_defect``), and the scenario's desired trajectory is made from them.
 
+    A [path_change] (with [receding_horizon]) may give ``waypoints`` or a ``path`` and ``plan``
+    likewise, with its ``t``: the new path is planned after [desired]
+    (:func:`hinf_cpp.planning.plan_path_change`) from the desired state of the run without the
+    change at t (the receding horizon of the scenario with its [desired] inputs, planned or
+    given) to tf, and its inputs take the place of the planning keys of [path_change]. Its
+    ``plan`` options are its own (not those of [desired.plan]). With [receding_horizon], the
+    planned tables hold their last inputs from tf to the end of the last window a run solves.
+
     Parameters
     ----------
     root : dict
-        The scenario document; its [desired] gives waypoints or a path (not both, and not
-        the inputs).
+        The scenario document; its [desired], its [path_change] or both give waypoints or a
+        path (not both, and not the inputs).
     source : str, optional
         The scenario file or a name for the dictionary, for messages (default ``"<dict>"``);
         a relative ``[model] callable`` file is taken from the folder of an existing file.
@@ -203,14 +242,16 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     Returns
     -------
     PlannedScenario
-        The scenario, the plan and the document with the planned inputs.
+        The scenario, the plans and the document with the planned inputs.
 
     Raises
     ------
     ValueError
-        Anything wrong with the document, naming the source and the key (waypoints and path
+        Anything wrong with the document, naming the source and the table (waypoints and path
         both or neither, inputs given too, an unknown planning key, a model without a CasADi
-        form such as ``kind = "casadi"``).
+        form such as ``kind = "casadi"``; a [path_change] t that is not a window's start, or
+        a new path along which the vehicle is open-loop unstable: a path change takes inputs
+        only).
     hinf_cpp.planning.UnreachableWaypointError
         A ValueError: a waypoint out of reach with the input bounds and the time given.
     hinf_cpp.planning.PlanningError
@@ -232,57 +273,125 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     >>> result.metrics.final_position_error < 0.1
     True
     """
-    desired = root["desired"]
-    planning = {key: desired[key] for key in PLANNING_KEYS if key in desired}
-    if ("waypoints" in planning) == ("path" in planning):
-        raise ValueError(f"{source}: [desired] give either waypoints or path (docs/planning.md), "
-                         f"{'not both' if 'path' in planning else 'got neither'}")
-    inputs = sorted(key for key in desired if re.fullmatch(r"u\d+", key))
-    if inputs:
-        raise ValueError(f"{source}: [desired] {inputs[0]}: give the inputs or {next(iter(planning))} "
-                         "(planned inputs), not both")
-    for key in ("states", "max_defect"):
-        if key in desired:
-            raise ValueError(f"{source}: [desired] {key}: the planner gives the states when the vehicle is open-loop "
-                             f"unstable along the plan; leave it out with {next(iter(planning))}")
+    planning = {name: _planning_keys(root.get(name)) for name in PLANNED_SECTIONS}
+    if not any(planning.values()):
+        raise ValueError(f"{source}: neither [desired] nor [path_change] gives waypoints, a path or plan options: "
+                         "there is nothing to plan (docs/planning.md)")
+    for name, keys in planning.items():
+        if keys:
+            _check_planning_table(root[name], keys, name, source)
     allow_code = code_allowed(trust_code)
     # Everything but the inputs and the sizes the model sets, checked before the model (which may
     # be a program) is loaded; then everything, with zero inputs in their place.
     skeleton = copy.deepcopy(root)
-    skeleton["desired"] = {key: value for key, value in desired.items() if key not in PLANNING_KEYS}
+    for name, keys in planning.items():
+        if keys:
+            skeleton[name] = {key: value for key, value in root[name].items() if key not in PLANNING_KEYS}
     _core.check_scenario_toml(toml_text(skeleton, source), source)
     model = _core.parse_model_toml(toml_text({key: root[key] for key in ("model",) if key in root}, source), source,
                                    allow_code)
-    skeleton["desired"].update({f"u{i + 1}": 0.0 for i in range(model.m())})
+    for name, keys in planning.items():
+        if keys:
+            skeleton[name].update({f"u{i + 1}": 0.0 for i in range(model.m())})
     checked = _core.parse_scenario_toml(toml_text(skeleton, source), source, allow_code)
-    options = _plan_options(planning.get("plan", {}), source, model.m())
-    if "waypoints" in planning:
-        waypoints = _waypoints(planning["waypoints"], source)
-        where = "[desired]"
-    else:
-        positions = model.position_indices()
-        start = [checked.desired_q0[i] for i in positions] if len(positions) == 2 else [0.0, 0.0]
-        waypoints = _path_waypoints(planning["path"], source, start, checked.t0, options.tolerance)
-        where = "[desired] path:"
     planner_model = _planner_model(root.get("model", {}), model, source)
+    cache_dir = default_cache_dir() if cache else None
+    # A receding horizon's windows reach beyond tf: the planned inputs are held to the end of the
+    # last window its loops solve (that of tf's window and the one after it, which the online
+    # controller solves ahead).
+    hold_until = _windows_end(checked) if checked.receding_horizon is not None else None
+    document = copy.deepcopy(skeleton)
+
+    desired_plan = None
+    if planning["desired"]:
+        keys = planning["desired"]
+        options = _plan_options(keys.get("plan", {}), source, model.m(), "desired")
+        if "waypoints" in keys:
+            waypoints, where = _waypoints(keys["waypoints"], source, "desired"), "[desired]"
+        else:
+            waypoints = _path_waypoints(keys["path"], source, _start(model, checked.desired_q0), checked.t0,
+                                        options.tolerance, "desired")
+            where = "[desired] path:"
+        with _prefixed(source, where):
+            desired_plan = plan(planner_model, waypoints, q0=checked.desired_q0, t0=checked.t0, tf=checked.tf,
+                                options=options, cache_dir=cache_dir)
+        document["desired"] = dict(skeleton["desired"], **desired_plan.input_tables(hold_until))
+        if desired_plan.states_given:
+            # The vehicle is open-loop unstable along the plan: the desired trajectory is made from the
+            # planned states, each interval integrated from its node, and refused where an interval's
+            # defect exceeds what the planner checked (its max_mismatch).
+            document["desired"].update(states=desired_plan.desired_states(), max_defect=options.max_mismatch)
+
+    change_plan = None
+    if planning["path_change"]:
+        keys = planning["path_change"]
+        options = _plan_options(keys.get("plan", {}), source, model.m(), "path_change")
+        # The run without the change, with the [desired] inputs (planned or given): its desired state
+        # at t is where the new path starts.
+        base = checked.resolved()
+        desired_u = desired_plan.inputs(hold_until) if desired_plan is not None else base.desired_u
+        gamma = math.inf if base.law == _core.Law.lqr else base.gamma
+        horizon = _core.RecedingHorizon(base.model, base.desired_q0, desired_u, base.t0, base.Q, base.Qf, gamma,
+                                        base.receding_horizon, base.solver)
+        t_join = checked.path_change.t
+        if "waypoints" in keys:
+            waypoints, where = _waypoints(keys["waypoints"], source, "path_change"), "[path_change]"
+        else:
+            with _prefixed(source, "[path_change]"):
+                start = _start(model, horizon.desired_state(horizon.window_start(horizon.window_at(t_join))))
+            waypoints = _path_waypoints(keys["path"], source, start, t_join, options.tolerance, "path_change")
+            where = "[path_change] path:"
+        with _prefixed(source, where):
+            change_plan = plan_path_change(horizon, t_join, waypoints, tf=checked.tf, options=options,
+                                           cache_dir=cache_dir, model=planner_model)
+        document["path_change"] = dict(skeleton["path_change"], **change_plan.input_tables(hold_until))
+
+    scenario = _core.parse_scenario_toml(toml_text(document, source), source, allow_code)
+    return PlannedScenario(scenario, desired_plan, document, source, change_plan)
+
+
+def _check_planning_table(table: dict, keys: dict, name: str, source: str) -> None:
+    """Waypoints or a path (one of them), and no inputs beside them."""
+    if ("waypoints" in keys) == ("path" in keys):
+        raise ValueError(f"{source}: [{name}] give either waypoints or path (docs/planning.md), "
+                         f"{'not both' if 'path' in keys else 'got neither'}")
+    inputs = sorted((key for key in table if re.fullmatch(r"u\d+", key)), key=lambda key: int(key[1:]))
+    if inputs:
+        raise ValueError(f"{source}: [{name}] {inputs[0]}: give the inputs or {next(iter(keys))} "
+                         "(planned inputs), not both")
+    for key in ("states", "max_defect"):
+        if key in table:
+            raise ValueError(f"{source}: [{name}] {key}: the planner gives the states when the vehicle is open-loop "
+                             f"unstable along the plan; leave it out with {next(iter(keys))}")
+
+
+@contextlib.contextmanager
+def _prefixed(source: str, where: str):
+    """The planner's ValueErrors with the source and the table in front (the model's section for
+    a model without a CasADi form); an unreachable waypoint stays an UnreachableWaypointError."""
     try:
-        result = plan(planner_model, waypoints, q0=checked.desired_q0, t0=checked.t0, tf=checked.tf, options=options,
-                      cache_dir=default_cache_dir() if cache else None)
+        yield
     except UnreachableWaypointError as error:
         raise UnreachableWaypointError(f"{source}: {where} {error}", error.index, error.miss) from None
     except ValueError as error:
         text = str(error)
         section = "[model]" if "has no CasADi form" in text else where
         raise ValueError(f"{source}: {section} {text}") from None
-    document = copy.deepcopy(root)
-    document["desired"] = dict(skeleton["desired"], **result.input_tables())
-    if result.states_given:
-        # The vehicle is open-loop unstable along the plan: the desired trajectory is made from the
-        # planned states, each interval integrated from its node, and refused where an interval's
-        # defect exceeds what the planner checked (its max_mismatch).
-        document["desired"].update(states=result.desired_states(), max_defect=options.max_mismatch)
-    scenario = _core.parse_scenario_toml(toml_text(document, source), source, allow_code)
-    return PlannedScenario(scenario, result, document, source)
+
+
+def _start(model: _core.Model, q) -> list[float]:
+    """The position of the state q (where a path starts)."""
+    positions = model.position_indices()
+    return [q[i] for i in positions] if len(positions) == 2 else [0.0, 0.0]
+
+
+def _windows_end(scenario: _core.Scenario) -> float:
+    """The end of the last receding-horizon window a run of the scenario solves: the window of tf
+    (as RecedingHorizon.window_at counts) and the one after it, which the online controller solves
+    ahead, each `window` long."""
+    options = scenario.receding_horizon
+    j = math.floor((scenario.tf - scenario.t0) / options.update + 1e-9)
+    return scenario.t0 + (j + 1) * options.update + options.window
 
 
 def planned_scenario_toml(planned: PlannedScenario, output: str | os.PathLike) -> str:
@@ -402,8 +511,8 @@ def _known(table, known: tuple[str, ...], where: str) -> dict:
     return table
 
 
-def _plan_options(table, source: str, m: int) -> PlanOptions:
-    where = f"{source}: [desired.plan]"
+def _plan_options(table, source: str, m: int, section: str) -> PlanOptions:
+    where = f"{source}: [{section}.plan]"
     fields = tuple(field.name for field in dataclasses.fields(PlanOptions))
     values = {}
     for key, value in _known(table, fields, where).items():
@@ -426,8 +535,8 @@ def _plan_options(table, source: str, m: int) -> PlanOptions:
     return options
 
 
-def _waypoints(value, source: str) -> list[Waypoint]:
-    where = f"{source}: [desired] waypoints"
+def _waypoints(value, source: str, section: str) -> list[Waypoint]:
+    where = f"{source}: [{section}] waypoints"
     if not isinstance(value, list) or not value:
         raise ValueError(f"{where}: expected an array of tables {{ x = ..., y = ..., t = ... }}, got "
                          f"{'an empty array' if isinstance(value, list) else _type_name(value)}")
@@ -441,8 +550,8 @@ def _waypoints(value, source: str) -> list[Waypoint]:
     return out
 
 
-def _path_waypoints(value, source: str, start, t0: float, tolerance: float) -> list[Waypoint]:
-    where = f"{source}: [desired] path"
+def _path_waypoints(value, source: str, start, t0: float, tolerance: float, section: str) -> list[Waypoint]:
+    where = f"{source}: [{section}] path"
     table = _known(value, PATH_KEYS, where)
     for key in PATH_KEYS:
         if key not in table:

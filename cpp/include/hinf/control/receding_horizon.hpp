@@ -6,8 +6,12 @@
 //     j = 0) with the same u_d: the windows chain into one desired trajectory, continuous at every
 //     t_j, whose value differs from one integration over the whole mission by the integration
 //     error only (trajectory.hpp);
-//   - its design is the GRDE solved backward from Z(t_j + H) = Qf, with its own conjugate-point
-//     check (ConjugatePointError names the window);
+//   - its design is the GRDE solved backward from Z(t_j + H) = the terminal weight, with its own
+//     conjugate-point check (ConjugatePointError names the window). The terminal weight is Qf
+//     (TerminalWeight::Qf), or the stabilizing solution of the stationary game ARE of the
+//     linearization frozen at the window's end (TerminalWeight::Stationary, solve_game_are): the
+//     cost-to-go of an infinite horizon beyond the window, so that the window's Z is that of a
+//     longer horizon already at its start (for a slowly varying trajectory);
 //   - the law of window j is used on [t_j, t_{j+1}): u = u_d - kappa B_e' Z_j (q - q_d), so the
 //     Z in use is always at least H - update before its window's end, where the terminal weight
 //     has decayed (the gain of a fixed-horizon design collapses towards B' Qf over its last
@@ -31,14 +35,28 @@
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/simulation.hpp"
 #include "hinf/control/trajectory.hpp"
+#include "hinf/core/enum_names.hpp"
 #include "hinf/numerics/signal.hpp"
 
 namespace hinf {
+
+// The weight Z(t_j + H) at the end of every window.
+enum class TerminalWeight {
+  Qf,         // the design's Qf
+  Stationary  // the stabilizing solution of the stationary game ARE at the window's end
+};
+template <>
+struct EnumNames<TerminalWeight> {
+  static constexpr const char* what = "terminal";
+  static constexpr std::array<std::pair<TerminalWeight, const char*>, 2> names{
+      {{TerminalWeight::Qf, "qf"}, {TerminalWeight::Stationary, "stationary"}}};
+};
 
 // The window of the receding horizon (scenario table [receding_horizon]).
 struct RecedingHorizonOptions {
   double window = 10.0;  // H (s): the length of every window's design, > 0
   double update = 1.0;   // s: a new window every this long, in (0, H]
+  TerminalWeight terminal = TerminalWeight::Qf;  // the weight at every window's end
   // InputError naming the option.
   void validate() const;
 };
@@ -104,6 +122,18 @@ class RecedingHorizon {
   HorizonWindow window(int j, const Vec& q_d_start) const;
   // The desired trajectory of window j alone (no design), as window() integrates it.
   TrajectoryPtr window_trajectory(int j, const Vec& q_d_start) const;
+  // The weight Z(t_j + H) of window j whose desired trajectory is `window` (window_trajectory):
+  // Qf, or the stationary game ARE's solution at the window's end (options().terminal).
+  // InputError naming the window when the ARE has no stabilizing, positive definite solution.
+  Mat terminal_weight(int j, const Trajectory& window) const;
+  // q_d(t) of the chained windows (path changes included), t >= t0: the windows' trajectories
+  // integrated from q_d0 up to the window that holds t.
+  Vec desired_state(double t) const;
+  // The desired trajectory of a run on [t0, tf] (tf > t0), the reference of its q_d series:
+  // without path changes one integration from q_d0; with them the chained q_d given as states
+  // at the window starts (Trajectory's states form), each interval integrated with the inputs in
+  // effect (a function of t, so not for the online controller, which takes the windows').
+  TrajectoryPtr reference(double tf) const;
   // Window 0, from q_d0.
   HorizonWindow first() const { return window(0, q_d0_); }
   // The window after `previous`, from its q_d at the next t_j.
@@ -147,7 +177,7 @@ SimulationResult simulate_receding_horizon(const RecedingHorizon& horizon, const
                                            RecedingHorizonReport* report = nullptr);
 
 // The largest gamma* (eq. 14) over the windows used on [t0, tf): the gamma a receding-horizon
-// run certifies (each window is a game of its own with terminal weight Qf).
+// run certifies (each window is a game of its own with its terminal weight).
 struct WindowGammaStar {
   double gamma_star = NAN;  // the largest window's gamma*
   int window = -1;          // the window where it occurs
@@ -157,7 +187,8 @@ struct WindowGammaStar {
   GammaStarResult result;   // that window's search
 };
 // Each window's gamma* (gamma_star, analysis.hpp, with the horizon's solver) from t0 to the last
-// window that starts before tf, and the largest. The horizon's gamma is not used.
+// window that starts before tf, and the largest. The horizon's gamma is used only by the
+// stationary terminal weight (the ARE at the design's gamma; the search keeps it fixed).
 WindowGammaStar receding_horizon_gamma_star(const RecedingHorizon& horizon, double tf,
                                             const GammaStarOptions& options = {});
 

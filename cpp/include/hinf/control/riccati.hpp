@@ -135,6 +135,14 @@ using FilterRiccatiSolutionPtr = std::shared_ptr<const FilterRiccatiSolution>;
 RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                               double gamma, const SolverOptions& options = {});
 
+// The stabilizing solution P of the stationary game Riccati equation, the GRDE (13) with its
+// derivative zero at constant A, B, D (n x n, n x m, n x nw):
+//     A' P + P A + Q - P (B B' - gamma^-2 D D') P = 0,   A - (B B' - gamma^-2 D D') P stable.
+// Q (n x n) symmetric positive semidefinite, gamma > 0 (may be +inf: the LQR equation).
+// InputError for bad sizes or values, or when there is no stabilizing, positive semidefinite
+// solution (gamma at or below the stationary game's gamma*, or (A, B) not stabilizable).
+Mat solve_game_are(const Mat& A, const Mat& B, const Mat& D, const Mat& Q, double gamma);
+
 // Solves the filter Riccati equation (36) forward from Sigma(t0) = Sigma0, with the model's
 // measurement matrix C (Model::C), N (p x p) positive definite, Q (n x n) positive
 // semidefinite, gamma > 0 (may be +inf: the Kalman-Bucy filter), A = A_e(t).

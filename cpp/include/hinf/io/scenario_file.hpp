@@ -46,8 +46,8 @@ bool code_trusted_by_environment();
 // equal scenario (numbers written exactly). A model or signal that has no file form (a model
 // or a signal implemented in Python) is an InputError naming it.
 std::string scenario_toml(const Scenario& scenario);
-// Whether a scenario document's [desired] gives waypoints, a path or plan options (the planner
-// of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
+// Whether a scenario document's [desired] or [path_change] gives waypoints, a path or plan
+// options (the planner of the Python package replaces them by inputs), parsed with every guard of parse_scenario_toml
 // (an InputError for what it refuses).
 bool needs_planning_toml(const std::string& text, const std::string& source);
 // The model of a document's [model] section, read as parse_scenario_toml reads it (the planner
