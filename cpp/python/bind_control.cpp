@@ -1,6 +1,8 @@
 // The Python bindings of the control layer (cpp/include/hinf/control): the desired trajectory,
 // the Riccati equations, the laws (and controllers implemented in Python), disturbances, closed
 // loops, output feedback, metrics, gamma* and the certificates.
+#include <tuple>
+
 #include "casters.hpp"
 #include "fields.hpp"
 #include "hinf/control/analysis.hpp"
@@ -159,6 +161,31 @@ py::object matrix_of_t(const Solution& s, const py::object& t, Member member) {
 Mat sampled_matrix(const SampledLinearization& s, int k, const Mat& (SampledLinearization::*member)(int) const) {
   require(k >= 0 && k < s.steps(), "the sampled matrices are defined for k = 0 .. ", s.steps() - 1, ", got k = ", k);
   return (s.*member)(k);
+}
+
+// A measurement from Python: a raw array, not through the Vec caster, which refuses NaN: a
+// non-finite measurement is a status of step() (MeasurementUse.not_finite), as in C++.
+using MeasurementArray = std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>;
+
+// step() of an online controller (OnlineController or RecedingOnlineController) from Python:
+// the measurement's shape checked against `current`, the controller whose law is in use, and
+// (u, report) returned; the GIL released during the step.
+template <class Stepping>
+std::tuple<Vec, StepReport> step_from_python(Stepping& controller, const OnlineController& current, double t_now,
+                           const MeasurementArray& q, const std::optional<double>& t_meas) {
+  const int size = current.measurement_size();
+  if (q && (q->ndim() != 1 || q->shape(0) != size))
+    throw InputError(str_cat("q must have shape (", size, ",) (",
+                             current.output_feedback() ? "the measured outputs y = C q" : "the full state",
+                             "), got an array of ", q->size(), " numbers in ", q->ndim(), " dimensions"));
+  Vec u(current.m());
+  StepReport report;
+  {
+    ComputationScope release;
+    report = controller.step(t_now, q ? q->data() : nullptr, t_meas.value_or(t_now), u.data());
+  }
+  if (report.status == StepStatus::NotReset) throw InputError("step() before reset(): call reset(t0, q0) first");
+  return {std::move(u), report};
 }
 
 // The digital design and the online controller (discrete_design.hpp, online_controller.hpp).
@@ -611,25 +638,8 @@ Examples
 >>> controller.held_command()
 array([1., 0.]))").c_str())
       .def("step",
-           // q as a raw array, not through the Vec caster, which refuses NaN: a non-finite
-           // measurement is a status of step() (MeasurementUse.not_finite), as in C++.
-           [](OnlineController& c, double t_now, const std::optional<py::array_t<double, py::array::c_style |
-                                                                                    py::array::forcecast>>& q,
-              const std::optional<double>& t_meas) {
-             if (q && (q->ndim() != 1 || q->shape(0) != c.measurement_size()))
-               throw InputError(str_cat("q must have shape (", c.measurement_size(), ",) (",
-                                        c.output_feedback() ? "the measured outputs y = C q" : "the full state",
-                                        "), got an array of ", q->size(), " numbers in ", q->ndim(), " dimensions"));
-             const double* measurement = q ? q->data() : nullptr;
-             Vec u(c.m());
-             StepReport report;
-             {
-               ComputationScope release;
-               report = c.step(t_now, measurement, t_meas.value_or(t_now), u.data());
-             }
-             if (report.status == StepStatus::NotReset)
-               throw InputError("step() before reset(): call reset(t0, q0) first");
-             return py::make_tuple(u, report);
+           [](OnlineController& c, double t_now, const MeasurementArray& q, const std::optional<double>& t_meas) {
+             return step_from_python(c, c, t_now, q, t_meas);
            },
            py::arg("t_now"), py::arg("q") = py::none(), py::arg("t_meas") = py::none(),
            doc({"OnlineController::step"}, R"(Parameters
@@ -1037,23 +1047,10 @@ Examples
            },
            py::arg("t"), py::arg("q"), py::arg("u_held") = py::none(), doc({"RecedingOnlineController::reset"}).c_str())
       .def("step",
-           [](RecedingOnlineController& c, double t_now,
-              const std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>>& q,
+           [](RecedingOnlineController& c, double t_now, const MeasurementArray& q,
               const std::optional<double>& t_meas) {
              if (c.status().window_in_use < 0) throw InputError("step() before reset(): call reset(t0, q0) first");
-             const int size = c.controller().measurement_size();
-             if (q && (q->ndim() != 1 || q->shape(0) != size))
-               throw InputError(str_cat("q must have shape (", size, ",), got an array of ", q->size(),
-                                        " numbers in ", q->ndim(), " dimensions"));
-             Vec u(c.controller().m());
-             StepReport report;
-             {
-               ComputationScope release;
-               report = c.step(t_now, q ? q->data() : nullptr, t_meas.value_or(t_now), u.data());
-             }
-             if (report.status == StepStatus::NotReset)
-               throw InputError("step() before reset(): call reset(t0, q0) first");
-             return py::make_tuple(u, report);
+             return step_from_python(c, c.controller(), t_now, q, t_meas);
            },
            py::arg("t_now"), py::arg("q") = py::none(), py::arg("t_meas") = py::none(),
            doc({"RecedingOnlineController::step"}, "As OnlineController.step; raises ValueError before reset().")
