@@ -818,7 +818,7 @@ ValueError
 Examples
 --------
 >>> hc.RecedingHorizonOptions(window=10.0, update=1.0)
-RecedingHorizonOptions(window=10.0, update=1.0))");
+RecedingHorizonOptions(window=10.0, update=1.0, terminal='qf'))");
   bind_result<HorizonWindow>(m, "HorizonWindow", {"HorizonWindow"}, {}, R"(Examples
 --------
 >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
@@ -1484,7 +1484,7 @@ Examples
 array([[1.732051, 1.      ],
        [1.      , 1.732051]])
 >>> P = hc.solve_game_are([[1.0]], [[1.0]], [[1.0]], [[1.0]], 2.0)   # 2 P + 1 - 0.75 P^2 = 0
->>> round(float(P[0, 0]), 6), round((2 + np.sqrt(7)) / 1.5, 6)
+>>> round(float(P[0, 0]), 6), round((2 + 7 ** 0.5) / 1.5, 6)
 (3.097168, 3.097168))").c_str());
   m.def("solve_filter_riccati", &solve_filter_riccati, py::arg("trajectory"), py::arg("N"), py::arg("Q"),
         py::arg("gamma"), py::arg("Sigma0"), py::arg("options") = SolverOptions{},

@@ -5033,7 +5033,7 @@ class RecedingHorizonOptions:
     Examples
     --------
     >>> hc.RecedingHorizonOptions(window=10.0, update=1.0)
-    RecedingHorizonOptions(window=10.0, update=1.0)
+    RecedingHorizonOptions(window=10.0, update=1.0, terminal='qf')
     """
     __hash__: typing.ClassVar[None] = None
     __match_args__: typing.ClassVar[tuple] = ('window', 'update', 'terminal')
@@ -8348,7 +8348,7 @@ def solve_game_are(A: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[
     array([[1.732051, 1.      ],
            [1.      , 1.732051]])
     >>> P = hc.solve_game_are([[1.0]], [[1.0]], [[1.0]], [[1.0]], 2.0)   # 2 P + 1 - 0.75 P^2 = 0
-    >>> round(float(P[0, 0]), 6), round((2 + np.sqrt(7)) / 1.5, 6)
+    >>> round(float(P[0, 0]), 6), round((2 + 7 ** 0.5) / 1.5, 6)
     (3.097168, 3.097168)
     """
 def solve_grde(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: SolverOptions = ...) -> RiccatiSolution:
