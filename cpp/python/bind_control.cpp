@@ -895,6 +895,55 @@ Examples
            py::arg("model"), py::arg("q_d0"), py::arg("u_d"), py::arg("t0"), py::arg("Q"), py::arg("Qf"),
            py::arg("gamma"), py::arg("options"), py::arg("solver") = SolverOptions{},
            py::arg("trajectory_options") = TrajectoryOptions{})
+      .def_static("from_states",
+                  [](ModelPtr model, std::vector<double> t, const RowMat& q, const py::object& u_d, Mat Q, Mat Qf,
+                     double gamma, const RecedingHorizonOptions& options, const SolverOptions& solver,
+                     const TrajectoryOptions& trajectory_options) {
+                    require(model != nullptr, "RecedingHorizon.from_states needs a model");
+                    VectorSignal inputs = to_vector_signal(u_d, model->m(), "u_d");
+                    return std::make_shared<RecedingHorizon>(std::move(model), std::move(t), q, std::move(inputs),
+                                                             std::move(Q), std::move(Qf), gamma, options, solver,
+                                                             trajectory_options);
+                  },
+                  py::arg("model"), py::arg("t"), py::arg("q"), py::arg("u_d"), py::arg("Q"), py::arg("Qf"),
+                  py::arg("gamma"), py::arg("options"), py::arg("solver") = SolverOptions{},
+                  py::arg("trajectory_options") = TrajectoryOptions{},
+                  doc({"RecedingHorizon::RecedingHorizon"}, R"(The receding horizon along a desired trajectory given as states and inputs.
+
+Parameters
+----------
+model : Model
+    The design model.
+t : array_like, shape (N + 1,)
+    The nodes t_0 < ... < t_N (s); t_0 is the mission's start.
+q : array_like, shape (N + 1, n)
+    The desired states at the nodes (a planner's, e.g. ``Plan.t`` and ``Plan.q``).
+u_d : VectorSignal, callable, or list of Signal or float
+    The desired inputs, m channels, defined beyond the last node for the last windows.
+Q, Qf, gamma, options, solver, trajectory_options
+    As for the constructor.
+
+Returns
+-------
+RecedingHorizon
+    Every window the states form over its interval: from its start through the nodes inside it.
+
+Raises
+------
+ValueError
+    Nodes that are not finite and increasing, states of another shape, and as the constructor.
+
+Examples
+--------
+>>> t = np.arange(0.0, 60.5, 0.5)                          # dq/dt = 2 q + u: unstable, q_d = sin t
+>>> model = hc.LinearModel([[2.0]], [[1.0]], [[1.0]])
+>>> u_d = [hc.Signal(0.0, [hc.Harmonic(1.0, 1.0, cosine=True), hc.Harmonic(-2.0, 1.0)])]
+>>> horizon = hc.RecedingHorizon.from_states(model, t, np.sin(t)[:, None], u_d, [[1.0]], [[1.0]], 5.0,
+...                                          hc.RecedingHorizonOptions(window=5.0))
+>>> bool(abs(horizon.desired_state(40.3)[0] - np.sin(40.3)) < 1e-8)   # one integration: off by e^(2 t)
+True)").c_str())
+      .def("node_times", &RecedingHorizon::node_times, doc({"RecedingHorizon::node_times"}).c_str())
+      .def("node_states", &RecedingHorizon::node_states, doc({"RecedingHorizon::node_states"}).c_str())
       .def("model", &RecedingHorizon::model_ptr, doc({"RecedingHorizon::model"}).c_str())
       .def("t0", &RecedingHorizon::t0, "The start of the mission (s).")
       .def("gamma", &RecedingHorizon::gamma, "The attenuation level of every window.")

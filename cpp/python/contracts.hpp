@@ -607,7 +607,11 @@ solved on any thread.)contract"},
     {"RecedingHorizon::Q", R"contract(The weights Q and Qf, q_d0 and u_d as given.)contract"},
     {"RecedingHorizon::RecedingHorizon", R"contract(The model, q_d0 and u_d as for a Trajectory (trajectory.hpp); Q (n x n) symmetric positive
 semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf: LQR), as for
-solve_grde. InputError for any of them, or for bad options.)contract"},
+solve_grde. InputError for any of them, or for bad options.
+
+The desired trajectory given as states: q_d(t_k) = row k of q_nodes at the nodes t_nodes
+(increasing, t0 = t_nodes[0], q_d0 = row 0), as for Trajectory's states form; the rest as
+above. InputError for nodes that are not finite and increasing or rows of another shape.)contract"},
     {"RecedingHorizon::desired_state", R"contract(q_d(t) of the chained windows (path changes included), t >= t0: the windows' trajectories
 integrated from q_d0 up to the window that holds t.)contract"},
     {"RecedingHorizon::first", R"contract(Window 0, from q_d0.)contract"},
@@ -615,12 +619,17 @@ integrated from q_d0 up to the window that holds t.)contract"},
     {"RecedingHorizon::model", R"contract(The design model of every window.)contract"},
     {"RecedingHorizon::n", R"contract(The model's number of states and of inputs.)contract"},
     {"RecedingHorizon::next", R"contract(The window after `previous`, from its q_d at the next t_j.)contract"},
+    {"RecedingHorizon::node_states", R"contract(The desired states at the nodes, one row per node (0 x 0 otherwise).)contract"},
+    {"RecedingHorizon::node_t_", R"contract(a trajectory given as states: the nodes (empty: integrated from q_d0))contract"},
+    {"RecedingHorizon::node_times", R"contract(The nodes of a desired trajectory given as states (s; empty otherwise).)contract"},
     {"RecedingHorizon::options", R"contract(The window and update period, and the integrator of every window's GRDE.)contract"},
     {"RecedingHorizon::path_changes", R"contract(The path changes so far: (t_join, u_d), in order.)contract"},
     {"RecedingHorizon::reference", R"contract(The desired trajectory of a run on [t0, tf] (tf > t0), the reference of its q_d series:
-without path changes one integration from q_d0; with them the chained q_d given as states
+without path changes one integration from q_d0 (the states form of the nodes, for a
+trajectory given as states); with them the chained q_d given as states
 at the window starts (Trajectory's states form), each interval integrated with the inputs in
 effect (a function of t, so not for the online controller, which takes the windows').)contract"},
+    {"RecedingHorizon::states_trajectory", R"contract(The states form from q_a at t_a through the nodes strictly inside (t_a, t_b) to t_b, with u.)contract"},
     {"RecedingHorizon::t0", R"contract(The start of the mission (s).)contract"},
     {"RecedingHorizon::terminal_weight", R"contract(The weight Z(t_j + H) of window j whose desired trajectory is `window` (window_trajectory):
 Qf, or the stationary game ARE's solution at the window's end (options().terminal).
@@ -1315,6 +1324,13 @@ Window j starts at t_j = t0 + j * update and covers [t_j, t_j + H] (H = window):
     seconds; the receding horizon never reaches them).
 The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
 is a finite-horizon game of its own (receding_horizon_gamma_star).
+
+A desired trajectory given as states (a planner's nodes, for a vehicle open-loop unstable
+along its plan; trajectory.hpp): each window is the states form over its own interval, from its
+start (the node there, or the chained q_d) through the nodes inside it, each interval
+integrated from its node; beyond the last node the window integrates from it. The windows
+then chain without the open-loop drift of one integration. The nodes are kept whole (their
+memory grows with the mission: n + 1 numbers per node).
 
 A path changed under way (with_path_change): from the window that starts at t_join on, the
 windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from

@@ -5278,6 +5278,10 @@ class RecedingHorizon:
     semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf: LQR), as for
     solve_grde. InputError for any of them, or for bad options.
     
+    The desired trajectory given as states: q_d(t_k) = row k of q_nodes at the nodes t_nodes
+    (increasing, t0 = t_nodes[0], q_d0 = row 0), as for Trajectory's states form; the rest as
+    above. InputError for nodes that are not finite and increasing or rows of another shape.
+    
     The receding-horizon design: the GRDE (13) solved over a window that moves with time, so that a
     mission of any length is designed with memory that depends on the window, not on the mission.
     
@@ -5298,6 +5302,13 @@ class RecedingHorizon:
         seconds; the receding horizon never reaches them).
     The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
     is a finite-horizon game of its own (receding_horizon_gamma_star).
+    
+    A desired trajectory given as states (a planner's nodes, for a vehicle open-loop unstable
+    along its plan; trajectory.hpp): each window is the states form over its own interval, from its
+    start (the node there, or the chained q_d) through the nodes inside it, each interval
+    integrated from its node; beyond the last node the window integrates from it. The windows
+    then chain without the open-loop drift of one integration. The nodes are kept whole (their
+    memory grows with the mission: n + 1 numbers per node).
     
     A path changed under way (with_path_change): from the window that starts at t_join on, the
     windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
@@ -5342,6 +5353,52 @@ class RecedingHorizon:
     >>> first.design.Z(0.0).shape, first.trajectory.tf()
     ((6, 6), 10.0)
     """
+    @staticmethod
+    def from_states(model: Model, t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], u_d: typing.Any, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: RecedingHorizonOptions, solver: SolverOptions = ..., trajectory_options: TrajectoryOptions = ...) -> RecedingHorizon:
+        """
+        The model, q_d0 and u_d as for a Trajectory (trajectory.hpp); Q (n x n) symmetric positive
+        semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf: LQR), as for
+        solve_grde. InputError for any of them, or for bad options.
+        
+        The desired trajectory given as states: q_d(t_k) = row k of q_nodes at the nodes t_nodes
+        (increasing, t0 = t_nodes[0], q_d0 = row 0), as for Trajectory's states form; the rest as
+        above. InputError for nodes that are not finite and increasing or rows of another shape.
+        
+        The receding horizon along a desired trajectory given as states and inputs.
+        
+        Parameters
+        ----------
+        model : Model
+            The design model.
+        t : array_like, shape (N + 1,)
+            The nodes t_0 < ... < t_N (s); t_0 is the mission's start.
+        q : array_like, shape (N + 1, n)
+            The desired states at the nodes (a planner's, e.g. ``Plan.t`` and ``Plan.q``).
+        u_d : VectorSignal, callable, or list of Signal or float
+            The desired inputs, m channels, defined beyond the last node for the last windows.
+        Q, Qf, gamma, options, solver, trajectory_options
+            As for the constructor.
+        
+        Returns
+        -------
+        RecedingHorizon
+            Every window the states form over its interval: from its start through the nodes inside it.
+        
+        Raises
+        ------
+        ValueError
+            Nodes that are not finite and increasing, states of another shape, and as the constructor.
+        
+        Examples
+        --------
+        >>> t = np.arange(0.0, 60.5, 0.5)                          # dq/dt = 2 q + u: unstable, q_d = sin t
+        >>> model = hc.LinearModel([[2.0]], [[1.0]], [[1.0]])
+        >>> u_d = [hc.Signal(0.0, [hc.Harmonic(1.0, 1.0, cosine=True), hc.Harmonic(-2.0, 1.0)])]
+        >>> horizon = hc.RecedingHorizon.from_states(model, t, np.sin(t)[:, None], u_d, [[1.0]], [[1.0]], 5.0,
+        ...                                          hc.RecedingHorizonOptions(window=5.0))
+        >>> bool(abs(horizon.desired_state(40.3)[0] - np.sin(40.3)) < 1e-8)   # one integration: off by e^(2 t)
+        True
+        """
     def __init__(self, model: Model, q_d0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], u_d: typing.Any, t0: typing.SupportsFloat | typing.SupportsIndex, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: RecedingHorizonOptions, solver: SolverOptions = ..., trajectory_options: TrajectoryOptions = ...) -> None:
         ...
     def desired_state(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
@@ -5365,6 +5422,14 @@ class RecedingHorizon:
         """
         The window after `previous`, from its q_d at the next t_j.
         """
+    def node_states(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        The desired states at the nodes, one row per node (0 x 0 otherwise).
+        """
+    def node_times(self) -> list[float]:
+        """
+        The nodes of a desired trajectory given as states (s; empty otherwise).
+        """
     def options(self) -> RecedingHorizonOptions:
         """
         The window and update period.
@@ -5376,7 +5441,8 @@ class RecedingHorizon:
     def reference(self, tf: typing.SupportsFloat | typing.SupportsIndex) -> Trajectory:
         """
         The desired trajectory of a run on [t0, tf] (tf > t0), the reference of its q_d series:
-        without path changes one integration from q_d0; with them the chained q_d given as states
+        without path changes one integration from q_d0 (the states form of the nodes, for a
+        trajectory given as states); with them the chained q_d given as states
         at the window starts (Trajectory's states form), each interval integrated with the inputs in
         effect (a function of t, so not for the online controller, which takes the windows').
         """
@@ -7345,6 +7411,13 @@ def receding_horizon_gamma_star(horizon: RecedingHorizon, tf: typing.SupportsFlo
     The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
     is a finite-horizon game of its own (receding_horizon_gamma_star).
     
+    A desired trajectory given as states (a planner's nodes, for a vehicle open-loop unstable
+    along its plan; trajectory.hpp): each window is the states form over its own interval, from its
+    start (the node there, or the chained q_d) through the nodes inside it, each interval
+    integrated from its node; beyond the last node the window integrates from it. The windows
+    then chain without the open-loop drift of one integration. The nodes are kept whole (their
+    memory grows with the mission: n + 1 numbers per node).
+    
     A path changed under way (with_path_change): from the window that starts at t_join on, the
     windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
     that state); the windows before it keep the old inputs to their ends.
@@ -7847,6 +7920,13 @@ def simulate_receding_horizon(horizon: RecedingHorizon, disturbance: typing.Any,
         seconds; the receding horizon never reaches them).
     The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
     is a finite-horizon game of its own (receding_horizon_gamma_star).
+    
+    A desired trajectory given as states (a planner's nodes, for a vehicle open-loop unstable
+    along its plan; trajectory.hpp): each window is the states form over its own interval, from its
+    start (the node there, or the chained q_d) through the nodes inside it, each interval
+    integrated from its node; beyond the last node the window integrates from it. The windows
+    then chain without the open-loop drift of one integration. The nodes are kept whole (their
+    memory grows with the mission: n + 1 numbers per node).
     
     A path changed under way (with_path_change): from the window that starts at t_join on, the
     windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from

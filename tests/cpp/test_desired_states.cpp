@@ -6,13 +6,17 @@
 //   * a state that is not on the trajectory shows as the defect of its interval, and a scenario
 //     refuses it naming [desired] max_defect;
 //   * on the paper's (stable) path the states of one integration give back that integration;
-//   * bad nodes are named.
+//   * bad nodes are named;
+//   * the receding horizon along states: its windows chain along the states (within the
+//     integration tolerance of sin t over 200 s, where windows of the inputs alone drift), and
+//     its loop tracks them.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "hinf/control/receding_horizon.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/trajectory.hpp"
 #include "hinf/core/errors.hpp"
@@ -140,6 +144,45 @@ TEST(DesiredStates, BadNodesAreNamed) {
   EXPECT_NE(message({0.0, NAN, 2.0}, q).find("not finite"), std::string::npos);
   EXPECT_NE(message({0.0, 1.0}, q).find("one row"), std::string::npos);
   EXPECT_NE(message({0.0}, RowMat::Zero(1, 1)).find("two nodes"), std::string::npos);
+}
+
+TEST(DesiredStates, RecedingHorizonFollowsTheStatesOverALongMission) {
+  // Nodes every 0.5 s to 212 s: the windows of a run to 200 s (H = 10 s, update 1 s) reach 210 s.
+  const std::vector<double> t = nodes(212.0, 0.5);
+  RowMat q(static_cast<Eigen::Index>(t.size()), 1);
+  for (std::size_t k = 0; k < t.size(); ++k) q(static_cast<Eigen::Index>(k), 0) = std::sin(t[k]);
+  hinf::RecedingHorizonOptions options;
+  options.window = 10.0;
+  options.update = 1.0;
+  const Mat one = Mat::Identity(1, 1);
+  const hinf::RecedingHorizon on_states(unstable_model(), t, q, sine_inputs(), one, one, 5.0, options);
+  // The chained windows against the closed form: each window is the states form over its
+  // interval (local errors of rtol 1e-10 grown by at most e^(a 0.5)), so 1e-8 holds at any t ...
+  double largest = 0.0;
+  for (double s : {0.0, 3.7, 57.25, 123.9, 199.5}) largest = std::max(largest, std::abs(on_states.desired_state(s)[0] - std::sin(s)));
+  EXPECT_LT(largest, 1e-8);
+  // ... where windows that integrate the inputs from the chained state drift as one integration.
+  const hinf::RecedingHorizon on_inputs(unstable_model(), Vec::Zero(1), sine_inputs(), 0.0, one, one, 5.0, options);
+  EXPECT_GT(std::abs(on_inputs.desired_state(20.0)[0] - std::sin(20.0)), 1e-3);
+  // The reference of a run and the loop: the vehicle started 0.5 off ends on sin t.
+  const hinf::TrajectoryPtr reference = on_states.reference(200.0);
+  EXPECT_LT(std::abs(reference->q_d(199.5)[0] - std::sin(199.5)), 1e-8);
+  hinf::SimulationOptions run_options;
+  run_options.output_dt = 0.5;
+  const hinf::SimulationResult run = hinf::simulate_receding_horizon(
+      on_states, hinf::Disturbance(hinf::VectorSignal::zeros(1)), Vec::Constant(1, 0.5), 200.0, run_options);
+  ASSERT_EQ(run.status, hinf::RunStatus::Completed) << run.status_message;
+  const Eigen::Index last = run.t.size() - 1;
+  EXPECT_NEAR(run.q_d(last, 0), std::sin(200.0), 1e-8);
+  // The closed loop contracts the initial 0.5 at a rate of at least 1/s (a - B'Z with Z ~ 2a): gone by 200 s.
+  EXPECT_LT(std::abs(run.q(last, 0) - std::sin(200.0)), 1e-6);
+  // Bad nodes are named.
+  EXPECT_THROW(hinf::RecedingHorizon(unstable_model(), {0.0, 0.0}, RowMat::Zero(2, 1), sine_inputs(), one, one, 5.0,
+                                     options),
+               hinf::InputError);
+  EXPECT_THROW(hinf::RecedingHorizon(unstable_model(), {0.0, 1.0}, RowMat::Zero(3, 1), sine_inputs(), one, one, 5.0,
+                                     options),
+               hinf::InputError);
 }
 
 }  // namespace

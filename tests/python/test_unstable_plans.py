@@ -7,6 +7,7 @@ from q0); the default grid follows the waypoints and the vehicle's fastest mode.
 
 from __future__ import annotations
 
+import copy
 import json
 import math
 import os
@@ -241,6 +242,31 @@ def test_an_unstable_vessel_of_our_own_is_planned_and_tracked():
     assert run.simulation.status == hc.RunStatus.completed
     assert run.metrics.max_position_error >= math.hypot(1.0, 1.0) - 1e-12
     assert run.metrics.final_position_error < FINAL_TOLERANCE
+
+
+@pytest.mark.ipopt
+def test_an_unstable_plan_is_tracked_over_receding_windows():
+    """A mission of any length on an unstable vehicle: the receding horizon along the planned
+    states (each window the states form over its interval), where windows that integrate the
+    inputs from the chained state drift as one integration does."""
+    document = copy.deepcopy(VESSEL_DOCUMENT)
+    document["receding_horizon"] = {"window": 10.0, "update": 1.0}
+    planned = plan_scenario(document, "vessel_s_receding.toml", cache=False)
+    assert planned.plan.states_given and planned.scenario.desired_states is not None
+    run = hc.run_scenario(planned.scenario)
+    assert run.simulation.status == hc.RunStatus.completed
+    assert run.receding_horizon.windows == int(planned.scenario.tf)
+    # The run's desired trajectory is the plan: at tf the last node, up to the defects allowed
+    # (max_defect 1e-6 per interval, a few intervals' growth at most in between).
+    q_d_end = run.simulation.q_d[-1]
+    assert np.abs(q_d_end - planned.plan.q[-1]).max() < 1e-5
+    assert run.metrics.final_position_error < FINAL_TOLERANCE
+    # The same windows on the inputs alone drift from the plan (the mismatch the planner found).
+    scenario = planned.scenario
+    horizon = hc.RecedingHorizon(scenario.model, scenario.desired_q0, scenario.desired_u, 0.0, scenario.Q,
+                                 scenario.Qf, scenario.gamma, scenario.receding_horizon)
+    drift = np.abs(horizon.desired_state(scenario.tf) - planned.plan.q[-1]).max()
+    assert drift > 1e3 * np.abs(q_d_end - planned.plan.q[-1]).max()
 
 
 # ---- a stable plan stays as it was ----

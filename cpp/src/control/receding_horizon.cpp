@@ -48,6 +48,34 @@ RecedingHorizon::RecedingHorizon(ModelPtr model, Vec q_d0, VectorSignal u_d, dou
   require(gamma_ > 0.0, "gamma must be > 0 (may be inf), got ", gamma_);
 }
 
+namespace {
+
+// The first node's state of a desired trajectory given as states, after the checks of
+// Trajectory's states form (trajectory.hpp), made before anything is integrated.
+Vec first_node(const ModelPtr& model, const std::vector<double>& t_nodes, const RowMat& q_nodes) {
+  require(model != nullptr, "the receding horizon needs a model");
+  require(t_nodes.size() >= 2, "a desired trajectory given as states needs at least two nodes, got ", t_nodes.size());
+  for (std::size_t k = 0; k < t_nodes.size(); ++k)
+    require(std::isfinite(t_nodes[k]) && (k == 0 || t_nodes[k] > t_nodes[k - 1]),
+            "the node times must be finite and increasing: node ", k, " is not");
+  require(q_nodes.rows() == static_cast<Eigen::Index>(t_nodes.size()) && q_nodes.cols() == model->n() &&
+              q_nodes.allFinite(),
+          "the node states need one finite row of ", model->n(), " numbers per node time (", t_nodes.size(), " x ",
+          model->n(), "), got ", q_nodes.rows(), " x ", q_nodes.cols());
+  return q_nodes.row(0).transpose();
+}
+
+}  // namespace
+
+RecedingHorizon::RecedingHorizon(ModelPtr model, std::vector<double> t_nodes, RowMat q_nodes, VectorSignal u_d,
+                                 Mat Q, Mat Qf, double gamma, RecedingHorizonOptions options, SolverOptions solver,
+                                 TrajectoryOptions trajectory)
+    : RecedingHorizon(model, first_node(model, t_nodes, q_nodes), std::move(u_d), t_nodes.empty() ? 0.0 : t_nodes[0],
+                      std::move(Q), std::move(Qf), gamma, options, solver, trajectory) {
+  node_t_ = std::move(t_nodes);
+  node_q_ = std::move(q_nodes);
+}
+
 int RecedingHorizon::window_at(double t) const {
   require(std::isfinite(t) && t >= t0_, "t = ", t, " is before the receding horizon's t0 = ", t0_);
   const double position = (t - t0_) / options_.update;
@@ -77,12 +105,46 @@ const VectorSignal& RecedingHorizon::window_inputs(int j) const {
   return u_d_;
 }
 
+TrajectoryPtr RecedingHorizon::states_trajectory(double t_a, const Vec& q_a, double t_b, const VectorSignal& u) const {
+  // Nodes within this distance of t_a or t_b are those ends (a window's start on a node).
+  const double near = 1e-9 * options_.update;
+  std::vector<double> t{t_a};
+  std::vector<Eigen::Index> rows;
+  Vec start = q_a;
+  const auto first = std::upper_bound(node_t_.begin(), node_t_.end(), t_a - near);
+  if (first != node_t_.end() && *first <= t_a + near) start = node_q_.row(first - node_t_.begin()).transpose();
+  for (auto it = first; it != node_t_.end() && *it < t_b - near; ++it)
+    if (*it > t_a + near) {
+      t.push_back(*it);
+      rows.push_back(it - node_t_.begin());
+    }
+  // The end: the node there, or the integration from the last node before it (the last
+  // interval's defect is then zero).
+  const auto end = std::lower_bound(node_t_.begin(), node_t_.end(), t_b - near);
+  Vec last;
+  if (end != node_t_.end() && *end <= t_b + near) {
+    last = node_q_.row(end - node_t_.begin()).transpose();
+  } else {
+    const Vec from = rows.empty() ? start : Vec(node_q_.row(rows.back()).transpose());
+    last = Trajectory(model_, from, u, t.back(), t_b, trajectory_options_).q_d(t_b);
+  }
+  t.push_back(t_b);
+  RowMat q(static_cast<Eigen::Index>(t.size()), n());
+  q.row(0) = start.transpose();
+  for (std::size_t k = 0; k < rows.size(); ++k) q.row(static_cast<Eigen::Index>(k + 1)) = node_q_.row(rows[k]);
+  q.row(q.rows() - 1) = last.transpose();
+  return std::make_shared<const Trajectory>(model_, std::move(t), q, u, trajectory_options_);
+}
+
 TrajectoryPtr RecedingHorizon::window_trajectory(int j, const Vec& q_d_start) const {
   require(j >= 0, "a receding-horizon window's index must be >= 0, got ", j);
   check_size(q_d_start, n(), str_cat("the desired state at the start of window ", j));
-  const double t_start = window_start(j);
-  return std::make_shared<const Trajectory>(model_, q_d_start, window_inputs(j), t_start, t_start + options_.window,
-                                            trajectory_options_);
+  const double t_start = window_start(j), t_end = t_start + options_.window;
+  // The states hold for the path they were given with: until the first path change.
+  const bool on_states = !node_t_.empty() && (changes_.empty() || window_start(j) < changes_.front().first -
+                                                                      1e-9 * options_.update);
+  if (on_states) return states_trajectory(t_start, q_d_start, t_end, window_inputs(j));
+  return std::make_shared<const Trajectory>(model_, q_d_start, window_inputs(j), t_start, t_end, trajectory_options_);
 }
 
 Mat RecedingHorizon::terminal_weight(int j, const Trajectory& window) const {
@@ -113,6 +175,7 @@ Vec RecedingHorizon::desired_state(double t) const {
 
 TrajectoryPtr RecedingHorizon::reference(double tf) const {
   check_horizon(t0_, tf);
+  if (changes_.empty() && !node_t_.empty()) return states_trajectory(t0_, q_d0_, tf, u_d_);
   if (changes_.empty()) return std::make_shared<const Trajectory>(model_, q_d0_, u_d_, t0_, tf, trajectory_options_);
   std::vector<double> t_nodes;
   std::vector<Vec> q_nodes;

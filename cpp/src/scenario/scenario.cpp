@@ -155,8 +155,6 @@ void Scenario::validate_settings() const {
             "[path_change] t must be inside the horizon (", t0, ", ", tf, ") s, got ", path_change->t);
   }
   if (receding_horizon) {
-    require(!desired_states, "[receding_horizon] integrates each window from the end of the one before; [desired]"
-            " states (a trajectory given at nodes) has no receding-horizon form yet: remove one of the two");
     try {
       receding_horizon->validate();
     } catch (const InputError& e) {
@@ -307,8 +305,16 @@ ScenarioDesign design_scenario(const Scenario& s) {
     if (s.receding_horizon) {
       // The windows are solved as the loop runs (simulate_receding_horizon): here only the first
       // window's trajectory, for the model and the results.
-      design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf,
-                                                               design_gamma(s), *s.receding_horizon, s.solver);
+      if (s.desired_states) {
+        // The windows follow the states; the defects are checked over [t0, tf] as without windows.
+        trajectory_of(s);
+        design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_states->t, s.desired_states->q,
+                                                                 s.desired_u, s.Q, s.Qf, design_gamma(s),
+                                                                 *s.receding_horizon, s.solver);
+      } else {
+        design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf,
+                                                                 design_gamma(s), *s.receding_horizon, s.solver);
+      }
       if (s.path_change) design.horizon = design.horizon->with_path_change(s.path_change->t, s.path_change->u_d);
       design.trajectory = design.horizon->window_trajectory(0, s.desired_q0);
       design.seconds = seconds_since(start);

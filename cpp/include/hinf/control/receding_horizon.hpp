@@ -19,6 +19,13 @@
 // The gamma a receding-horizon run certifies is the largest gamma* over its windows: each window
 // is a finite-horizon game of its own (receding_horizon_gamma_star).
 //
+// A desired trajectory given as states (a planner's nodes, for a vehicle open-loop unstable
+// along its plan; trajectory.hpp): each window is the states form over its own interval, from its
+// start (the node there, or the chained q_d) through the nodes inside it, each interval
+// integrated from its node; beyond the last node the window integrates from it. The windows
+// then chain without the open-loop drift of one integration. The nodes are kept whole (their
+// memory grows with the mission: n + 1 numbers per node).
+//
 // A path changed under way (with_path_change): from the window that starts at t_join on, the
 // windows' trajectories continue from the chained q_d(t_join) with other inputs (a new plan from
 // that state); the windows before it keep the old inputs to their ends.
@@ -82,6 +89,12 @@ class RecedingHorizon {
   // solve_grde. InputError for any of them, or for bad options.
   RecedingHorizon(ModelPtr model, Vec q_d0, VectorSignal u_d, double t0, Mat Q, Mat Qf, double gamma,
                   RecedingHorizonOptions options, SolverOptions solver = {}, TrajectoryOptions trajectory = {});
+  // The desired trajectory given as states: q_d(t_k) = row k of q_nodes at the nodes t_nodes
+  // (increasing, t0 = t_nodes[0], q_d0 = row 0), as for Trajectory's states form; the rest as
+  // above. InputError for nodes that are not finite and increasing or rows of another shape.
+  RecedingHorizon(ModelPtr model, std::vector<double> t_nodes, RowMat q_nodes, VectorSignal u_d, Mat Q, Mat Qf,
+                  double gamma, RecedingHorizonOptions options, SolverOptions solver = {},
+                  TrajectoryOptions trajectory = {});
 
   // The design model of every window.
   const Model& model() const { return *model_; }
@@ -98,6 +111,10 @@ class RecedingHorizon {
   const Mat& Qf() const { return Qf_; }
   const Vec& q_d0() const { return q_d0_; }
   const VectorSignal& u_d_signal() const { return u_d_; }
+  // The nodes of a desired trajectory given as states (s; empty otherwise).
+  const std::vector<double>& node_times() const { return node_t_; }
+  // The desired states at the nodes, one row per node (0 x 0 otherwise).
+  const RowMat& node_states() const { return node_q_; }
   // The window and update period, and the integrator of every window's GRDE.
   const RecedingHorizonOptions& options() const { return options_; }
   const SolverOptions& solver() const { return solver_; }
@@ -130,7 +147,8 @@ class RecedingHorizon {
   // integrated from q_d0 up to the window that holds t.
   Vec desired_state(double t) const;
   // The desired trajectory of a run on [t0, tf] (tf > t0), the reference of its q_d series:
-  // without path changes one integration from q_d0; with them the chained q_d given as states
+  // without path changes one integration from q_d0 (the states form of the nodes, for a
+  // trajectory given as states); with them the chained q_d given as states
   // at the window starts (Trajectory's states form), each interval integrated with the inputs in
   // effect (a function of t, so not for the online controller, which takes the windows').
   TrajectoryPtr reference(double tf) const;
@@ -140,6 +158,9 @@ class RecedingHorizon {
   HorizonWindow next(const HorizonWindow& previous) const;
 
  private:
+  // The states form from q_a at t_a through the nodes strictly inside (t_a, t_b) to t_b, with u.
+  TrajectoryPtr states_trajectory(double t_a, const Vec& q_a, double t_b, const VectorSignal& u) const;
+
   ModelPtr model_;
   Vec q_d0_;
   VectorSignal u_d_;
@@ -150,6 +171,8 @@ class RecedingHorizon {
   SolverOptions solver_;
   TrajectoryOptions trajectory_options_;
   std::vector<std::pair<double, VectorSignal>> changes_;
+  std::vector<double> node_t_;  // a trajectory given as states: the nodes (empty: integrated from q_d0)
+  RowMat node_q_;
 };
 
 // What a receding-horizon run solved and held.
