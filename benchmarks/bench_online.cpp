@@ -15,7 +15,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "hinf/control/controller.hpp"
@@ -123,6 +125,54 @@ void time_receding(const TrajectoryPtr& trajectory, bool output_feedback, bool b
   }
 }
 
+// N calls paced 1 ms apart in wall time (sleep_until between them), as a vehicle's calls come with
+// other work or idle time between them: the fixed design's controller, or the receding horizon's
+// (H = 10 s, a new window every 20 calls, solved on the other thread well before its switch).
+// State feedback, measurement of the instant, the limits of time_steps. The switching calls of the
+// receding horizon go to `switching` too, the others to `others`.
+void time_paced(const SampledLawPtr& law, bool receding, long steps, std::vector<double>& seconds,
+                std::vector<double>& switching, std::vector<double>& others) {
+  OnlineOptions options;
+  options.limits.u_min = Vec::Constant(2, -3.0);
+  options.limits.u_max = Vec::Constant(2, 3.0);
+  options.limits.rate_max = Vec::Constant(2, 20.0);
+  const Trajectory& trajectory = law->trajectory();
+  RecedingHorizonOptions rh;
+  rh.window = 10.0;
+  rh.update = 1.0;
+  auto horizon = std::make_shared<const RecedingHorizon>(trajectory.model_ptr(), trajectory.q_d0(),
+                                                         trajectory.u_d_signal(), 0.0, Mat::Identity(6, 6),
+                                                         Mat::Identity(6, 6), 5.0, rh);
+  std::optional<RecedingOnlineController> moving;
+  std::optional<OnlineController> fixed;
+  if (receding)
+    moving.emplace(horizon, 0.05, options);
+  else
+    fixed.emplace(law, options);
+  Vec q0(6);
+  q0 << 1.0, 0.0, 0.0, -1.0, -1.0, M_PI / 4;
+  Vec q = q0, u(2);
+  const long per_run = 799;
+  auto next = std::chrono::steady_clock::now();
+  for (long i = 0, k = 0; i < steps; ++i, ++k) {
+    if (k % per_run == 0) {
+      if (receding) moving->reset(0.0, q0);
+      else fixed->reset(0.0, q0);
+      k = 0;
+    }
+    const double t = (k + 1) * 0.05;
+    q(3) = q0(3) + 1e-3 * std::sin(0.01 * i);
+    if (receding) moving->synchronize(t);
+    next += std::chrono::milliseconds(1);
+    std::this_thread::sleep_until(next);
+    const auto start = std::chrono::steady_clock::now();
+    if (receding) moving->step(t, q.data(), t, u.data());
+    else fixed->step(t, q.data(), t, u.data());
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (receding) ((k + 1) % 20 == 0 ? switching : others).push_back(seconds.back());
+  }
+}
+
 // N calls of the continuous law's control(), on the same sample times and states.
 void time_control(const RiccatiSolutionPtr& design, double T, long steps, std::vector<double>& seconds) {
   HinfStateFeedback law(design);
@@ -181,6 +231,7 @@ int main(int argc, char** argv) {
                               {laws[1].get(), true, MeasurementUpdate::Discrete}};
   const auto law_of = [&laws](const SampledLaw* law) { return law == laws[0].get() ? laws[0] : laws[1]; };
   std::vector<std::vector<double>> seconds(3 * std::size(settings) + 5), switching(4), others(4);
+  std::vector<double> paced_fixed, paced_receding, paced_switching, paced_others, unused;
   for (auto& s : seconds) s.reserve(static_cast<std::size_t>(steps));
   for (int round = 0; round < rounds; ++round) {
     int c = 0;
@@ -190,6 +241,9 @@ int main(int argc, char** argv) {
     time_control(design, T, steps / rounds, seconds[c]);
     for (int i = 0; i < 4; ++i)
       time_receding(trajectory, i % 2 == 1, i < 2, steps / rounds, seconds[c + 1 + i], switching[i], others[i]);
+    // Paced: a tenth of the calls (1 ms each in wall time).
+    time_paced(laws[0], false, steps / rounds / 10, paced_fixed, unused, unused);
+    time_paced(laws[0], true, steps / rounds / 10, paced_receding, paced_switching, paced_others);
   }
   int c = 0;
   for (const Setting& s : settings)
@@ -212,5 +266,14 @@ int main(int argc, char** argv) {
       std::printf("%-26s %-34s %10.3f %10.3f %10.3f\n", i % 2 == 0 ? "receding, state" : "receding, output, sampled",
                   label.c_str(), r.median * 1e6, r.p99 * 1e6, r.max * 1e6);
     }
+  const std::pair<const char*, const std::vector<double>*> paced[] = {{"fixed design, every call", &paced_fixed},
+                                                                       {"receding, every call", &paced_receding},
+                                                                       {"receding, switching calls", &paced_switching},
+                                                                       {"receding, other calls", &paced_others}};
+  for (const auto& [label, values] : paced) {
+    const Percentiles r = percentiles(*values);
+    std::printf("%-26s %-34s %10.3f %10.3f %10.3f\n", "paced 1 ms, state", label, r.median * 1e6, r.p99 * 1e6,
+                r.max * 1e6);
+  }
   return 0;
 }
