@@ -408,6 +408,30 @@ Examples
 >>> result = hc.scenario_gamma_star_output_feedback(scenario)
 >>> round(result.gamma_star, 2), result.binding
 (4.59, <GammaCondition.coupling: 3>))").c_str());
+  m.def("scenario_receding_horizon", &scenario_receding_horizon, py::arg("scenario"),
+        py::call_guard<ComputationScope>(), doc({"scenario_receding_horizon"}, R"(Parameters
+----------
+scenario : Scenario
+    A scenario with [receding_horizon].
+
+Returns
+-------
+RecedingHorizon
+    The windows a run of the scenario solves, along its [desired] trajectory (from inputs, or
+    from states and inputs) with its [path_change] applied.
+
+Raises
+------
+ValueError
+    A scenario without [receding_horizon], or an invalid scenario.
+
+Examples
+--------
+)" HINF_SCENARIO_EXAMPLE("paper_fig1") R"(
+>>> scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+>>> horizon = hc.scenario_receding_horizon(scenario)
+>>> horizon.window_at(20.5), horizon.window_start(21)
+(20, 21.0))").c_str());
   m.def("scenario_certificates", &scenario_certificates, py::arg("scenario"),
         py::call_guard<ComputationScope>(), doc({"scenario_certificates"}, R"(Parameters
 ----------

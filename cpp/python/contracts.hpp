@@ -1815,6 +1815,9 @@ for a scenario with [measurement]). options.solver is replaced by the scenario's
     {"scenario_noise", R"contract(The standard normal noise samples of a scenario with [measurement] (from its seed): one row
 per hold interval of [measurement] sample_period, or with [sampling] one per sample of its
 period (a measurement's noise is that of its sample).)contract"},
+    {"scenario_receding_horizon", R"contract(The receding horizon a run of the scenario follows: its [receding_horizon] over its [desired]
+trajectory (inputs, or states and inputs), its [path_change] applied. InputError without
+[receding_horizon] or for an invalid scenario.)contract"},
     {"scenario_toml", R"contract(The inverse of parse_scenario_toml: the scenario as a scenario file that reads back to an
 equal scenario (numbers written exactly). A model or signal that has no file form (a model
 or a signal implemented in Python) is an InputError naming it.)contract"},

@@ -148,6 +148,7 @@ from hinf_cpp._core import (
     run_scenario_with_noise,
     run_scenarios,
     scenario_certificates,
+    scenario_receding_horizon,
     scenario_gamma_star,
     scenario_gamma_star_output_feedback,
     scenario_noise,
@@ -167,7 +168,7 @@ __all__ = [
     # scenarios
     "Scenario", "MeasurementSpec", "SamplingSpec", "SampledDesign", "Law", "load_scenario", "scenario_from_dict", "scenario_path", "signal_from_spec",
     "run_scenario", "run_scenario_with_noise", "RunResult", "Timing", "scenario_gamma_star",
-    "scenario_gamma_star_output_feedback", "scenario_certificates", "scenario_noise", "run_scenarios",
+    "scenario_gamma_star_output_feedback", "scenario_certificates", "scenario_receding_horizon", "scenario_noise", "run_scenarios",
     "StudyOptions", "StudyRun", "RunOutcome",
     # signals
     "Signal", "VectorSignal", "Harmonic", "Interpolation",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -7753,6 +7753,37 @@ def scenario_noise(scenario: Scenario) -> typing.Annotated[numpy.typing.NDArray[
     >>> noise = hc.scenario_noise(scenario)
     >>> noise.shape, np.array_equal(noise, hc.scenario_noise(scenario))     # 10 s / 0.01 s, seeded
     ((1000, 3), True)
+    """
+def scenario_receding_horizon(scenario: Scenario) -> RecedingHorizon:
+    """
+    The receding horizon a run of the scenario follows: its [receding_horizon] over its [desired]
+    trajectory (inputs, or states and inputs), its [path_change] applied. InputError without
+    [receding_horizon] or for an invalid scenario.
+    
+    Parameters
+    ----------
+    scenario : Scenario
+        A scenario with [receding_horizon].
+    
+    Returns
+    -------
+    RecedingHorizon
+        The windows a run of the scenario solves, along its [desired] trajectory (from inputs, or
+        from states and inputs) with its [path_change] applied.
+    
+    Raises
+    ------
+    ValueError
+        A scenario without [receding_horizon], or an invalid scenario.
+    
+    Examples
+    --------
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.tf = 10.0
+    >>> scenario.receding_horizon = hc.RecedingHorizonOptions(window=10.0, update=1.0)
+    >>> horizon = hc.scenario_receding_horizon(scenario)
+    >>> horizon.window_at(20.5), horizon.window_start(21)
+    (20, 21.0)
     """
 def scenario_toml(scenario: Scenario) -> str:
     """

@@ -335,3 +335,34 @@ def test_states_are_the_planners_to_give():
         root = {**AUV_DOCUMENT, "desired": {**AUV_DOCUMENT["desired"], key: value}}
         with pytest.raises(ValueError, match=rf"^auv\.toml: \[desired\] {key}: the planner gives the states"):
             plan_scenario(root, "auv.toml", cache=False)
+
+
+@pytest.mark.ipopt
+def test_a_path_change_on_an_unstable_plan_starts_from_the_planned_states():
+    """[path_change] waypoints on a receding-horizon run whose [desired] is planned as states: the
+    new path starts from the run's desired state at the join (the planned node there), not from
+    the inputs integrated from q0 (which drift from the plan with the open-loop growth)."""
+    document = copy.deepcopy(VESSEL_DOCUMENT)
+    document["receding_horizon"] = {"window": 10.0, "update": 1.0}
+    # At t = 100 s the vessel is near (100.7, -0.3) m at about 1 m/s: slow down towards a point
+    # 11 m ahead on the line y = 0 at 120 s.
+    target = Waypoint(112.0, 0.0, t=120.0, heading=0.0)
+    document["path_change"] = {"t": 100.0, "plan": dict(VESSEL_BOUNDS),
+                               "waypoints": [{"x": target.x, "y": target.y, "t": target.t, "heading": 0.0}]}
+    planned = plan_scenario(document, "vessel_s_change.toml", cache=False)
+    assert planned.plan.states_given and not planned.path_change_plan.states_given
+    node = int(np.argmin(np.abs(np.asarray(planned.plan.t) - 100.0)))
+    assert planned.plan.t[node] == pytest.approx(100.0, abs=1e-9)
+    # The new path's first state is the plan's node at 60 s, up to the defects the states form
+    # allows between nodes (max_defect 1e-6 per interval).
+    assert np.abs(planned.path_change_plan.q[0] - planned.plan.q[node]).max() < 1e-5
+    # The inputs alone, integrated from q0, are 5e-3 away at 100 s (the open-loop growth, about
+    # e-fold in 9 s here): where the new path would start without the states.
+    scenario = planned.scenario
+    inputs_only = hc.RecedingHorizon(scenario.model, scenario.desired_q0, planned.plan.inputs(), 0.0, scenario.Q,
+                                     scenario.Qf, scenario.gamma, scenario.receding_horizon)
+    assert np.abs(inputs_only.desired_state(100.0) - planned.plan.q[node]).max() > 1e-3
+    run = hc.run_scenario(scenario)
+    assert run.simulation.status == hc.RunStatus.completed
+    q_end = run.simulation.q[-1]
+    assert math.hypot(q_end[3] - target.x, q_end[4] - target.y) < FINAL_TOLERANCE

@@ -285,18 +285,31 @@ TrajectoryPtr trajectory_of(const Scenario& s) {
   return trajectory;
 }
 
-}  // namespace
-
-namespace detail {
-
-namespace {
-
 // The law's gamma: the scenario's, or inf for the lqr law.
 double design_gamma(const Scenario& s) {
   return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
 }
 
+// The receding horizon of a resolved, validated scenario with [receding_horizon], its path
+// change applied.
+std::shared_ptr<const RecedingHorizon> receding_horizon_of(const Scenario& s) {
+  std::shared_ptr<const RecedingHorizon> horizon;
+  if (s.desired_states) {
+    // The windows follow the states; the defects are checked over [t0, tf] as without windows.
+    trajectory_of(s);
+    horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_states->t, s.desired_states->q, s.desired_u,
+                                                      s.Q, s.Qf, design_gamma(s), *s.receding_horizon, s.solver);
+  } else {
+    horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf,
+                                                      design_gamma(s), *s.receding_horizon, s.solver);
+  }
+  if (s.path_change) horizon = horizon->with_path_change(s.path_change->t, s.path_change->u_d);
+  return horizon;
+}
+
 }  // namespace
+
+namespace detail {
 
 ScenarioDesign design_scenario(const Scenario& s) {
   const auto start = std::chrono::steady_clock::now();
@@ -305,17 +318,7 @@ ScenarioDesign design_scenario(const Scenario& s) {
     if (s.receding_horizon) {
       // The windows are solved as the loop runs (simulate_receding_horizon): here only the first
       // window's trajectory, for the model and the results.
-      if (s.desired_states) {
-        // The windows follow the states; the defects are checked over [t0, tf] as without windows.
-        trajectory_of(s);
-        design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_states->t, s.desired_states->q,
-                                                                 s.desired_u, s.Q, s.Qf, design_gamma(s),
-                                                                 *s.receding_horizon, s.solver);
-      } else {
-        design.horizon = std::make_shared<const RecedingHorizon>(s.model, s.desired_q0, s.desired_u, s.t0, s.Q, s.Qf,
-                                                                 design_gamma(s), *s.receding_horizon, s.solver);
-      }
-      if (s.path_change) design.horizon = design.horizon->with_path_change(s.path_change->t, s.path_change->u_d);
+      design.horizon = receding_horizon_of(s);
       design.trajectory = design.horizon->window_trajectory(0, s.desired_q0);
       design.seconds = seconds_since(start);
       return design;
@@ -565,6 +568,14 @@ GammaStarResult scenario_gamma_star_output_feedback(const Scenario& scenario, Ga
   require(s.measurement.has_value(), "the output-feedback gamma* needs a scenario with [measurement]");
   options.solver = s.solver;
   return gamma_star_output_feedback(trajectory_of(s), s.Q, s.Qf, s.measurement->N, initial_sigma(s), options);
+}
+
+std::shared_ptr<const RecedingHorizon> scenario_receding_horizon(const Scenario& scenario) {
+  require(scenario.receding_horizon.has_value(),
+          "the scenario has no [receding_horizon]: give one (window, update) to run it over moving windows");
+  const Scenario s = scenario.resolved();
+  s.validate();
+  return receding_horizon_of(s);
 }
 
 Certificates scenario_certificates(const Scenario& scenario) {

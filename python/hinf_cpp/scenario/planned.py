@@ -326,13 +326,11 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     if planning["path_change"]:
         keys = planning["path_change"]
         options = _plan_options(keys.get("plan", {}), source, model.m(), "path_change")
-        # The run without the change, with the [desired] inputs (planned or given): its desired state
-        # at t is where the new path starts.
-        base = checked.resolved()
-        desired_u = desired_plan.inputs(hold_until) if desired_plan is not None else base.desired_u
-        gamma = math.inf if base.law == _core.Law.lqr else base.gamma
-        horizon = _core.RecedingHorizon(base.model, base.desired_q0, desired_u, base.t0, base.Q, base.Qf, gamma,
-                                        base.receding_horizon, base.solver)
+        # The run without the change, along its [desired] trajectory (planned or given, inputs or
+        # states): its desired state at t is where the new path starts.
+        unchanged = _core.parse_scenario_toml(toml_text(document, source), source, allow_code)
+        unchanged.path_change = None
+        horizon = _core.scenario_receding_horizon(unchanged)
         t_join = checked.path_change.t
         if "waypoints" in keys:
             waypoints, where = _waypoints(keys["waypoints"], source, "path_change"), "[path_change]"
@@ -387,11 +385,11 @@ def _start(model: _core.Model, q) -> list[float]:
 
 def _windows_end(scenario: _core.Scenario) -> float:
     """The end of the last receding-horizon window a run of the scenario solves: the window of tf
-    (as RecedingHorizon.window_at counts) and the one after it, which the online controller solves
-    ahead, each `window` long."""
-    options = scenario.receding_horizon
-    j = math.floor((scenario.tf - scenario.t0) / options.update + 1e-9)
-    return scenario.t0 + (j + 1) * options.update + options.window
+    and the one after it, which the online controller solves ahead, each `window` long."""
+    unchanged = copy.copy(scenario)
+    unchanged.path_change = None  # checked with its plan (plan_path_change names a bad t there)
+    horizon = _core.scenario_receding_horizon(unchanged)
+    return horizon.window_start(horizon.window_at(scenario.tf) + 1) + scenario.receding_horizon.window
 
 
 def planned_scenario_toml(planned: PlannedScenario, output: str | os.PathLike) -> str:

@@ -195,6 +195,10 @@ std::vector<std::string> scenario_warnings(const Scenario& scenario);
 GammaStarResult scenario_gamma_star(const Scenario& scenario, GammaStarOptions options = {});
 // The smallest gamma of the scenario's output-feedback design (needs [measurement]).
 GammaStarResult scenario_gamma_star_output_feedback(const Scenario& scenario, GammaStarOptions options = {});
+// The receding horizon a run of the scenario follows: its [receding_horizon] over its [desired]
+// trajectory (inputs, or states and inputs), its [path_change] applied. InputError without
+// [receding_horizon] or for an invalid scenario.
+std::shared_ptr<const RecedingHorizon> scenario_receding_horizon(const Scenario& scenario);
 // The certificates of paper §3 for the scenario's design (gamma, Q, Qf, kappa).
 Certificates scenario_certificates(const Scenario& scenario);
 
