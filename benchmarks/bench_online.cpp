@@ -232,6 +232,9 @@ int main(int argc, char** argv) {
   const auto law_of = [&laws](const SampledLaw* law) { return law == laws[0].get() ? laws[0] : laws[1]; };
   std::vector<std::vector<double>> seconds(3 * std::size(settings) + 5), switching(4), others(4);
   std::vector<double> paced_fixed, paced_receding, paced_switching, paced_others, unused;
+  // The p99 of each round's paced calls: the fixed design (A), the receding horizon, the fixed
+  // design again (B). B against A is the noise of the p99 itself (the same code twice).
+  std::vector<double> p99_ratio_again, p99_ratio_receding;
   for (auto& s : seconds) s.reserve(static_cast<std::size_t>(steps));
   for (int round = 0; round < rounds; ++round) {
     int c = 0;
@@ -241,9 +244,17 @@ int main(int argc, char** argv) {
     time_control(design, T, steps / rounds, seconds[c]);
     for (int i = 0; i < 4; ++i)
       time_receding(trajectory, i % 2 == 1, i < 2, steps / rounds, seconds[c + 1 + i], switching[i], others[i]);
-    // Paced: a tenth of the calls (1 ms each in wall time).
-    time_paced(laws[0], false, steps / rounds / 10, paced_fixed, unused, unused);
-    time_paced(laws[0], true, steps / rounds / 10, paced_receding, paced_switching, paced_others);
+    // Paced: a tenth of the calls for each of the three series (1 ms each in wall time).
+    std::vector<double> a, r, b;
+    time_paced(laws[0], false, steps / rounds / 10, a, unused, unused);
+    time_paced(laws[0], true, steps / rounds / 10, r, paced_switching, paced_others);
+    time_paced(laws[0], false, steps / rounds / 10, b, unused, unused);
+    const double p99_a = percentiles(a).p99;
+    p99_ratio_receding.push_back(percentiles(r).p99 / p99_a);
+    p99_ratio_again.push_back(percentiles(b).p99 / p99_a);
+    paced_fixed.insert(paced_fixed.end(), a.begin(), a.end());
+    paced_fixed.insert(paced_fixed.end(), b.begin(), b.end());
+    paced_receding.insert(paced_receding.end(), r.begin(), r.end());
   }
   int c = 0;
   for (const Setting& s : settings)
@@ -274,6 +285,13 @@ int main(int argc, char** argv) {
     const Percentiles r = percentiles(*values);
     std::printf("%-26s %-34s %10.3f %10.3f %10.3f\n", "paced 1 ms, state", label, r.median * 1e6, r.p99 * 1e6,
                 r.max * 1e6);
+  }
+  // Each round's p99 over the fixed design's first series (A): the median and range over rounds.
+  std::printf("p99 of a round's paced calls over the fixed design's (A), median [min, max] of %d rounds:\n", rounds);
+  for (const auto& [label, ratios] : {std::pair<const char*, std::vector<double>*>{"fixed design again (B)", &p99_ratio_again},
+                                      {"receding horizon", &p99_ratio_receding}}) {
+    std::sort(ratios->begin(), ratios->end());
+    std::printf("  %-24s %.3f [%.3f, %.3f]\n", label, (*ratios)[ratios->size() / 2], ratios->front(), ratios->back());
   }
   return 0;
 }
