@@ -2118,6 +2118,126 @@ Examples
 >>> result = hc.gamma_star(trajectory, np.eye(6), np.eye(6))
 >>> round(result.gamma_star, 4), result.binding                  # below it, no design
 (1.3346, <GammaCondition.grde: 1>))").c_str());
+  m.def("law_gain",
+        [](const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, const Signal& kappa,
+           const GammaStarOptions& options) {
+          require(law != nullptr, "law_gain needs the law's design (a RiccatiSolution)");
+          return law_gain(law, Q, Qf, kappa, serial_for_python_models(model_of(law->trajectory_ptr()), options));
+        },
+        py::arg("law"), py::arg("Q"), py::arg("Qf"), py::arg("kappa") = Signal(1.0),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
+        doc({"law_gain", "control/analysis.hpp"}, R"(Parameters
+----------
+law : RiccatiSolution
+    The law's design: Z of the GRDE at the law's gamma (the H-infinity law), or at gamma = inf
+    (the LQR law). The law is u = u_d - kappa B_e' Z (q - q_d).
+Q : array_like, shape (n, n)
+    Weight of the tracking error in z, symmetric positive semidefinite.
+Qf : array_like, shape (n, n)
+    Weight of the final error, symmetric positive definite.
+kappa : float or Signal, optional
+    The law's gain scaling kappa(t) > 0 (default 1).
+options : GammaStarOptions, optional
+    The bracket, tolerance, evaluations, threads and solver options of the search.
+
+Returns
+-------
+GammaStarResult
+    The induced L2 gain of the law's linearized closed loop from w to z on [t0, tf] as
+    gamma_star, with its bracket and every gamma tried.
+
+Raises
+------
+ValueError
+    Q or Qf not such weights, kappa not > 0, bad options.
+SolverError
+    An integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> hinf = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+>>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), float("inf"))
+>>> gains = [hc.law_gain(law, np.eye(6), np.eye(6)).gamma_star for law in (hinf, lqr)]
+>>> [round(gain, 3) for gain in gains]                       # each law's own attenuation
+[2.071, 2.134])").c_str());
+  m.def("law_escape_time", &law_escape_time, py::arg("law"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
+        py::arg("kappa") = Signal(1.0), py::arg("options") = SolverOptions{}, py::call_guard<ComputationScope>(),
+        doc({"law_escape_time"}, R"(Parameters
+----------
+law : RiccatiSolution
+    The law's design (see law_gain).
+Q : array_like, shape (n, n)
+    The weight of the tracking error in z.
+Qf : array_like, shape (n, n)
+    The weight of the final error.
+gamma : float
+    The level tested.
+kappa : float or Signal, optional
+    The law's gain scaling (default 1).
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+float
+    The first escape of the law's closed-loop Riccati equation (backward from tf), or NaN when
+    there is none: the law's induced L2 gain is below gamma.
+
+Raises
+------
+ValueError
+    As law_gain.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), float("inf"))
+>>> hc.law_escape_time(lqr, np.eye(6), np.eye(6), 2.2)             # above its gain 2.134
+nan
+>>> round(hc.law_escape_time(lqr, np.eye(6), np.eye(6), 2.0), 2)   # below: P escapes at t = 3.35
+3.35)").c_str());
+  m.def("solve_law_riccati", &solve_law_riccati, py::arg("law"), py::arg("Q"), py::arg("Qf"), py::arg("gamma"),
+        py::arg("kappa") = Signal(1.0), py::arg("options") = SolverOptions{}, py::call_guard<ComputationScope>(),
+        doc({"solve_law_riccati"}, R"(Parameters
+----------
+law : RiccatiSolution
+    The law's design (see law_gain).
+Q : array_like, shape (n, n)
+    The weight of the tracking error in z.
+Qf : array_like, shape (n, n)
+    The weight of the final error.
+gamma : float
+    Above the law's gain (law_gain).
+kappa : float or Signal, optional
+    The law's gain scaling (default 1).
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+SymmetricSolution
+    P(t) of the law's closed-loop Riccati equation; the law's worst-case disturbance at gamma
+    is w = gamma^-2 D_e' P (q - q_d).
+
+Raises
+------
+ValueError
+    As law_gain.
+ConjugatePointError
+    gamma is at or below the law's gain.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), float("inf"))
+>>> P = hc.solve_law_riccati(lqr, np.eye(6), np.eye(6), 2.2)
+>>> bool(np.all(np.linalg.eigvalsh(P.value(0.0)) > 0))
+True)").c_str());
   m.def("gamma_star_output_feedback",
         [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const Mat& N, const Mat& Sigma0,
            const GammaStarOptions& options) {

@@ -1477,6 +1477,19 @@ of built-in kinds:
 Model sections ([model], [plant]) are read and written through the table of model kinds
 (io/model_kinds.hpp).)contract"},
     {"l2_norm", R"contract(sqrt of the trapezoid integral of the squared row norms of series over times t.)contract"},
+    {"law_escape_time", R"contract(The closed loop of a state-feedback law: u = u_d - kappa(t) K(t) (q - q_d), K = B_e' Z(t) of
+`law` (a design at any gamma: the H-infinity law at its own gamma, the LQR law at gamma = inf),
+linearized along the design's trajectory, with x = q - q_d and the weighted error z,
+    dx/dt = (A_e - B_e K) x + D_e w,   z'z = x'Q x + |K x|^2 (kappa folded into K),
+plus x(tf)' Qf x(tf) at the end. From x(t0) = 0 its induced L2 gain over [t0, tf],
+sup_w (|z|^2 + x(tf)'Qf x(tf)) / |w|^2, is below gamma exactly when
+    -dP/dt = A_cl' P + P A_cl + Q + K'K + gamma^-2 P D_e D_e' P,   P(tf) = Qf,
+has no conjugate point on [t0, tf]. The first escape of P (backward from tf), or NaN;
+nothing is stored. Q symmetric positive semidefinite, Qf positive definite, gamma > 0, kappa > 0.)contract"},
+    {"law_gain", R"contract(The induced L2 gain of a state-feedback law's closed loop (law_escape_time, riccati.hpp): the
+smallest gamma whose closed-loop Riccati equation has no conjugate point on [t0, tf], found as
+gamma* is (binding Grde). For the H-infinity law at its gamma it lies between gamma* and that
+gamma; the LQR law (a design at gamma = inf) has one too.)contract"},
     {"linearize", R"contract(The linearization of the drift with the input held at u: A = d/dq [f(t, q) + G(t, q) u]
 (n x n) = df/dq, plus dGudq when the inputs depend on the state. At (q_d(t), u_d(t)) this is
 A_e(t).)contract"},
@@ -1881,6 +1894,8 @@ solution (gamma at or below the stationary game's gamma*, or (A, B) not stabiliz
     {"solve_grde", R"contract(Solves the GRDE (13) backward from Z(tf) = Qf over the trajectory's horizon.
 Q (n x n) symmetric positive semidefinite, Qf symmetric positive definite, gamma > 0
 (may be +inf). Throws InputError, SolverError or ConjugatePointError.)contract"},
+    {"solve_law_riccati", R"contract(P of that equation at gamma, stored: the law's worst-case disturbance is w = gamma^-2 D_e' P x.
+ConjugatePointError when gamma is at or below the law's gain.)contract"},
     {"standard_normal_samples", R"contract(count x channels standard normal samples from a seeded generator (mt19937_64 and the
 Marsaglia polar method): the same numbers for the same seed on every run.)contract"},
     {"structure_of", R"contract(What the model says about itself (n, m, nw checked first by check_dimensions, since the

@@ -142,6 +142,9 @@ from hinf_cpp._core import (
     gamma_star_discrete_output_feedback,
     gamma_star_output_feedback,
     grde_escape_time,
+    law_escape_time,
+    law_gain,
+    solve_law_riccati,
     max_rho_sigma_z,
     metric_table,
     run_scenario,
@@ -179,7 +182,7 @@ __all__ = [
     # the design
     "Trajectory", "TrajectoryOptions", "SolverOptions", "Method", "NewtonSystems", "StepStats", "PiecewisePolynomial",
     "solve_grde", "solve_game_are", "SymmetricSolution", "RiccatiSolution", "SolveStats", "solve_filter_riccati",
-    "FilterRiccatiSolution", "grde_escape_time", "filter_escape_time", "gamma_star", "gamma_star_output_feedback",
+    "FilterRiccatiSolution", "grde_escape_time", "filter_escape_time", "law_gain", "law_escape_time", "solve_law_riccati", "gamma_star", "gamma_star_output_feedback",
     "GammaStarOptions", "GammaStarResult", "GammaTrial", "GammaCondition", "max_rho_sigma_z", "certify",
     "Certificates",
     # laws and closed loops

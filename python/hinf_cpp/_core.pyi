@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'law_escape_time', 'law_gain', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'solve_law_riccati', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -7280,6 +7280,112 @@ def l2_norm(t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]
     """
     sqrt of the trapezoid integral of the squared row norms of series over times t.
     """
+def law_escape_time(law: RiccatiSolution, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, kappa: Signal = ..., options: SolverOptions = ...) -> float:
+    """
+    The closed loop of a state-feedback law: u = u_d - kappa(t) K(t) (q - q_d), K = B_e' Z(t) of
+    `law` (a design at any gamma: the H-infinity law at its own gamma, the LQR law at gamma = inf),
+    linearized along the design's trajectory, with x = q - q_d and the weighted error z,
+        dx/dt = (A_e - B_e K) x + D_e w,   z'z = x'Q x + |K x|^2 (kappa folded into K),
+    plus x(tf)' Qf x(tf) at the end. From x(t0) = 0 its induced L2 gain over [t0, tf],
+    sup_w (|z|^2 + x(tf)'Qf x(tf)) / |w|^2, is below gamma exactly when
+        -dP/dt = A_cl' P + P A_cl + Q + K'K + gamma^-2 P D_e D_e' P,   P(tf) = Qf,
+    has no conjugate point on [t0, tf]. The first escape of P (backward from tf), or NaN;
+    nothing is stored. Q symmetric positive semidefinite, Qf positive definite, gamma > 0, kappa > 0.
+    
+    Parameters
+    ----------
+    law : RiccatiSolution
+        The law's design (see law_gain).
+    Q : array_like, shape (n, n)
+        The weight of the tracking error in z.
+    Qf : array_like, shape (n, n)
+        The weight of the final error.
+    gamma : float
+        The level tested.
+    kappa : float or Signal, optional
+        The law's gain scaling (default 1).
+    options : SolverOptions, optional
+        Integrator and tolerances.
+    
+    Returns
+    -------
+    float
+        The first escape of the law's closed-loop Riccati equation (backward from tf), or NaN when
+        there is none: the law's induced L2 gain is below gamma.
+    
+    Raises
+    ------
+    ValueError
+        As law_gain.
+    SolverError
+        The integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), float("inf"))
+    >>> hc.law_escape_time(lqr, np.eye(6), np.eye(6), 2.2)             # above its gain 2.134
+    nan
+    >>> round(hc.law_escape_time(lqr, np.eye(6), np.eye(6), 2.0), 2)   # below: P escapes at t = 3.35
+    3.35
+    """
+def law_gain(law: RiccatiSolution, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], kappa: Signal = ..., options: GammaStarOptions = ...) -> GammaStarResult:
+    """
+    The induced L2 gain of a state-feedback law's closed loop (law_escape_time, riccati.hpp): the
+    smallest gamma whose closed-loop Riccati equation has no conjugate point on [t0, tf], found as
+    gamma* is (binding Grde). For the H-infinity law at its gamma it lies between gamma* and that
+    gamma; the LQR law (a design at gamma = inf) has one too.
+    
+    gamma*, conjugate points and the certificates of paper §3.
+    
+    gamma* (eq. 14) is the infimum of the gammas for which the GRDE (13) has no conjugate point
+    on [t0, tf]. Whether a given gamma passes is decided by grde_escape_time(), which follows
+    the inverse W = Z^-1 through an escape, so no escape between solver steps is missed. The
+    pass/fail answer is monotone in gamma, so gamma* is found by bisection (k-section: one
+    evaluation per thread and round).
+    
+    With imperfect measurements (paper §4) a gamma must also keep the filter Riccati equation
+    (36) (here with A = A_e(t)) bounded and positive definite and satisfy the coupling
+    condition rho(Sigma Z) < gamma^2 on [t0, tf]; each condition is monotone in gamma too.
+    
+    Parameters
+    ----------
+    law : RiccatiSolution
+        The law's design: Z of the GRDE at the law's gamma (the H-infinity law), or at gamma = inf
+        (the LQR law). The law is u = u_d - kappa B_e' Z (q - q_d).
+    Q : array_like, shape (n, n)
+        Weight of the tracking error in z, symmetric positive semidefinite.
+    Qf : array_like, shape (n, n)
+        Weight of the final error, symmetric positive definite.
+    kappa : float or Signal, optional
+        The law's gain scaling kappa(t) > 0 (default 1).
+    options : GammaStarOptions, optional
+        The bracket, tolerance, evaluations, threads and solver options of the search.
+    
+    Returns
+    -------
+    GammaStarResult
+        The induced L2 gain of the law's linearized closed loop from w to z on [t0, tf] as
+        gamma_star, with its bracket and every gamma tried.
+    
+    Raises
+    ------
+    ValueError
+        Q or Qf not such weights, kappa not > 0, bad options.
+    SolverError
+        An integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> hinf = hc.solve_grde(trajectory, np.eye(6), np.eye(6), 5.0)
+    >>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), float("inf"))
+    >>> gains = [hc.law_gain(law, np.eye(6), np.eye(6)).gamma_star for law in (hinf, lqr)]
+    >>> [round(gain, 3) for gain in gains]                       # each law's own attenuation
+    [2.071, 2.134]
+    """
 def load_scenario_toml(path: str, allow_code: bool = False) -> Scenario:
     """
     Reads and parses a scenario file; a file that cannot be read (missing, a directory) is an
@@ -8525,6 +8631,50 @@ def solve_grde(trajectory: Trajectory, Q: typing.Annotated[numpy.typing.ArrayLik
     array([ 0.219, 20.815])
     >>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), np.inf)
     >>> bool(np.all(np.linalg.eigvalsh(design.Z(0.0) - lqr.Z(0.0)) >= 0))  # Z grows as gamma falls
+    True
+    """
+def solve_law_riccati(law: RiccatiSolution, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, kappa: Signal = ..., options: SolverOptions = ...) -> SymmetricSolution:
+    """
+    P of that equation at gamma, stored: the law's worst-case disturbance is w = gamma^-2 D_e' P x.
+    ConjugatePointError when gamma is at or below the law's gain.
+    
+    Parameters
+    ----------
+    law : RiccatiSolution
+        The law's design (see law_gain).
+    Q : array_like, shape (n, n)
+        The weight of the tracking error in z.
+    Qf : array_like, shape (n, n)
+        The weight of the final error.
+    gamma : float
+        Above the law's gain (law_gain).
+    kappa : float or Signal, optional
+        The law's gain scaling (default 1).
+    options : SolverOptions, optional
+        Integrator and tolerances.
+    
+    Returns
+    -------
+    SymmetricSolution
+        P(t) of the law's closed-loop Riccati equation; the law's worst-case disturbance at gamma
+        is w = gamma^-2 D_e' P (q - q_d).
+    
+    Raises
+    ------
+    ValueError
+        As law_gain.
+    ConjugatePointError
+        gamma is at or below the law's gain.
+    SolverError
+        The integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> lqr = hc.solve_grde(trajectory, np.eye(6), np.eye(6), float("inf"))
+    >>> P = hc.solve_law_riccati(lqr, np.eye(6), np.eye(6), 2.2)
+    >>> bool(np.all(np.linalg.eigvalsh(P.value(0.0)) > 0))
     True
     """
 def standard_normal_samples(seed: typing.SupportsInt | typing.SupportsIndex, count: typing.SupportsInt | typing.SupportsIndex, channels: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:

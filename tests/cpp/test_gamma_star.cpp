@@ -773,3 +773,105 @@ TEST(GammaStarOutputFeedback, PaperShipIsBoundByTheCouplingAtT0) {
 }
 
 }  // namespace
+
+// ======================================================================= a law's own induced gain
+
+namespace law_gain_tests {
+
+// The scalar LQR law on dq/dt = a q + b u + d w designed with Qf = the stationary LQR solution
+// p = (a + sqrt(a^2 + b^2 q)) / b^2, so that Z(t) = p on the whole horizon and K = kappa b p.
+// Its closed loop dx/dt = (a - b K) x + d w with z'z = q x^2 + K^2 x^2 has the closed-loop
+// Riccati equation dp/dtau = 2 a_cl p + (q + K^2) + (d^2 / gamma^2) p^2 in backward time: the
+// scalar form of scalar_escape_tau with s = -d^2 / gamma^2.
+struct ScalarLaw {
+  double a = 0.3, b = 1.0, d = 1.0, q = 1.0, pf = 1.0, T = 10.0, kappa = 1.0;
+  double p() const { return (a + std::sqrt(a * a + b * b * q)) / (b * b); }
+  double K() const { return kappa * b * p(); }
+  double tau(double gamma) const { return hinf_ref::scalar_escape_tau(a - b * K(), -d * d / (gamma * gamma), q + K() * K(), pf); }
+  // The gain: tau(gamma) = T (tau grows with gamma, from small gammas that escape at once).
+  double gain() const {
+    return hinf_ref::bisect_threshold([&](double g) { return tau(g) <= T; }, 1e-3, 1e3, 1e-15);
+  }
+  hinf::RiccatiSolutionPtr law() const {
+    return hinf::solve_grde(scalar_trajectory(a, b, d, T), m11(q), m11(p()), kInf);
+  }
+};
+
+TEST(LawGain, ScalarEscapeTimeAndGainMatchTheClosedForm) {
+  for (double kappa : {1.0, 2.0}) {
+    ScalarLaw c;
+    c.kappa = kappa;
+    const auto law = c.law();
+    // The design is the stationary solution: Z stays at p to the solver's accuracy.
+    for (double t : {0.0, 5.0, 10.0}) ASSERT_NEAR(law->Z(t)(0, 0), c.p(), 1e-7 * c.p());
+    const double exact = c.gain();
+    const hinf::Signal k(kappa);
+    for (double factor : {0.5, 0.9, 0.999}) {
+      const double gamma = factor * exact;
+      EXPECT_NEAR(hinf::law_escape_time(law, m11(c.q), m11(c.pf), gamma, k), c.T - c.tau(gamma), 1e-5 * c.T)
+          << "kappa " << kappa << " factor " << factor;
+    }
+    EXPECT_TRUE(std::isnan(hinf::law_escape_time(law, m11(c.q), m11(c.pf), 1.001 * exact, k))) << kappa;
+    GammaStarOptions o;
+    o.rtol = 1e-8;
+    const GammaStarResult gain = hinf::law_gain(law, m11(c.q), m11(c.pf), k, o);
+    ASSERT_TRUE(gain.converged);
+    // The search's bracket (1e-8) and Z's error (1e-7 relative, through K) bound the difference.
+    EXPECT_NEAR(gain.gamma_star, exact, 1e-6 * exact) << "kappa " << kappa;
+    // The stored P at 1.01 times the gain: finite, at its end Qf.
+    const auto P = hinf::solve_law_riccati(law, m11(c.q), m11(c.pf), 1.01 * exact, k);
+    EXPECT_NEAR(P->value(c.T)(0, 0), c.pf, 1e-9);
+    EXPECT_THROW(hinf::solve_law_riccati(law, m11(c.q), m11(c.pf), 0.99 * exact, k), hinf::ConjugatePointError);
+  }
+}
+
+TEST(LawGain, LongHorizonApproachesTheClosedLoopsHinfNorm) {
+  // A static LQR law (Qf = its ARE solution X, so K = B'X all along) on random stable and
+  // unstable 3-state systems: over a long horizon its finite-horizon gain tends, from below, to
+  // the H-infinity norm of the closed loop (A - BK, D, [Q^1/2; K]), here the level of the game
+  // ARE with no control (the bounded-real lemma) from the Hamiltonian's eigenvalues. The gap
+  // closes like 1/T^2: measured -3.1e-4 and -2.2e-4 at T = 200, -2.0e-5 and -1.4e-5 at T = 800.
+  for (const auto& [seed, abscissa] : {std::pair<int, double>{1, -0.5}, {2, 0.5}}) {
+    const hinf_ref::Lti s = hinf_ref::random_lti(seed, 3, 1, 2, abscissa);
+    const hinf_ref::AreSolution lqr = hinf_ref::stabilizing_are(s.A, s.B * s.B.transpose(), s.Q);
+    ASSERT_TRUE(lqr.ok) << seed;
+    const Mat K = s.B.transpose() * lqr.X;
+    const double norm = hinf_ref::full_information_hinf_level(s.A - s.B * K, Mat::Zero(3, 1), s.D,
+                                                              s.Q + K.transpose() * K);
+    ASSERT_TRUE(std::isfinite(norm) && norm > 0.0) << seed;
+    const auto law = hinf::solve_grde(lti_trajectory(s.A, s.B, s.D, 800.0), s.Q, lqr.X, kInf);
+    GammaStarOptions o;
+    o.rtol = 1e-7;
+    const GammaStarResult gain = hinf::law_gain(law, s.Q, lqr.X, hinf::Signal(1.0), o);
+    std::printf("[law gain long horizon] seed %d: closed-loop norm %.8f, gain on [0, 800] %.8f (%+.1e)\n", seed, norm,
+                gain.gamma_star, gain.gamma_star / norm - 1.0);
+    EXPECT_LT(std::abs(gain.gamma_star - norm) / norm, 1e-4) << seed;
+    EXPECT_LE(gain.gamma_star, norm * (1 + 2e-7)) << seed;
+  }
+}
+
+TEST(LawGain, TheHinfLawsGainLiesBetweenGammaStarAndItsGamma) {
+  // The game's gamma* bounds every state-feedback law's gain from below; the H-infinity law at
+  // gamma guarantees its own gain below gamma (paper eq. 15 with kappa = 1).
+  const auto trajectory = paper_trajectory();
+  const Mat I = Mat::Identity(6, 6);
+  const double star = hinf::gamma_star(trajectory, I, I).gamma_star;
+  for (double gamma : {1.5, 5.0}) {
+    const double gain = hinf::law_gain(hinf::solve_grde(trajectory, I, I, gamma), I, I).gamma_star;
+    EXPECT_GE(gain, star * (1 - 2e-6)) << gamma;  // both searches to rtol 1e-7, the escapes to 1e-6
+    EXPECT_LT(gain, gamma) << gamma;
+  }
+  const double lqr = hinf::law_gain(hinf::solve_grde(trajectory, I, I, kInf), I, I).gamma_star;
+  EXPECT_GE(lqr, star * (1 - 2e-6));
+}
+
+TEST(LawGain, BadInputIsAnInputError) {
+  ScalarLaw c;
+  const auto law = c.law();
+  EXPECT_THROW(hinf::law_escape_time(nullptr, m11(1.0), m11(1.0), 2.0), hinf::InputError);
+  EXPECT_THROW(hinf::law_escape_time(law, m11(1.0), m11(1.0), 2.0, hinf::Signal(0.0)), hinf::InputError);
+  EXPECT_THROW(hinf::law_escape_time(law, m11(1.0), m11(1.0), -1.0), hinf::InputError);
+  EXPECT_THROW(hinf::law_gain(law, Mat::Identity(2, 2), m11(1.0)), hinf::InputError);
+}
+
+}  // namespace law_gain_tests

@@ -152,7 +152,8 @@ def test_compare_on_figure_1_runs_the_three_laws(comparison_fig1):
     assert set(data["controllers"]) == {"hinf", "lqr", "cascade"}
     assert set(data["metric_definitions"]) == {m.name for m in METRICS}
     # The library's metrics and the comparison's own, each once.
-    assert [m.name for m in METRICS] == [*REQUIRED, "max_rho_sigma_z", "rms_estimation_error_last_half"]
+    assert [m.name for m in METRICS] == [*REQUIRED, "induced_l2_gain", "max_rho_sigma_z",
+                                         "rms_estimation_error_last_half"]
     assert data["disturbance"]["signals"] == {f"w{i}": "0.1 cos(1.25664 t)" for i in (1, 2, 3)}
     assert data["disturbance"]["worst_case"] is False and data["disturbance"]["measurement_noise"] is None
     for entry in data["controllers"].values():

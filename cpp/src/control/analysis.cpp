@@ -210,6 +210,16 @@ GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const 
   }, options);
 }
 
+GammaStarResult law_gain(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, const Signal& kappa,
+                         const GammaStarOptions& options) {
+  options.validate();
+  law_escape_time(law, Q, Qf, std::numeric_limits<double>::infinity(), kappa, options.solver);  // input checks
+  return bisect([&](double gamma) {
+    const double t = law_escape_time(law, Q, Qf, gamma, kappa, options.solver);
+    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+  }, options);
+}
+
 GammaStarResult gamma_star_discrete(const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf,
                                     const GammaStarOptions& options) {
   require(sampled != nullptr, "gamma_star_discrete needs a sampled linearization");

@@ -20,11 +20,30 @@ namespace hinf {
 
 namespace {
 
-enum class RiccatiKind { Control, Filter };
+enum class RiccatiKind { Control, Filter, ClosedLoop };
+
+// A state-feedback law u = u_d - kappa(t) B_e' Z(t) (q - q_d) whose closed loop is analysed.
+struct ClosedLoopLaw {
+  const RiccatiSolution* design;
+  const Signal* gain_scaling;
+  double kappa(double t) const { return (*gain_scaling)(t); }
+};
+
+// The equation's name in messages.
+const char* equation_name(RiccatiKind kind) {
+  switch (kind) {
+    case RiccatiKind::Control: return "GRDE (13)";
+    case RiccatiKind::Filter: return "filter Riccati equation (36)";
+    case RiccatiKind::ClosedLoop: return "closed-loop Riccati equation of the law";
+  }
+  return "";
+}
 
 // dX/dt = sign (M(t)' X + X M(t) + R(t) - X S(t) X) along a trajectory:
 //   Control (GRDE 13):  sign = -1, M = A_e,  R = Q,    S = B B' - gamma^-2 D D';
-//   Filter  (eq. 36):   sign = +1, M = A_e', R = D D', S = C' N^-1 C - gamma^-2 Q.
+//   Filter  (eq. 36):   sign = +1, M = A_e', R = D D', S = C' N^-1 C - gamma^-2 Q;
+//   ClosedLoop (a law's induced gain, law_escape_time): sign = -1, M = A_e - B K, R = Q + K'K,
+//                       S = -gamma^-2 D D', with K(t) = kappa(t) B_e' Z(t) of the law.
 // With shift = c > 0 the unknown is instead W = c (X + c I)^-1 (see escape_time), which obeys a
 // Riccati equation of the same form:
 //   dW/dt = -sign (M_w' W + W M_w + R_w - W S_w W),
@@ -37,13 +56,14 @@ class RiccatiProblem {
   using VecN = Eigen::Matrix<double, N, 1>;
 
   RiccatiProblem(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
-                 const Mat& N_inv, double shift = 0.0)
-      : trajectory_(trajectory), model_(trajectory.model()), kind_(kind), shift_(shift), n_(trajectory.n()),
-        sign_((kind == RiccatiKind::Control ? -1.0 : 1.0) * (shift > 0.0 ? -1.0 : 1.0)),
+                 const Mat& N_inv, const ClosedLoopLaw* law, double shift = 0.0)
+      : trajectory_(trajectory), model_(trajectory.model()), kind_(kind), law_(law), shift_(shift), n_(trajectory.n()),
+        sign_((kind == RiccatiKind::Filter ? 1.0 : -1.0) * (shift > 0.0 ? -1.0 : 1.0)),
         inv_gamma2_(std::isinf(gamma) ? 0.0 : 1.0 / (gamma * gamma)),
         constant_(model_.constant_input_matrices()), Q_(Q), N_inv_(N_inv) {
     for (auto* M : {&M_, &R_, &S_, &R0_, &S0_, &shifted_, &X_, &A_, &T_, &G_}) M->resize(n_, n_);
     q_d_.resize(n_);
+    if (kind_ == RiccatiKind::ClosedLoop) K_.resize(model_.m(), n_);
     if (constant_) set_input_terms(trajectory.t0(), trajectory.q_d0());
   }
 
@@ -85,6 +105,11 @@ class RiccatiProblem {
       R0_ = Q_;
       S0_ = B * B.transpose();
       if (inv_gamma2_ > 0.0) S0_ -= inv_gamma2_ * (D * D.transpose());
+    } else if (kind_ == RiccatiKind::ClosedLoop) {
+      B_ = model_.G(t, q_d);
+      S0_ = -inv_gamma2_ * (D * D.transpose());
+      diagonal_S_ = shift_ == 0.0 && detail::is_diagonal(S0_);
+      return;  // M and R depend on the law's gain at t: coefficients_at
     } else {
       const Mat C = model_.C(t);
       R0_ = D * D.transpose();
@@ -109,6 +134,25 @@ class RiccatiProblem {
     trajectory_.q_d(t, q_d_.data(), &cursor_);
     trajectory_.A_e(t, q_d_, A_);
     if (!constant_) set_input_terms(t, q_d_);
+    if (kind_ == RiccatiKind::ClosedLoop) {
+      law_->design->gain(t, K_.data(), &law_cursor_);
+      K_ *= law_->kappa(t);
+      T_.noalias() = B_ * K_;
+      T_ = A_ - T_;  // A_cl
+      G_.noalias() = K_.transpose() * K_;
+      G_ += Q_;  // Q + K'K
+      if (shift_ > 0.0) {
+        S_ = T_ + T_.transpose() - G_ / shift_ + shift_ * S0_;
+        R_ = -shift_ * S0_;
+        T_ += shift_ * S0_;
+        M_ = T_.transpose();
+      } else {
+        M_ = T_;
+        R_ = G_;
+        S_ = S0_;
+      }
+      return;
+    }
     const bool transpose = kind_ == RiccatiKind::Filter;  // M = A_e (control) or A_e' (filter)
     if (shift_ > 0.0) {
       if (transpose) T_ = A_.transpose();
@@ -126,6 +170,8 @@ class RiccatiProblem {
   const Trajectory& trajectory_;
   const Model& model_;
   RiccatiKind kind_;
+  const ClosedLoopLaw* law_;  // ClosedLoop only
+  std::size_t law_cursor_ = 0;
   double shift_;
   int n_;
   double sign_;
@@ -137,6 +183,7 @@ class RiccatiProblem {
   double coefficients_at_ = NAN;  // the t of M_ (and of R_, S_ for time-varying input matrices)
   VecN q_d_;
   MatN M_, R_, S_, R0_, S0_, shifted_, X_, A_, T_, G_;
+  Mat B_, K_;  // ClosedLoop: B_e(t) and the law's gain K(t)
 };
 
 // BDF's Newton systems of a Riccati problem as Lyapunov equations (lyapunov_newton.hpp).
@@ -193,10 +240,10 @@ double largest_eigenvalue(const Mat& M) {
 // The integration runs from t_start to t_end: backward from tf for the GRDE, forward from t0
 // for the filter.
 double start_of(const Trajectory& trajectory, RiccatiKind kind) {
-  return kind == RiccatiKind::Control ? trajectory.tf() : trajectory.t0();
+  return kind == RiccatiKind::Filter ? trajectory.t0() : trajectory.tf();
 }
 double end_of(const Trajectory& trajectory, RiccatiKind kind) {
-  return kind == RiccatiKind::Control ? trajectory.t0() : trajectory.tf();
+  return kind == RiccatiKind::Filter ? trajectory.tf() : trajectory.t0();
 }
 
 // A scale of X over the horizon: the larger of X_start and the constant term R integrated over
@@ -204,12 +251,16 @@ double end_of(const Trajectory& trajectory, RiccatiKind kind) {
 // the filter): for a stable system X settles at about R / |A|, for an unstable or slow one it
 // grows with the horizon. The escape test's accuracy depends on it: W = c (X + c I)^-1 carries
 // X with the relative accuracy of W times (1 + c / x), so c should not exceed X's scale by much.
-double solution_scale(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, const Mat& X_start) {
+double solution_scale(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, const ClosedLoopLaw* law,
+                      const Mat& X_start) {
   const double t_start = start_of(trajectory, kind);
   const double time_scale = std::min(trajectory.tf() - trajectory.t0(), 1.0 / std::max(trajectory.A_e(t_start).norm(), 1e-300));
   double R_scale = 0.0;
   if (kind == RiccatiKind::Control) {
     R_scale = largest_eigenvalue(Q);
+  } else if (kind == RiccatiKind::ClosedLoop) {
+    const Mat K = law->kappa(t_start) * law->design->gain(t_start);
+    R_scale = largest_eigenvalue(Q + K.transpose() * K);
   } else {
     const Mat D = trajectory.D_e(t_start);
     R_scale = largest_eigenvalue(D * D.transpose());
@@ -234,6 +285,12 @@ void blame_model_if_not_finite(const Trajectory& trajectory, std::initializer_li
                 " (gamma_star() gives the smallest admissible value)",
                 detail),
         t_escape, gamma);
+  if (kind == RiccatiKind::ClosedLoop)
+    throw ConjugatePointError(
+        str_cat("the closed-loop Riccati equation of the law escapes to infinity at t = ", t_escape,
+                " (integrating backward from tf = ", tf, " toward t0 = ", t0, "); gamma = ", gamma,
+                " is at or below the law's induced L2 gain on this horizon", detail),
+        t_escape, gamma);
   throw ConjugatePointError(
       str_cat("the filter Riccati equation (36) escapes to infinity at t = ", t_escape,
               " (integrating forward from t0 = ", t0, " toward tf = ", tf, "); gamma = ", gamma,
@@ -257,10 +314,11 @@ bool is_too_much_work(const SolverError& e) { return e.flag().find("TOO_MUCH_WOR
 // X that keeps growing without escaping (lambda_min(W) -> 0+) is not mistaken for an escape.
 template <int N>
 double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma, const Mat& N_inv,
-                    const Mat& X_from, double t_from, double t_end, double c, const SolverOptions& options) {
+                    const ClosedLoopLaw* law, const Mat& X_from, double t_from, double t_end, double c,
+                    const SolverOptions& options) {
   const int n = static_cast<int>(X_from.rows());
   const int p = packed_size(n);
-  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, c);
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law, c);
   const Mat shifted = 0.5 * (X_from + X_from.transpose()) + c * Mat::Identity(n, n);
   const Eigen::LLT<Mat> llt(shifted);
   if (llt.info() != Eigen::Success) return t_from;  // X_from has an eigenvalue <= -c: past an escape
@@ -280,8 +338,7 @@ double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q
     });
   } catch (const SolverError& e) {
     if (is_too_much_work(e))
-      throw SolverError(str_cat("the conjugate-point test of the ",
-                                kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati equation (36)",
+      throw SolverError(str_cat("the conjugate-point test of the ", equation_name(kind),
                                 " could not be completed: ", e.what()),
                         e.t(), e.flag());
     // W is bounded while X is finite and >= 0; it can fail to continue only past an escape of
@@ -300,17 +357,17 @@ double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q
 template <int N>
 std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& trajectory, RiccatiKind kind,
                                                              const Mat& Q, double gamma, const Mat& N_inv,
-                                                             const Mat& X_start, const SolverOptions& options,
-                                                             bool store) {
+                                                             const ClosedLoopLaw* law, const Mat& X_start,
+                                                             const SolverOptions& options, bool store) {
   const int n = static_cast<int>(X_start.rows());
   const int p = packed_size(n);
   const double t_start = start_of(trajectory, kind), t_end = end_of(trajectory, kind);
   const double t0 = trajectory.t0(), tf = trajectory.tf();
-  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv);
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law);
   std::vector<double> x(static_cast<std::size_t>(p));
   pack_symmetric(X_start, x.data());
   blame_model_if_not_finite(trajectory, {t_start});  // the scale below is taken there
-  const double scale = solution_scale(trajectory, kind, Q, X_start);
+  const double scale = solution_scale(trajectory, kind, Q, law, X_start);
   // atol is meant for solutions of order 1: a smaller solution gets a proportionally smaller one
   // (Qf = 1e-8 I and Q = 4e-5 I with atol = 1e-10 put gamma* 1.5e-5 too high).
   SolverOptions x_options = options;
@@ -325,7 +382,8 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
     if (no_escape) return;
     Mat X(n, n);
     unpack_symmetric(x.data(), X);
-    const double t_escape = escape_after<N>(trajectory, kind, Q, gamma, N_inv, X, t_last, t_end, scale, options);
+    const double t_escape =
+        escape_after<N>(trajectory, kind, Q, gamma, N_inv, law, X, t_last, t_end, scale, options);
     if (!std::isnan(t_escape)) {
       blame_model_if_not_finite(trajectory, {t_last, t_escape});
       throw_escape(kind, t_escape, gamma, t0, tf, "");
@@ -401,8 +459,8 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
                        " is very close to the smallest admissible value; increase it");
     // The escape test covered the rest of the horizon: the question "does X escape?" is answered.
     if (!store && no_escape) return {PiecewisePolynomial(p), SolveStats{}};
-    throw SolverError(str_cat(kind == RiccatiKind::Control ? "GRDE (13)" : "filter Riccati (36)",
-                              store ? " solve failed: " : " conjugate-point test failed: ", cause, advice),
+    throw SolverError(str_cat(equation_name(kind), store ? " solve failed: " : " conjugate-point test failed: ",
+                              cause, advice),
                       e.t(), e.flag());
   }
   dense.finalize();
@@ -420,18 +478,20 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
 // find escapes) the Riccati problem of `kind` over the trajectory's horizon.
 std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q,
                                                  double gamma, const Mat& N_inv, const Mat& X_start,
-                                                 const SolverOptions& options, bool store = true) {
+                                                 const SolverOptions& options, bool store = true,
+                                                 const ClosedLoopLaw* law = nullptr) {
   return detail::with_state_size(trajectory.n(), [&](auto size) {
-    return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, X_start, options, store);
+    return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, law, X_start, options, store);
   });
 }
 
 // Escape time of an integration without storage, NaN when there is none.
 double escape_or_nan(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
-                     const Mat& N_inv, const Mat& X_start, const SolverOptions& options) {
+                     const Mat& N_inv, const Mat& X_start, const SolverOptions& options,
+                     const ClosedLoopLaw* law = nullptr) {
   if (std::isinf(gamma)) return NAN;  // S >= 0: no finite escape
   try {
-    solve(trajectory, kind, Q, gamma, N_inv, X_start, options, /*store=*/false);
+    solve(trajectory, kind, Q, gamma, N_inv, X_start, options, /*store=*/false, law);
   } catch (const ConjugatePointError& e) {
     return e.t_escape();
   }
@@ -613,6 +673,36 @@ double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const M
   const Mat N_inv = check_filter_input(trajectory, N, Q, gamma, Sigma0, options);
   return escape_or_nan(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv, symmetrized(Sigma0),
                        options);
+}
+
+namespace {
+
+void check_law_input(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma, const Signal& kappa,
+                     const SolverOptions& options) {
+  require(law != nullptr, "the closed loop of a law needs the law's design (a RiccatiSolution)");
+  check_grde_input(law->trajectory_ptr(), Q, Qf, gamma, options);
+  for (double t : {law->t0(), law->tf()})
+    require(kappa(t) > 0.0, "the law's gain scaling kappa must be > 0, got ", kappa(t), " at t = ", t);
+}
+
+}  // namespace
+
+double law_escape_time(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma, const Signal& kappa,
+                       const SolverOptions& options) {
+  check_law_input(law, Q, Qf, gamma, kappa, options);
+  const ClosedLoopLaw closed{law.get(), &kappa};
+  return escape_or_nan(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
+                       options, &closed);
+}
+
+std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf,
+                                                           double gamma, const Signal& kappa,
+                                                           const SolverOptions& options) {
+  check_law_input(law, Q, Qf, gamma, kappa, options);
+  const ClosedLoopLaw closed{law.get(), &kappa};
+  auto [dense, stats] = solve(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(),
+                              symmetrized(Qf), options, /*store=*/true, &closed);
+  return std::make_shared<const SymmetricSolution>(law->trajectory_ptr(), gamma, std::move(dense), stats);
 }
 
 }  // namespace hinf

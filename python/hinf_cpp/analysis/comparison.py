@@ -15,7 +15,10 @@ Metrics (:data:`METRICS`): the library's metrics of the results file (``metric_t
 ``RunResult.metrics``, ``docs/mathematics.md``) and one of the comparison's own,
 ``l2_gain_from_desired``: the ``l2_gain`` of the same law and disturbance started on the
 desired trajectory (q(t0) = q_d(t0)), so that it is the disturbance's gain alone, not the
-response to the initial error (equal to ``l2_gain`` when the scenario starts there).
+response to the initial error (equal to ``l2_gain`` when the scenario starts there); and
+``induced_l2_gain``: the law's own attenuation level, the induced L2 gain from w to the
+weighted error of its closed loop linearized along the desired trajectory over [t0, tf]
+(:func:`hinf_cpp.law_gain`), for the state-feedback runs of ``hinf`` and ``lqr``.
 """
 
 from __future__ import annotations
@@ -104,14 +107,32 @@ _L2_GAIN_FROM_DESIRED = MetricInfo(
     "l2_gain of the same law and disturbance started at q(t0) = q_d(t0): the disturbance's alone")
 
 
+_INDUCED_L2_GAIN = MetricInfo(
+    "induced_l2_gain", "induced L2 gain of the law", "-",
+    "the law's induced L2 gain from w to the weighted error, x'Qx + |u - u_d|^2 and x(tf)'Qf x(tf), of its "
+    "closed loop linearized along the desired trajectory over [t0, tf] (hinf_cpp.law_gain); hinf and lqr "
+    "with state feedback, NaN otherwise")
+
+
 def _comparison_metrics() -> list:
-    """The rows of the comparison table: the library's metrics, l2_gain_from_desired after l2_gain."""
+    """The rows of the comparison table: the library's metrics, l2_gain_from_desired and
+    induced_l2_gain after l2_gain."""
     rows = []
     for definition in _core.metric_table():
         rows.append(definition)
         if definition.name == "l2_gain":
-            rows.append(_L2_GAIN_FROM_DESIRED)
+            rows += [_L2_GAIN_FROM_DESIRED, _INDUCED_L2_GAIN]
     return rows
+
+
+def _induced_gain(scenario: _core.Scenario, result: _core.RunResult) -> float:
+    """The law's induced L2 gain (hinf_cpp.law_gain) for a state-feedback run of hinf or lqr
+    with its design kept; NaN for the others (the cascade law's closed loop, an estimator in
+    the loop, the windows of a receding horizon)."""
+    if result.output_feedback or result.law == _core.Law.cascade or result.solution is None:
+        return math.nan
+    resolved = scenario.resolved()
+    return float(_core.law_gain(result.solution, resolved.Q, resolved.Qf, resolved.kappa).gamma_star)
 
 
 #: The metrics of a comparison, in the order of its table (MetricInfo: name, label, unit, definition).
@@ -648,6 +669,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
             continue
         metrics = {m.name: getattr(result.metrics, m.name) for m in _core.metric_table()}
         metrics[_L2_GAIN_FROM_DESIRED.name] = gain_alone
+        metrics[_INDUCED_L2_GAIN.name] = _induced_gain(base, result)
         metrics = {m.name: float(metrics[m.name]) for m in METRICS}
         runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics, result=result))
     return Comparison(scenario=base.name, gamma=float(base.gamma),

@@ -79,6 +79,10 @@ class GammaSweep:
         L_gamma of paper eq. (12) of each run (:func:`cost_L_gamma`).
     zero_initial_error : bool
         True: q(t0) = q_d(t0), so the gain is the disturbance's alone.
+    induced_gain : numpy.ndarray, shape (count,)
+        The induced L2 gain of the state-feedback law designed at each gamma, its closed loop
+        linearized along the desired trajectory (:func:`hinf_cpp.law_gain`): the worst case
+        over all disturbances, below gamma; NaN where the run keeps no design.
 
     Examples
     --------
@@ -88,6 +92,8 @@ class GammaSweep:
     (1.335, (3,))
     >>> bool(np.all(sweep.l2_gain < sweep.gammas)), bool(np.all(sweep.cost < 0))
     (True, True)
+    >>> bool(np.all((sweep.l2_gain <= sweep.induced_gain) & (sweep.induced_gain < sweep.gammas)))
+    True
     """
 
     scenario: str
@@ -97,6 +103,7 @@ class GammaSweep:
     l2_gain: np.ndarray       # sqrt(int |q_e|_Q^2 + |u_e|^2) / sqrt(int |w|^2)
     cost: np.ndarray          # L_gamma of eq. (12)
     zero_initial_error: bool  # True: q(t0) = q_d(t0), so the gain is the disturbance's alone
+    induced_gain: np.ndarray  # hinf_cpp.law_gain of the design at each gamma (NaN: no design kept)
 
     def to_dict(self) -> dict:
         return {
@@ -107,6 +114,7 @@ class GammaSweep:
             "gamma": self.gammas.tolist(),
             "l2_gain": self.l2_gain.tolist(),
             "cost_L_gamma": self.cost.tolist(),
+            "induced_l2_gain": self.induced_gain.tolist(),
         }
 
 
@@ -194,6 +202,12 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
     with ThreadPoolExecutor(max_workers=max(1, threads)) as pool:
         results = list(pool.map(run, gammas))
     resolved = scenario.resolved()
+
+    def induced(result: _core.RunResult) -> float:
+        if result.solution is None:
+            return math.nan
+        return float(_core.law_gain(result.solution, resolved.Q, resolved.Qf, resolved.kappa, options).gamma_star)
+
     return GammaSweep(
         scenario=scenario.name,
         gamma_star=star,
@@ -202,6 +216,7 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
         l2_gain=np.array([r.metrics.l2_gain for r in results]),
         cost=np.array([cost_L_gamma(r, resolved.Q, resolved.Qf) for r in results]),
         zero_initial_error=zero_initial_error,
+        induced_gain=np.array([induced(r) for r in results]),
     )
 
 
@@ -212,6 +227,8 @@ def sweep_figure(sweep: GammaSweep):
     fig = Figure(figsize=(7.0, 6.4), layout="constrained")
     ax_gain, ax_cost = fig.subplots(2, 1, sharex=True)
     ax_gain.plot(sweep.gammas, sweep.l2_gain, "o-", color="tab:blue", label="measured L2 gain")
+    ax_gain.plot(sweep.gammas, sweep.induced_gain, "s-", color="tab:green",
+                 label="induced L2 gain of the law (linearized, worst case over all w)")
     ax_gain.plot(sweep.gammas, sweep.gammas, "--", color="gray",
                  label="gain = gamma (bound for the linearized error system)")
     ax_cost.plot(sweep.gammas, sweep.cost, "o-", color="tab:red", label="L_gamma, eq. (12)")

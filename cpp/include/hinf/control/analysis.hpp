@@ -81,6 +81,13 @@ struct GammaStarResult {
 GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                            const GammaStarOptions& options = {});
 
+// The induced L2 gain of a state-feedback law's closed loop (law_escape_time, riccati.hpp): the
+// smallest gamma whose closed-loop Riccati equation has no conjugate point on [t0, tf], found as
+// gamma* is (binding Grde). For the H-infinity law at its gamma it lies between gamma* and that
+// gamma; the LQR law (a design at gamma = inf) has one too.
+GammaStarResult law_gain(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, const Signal& kappa = Signal(1.0),
+                         const GammaStarOptions& options = {});
+
 // The smallest gamma for the output-feedback design: no conjugate point of the GRDE, the
 // filter Riccati equation (36) with A_e(t) bounded and positive definite from Sigma0, and
 // rho(Sigma Z) < gamma^2 on [t0, tf]. binding names the condition that limits it.

@@ -26,6 +26,7 @@
 
 #include "hinf/control/trajectory.hpp"
 #include "hinf/numerics/piecewise_polynomial.hpp"
+#include "hinf/numerics/signal.hpp"
 #include "hinf/numerics/solver_options.hpp"
 #include "hinf/numerics/sparse_matrix.hpp"
 
@@ -159,5 +160,22 @@ double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat
 // The same for the filter Riccati equation (36) (forward from Sigma0, A = A_e(t)).
 double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const Mat& Q, double gamma,
                           const Mat& Sigma0, const SolverOptions& options = {});
+
+// The closed loop of a state-feedback law: u = u_d - kappa(t) K(t) (q - q_d), K = B_e' Z(t) of
+// `law` (a design at any gamma: the H-infinity law at its own gamma, the LQR law at gamma = inf),
+// linearized along the design's trajectory, with x = q - q_d and the weighted error z,
+//     dx/dt = (A_e - B_e K) x + D_e w,   z'z = x'Q x + |K x|^2 (kappa folded into K),
+// plus x(tf)' Qf x(tf) at the end. From x(t0) = 0 its induced L2 gain over [t0, tf],
+// sup_w (|z|^2 + x(tf)'Qf x(tf)) / |w|^2, is below gamma exactly when
+//     -dP/dt = A_cl' P + P A_cl + Q + K'K + gamma^-2 P D_e D_e' P,   P(tf) = Qf,
+// has no conjugate point on [t0, tf]. The first escape of P (backward from tf), or NaN;
+// nothing is stored. Q symmetric positive semidefinite, Qf positive definite, gamma > 0, kappa > 0.
+double law_escape_time(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma,
+                       const Signal& kappa = Signal(1.0), const SolverOptions& options = {});
+// P of that equation at gamma, stored: the law's worst-case disturbance is w = gamma^-2 D_e' P x.
+// ConjugatePointError when gamma is at or below the law's gain.
+std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf,
+                                                           double gamma, const Signal& kappa = Signal(1.0),
+                                                           const SolverOptions& options = {});
 
 }  // namespace hinf

@@ -1,0 +1,68 @@
+"""A law's own attenuation (hinf_cpp.law_gain, law_escape_time, solve_law_riccati) through the
+binding, and the comparison's ``induced_l2_gain``. The numerics (closed forms, the closed loop's
+H-infinity norm over long horizons) are checked in C++ (tests/cpp/test_gamma_star.cpp, LawGain)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import hinf_cpp as hc
+from hinf_cpp.analysis import compare
+
+I6 = np.eye(6)
+
+
+@pytest.fixture(scope="module")
+def trajectory():
+    u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]  # paper Fig. 1, 10 s
+    return hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+
+
+def test_kappa_is_the_laws_gain_scaling(trajectory):
+    """kappa as a number or a Signal is the same law; kappa = 2 (K = 2 B'Z) is another law, with
+    another gain."""
+    law = hc.solve_grde(trajectory, I6, I6, 5.0)
+    number = hc.law_gain(law, I6, I6, 2.0)
+    signal = hc.law_gain(law, I6, I6, hc.Signal(2.0))
+    assert number.gamma_star == signal.gamma_star  # the same computation
+    assert abs(number.gamma_star - hc.law_gain(law, I6, I6).gamma_star) > 1e-3
+
+
+def test_the_worst_case_riccati_solution_is_stored_above_the_gain(trajectory):
+    lqr = hc.solve_grde(trajectory, I6, I6, math.inf)
+    gain = hc.law_gain(lqr, I6, I6).gamma_star
+    P = hc.solve_law_riccati(lqr, I6, I6, 1.05 * gain)
+    assert np.allclose(P.value(10.0), I6, atol=1e-9)  # P(tf) = Qf
+    # Above the gain P is larger than the Lyapunov solution at gamma = inf (the disturbance term
+    # gamma^-2 P D D' P only adds), and the escape test agrees with the search.
+    lyapunov = hc.solve_law_riccati(lqr, I6, I6, math.inf)
+    assert np.linalg.eigvalsh(P.value(0.0) - lyapunov.value(0.0)).min() > 0.0
+    assert math.isnan(hc.law_escape_time(lqr, I6, I6, 1.05 * gain))
+    assert 0.0 <= hc.law_escape_time(lqr, I6, I6, 0.95 * gain) < 10.0
+    with pytest.raises(hc.ConjugatePointError):
+        hc.solve_law_riccati(lqr, I6, I6, 0.95 * gain)
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda law: hc.law_gain(law, I6, I6, -1.0), "kappa must be > 0"),
+    (lambda law: hc.law_gain(law, np.eye(3), I6), "Q"),
+    (lambda law: hc.law_escape_time(law, I6, I6, 0.0), "gamma must be > 0"),
+])
+def test_bad_input_is_a_value_error(trajectory, call, match):
+    with pytest.raises(ValueError, match=match):
+        call(hc.solve_grde(trajectory, I6, I6, 5.0))
+
+
+def test_compare_reports_each_laws_own_attenuation():
+    """hinf's gain lies between gamma* and its gamma (the game's value bounds every law from
+    below; the law guarantees its gamma); lqr has one too; cascade and output feedback have none."""
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
+    comparison = compare(scenario)
+    gains = {run.key: run.metrics["induced_l2_gain"] for run in comparison.runs}
+    star = hc.scenario_gamma_star(scenario).gamma_star
+    assert star * (1 - 1e-6) <= gains["hinf"] < scenario.gamma
+    assert gains["lqr"] >= star * (1 - 1e-6)
+    assert all(math.isnan(gains[key]) for key in gains if key == "cascade" or key.endswith("output-feedback"))
