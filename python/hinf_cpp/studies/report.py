@@ -2,11 +2,14 @@
 
 :func:`summarize` gives, per group of runs (a grid point), the count of each status and the
 mean, standard deviation and 5/50/95 percentiles of each metric over the completed runs;
-:func:`distribution_figure` a metric's distribution per law (box plots),
+:func:`distribution_figure` a metric's distribution per law and grid point (box plots),
 :func:`roa_figure` a region-of-attraction map over a 2-D grid of initial conditions (the
-fraction of runs that recovered, per law and feedback), :func:`gamma_figure` a metric against
-gamma with its 5-95 percentile band. :func:`write_study_outputs` writes them all with the
-table (Parquet and CSV) into a folder.
+fraction of runs that recovered, per law, feedback and value of the other grid axes),
+:func:`gamma_figure` a metric against gamma with the 5-95 percentile band of the samples, one
+line per law and value of the other grid axes. The figures keep apart what the study varies
+and pool only the samples of one grid point; gamma = inf (the LQR limit) is drawn to the right
+of the finite gammas. :func:`write_study_outputs` writes them all with the table (Parquet and
+CSV) into a folder.
 """
 
 from __future__ import annotations
@@ -18,8 +21,10 @@ from typing import Sequence
 import numpy as np
 from matplotlib.figure import Figure
 
+from hinf_cpp import _core
 from hinf_cpp.output.files import atomic_output, write_text
 from hinf_cpp.output.tables import markdown_table
+from hinf_cpp.studies.study import STATUSES
 
 __all__ = ["DEFAULT_METRICS", "distribution_figure", "gamma_figure", "paired_differences", "recovered", "roa_figure",
            "status_counts", "summarize", "summary_markdown", "write_study_outputs"]
@@ -28,9 +33,13 @@ __all__ = ["DEFAULT_METRICS", "distribution_figure", "gamma_figure", "paired_dif
 DEFAULT_METRICS = ["rms_position_error_last_half", "rms_heading_error_last_half", "final_position_error",
                    "max_position_error"]
 PERCENTILES = (5, 50, 95)
-_STATUS_ORDER = ["completed", "diverged", "conjugate_point", "coupling_violation", "solver_failure",
-                 "invalid_input", "failed"]
+# The statuses in the order of the summary's columns: those of a study's table.
+_STATUS_ORDER = STATUSES
 _LAW_COLOURS = {"hinf": "tab:blue", "lqr": "tab:orange", "cascade": "tab:green"}
+#: Grid keys that the law and feedback columns already tell apart in the figures.
+_LAW_KEYS = ("controller.law", "feedback")
+#: Above this many boxes the box labels are one rotated line each, not several upright lines.
+_UPRIGHT_BOXES = 6
 
 
 def _group_columns(df, study=None) -> list[str]:
@@ -48,6 +57,19 @@ def _groups(df, columns):
     if not columns:
         return [((), df)]
     return list(df.groupby(columns, sort=False, dropna=False))
+
+
+def _key_cell(value):
+    """A grid value for a Markdown table: an infinite one as "inf" (markdown_table shows every
+    non-finite number as "-", which for a key would hide gamma = inf)."""
+    if isinstance(value, (float, np.floating)) and math.isinf(value):
+        return "inf" if value > 0 else "-inf"
+    return value
+
+
+def _key_rows(rows, key_count: int):
+    """Rows whose first `key_count` cells are grid values, those shown with :func:`_key_cell`."""
+    return [[_key_cell(c) for c in row[:key_count]] + list(row[key_count:]) for row in rows]
 
 
 def status_counts(df, study=None):
@@ -271,14 +293,15 @@ def summary_markdown(df, study, seconds: float | None = None) -> str:
         counts = counts.assign(recovered=shares)
         header.append("recovered")
         lines += [f"Recovered: completed with |p_e(tf)| < {tol:g} and |psi_e(tf)| < {deg:g} degrees.", ""]
-    lines += ["## Runs per status", "", markdown_table(header, counts[header].values.tolist())]
-    stats = summarize(df, study, metrics)
     group_columns = _group_columns(df, study)
+    lines += ["## Runs per status", "",
+              markdown_table(header, _key_rows(counts[header].values.tolist(), len(group_columns)))]
+    stats = summarize(df, study, metrics)
     for metric in metrics:
         part = stats[stats["metric"] == metric]
         header = group_columns + ["n", "mean", "std", "p5", "p50", "p95"]
         rows = part[group_columns + ["count", "mean", "std", "p5", "p50", "p95"]].values.tolist()
-        lines += [f"## {metric} (completed runs)", "", markdown_table(header, rows)]
+        lines += [f"## {metric} (completed runs)", "", markdown_table(header, _key_rows(rows, len(group_columns)))]
     law_axis = [axis for axis in study.grid if axis.keys == ("controller.law",)]
     if study.samples > 1 and law_axis and len(law_axis[0].values) > 1:
         lines += ["## Paired differences between the laws (same samples: same noise and plant)", "",
@@ -287,18 +310,88 @@ def summary_markdown(df, study, seconds: float | None = None) -> str:
         for metric in metrics:
             pairs = paired_differences(df, study, metric)
             if len(pairs):
-                lines += [f"### {metric}", "", markdown_table(list(pairs.columns), pairs.values.tolist())]
+                key_count = list(pairs.columns).index("controller.law")
+                lines += [f"### {metric}", "",
+                          markdown_table(list(pairs.columns), _key_rows(pairs.values.tolist(), key_count))]
     return "\n".join(lines)
 
 
 def _label(law: str, output_feedback: bool) -> str:
+    if not law:  # every run of the group was refused before a law was built
+        return "?"
     return f"{law}/{'output' if output_feedback else 'state'}"
 
 
-def distribution_figure(df, metric: str, title: str | None = None) -> Figure:
-    """Box plots of a metric over the completed runs, one per law and feedback mode.
+def _metric_label(metric: str) -> str:
+    """A metric's axis label, "label [unit]" from hc.metric_table(); another column's name."""
+    for definition in _core.metric_table():
+        if definition.name == metric:
+            return f"{definition.label} [{definition.unit}]"
+    return metric
 
-    Whiskers at the 5th and 95th percentiles; the runs beyond them drawn as points.
+
+def _value_text(value) -> str:
+    """A grid value as text: an integer as it is, a float as %g (gamma = inf as "inf")."""
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        return f"{float(value):g}"
+    return str(value)
+
+
+def _point_text(columns: Sequence[str], values: Sequence, separator: str = ", ") -> str:
+    """The values of grid keys as "key = value" joined by `separator`, for a legend or a label."""
+    return separator.join(f"{key} = {_value_text(value)}" for key, value in zip(columns, values))
+
+
+def _shown_columns(other_columns: Sequence[str]) -> list[str]:
+    """The grid keys a figure names: the law and feedback keys are named by law/feedback already."""
+    return [key for key in other_columns if key not in _LAW_KEYS]
+
+
+def _series(df, other_columns: Sequence[str] = ()) -> list[tuple]:
+    """The runs of a table per law, feedback mode and values of `other_columns`.
+
+    A list of (law, output_feedback, values of the shown other columns, runs), state feedback
+    first, then the laws in the order of _LAW_COLOURS, then the order of the grid. A run the
+    reader refused (status invalid_input) has no law: it belongs to the law of the other runs of
+    its group (grouped by the law and feedback keys too when they are columns), so that it
+    counts among the runs of that law's box or line.
+    """
+    shown = _shown_columns(other_columns)
+    split = [key for key in _LAW_KEYS if key in df.columns] + shown
+    found = []
+    for order, (key, group) in enumerate(_groups(df, split)):
+        key = key if isinstance(key, tuple) else (key,)
+        values = tuple(key[len(split) - len(shown):])
+        known = group[group["law"] != ""]
+        laws = list(dict.fromkeys(zip(known["law"], known["output_feedback"].astype(bool))))
+        if len(laws) == 1:
+            found.append((*laws[0], values, group, order))
+        elif not laws:
+            found.append(("", False, values, group, order))
+        else:  # laws that no column tells apart: the refused runs cannot be assigned to one
+            for law, of in laws:
+                found.append((law, of, values, known[(known["law"] == law) & (known["output_feedback"] == of)],
+                              order))
+    laws = list(_LAW_COLOURS)
+    found.sort(key=lambda s: (s[1], laws.index(s[0]) if s[0] in laws else len(laws), s[4]))
+    return [s[:4] for s in found]
+
+
+def distribution_figure(df, metric: str, title: str | None = None, other_columns: Sequence[str] = ()) -> Figure:
+    """Box plots of a metric over the completed runs, one per law, feedback mode and grid point.
+
+    One box per law and feedback mode and per combination of the values of `other_columns`
+    (the grid keys that the study varies besides the law and feedback): a box pools only the
+    samples of one grid point. Each box is labelled with its law, its grid values, n (the
+    completed runs with a value of the metric) and the share of its runs that failed (did not
+    complete). Whiskers at the 5th and 95th percentiles; the runs beyond them drawn as points.
+    Up to 6 boxes have upright labels of several lines ("key = value"); more boxes, or longer
+    lines, have one rotated line each (the values, their keys named under the axis) and the
+    figure widens with their count.
 
     Parameters
     ----------
@@ -308,6 +401,9 @@ def distribution_figure(df, metric: str, title: str | None = None) -> Figure:
         The metric column.
     title : str, optional
         The title (default names the metric).
+    other_columns : sequence of str, optional
+        Grid keys (columns of `df`) whose values get boxes of their own (default none: one box
+        per law and feedback mode).
 
     Returns
     -------
@@ -325,25 +421,51 @@ def distribution_figure(df, metric: str, title: str | None = None) -> Figure:
     >>> table = run_study(study, progress=False)
     >>> figure = distribution_figure(table, "rms_position_error_last_half")
     >>> [label.get_text() for label in figure.axes[0].get_xticklabels()]
-    ['hinf/output', 'lqr/output']
+    ['hinf/output\\nn = 3, failed 0 %', 'lqr/output\\nn = 3, failed 0 %']
+    >>> figure.axes[0].get_ylabel()
+    'RMS position error, last half [m]'
     >>> figure.savefig("distribution.png")
     """
-    done = df[(df["status"] == "completed") & np.isfinite(df[metric].to_numpy(dtype=float))]
-    keys = sorted({(law, bool(of)) for law, of in zip(done["law"], done["output_feedback"])},
-                  key=lambda k: (k[1], list(_LAW_COLOURS).index(k[0]) if k[0] in _LAW_COLOURS else 9))
-    fig = Figure(figsize=(1.6 + 1.3 * max(1, len(keys)), 3.4), layout="constrained")
+    shown = _shown_columns(other_columns)
+    series = _series(df, other_columns)
+    data, upright_labels, rotated_labels, colours = [], [], [], []
+    for law, of, values, runs in series:
+        metric_values = runs.loc[runs["status"] == "completed", metric].to_numpy(dtype=float)
+        metric_values = metric_values[np.isfinite(metric_values)]
+        failed = int((runs["status"] != "completed").sum())
+        counts = f"n = {len(metric_values)}, failed {100 * failed / max(1, len(runs)):.0f} %"
+        data.append(metric_values)
+        upright_labels.append("\n".join([_label(law, of), *(f"{k} = {_value_text(v)}" for k, v in zip(shown, values)),
+                                         counts]))
+        # One line: the values alone, their keys named once below the axis.
+        rotated_labels.append(", ".join([_label(law, of), *(_value_text(v) for v in values)]) + f": {counts}")
+        colours.append(_LAW_COLOURS.get(law, "tab:gray"))
+    # Several upright lines while they fit under their box (about 1.3 in: 24 characters).
+    upright = len(series) <= _UPRIGHT_BOXES and all(
+        len(line) <= 24 for label in upright_labels for line in label.splitlines())
+    labels = upright_labels if upright else rotated_labels
+    note = "n: completed runs with a value; failed: share of the runs that did not complete"
+    if upright:
+        size = (1.6 + 1.3 * max(1, len(series)), 3.4)
+    else:  # rotated by 45 degrees: each label needs about 0.05 in per character of height
+        size = (2.0 + 0.45 * len(series), 3.6 + min(4.0, 0.04 * max(len(label) for label in labels)))
+    fig = Figure(figsize=size, layout="constrained")
     ax = fig.add_subplot()
-    data = [done[(done["law"] == law) & (done["output_feedback"] == of)][metric].to_numpy(dtype=float)
-            for law, of in keys]
     if data:
         boxes = ax.boxplot(data, patch_artist=True, whis=(5, 95), showfliers=True,
                            flierprops={"markersize": 2, "alpha": 0.4})
-        ax.set_xticks(range(1, len(keys) + 1), [_label(*k) for k in keys])
-        for patch, (law, _) in zip(boxes["boxes"], keys):
-            patch.set_facecolor(_LAW_COLOURS.get(law, "tab:gray"))
+        if upright:
+            ax.set_xticks(range(1, len(labels) + 1), labels, fontsize=7)
+        else:
+            ax.set_xticks(range(1, len(labels) + 1), labels, fontsize=7, rotation=45, ha="right",
+                          rotation_mode="anchor")
+            note = f"boxes: {', '.join(['law/feedback', *shown])}\n{note}"
+        for patch, colour in zip(boxes["boxes"], colours):
+            patch.set_facecolor(colour)
             patch.set_alpha(0.5)
-    ax.set_ylabel(metric)
-    ax.set_title(title or f"{metric}: completed runs (whiskers 5-95 %)", fontsize=9)
+    ax.set_xlabel(note, fontsize=7)
+    ax.set_ylabel(_metric_label(metric))
+    ax.set_title(title or f"{_metric_label(metric)}: completed runs (whiskers 5-95 %)", fontsize=9)
     ax.grid(True, axis="y", alpha=0.3)
     return fig
 
@@ -398,11 +520,14 @@ def axis_label(key: str, state_names: Sequence[str] = ()) -> str:
 
 
 def roa_figure(df, x: str, y: str, position_tol: float = 0.5, heading_tol_deg: float = 10.0,
-               title: str | None = None, state_names: Sequence[str] = ()) -> Figure:
+               title: str | None = None, state_names: Sequence[str] = (),
+               other_columns: Sequence[str] = ()) -> Figure:
     """Region of attraction: the fraction of runs that recovered over a 2-D grid of initial states.
 
-    One panel per law and feedback mode. Recovered as :func:`recovered`; each cell of the grid
-    (x, y) is coloured by the fraction of its runs that recovered (red 0 to green 1).
+    One panel per law and feedback mode and per combination of the values of `other_columns`
+    (the grid keys the study varies besides the map's and the law and feedback), named in the
+    panel's title. Recovered as :func:`recovered`; each cell of the grid (x, y) is coloured by
+    the fraction of its runs that recovered (red 0 to green 1).
 
     Parameters
     ----------
@@ -420,11 +545,14 @@ def roa_figure(df, x: str, y: str, position_tol: float = 0.5, heading_tol_deg: f
         The title (default states the tolerances).
     state_names : sequence of str, optional
         The model's state names, to label ``initial.q0[i]`` axes with the state's name.
+    other_columns : sequence of str, optional
+        Grid keys (columns of `df`) whose values get panels of their own (default none).
 
     Returns
     -------
     matplotlib.figure.Figure
-        The figure: one panel per law and feedback mode, and a colour bar.
+        The figure: one panel per law, feedback mode and values of `other_columns`, and a
+        colour bar.
 
     Examples
     --------
@@ -442,33 +570,50 @@ def roa_figure(df, x: str, y: str, position_tol: float = 0.5, heading_tol_deg: f
     ('hinf/state', 'x(t0)  (initial.q0[3])')
     """
     frame = df.assign(_ok=recovered(df, position_tol, heading_tol_deg))
-    keys = sorted({(law, bool(of)) for law, of in zip(frame["law"], frame["output_feedback"]) if law},
-                  key=lambda k: (k[1], list(_LAW_COLOURS).index(k[0]) if k[0] in _LAW_COLOURS else 9))
+    shown = _shown_columns(other_columns)
+    panels = _series(frame, other_columns)
     xs = np.sort(frame[x].astype(float).unique())
     ys = np.sort(frame[y].astype(float).unique())
-    columns = min(3, max(1, len(keys)))
-    rows = math.ceil(max(1, len(keys)) / columns)
-    fig = Figure(figsize=(2.6 * columns + 0.8, 2.4 * rows + 0.5), layout="constrained")
+    x_at, y_at = _cell_positions(xs), _cell_positions(ys)
+    columns = min(3, max(1, len(panels)))
+    rows = math.ceil(max(1, len(panels)) / columns)
+    fig = Figure(figsize=(2.6 * columns + 0.8, (2.4 + 0.15 * len(shown)) * rows + 0.5), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False)
     image = None
-    for ax, (law, of) in zip(axes.flat, keys):
-        part = frame[(frame["law"] == law) & (frame["output_feedback"] == of)]
+    for ax, (law, of, values, part) in zip(axes.flat, panels):
         share = part.groupby([part[y].astype(float), part[x].astype(float)])["_ok"].mean()
         grid = np.full((len(ys), len(xs)), np.nan)
         for (yv, xv), value in share.items():
             grid[np.searchsorted(ys, yv), np.searchsorted(xs, xv)] = value
-        image = ax.pcolormesh(_edges(xs), _edges(ys), grid, cmap="RdYlGn", vmin=0.0, vmax=1.0, shading="flat")
-        ax.set_title(_label(law, of), fontsize=9)
+        image = ax.pcolormesh(_edges(x_at), _edges(y_at), grid, cmap="RdYlGn", vmin=0.0, vmax=1.0, shading="flat")
+        # An infinite value (gamma = inf on an axis of the map) has a cell beyond the others, named.
+        if np.isinf(xs).any():
+            ax.set_xticks(x_at, [_value_text(v) for v in xs])
+        if np.isinf(ys).any():
+            ax.set_yticks(y_at, [_value_text(v) for v in ys])
+        ax.set_title("\n".join([_label(law, of), *(f"{k} = {_value_text(v)}" for k, v in zip(shown, values))]),
+                     fontsize=9 if not shown else 8)
         ax.set_xlabel(axis_label(x, state_names), fontsize=8)
         ax.set_ylabel(axis_label(y, state_names), fontsize=8)
         ax.tick_params(labelsize=7)
-    for ax in list(axes.flat)[len(keys):]:
+    for ax in list(axes.flat)[len(panels):]:
         ax.set_visible(False)
     if image is not None:
         fig.colorbar(image, ax=axes, shrink=0.8, label="recovered (fraction of runs)")
     fig.suptitle(title or f"Region of attraction: recovered = |p_e(tf)| < {position_tol:g} and "
                  f"|psi_e(tf)| < {heading_tol_deg:g} deg", fontsize=9)
     return fig
+
+
+def _cell_positions(values: np.ndarray) -> np.ndarray:
+    """Where the sorted values of a map's axis are drawn: a finite one at itself, inf one step of
+    the grid beyond the largest finite value (-inf one step below the smallest)."""
+    finite = values[np.isfinite(values)]
+    if not len(finite):
+        return np.arange(len(values), dtype=float)
+    step_up = finite[-1] - finite[-2] if len(finite) > 1 else 1.0
+    step_down = finite[1] - finite[0] if len(finite) > 1 else 1.0
+    return np.where(values == np.inf, finite[-1] + step_up, np.where(values == -np.inf, finite[0] - step_down, values))
 
 
 def _edges(values: np.ndarray) -> np.ndarray:
@@ -478,12 +623,76 @@ def _edges(values: np.ndarray) -> np.ndarray:
     return np.concatenate([[2 * values[0] - middle[0]], middle, [2 * values[-1] - middle[-1]]])
 
 
-def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: str | None = None) -> Figure:
-    """A metric against gamma: the median and the 5-95 % band of the completed runs.
+def _gamma_scale(gammas: np.ndarray) -> tuple[bool, float | None]:
+    """How a gamma axis draws `gammas`: logarithmic or not, and where gamma = inf goes.
 
-    One line and band per law and feedback mode. Failed runs (e.g. below gamma*) leave gaps, their
-    gammas marked by dotted red lines; the gamma axis is logarithmic when it spans more than a
-    factor 20.
+    Logarithmic when the finite gammas are > 0 and span more than a factor 20. gamma = inf (the
+    LQR limit) is drawn to the right of the largest finite gamma: at twice it on a logarithmic
+    axis, one spacing of the two largest further on a linear one (None: no gamma is inf).
+    """
+    finite = np.unique(gammas[np.isfinite(gammas)])
+    log = len(finite) > 1 and finite[0] > 0 and finite[-1] / finite[0] > 20
+    if not np.isposinf(gammas).any():
+        return log, None
+    if not len(finite):
+        return False, 1.0
+    top = finite[-1]
+    if log:
+        return True, 2.0 * top
+    step = top - finite[-2] if len(finite) > 1 else (abs(top) if top != 0 else 1.0)
+    return False, top + step
+
+
+def _gamma_positions(gammas: np.ndarray, inf_at: float | None) -> np.ndarray:
+    """Where gammas are drawn: a finite one at itself, inf at `inf_at`, anything else nowhere (NaN)."""
+    gammas = np.asarray(gammas, dtype=float)
+    at_inf = np.nan if inf_at is None else inf_at
+    return np.where(np.isposinf(gammas), at_inf, np.where(np.isfinite(gammas), gammas, np.nan))
+
+
+def _gamma_axis(ax, gammas: np.ndarray, log: bool, inf_at: float | None) -> None:
+    """The gamma axis's scale, range and ticks; with gamma = inf a tick "inf" at `inf_at`."""
+    from matplotlib.ticker import MaxNLocator, NullFormatter
+
+    finite = np.unique(gammas[np.isfinite(gammas)])
+    ticks = None
+    if log:
+        ax.set_xscale("log")
+        ticks = list(finite)
+    elif inf_at is not None:
+        ticks = list(finite) if len(finite) <= 8 else [
+            t for t in MaxNLocator(6).tick_values(finite[0], finite[-1]) if finite[0] <= t <= finite[-1]]
+    if ticks is not None:
+        labels = [f"{t:g}" for t in ticks]
+        if inf_at is not None:
+            ticks, labels = ticks + [inf_at], labels + ["inf"]
+        ax.set_xticks(ticks, labels, fontsize=7)
+        ax.xaxis.set_minor_formatter(NullFormatter())
+    # The range holds every gamma of the table, also those where every run failed (no line).
+    positions = _gamma_positions(gammas, inf_at)
+    positions = positions[np.isfinite(positions)]
+    if len(positions):
+        low, high = positions.min(), positions.max()
+        if log:
+            pad = (high / low) ** 0.05
+            ax.set_xlim(low / pad, high * pad)
+        else:
+            pad = 0.05 * (high - low) if high > low else max(0.5, 0.1 * abs(high))
+            ax.set_xlim(low - pad, high + pad)
+    ax.set_xlabel("gamma [-]" + (" (inf: the LQR limit)" if inf_at is not None else ""))
+
+
+def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: str | None = None,
+                 other_columns: Sequence[str] = ()) -> Figure:
+    """A metric against gamma: the median and the 5-95 % band of the completed runs at each gamma.
+
+    One line and band per law and feedback mode and per combination of the values of
+    `other_columns` (the grid keys that the study varies besides gamma, the law and feedback;
+    the legend names their values): the band is then the spread of the samples at one grid
+    point. Failed runs (e.g. below gamma*) leave gaps, their gammas marked by dotted red lines;
+    the gamma axis is logarithmic when it spans more than a factor 20. gamma = inf (the LQR
+    limit) is drawn right of the largest finite gamma (twice it on a logarithmic axis, one step
+    of the grid further on a linear one) with the tick label "inf".
 
     Parameters
     ----------
@@ -495,6 +704,9 @@ def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: st
         The gamma column (default ``"controller.gamma"``).
     title : str, optional
         The title (default names the metric).
+    other_columns : sequence of str, optional
+        Grid keys (columns of `df`) whose values get lines of their own (default none: one
+        line per law and feedback mode).
 
     Returns
     -------
@@ -510,40 +722,56 @@ def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: st
     ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
     >>> table = run_study(study, progress=False)
     >>> figure = gamma_figure(table, "final_position_error")
-    >>> figure.axes[0].get_xlabel(), len(figure.axes[0].lines)
-    ('gamma', 1)
-    """
-    fig = Figure(figsize=(5.6, 3.4), layout="constrained")
-    ax = fig.add_subplot()
-    done = df[df["status"] == "completed"]
-    keys = sorted({(law, bool(of)) for law, of in zip(done["law"], done["output_feedback"])})
-    for law, of in keys:
-        part = done[(done["law"] == law) & (done["output_feedback"] == of)]
-        stats = part.groupby(part[gamma_key].astype(float))[metric].quantile([0.05, 0.5, 0.95]).unstack()
-        colour = _LAW_COLOURS.get(law, None)
-        ax.plot(stats.index, stats[0.5], "o-", ms=3, color=colour, label=_label(law, of))
-        ax.fill_between(stats.index, stats[0.05], stats[0.95], color=colour, alpha=0.15, lw=0)
-    failed = df[(df["status"] != "completed")]
-    if len(failed):
-        gammas = np.unique(failed[gamma_key].astype(float))
-        ax.plot(gammas, np.full(len(gammas), np.nan), "x")  # keeps them in the axis range
-        for g in gammas:
-            ax.axvline(g, color="tab:red", lw=0.6, ls=":", alpha=0.7)
-        ax.plot([], [], color="tab:red", lw=0.6, ls=":", label="some runs failed")
-    values = df[gamma_key].astype(float)
-    if len(values) and values.min() > 0 and values.max() / values.min() > 20:
-        from matplotlib.ticker import NullFormatter
+    >>> figure.axes[0].get_xlabel(), figure.axes[0].get_ylabel(), len(figure.axes[0].lines)
+    ('gamma [-]', 'final position error [m]', 1)
 
-        ax.set_xscale("log")
-        ticks = np.unique(values)
-        ax.set_xticks(ticks, [f"{g:g}" for g in ticks], fontsize=7)
-        ax.xaxis.set_minor_formatter(NullFormatter())
-    ax.set_xlabel("gamma")
-    ax.set_ylabel(metric)
-    ax.set_title(title or f"{metric} against gamma: median, 5-95 % band", fontsize=9)
+    gamma = inf, the LQR limit, right of the finite gammas:
+
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, float("inf")]}]})
+    >>> figure = gamma_figure(run_study(study, progress=False), "final_position_error")
+    >>> [label.get_text() for label in figure.axes[0].get_xticklabels()]
+    ['5', 'inf']
+    >>> figure.axes[0].get_xlabel()
+    'gamma [-] (inf: the LQR limit)'
+    """
+    shown = _shown_columns(other_columns)
+    gammas = df[gamma_key].to_numpy(dtype=float)
+    log, inf_at = _gamma_scale(gammas)
+    # With other axes the legend is long: beside the axes, not over the lines.
+    fig = Figure(figsize=(5.6 + (2.6 if shown else 0.0), 3.4), layout="constrained")
+    ax = fig.add_subplot()
+    styles = {"hinf": "-", "lqr": "--", "cascade": "-."}
+    drawn = 0
+    for law, of, values, runs in _series(df, other_columns):
+        done = runs[runs["status"] == "completed"]
+        if not len(done):
+            continue
+        stats = done.groupby(done[gamma_key].astype(float))[metric].quantile([0.05, 0.5, 0.95]).unstack()
+        x = _gamma_positions(stats.index.to_numpy(dtype=float), inf_at)
+        # One colour per law without other axes; with them one per line, the law in the line style.
+        colour = f"C{drawn % 10}" if shown else _LAW_COLOURS.get(law, None)
+        label = ", ".join([_label(law, of), _point_text(shown, values)]) if shown else _label(law, of)
+        ax.plot(x, stats[0.5], marker="o", ms=3, ls=styles.get(law, "-") if shown else "-", color=colour,
+                label=label)
+        ax.fill_between(x, stats[0.05], stats[0.95], color=colour, alpha=0.15, lw=0)
+        drawn += 1
+    failed = df[df["status"] != "completed"]
+    if len(failed):
+        for position in np.unique(_gamma_positions(failed[gamma_key].to_numpy(dtype=float), inf_at)):
+            if np.isfinite(position):
+                ax.axvline(position, color="tab:red", lw=0.6, ls=":", alpha=0.7)
+        ax.plot([], [], color="tab:red", lw=0.6, ls=":", label="some runs failed")
+    _gamma_axis(ax, gammas, log, inf_at)
+    ax.set_ylabel(_metric_label(metric))
+    ax.set_title(title or f"{_metric_label(metric)} against gamma: median, 5-95 % band of the samples", fontsize=9)
     ax.grid(True, alpha=0.3)
-    if keys or len(failed):
-        ax.legend(fontsize=8)
+    if drawn or len(failed):
+        if shown:
+            ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+        else:
+            ax.legend(fontsize=8)
     return fig
 
 
@@ -558,9 +786,11 @@ def write_study_outputs(study, df, out, seconds: float | None = None) -> list[pa
 
     ``runs.parquet``, ``runs.csv`` (numbers at full precision), ``summary.md``
     (:func:`summary_markdown`) and the figures the study asks for: ``distribution.png`` (a
-    metric's distribution per law, when a run completed), with [report] roa ``roa.png`` (the
-    region-of-attraction map), with a controller.gamma grid axis ``gamma.png`` (the metric
-    against gamma). Each file is written whole or not at all.
+    metric's distribution per law and grid point, when a run completed), with [report] roa
+    ``roa.png`` (the region-of-attraction map), with a controller.gamma grid axis ``gamma.png``
+    (the metric against gamma). The figures keep the values of the grid axes apart (boxes,
+    panels or lines of their own) but for the roa keys, which the map spreads out, and the
+    gamma axis in ``gamma.png``. Each file is written whole or not at all.
 
     Parameters
     ----------
@@ -607,17 +837,25 @@ def write_study_outputs(study, df, out, seconds: float | None = None) -> list[pa
     written.append(out / "runs.csv")
     written.append(write_text(out / "summary.md", summary_markdown(df, study, seconds)))
     report = study.report
+    # The grid keys whose values each figure keeps apart: all but the map's (roa.png spreads
+    # them out, the other figures pool them as the summary does).
+    roa_keys = set(report.get("roa", ()))
+    point_columns = [key for axis in study.grid for key in axis.keys if key not in roa_keys]
     metric = report.get("distribution", "rms_position_error_last_half")
     if (df["status"] == "completed").any():
-        written.append(_save(distribution_figure(df, metric, title=f"{study.name}: {metric}"),
-                             out / "distribution.png"))
+        written.append(_save(distribution_figure(df, metric, title=f"{study.name}: {_metric_label(metric)}",
+                                                 other_columns=point_columns), out / "distribution.png"))
     if report.get("roa"):
         x, y = report["roa"]
         names = study.scenario(0).model.state_names()
         written.append(_save(roa_figure(df, x, y, report.get("position_tol", 0.5), report.get("heading_tol", 10.0),
-                                        state_names=names), out / "roa.png"))
-    if any("controller.gamma" in axis.keys for axis in study.grid):
+                                        state_names=names, other_columns=point_columns), out / "roa.png"))
+    gamma_axes = [axis for axis in study.grid if "controller.gamma" in axis.keys]
+    if gamma_axes:
         gamma_metric = report.get("gamma_metric", "rms_position_error_last_half")
-        written.append(_save(gamma_figure(df, gamma_metric, title=f"{study.name}: {gamma_metric} against gamma"),
-                             out / "gamma.png"))
+        # The keys set together with gamma move with it: they are the gamma axis, not other axes.
+        other_columns = [key for key in point_columns if key not in gamma_axes[0].keys]
+        written.append(_save(gamma_figure(df, gamma_metric,
+                                          title=f"{study.name}: {_metric_label(gamma_metric)} against gamma",
+                                          other_columns=other_columns), out / "gamma.png"))
     return written
