@@ -1739,9 +1739,10 @@ Parameters
 ----------
 signals : VectorSignal
     w(t), the model's nw channels: ``Disturbance(signals)`` is the signals alone.
-design : RiccatiSolution
-    ``Disturbance(signals, design)`` adds the worst-case disturbance of this design (finite
-    gamma).
+design : RiccatiSolution or SymmetricSolution
+    ``Disturbance(signals, design)`` adds the worst-case disturbance gamma^-2 D_e' X q_e of this
+    solution X at its finite gamma: a design Z (eq. 16), or a law's own P
+    (solve_law_riccati).
 
 Raises
 ------
@@ -1756,7 +1757,7 @@ Examples
 >>> w.worst_case(), w.eval(0.0, q0).round(4)                  # signals + gamma^-2 D' Z q_e
 (True, array([0.0586, 0.1472, 0.1779, 0.    , 0.    , 0.    ])))").c_str())
       .def(py::init<VectorSignal>(), py::arg("signals"))
-      .def(py::init<VectorSignal, RiccatiSolutionPtr>(), py::arg("signals"), py::arg("design"))
+      .def(py::init<VectorSignal, std::shared_ptr<const SymmetricSolution>>(), py::arg("signals"), py::arg("design"))
       .def("dim", &Disturbance::dim, doc({"Disturbance::dim"}).c_str())
       .def("worst_case", &Disturbance::worst_case, doc({"Disturbance::worst_case"}).c_str())
       .def("design", &Disturbance::design, doc({"Disturbance::design"}).c_str())

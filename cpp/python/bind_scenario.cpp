@@ -28,7 +28,7 @@ void bind_scenario(py::module_& m) {
 >>> low = scenario.copy()
 >>> low.gamma = 1.2                                          # below gamma*
 >>> [run.outcome for run in hc.run_scenarios([scenario, low])]
-[<RunOutcome.completed: 0>, <RunOutcome.conjugate_point: 2>])");
+[<RunOutcome.completed: 0>, <RunOutcome.conjugate_point: 3>])");
 
   // ---- scenarios ----
   bind_options<MeasurementSpec>(m, "MeasurementSpec", {"MeasurementSpec"},
@@ -104,7 +104,8 @@ Examples
        {"disturbance", "VectorSignal (set: also a callable, a list of Signal or float, or None)"},
        {"worst_case", "bool"}, {"initial_q0", "ndarray, shape (n,)"}, {"measurement", "MeasurementSpec or None"},
        {"sampling", "SamplingSpec or None"}, {"receding_horizon", "RecedingHorizonOptions or None"},
-       {"solver", "SolverOptions"}, {"output_dt", "float"}, {"divergence_factor", "float"}});
+       {"solver", "SolverOptions"}, {"output_dt", "float"}, {"divergence_factor", "float"},
+       {"lost_track", "float"}});
   const auto member = [](const char* name) { return std::string(contract(str_cat("Scenario::", name))); };
   py::class_<Scenario>(m, "Scenario", doc({"Scenario", "scenario/scenario.hpp"}, scenario_fields + R"(
 
@@ -162,6 +163,7 @@ Examples
       .def_readwrite("solver", &Scenario::solver, member("solver").c_str())
       .def_readwrite("output_dt", &Scenario::output_dt, member("output_dt").c_str())
       .def_readwrite("divergence_factor", &Scenario::divergence_factor, member("divergence_factor").c_str())
+      .def_readwrite("lost_track", &Scenario::lost_track, member("lost_track").c_str())
       .def("resolved", &Scenario::resolved, doc({"Scenario::resolved"}).c_str())
       .def("validate", &Scenario::validate, doc({"Scenario::validate"}, "An InputError is a ValueError.").c_str())
       .def("simulation_options", &Scenario::simulation_options, doc({"Scenario::simulation_options"}).c_str())

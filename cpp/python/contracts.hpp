@@ -150,7 +150,8 @@ a design when one is given.)contract"},
     {"Disturbance::D_", R"contract(D of the design's model, when constant)contract"},
     {"Disturbance::Disturbance", R"contract(The signals alone (implicit: a VectorSignal is a disturbance).
 
-signals + the worst-case disturbance of `design` (needs a finite gamma).)contract"},
+signals + the worst-case disturbance of `design` (a GRDE solution Z or a law's P, at a finite
+gamma).)contract"},
     {"Disturbance::design", R"contract(The design of the worst-case part (null without one); q in eval() has design()->n() numbers.)contract"},
     {"Disturbance::dim", R"contract(The number of channels: the model's nw.)contract"},
     {"Disturbance::eval", R"contract(w at time t for the actual state q (n numbers); writes dim() numbers. Safe to call from
@@ -701,6 +702,7 @@ window. False when there is nothing to do now.)contract"},
     {"RunOutcome::diverged", R"contract(the closed loop stopped at the divergence bound (simulation.hpp))contract"},
     {"RunOutcome::failed", R"contract(any other exception)contract"},
     {"RunOutcome::invalidinput", R"contract(the scenario is invalid (Scenario::validate, or an InputError later))contract"},
+    {"RunOutcome::losttrack", R"contract(it ran to tf but ended off the path (Scenario::lost_track))contract"},
     {"RunOutcome::solverfailure", R"contract(an integrator failed (SolverError))contract"},
     {"RunResult", R"contract(What run_scenario gives: the design, the closed loop and its metrics.)contract"},
     {"RunResult::Z0", R"contract(Z(t0) (n x n); empty without a design)contract"},
@@ -727,6 +729,8 @@ window's desired trajectory (the run's q_d is simulation.q_d))contract"},
     {"RunStatus::completed", R"contract(integrated over the whole horizon)contract"},
     {"RunStatus::diverged", R"contract(stopped when the tracking error exceeded the divergence bound (see above):
 divergence_factor times the problem's scale)contract"},
+    {"RunStatus::losttrack", R"contract(integrated over the whole horizon, but it ended more than the scenario's
+lost_track farther from the desired path than it started (scenario.hpp))contract"},
     {"SampledDesign", R"contract(Which design a sampled loop runs ([sampling] design).)contract"},
     {"SampledDesign::digital", R"contract(the discrete game at the period (SampledLaw::digital, solve_discrete_game))contract"},
     {"SampledDesign::emulated", R"contract(the continuous design held over each sample (SampledLaw::emulated))contract"},
@@ -804,6 +808,9 @@ empty take the defaults that resolved() fills in.)contract"},
     {"Scenario::initial_q0", R"contract(q(t0))contract"},
     {"Scenario::kappa", R"contract(gain scaling kappa(t) of the law (17)/(18), > 0)contract"},
     {"Scenario::law", R"contract(the tracking law)contract"},
+    {"Scenario::lost_track", R"contract([solver] lost_track (m, > 0, may be inf): a run that ends
+more than this farther from the desired path than it
+started has status LostTrack (models with a position only))contract"},
     {"Scenario::measurement", R"contract(imperfect measurements; none: state feedback)contract"},
     {"Scenario::model", R"contract(the design model: desired trajectory, GRDE, controller, estimator)contract"},
     {"Scenario::name", R"contract(for results and messages (a file's stem by default))contract"},
@@ -910,7 +917,7 @@ table's cubic pieces, and where it is taken.)contract"},
 (-pi, pi].)contract"},
     {"SimulationResult::stats", R"contract(the counts of the closed loop's integration)contract"},
     {"SimulationResult::status", R"contract(how the run ended)contract"},
-    {"SimulationResult::status_message", R"contract(why the run stopped early; empty when completed)contract"},
+    {"SimulationResult::status_message", R"contract(why the run stopped early or lost the track; empty when completed)contract"},
     {"SimulationResult::t", R"contract(output times (s), from t0)contract"},
     {"SimulationResult::u", R"contract(applied control (m))contract"},
     {"SimulationResult::u_d", R"contract(desired control (m))contract"},
@@ -1189,7 +1196,9 @@ the continuous (36) and rho(Sigma Z) < gamma^2; at gamma = inf it is the discret
     w(t, q) = signals(t) [+ w*(t, q)],
 where w* = gamma^-2 D_e(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
 for a design Z at gamma (scenario key [disturbance] worst_case = true): the adversary of the
-game, feeding back the true error.)contract"},
+game, feeding back the true error. Z may also be a law's closed-loop P at gamma
+(solve_law_riccati): then w* is that law's own worst case (for the H-infinity law at its gamma
+P = Z).)contract"},
     {"control/metrics.hpp", R"contract(Metrics of a closed-loop run. metric_table() is their one definition (name, label, unit,
 definition): the results file, the bindings, the Python tables and docs/results.md all
 come from it. Integrals are trapezoid sums over the output grid; "position" is the model's

@@ -1864,6 +1864,9 @@ class RunStatus:
     diverged
         stopped when the tracking error exceeded the divergence bound (see above):
         divergence_factor times the problem's scale
+    lost_track
+        integrated over the whole horizon, but it ended more than the scenario's
+        lost_track farther from the desired path than it started (scenario.hpp)
     
     Examples
     --------
@@ -1875,6 +1878,7 @@ class RunStatus:
     __members__: typing.ClassVar[dict[str, RunStatus]]
     completed: typing.ClassVar[RunStatus]
     diverged: typing.ClassVar[RunStatus]
+    lost_track: typing.ClassVar[RunStatus]
     def __eq__(self: RunStatus | str, other: typing.Any) -> bool:
         ...
     def __getstate__(self) -> int:
@@ -2843,7 +2847,9 @@ class Disturbance:
         w(t, q) = signals(t) [+ w*(t, q)],
     where w* = gamma^-2 D_e(t)' Z(t) (q - q_d(t)) is the worst-case disturbance of paper eq. (16)
     for a design Z at gamma (scenario key [disturbance] worst_case = true): the adversary of the
-    game, feeding back the true error.
+    game, feeding back the true error. Z may also be a law's closed-loop P at gamma
+    (solve_law_riccati): then w* is that law's own worst case (for the H-infinity law at its gamma
+    P = Z).
     
     Wherever a Disturbance is expected, a VectorSignal (or what one is made from) is taken too.
     
@@ -2851,9 +2857,10 @@ class Disturbance:
     ----------
     signals : VectorSignal
         w(t), the model's nw channels: ``Disturbance(signals)`` is the signals alone.
-    design : RiccatiSolution
-        ``Disturbance(signals, design)`` adds the worst-case disturbance of this design (finite
-        gamma).
+    design : RiccatiSolution or SymmetricSolution
+        ``Disturbance(signals, design)`` adds the worst-case disturbance gamma^-2 D_e' X q_e of this
+        solution X at its finite gamma: a design Z (eq. 16), or a law's own P
+        (solve_law_riccati).
     
     Raises
     ------
@@ -2874,9 +2881,9 @@ class Disturbance:
     def __init__(self, signals: VectorSignal) -> None:
         ...
     @typing.overload
-    def __init__(self, signals: VectorSignal, design: RiccatiSolution) -> None:
+    def __init__(self, signals: VectorSignal, design: SymmetricSolution) -> None:
         ...
-    def design(self) -> RiccatiSolution:
+    def design(self) -> SymmetricSolution:
         """
         The design of the worst-case part (null without one); q in eval() has design()->n() numbers.
         """
@@ -2991,7 +2998,7 @@ class SimulationResult:
     status : RunStatus
         how the run ended
     status_message : str
-        why the run stopped early; empty when completed
+        why the run stopped early or lost the track; empty when completed
     heading_index : int
         the model's heading component (angles.hpp), -1 if none
     integrator : str
@@ -3068,7 +3075,7 @@ class SimulationResult:
     @property
     def status_message(self) -> str:
         """
-        why the run stopped early; empty when completed
+        why the run stopped early or lost the track; empty when completed
         """
     @property
     def t(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
@@ -5742,6 +5749,8 @@ class RunOutcome:
         the closed loop ran over the whole horizon
     diverged
         the closed loop stopped at the divergence bound (simulation.hpp)
+    lost_track
+        it ran to tf but ended off the path (Scenario::lost_track)
     conjugate_point
         no design: the GRDE escapes at this gamma (gamma <= gamma*)
     coupling_violation
@@ -5760,7 +5769,7 @@ class RunOutcome:
     >>> low = scenario.copy()
     >>> low.gamma = 1.2                                          # below gamma*
     >>> [run.outcome for run in hc.run_scenarios([scenario, low])]
-    [<RunOutcome.completed: 0>, <RunOutcome.conjugate_point: 2>]
+    [<RunOutcome.completed: 0>, <RunOutcome.conjugate_point: 3>]
     """
     __members__: typing.ClassVar[dict[str, RunOutcome]]
     completed: typing.ClassVar[RunOutcome]
@@ -5769,6 +5778,7 @@ class RunOutcome:
     diverged: typing.ClassVar[RunOutcome]
     failed: typing.ClassVar[RunOutcome]
     invalid_input: typing.ClassVar[RunOutcome]
+    lost_track: typing.ClassVar[RunOutcome]
     solver_failure: typing.ClassVar[RunOutcome]
     def __eq__(self: RunOutcome | str, other: typing.Any) -> bool:
         ...
@@ -6275,6 +6285,10 @@ class Scenario:
         [output] dt
     divergence_factor : float
         [solver] divergence_factor (simulation.hpp)
+    lost_track : float
+        [solver] lost_track (m, > 0, may be inf): a run that ends
+        more than this farther from the desired path than it
+        started has status LostTrack (models with a position only)
     
     Notes
     -----
@@ -6423,6 +6437,16 @@ class Scenario:
         """
     @law.setter
     def law(self, arg1: Law | str) -> None:
+        ...
+    @property
+    def lost_track(self) -> float:
+        """
+        [solver] lost_track (m, > 0, may be inf): a run that ends
+        more than this farther from the desired path than it
+        started has status LostTrack (models with a position only)
+        """
+    @lost_track.setter
+    def lost_track(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def measurement(self) -> MeasurementSpec | None:

@@ -661,7 +661,8 @@ def _add_comparison_options(parser: argparse.ArgumentParser) -> None:
     modes = [mode.name for mode in Feedback]
     parser.add_argument("--feedback", help=f"{', '.join(modes)} or {','.join(modes)} (default: all with [measurement])")
     parser.add_argument("--worst-case", action="store_true",
-                        help="add the worst-case disturbance w* of the H-infinity design (eq. 16)")
+                        help="add each law's own worst-case disturbance at gamma (hinf: w* of eq. 16; lqr: that of "
+                             "its closed loop; cascade: hinf's)")
 
 
 def _add_quiet(parser: argparse.ArgumentParser) -> None:

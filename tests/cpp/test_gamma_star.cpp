@@ -865,6 +865,23 @@ TEST(LawGain, TheHinfLawsGainLiesBetweenGammaStarAndItsGamma) {
   EXPECT_GE(lqr, star * (1 - 2e-6));
 }
 
+TEST(LawGain, TheHinfLawsClosedLoopSolutionAtItsGammaIsItsDesign) {
+  // With K = B'Z, A_cl = A - BB'Z and R = Q + ZBB'Z, the closed-loop equation at the design's
+  // gamma becomes the GRDE (13) itself: P = Z (eq. 16 is the law's own worst case). Two
+  // integrations of different equations, each to rtol 1e-8: agreement to 1e-6 relative.
+  const auto trajectory = paper_trajectory();
+  const Mat I = Mat::Identity(6, 6);
+  const auto Z = hinf::solve_grde(trajectory, I, I, 5.0);
+  const auto P = hinf::solve_law_riccati(Z, I, I, 5.0);
+  for (double t : {0.0, 7.3, 20.0, 39.0}) {
+    const Mat z = Z->Z(t), p = P->value(t);
+    EXPECT_LT((p - z).norm(), 1e-6 * z.norm()) << "t = " << t;
+  }
+  // Another kappa is another law: P differs.
+  const auto P2 = hinf::solve_law_riccati(Z, I, I, 5.0, hinf::Signal(2.0));
+  EXPECT_GT((P2->value(0.0) - Z->Z(0.0)).norm(), 1e-3 * Z->Z(0.0).norm());
+}
+
 TEST(LawGain, BadInputIsAnInputError) {
   ScalarLaw c;
   const auto law = c.law();

@@ -1259,3 +1259,47 @@ TEST(ScenarioSampling, TheRunIsTheSampledLoopOfTheOnlineController) {
 }
 
 }  // namespace
+
+namespace {
+
+// Figure 1 started 8 m to port of the path with the heading reversed: outside the H-infinity
+// law's region of attraction (the paper's locality).
+Scenario runaway(hinf::Law law) {
+  Scenario s = hinf::load_scenario_toml(kFig1);
+  s.law = law;
+  s.initial_q0 = Vec::Zero(6);
+  s.initial_q0 << -1.0, 0.0, 0.0, 0.0, 8.0, M_PI;  // [u, v, r, x, y, psi]; q_d(0) = (1, 0, 0, 0, 0, 0)
+  return s;
+}
+
+// The distance from the desired path's position at output row k, from the recorded series.
+double distance_to_path(const hinf::SimulationResult& run, Eigen::Index k) {
+  return std::hypot(run.q(k, 3) - run.q_d(k, 3), run.q(k, 4) - run.q_d(k, 4));
+}
+
+}  // namespace
+
+TEST(LostTrack, ARunThatEndsFarFromThePathIsNotCompleted) {
+  const hinf::RunResult lost = hinf::run_scenario(runaway(hinf::Law::Hinf));
+  const hinf::SimulationResult& run = lost.simulation;
+  ASSERT_EQ(run.t[run.t.size() - 1], 40.0) << "ran to tf";
+  const double start = distance_to_path(run, 0), end = distance_to_path(run, run.q.rows() - 1);
+  std::printf("[lost track] hinf from 8 m aside, reversed: %s, %.4g m at tf (start %.4g m)\n",
+              hinf::to_string(run.status).c_str(), end, start);
+  EXPECT_GT(end, start + 1.0);
+  EXPECT_EQ(run.status, hinf::RunStatus::LostTrack);
+  EXPECT_NE(run.status_message.find("lost_track = 1 m farther than it started (8 m)"), std::string::npos)
+      << run.status_message;
+  // The metrics of the whole run are still there (it ran to tf).
+  EXPECT_NEAR(lost.metrics.final_position_error, end, 1e-12 * end);
+  EXPECT_TRUE(std::isfinite(lost.metrics.rms_position_error_last_half));
+  // With lost_track = inf the same run is completed.
+  Scenario never = runaway(hinf::Law::Hinf);
+  never.lost_track = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(hinf::run_scenario(never).simulation.status, hinf::RunStatus::Completed);
+  // A run that tracks (Figure 1 as shipped, 1.41 m off at t0) stays completed.
+  EXPECT_EQ(hinf::run_scenario(hinf::load_scenario_toml(kFig1)).simulation.status, hinf::RunStatus::Completed);
+  Scenario bad = runaway(hinf::Law::Hinf);
+  bad.lost_track = 0.0;
+  EXPECT_THROW(hinf::run_scenario(bad), hinf::InputError);
+}

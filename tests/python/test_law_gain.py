@@ -66,3 +66,38 @@ def test_compare_reports_each_laws_own_attenuation():
     assert star * (1 - 1e-6) <= gains["hinf"] < scenario.gamma
     assert gains["lqr"] >= star * (1 - 1e-6)
     assert all(math.isnan(gains[key]) for key in gains if key == "cascade" or key.endswith("output-feedback"))
+
+
+def test_the_lqr_run_meets_its_own_worst_case():
+    """[disturbance] worst_case with lqr adds gamma^-2 D' P q_e, P of the LQR law's closed loop
+    at gamma (not the H-infinity design's Z): the recorded w at t0 against both."""
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    scenario.worst_case = True
+    scenario.law = hc.Law.lqr
+    scenario.gamma = 2.5  # above the LQR law's gain (2.2), where its worst case and hinf's differ
+    result = hc.run_scenario(scenario)
+    resolved = scenario.resolved()
+    lqr = hc.solve_grde(result.trajectory, resolved.Q, resolved.Qf, math.inf, resolved.solver)
+    t0, gamma = result.simulation.t[0], scenario.gamma
+    q_e = result.simulation.q[0] - result.trajectory.q_d(t0)
+    D = result.trajectory.D_e(t0)
+    signals = hc.Disturbance(scenario.disturbance).eval(t0, result.simulation.q[0])
+    P = hc.solve_law_riccati(lqr, resolved.Q, resolved.Qf, gamma, resolved.kappa, resolved.solver)
+    Z = hc.solve_grde(result.trajectory, resolved.Q, resolved.Qf, gamma, resolved.solver)
+    own = signals + D.T @ P.value(t0) @ q_e / gamma**2
+    hinf = signals + D.T @ Z.Z(t0) @ q_e / gamma**2
+    w0 = result.simulation.w[0]
+    # The same P integrated twice by the same code with the scenario's solver: equal to round-off
+    # (the sum in another order); the two worst cases differ by far more.
+    assert np.allclose(w0, own, rtol=1e-9, atol=1e-12)
+    assert np.abs(own - hinf).max() > 1e-3
+    comparison = compare(scenario, "hinf,lqr", worst_case=True)
+    assert "LQR law's own worst case" in comparison["lqr"].disturbance["description"]
+    assert "eq. 16" in comparison["hinf"].disturbance["description"]
+
+
+def test_lqr_below_its_gain_has_no_worst_case():
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    scenario.worst_case, scenario.law, scenario.gamma = True, hc.Law.lqr, 1.5  # the LQR law's gain is 2.2
+    with pytest.raises(hc.ConjugatePointError, match="closed-loop Riccati equation of the law"):
+        hc.run_scenario(scenario)

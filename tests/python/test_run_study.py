@@ -186,5 +186,5 @@ def test_rows_and_options_pickle_and_print():
     assert repr(options) == "StudyOptions(threads=3, share_designs=False)"
     with pytest.raises(ValueError, match="threads must be >= 0"):
         hc.StudyOptions(threads=-1)
-    assert list(hc.RunOutcome.__members__) == ["completed", "diverged", "conjugate_point", "coupling_violation",
-                                                "solver_failure", "invalid_input", "failed"]
+    assert list(hc.RunOutcome.__members__) == ["completed", "diverged", "lost_track", "conjugate_point",
+                                                "coupling_violation", "solver_failure", "invalid_input", "failed"]

@@ -9,7 +9,7 @@ namespace hinf {
 
 Disturbance::Disturbance(VectorSignal signals) : signals_(std::move(signals)) {}
 
-Disturbance::Disturbance(VectorSignal signals, RiccatiSolutionPtr design)
+Disturbance::Disturbance(VectorSignal signals, std::shared_ptr<const SymmetricSolution> design)
     : signals_(std::move(signals)), design_(std::move(design)) {
   require(design_ != nullptr, "the worst-case disturbance needs a design (a GRDE solution)");
   require(std::isfinite(design_->gamma()),

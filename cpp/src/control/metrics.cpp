@@ -114,7 +114,7 @@ Metrics compute_metrics(const Model& model, const SimulationResult& run, const M
   const RowMat u_e = run.u - run.u_d;
 
   const std::vector<int> position = model.position_indices();
-  const bool completed = run.status == RunStatus::Completed;
+  const bool completed = run.status != RunStatus::Diverged;  // integrated to tf (LostTrack too)
   if (!position.empty()) {
     RowMat position_error(count, static_cast<Eigen::Index>(position.size()));
     for (std::size_t c = 0; c < position.size(); ++c) position_error.col(static_cast<Eigen::Index>(c)) = q_e.col(position[c]);

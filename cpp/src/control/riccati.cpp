@@ -289,7 +289,8 @@ void blame_model_if_not_finite(const Trajectory& trajectory, std::initializer_li
     throw ConjugatePointError(
         str_cat("the closed-loop Riccati equation of the law escapes to infinity at t = ", t_escape,
                 " (integrating backward from tf = ", tf, " toward t0 = ", t0, "); gamma = ", gamma,
-                " is at or below the law's induced L2 gain on this horizon", detail),
+                " is at or below the law's induced L2 gain on this horizon (law_gain gives it): the law has no worst"
+                " case at this gamma; raise gamma", detail),
         t_escape, gamma);
   throw ConjugatePointError(
       str_cat("the filter Riccati equation (36) escapes to infinity at t = ", t_escape,

@@ -244,13 +244,16 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
     s.path_change = std::move(change);
   }
   if (const toml::table* table = section(root, "solver", source, false)) {
-    TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor"});
+    TableReader r(*table, "[solver]", source, {"method", "newton_systems", "rtol", "atol", "max_steps", "divergence_factor",
+                                                        "lost_track"});
     s.solver.method = r.enum_or("method", s.solver.method);
     s.solver.newton_systems = r.enum_or("newton_systems", s.solver.newton_systems);
     s.solver.rtol = r.number_or("rtol", s.solver.rtol);
     s.solver.atol = r.number_or("atol", s.solver.atol);
     s.solver.max_steps = static_cast<long>(r.integer_or("max_steps", s.solver.max_steps));
     s.divergence_factor = r.number_or("divergence_factor", s.divergence_factor);
+    s.lost_track = r.number_or("lost_track", s.lost_track);
+    require(s.lost_track > 0.0, source, ": [solver] lost_track must be > 0 m (inf: never), got ", s.lost_track);
     try {
       s.simulation_options().validate();
     } catch (const InputError& e) {

@@ -104,7 +104,8 @@ std::string scenario_toml(const Scenario& s) {
                                     {"rtol", s.solver.rtol},
                                     {"atol", s.solver.atol},
                                     {"max_steps", static_cast<std::int64_t>(s.solver.max_steps)},
-                                    {"divergence_factor", s.divergence_factor}});
+                                    {"divergence_factor", s.divergence_factor},
+                                    {"lost_track", s.lost_track}});
   root.insert("output", toml::table{{"dt", s.output_dt}});
   return detail::toml_text(root);
 }

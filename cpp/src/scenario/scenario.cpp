@@ -97,6 +97,7 @@ void Scenario::validate_settings() const {
   check_horizon(t0, tf);
   require(!std::isnan(gamma) && gamma > 0.0, "[controller] gamma must be > 0 (or inf), got ", gamma);
   simulation_options().validate();
+  require(lost_track > 0.0, "[solver] lost_track must be > 0 m (inf: never), got ", lost_track);
   const auto [kappa_min, kappa_min_t] = kappa.minimum(t0, tf);
   require(std::isfinite(kappa_min) && kappa_min > 0.0, "[controller] kappa must be > 0 on [t0, tf]: kappa(",
           kappa_min_t, ") = ", kappa_min);
@@ -290,6 +291,27 @@ double design_gamma(const Scenario& s) {
   return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
 }
 
+// A run that ran to tf but ended more than [solver] lost_track farther from the desired path
+// than it started has lost the track: status LostTrack, with the distances in the message. (A
+// slow law may end a short run a little farther than it started; one that runs away ends far.)
+void judge_track(const Scenario& s, RunResult& result) {
+  SimulationResult& run = result.simulation;
+  const std::vector<int> position = s.model->position_indices();
+  if (run.status != RunStatus::Completed || position.empty() || run.t.size() == 0) return;
+  const RowMat q_e = run.q_e();
+  const auto distance = [&](Eigen::Index row) {
+    double sum = 0.0;
+    for (int i : position) sum += q_e(row, i) * q_e(row, i);
+    return std::sqrt(sum);
+  };
+  const double start = distance(0), end = distance(q_e.rows() - 1);
+  if (!(end > start + s.lost_track)) return;
+  run.status = RunStatus::LostTrack;
+  run.status_message = str_cat("the run ended ", end, " m from the desired path at tf = ", run.t[run.t.size() - 1],
+                               " s, more than [solver] lost_track = ", s.lost_track,
+                               " m farther than it started (", start, " m)");
+}
+
 // The receding horizon of a resolved, validated scenario with [receding_horizon], its path
 // change applied.
 std::shared_ptr<const RecedingHorizon> receding_horizon_of(const Scenario& s) {
@@ -331,7 +353,7 @@ ScenarioDesign design_scenario(const Scenario& s) {
       design.solution_error = std::current_exception();
     }
     if (s.worst_case && s.law == Law::Lqr && design.solution)
-      design.game = solve_grde(design.trajectory, s.Q, s.Qf, s.gamma, s.solver);
+      design.game = solve_law_riccati(design.solution, s.Q, s.Qf, s.gamma, s.kappa, s.solver);
     if (design.solution) design.solution->eigenvalue_bounds(design.Z_min_eig, design.Z_max_eig);
   } catch (...) {
     design.error = std::current_exception();
@@ -346,6 +368,11 @@ namespace {
 std::optional<double> game_gamma(const Scenario& s) {
   if (s.worst_case && s.law == Law::Lqr) return s.gamma;
   return std::nullopt;
+}
+
+// The LQR law's own worst case depends on its gain scaling kappa (K = kappa B'Z).
+bool same_kappa(const Scenario& a, const Scenario& b) {
+  return VectorSignal(std::vector<Signal>{a.kappa}).same_signals(VectorSignal(std::vector<Signal>{b.kappa}));
 }
 
 bool same_matrix(const Mat& a, const Mat& b) {
@@ -370,6 +397,7 @@ bool same_design(const Scenario& a, const Scenario& b) {
          a.desired_u.same_signals(b.desired_u) && same_states(a, b) && design_gamma(a) == design_gamma(b) &&
          same_matrix(a.Q, b.Q) &&
          same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b) &&
+         (!game_gamma(a) || same_kappa(a, b)) &&
          a.receding_horizon.has_value() == b.receding_horizon.has_value() &&
          (!a.receding_horizon || (a.receding_horizon->window == b.receding_horizon->window &&
                                   a.receding_horizon->update == b.receding_horizon->update &&
@@ -472,7 +500,10 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   result.trajectory = design.trajectory;
   result.plant = s.plant;
   result.solution = design.solution;
-  const RiccatiSolutionPtr& game = design.game ? design.game : design.solution;  // the H-infinity design at gamma
+  // The law's own worst case: P of its closed loop at gamma (Z itself for hinf; for cascade,
+  // whose closed loop law_gain does not cover, the H-infinity design's).
+  const std::shared_ptr<const SymmetricSolution> game =
+      design.game ? design.game : std::shared_ptr<const SymmetricSolution>(design.solution);
 
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
@@ -514,6 +545,7 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   result.Z_min_eig = design.Z_min_eig;
   result.Z_max_eig = design.Z_max_eig;
   result.metrics = compute_metrics(*s.model, result.simulation, s.Q);
+  judge_track(s, result);
   result.timing.analysis = seconds_since(analysis_start);
   return result;
 }

@@ -22,9 +22,10 @@ struct ScenarioDesign {
   // without it, as it does in run_scenario).
   RiccatiSolutionPtr solution;
   std::exception_ptr solution_error;
-  // [disturbance] worst_case with the lqr law: the H-infinity design at the scenario's gamma
-  // (otherwise the worst case uses `solution`).
-  RiccatiSolutionPtr game;
+  // [disturbance] worst_case with the lqr law: the LQR law's own worst case at the scenario's
+  // gamma, P of its closed-loop Riccati equation (solve_law_riccati; otherwise the worst case
+  // uses `solution`, whose P is Z itself).
+  std::shared_ptr<const SymmetricSolution> game;
   // [receding_horizon]: the windows' design (solved as the loop runs); trajectory is then its first
   // window's, and solution null.
   std::shared_ptr<const RecedingHorizon> horizon;

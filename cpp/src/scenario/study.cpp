@@ -219,9 +219,11 @@ std::vector<StudyRun> run_scenarios(const std::vector<Scenario>& scenarios, cons
         const auto start = std::chrono::steady_clock::now();
         try {
           const RunResult result = detail::simulate_scenario(resolved[i], *design, nullptr, /*sigma_eigenvalues=*/false);
-          const bool diverged = result.simulation.status == RunStatus::Diverged;
-          row.status = diverged ? RunOutcome::Diverged : RunOutcome::Completed;
-          row.reason = diverged ? result.simulation.status_message : std::string();
+          const RunStatus status = result.simulation.status;
+          row.status = status == RunStatus::Diverged    ? RunOutcome::Diverged
+                       : status == RunStatus::LostTrack ? RunOutcome::LostTrack
+                                                        : RunOutcome::Completed;
+          row.reason = status == RunStatus::Completed ? std::string() : result.simulation.status_message;
           row.metrics = result.metrics;
         } catch (...) {
           record_failure(row, std::current_exception());

@@ -311,12 +311,15 @@ def _gamma_text(gamma: float) -> str:
     return "inf" if math.isinf(gamma) else f"{gamma:g}"
 
 
-def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None = None) -> dict:
+def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None = None,
+                         law: _core.Law | None = None) -> dict:
     """Which disturbance a run of ``scenario`` sees.
 
     The signals of [disturbance] (the non-zero channels; with output feedback the
-    measurement-noise channels are left out), the worst case w* = gamma^-2 D' Z q_e of paper
-    eq. (16) when ``worst_case`` is set, and with output feedback the measurement noise.
+    measurement-noise channels are left out), the law's worst case when ``worst_case`` is set
+    (w* = gamma^-2 D' Z q_e of paper eq. (16) for hinf and cascade; for lqr its own,
+    gamma^-2 D' P q_e with P of its closed loop at gamma, :func:`hinf_cpp.solve_law_riccati`),
+    and with output feedback the measurement noise.
 
     Parameters
     ----------
@@ -324,13 +327,14 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
         The scenario (its ``[disturbance]`` signals, ``worst_case`` and ``[measurement]``).
     output_feedback : bool, optional
         Whether the run is output feedback (default: whether the scenario has ``[measurement]``).
+    law : hinf_cpp.Law, optional
+        The run's law (default: the scenario's).
 
     Returns
     -------
     dict
         ``signals`` (channel -> description, non-zero channels only), ``worst_case``
-        (bool), ``worst_case_gamma`` (the gamma of the H-infinity design whose w* is applied,
-        or None), ``measurement_noise`` (sigma, sample period, seed, channels; or None) and
+        (bool), ``worst_case_gamma`` (the gamma of the worst case applied, or None), ``measurement_noise`` (sigma, sample period, seed, channels; or None) and
         ``description`` (one sentence).
 
     Raises
@@ -369,8 +373,13 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
     else:
         parts.append("no disturbance signals")
     if scenario.worst_case:
-        parts.append(f"plus the worst case w* = gamma^-2 D' Z q_e of the H-infinity design at gamma = "
-                     f"{_gamma_text(scenario.gamma)} (paper eq. 16)")
+        law = scenario.law if law is None else law
+        if law == _core.Law.lqr:
+            parts.append(f"plus the LQR law's own worst case w* = gamma^-2 D' P q_e at gamma = "
+                         f"{_gamma_text(scenario.gamma)} (P of its closed loop)")
+        else:
+            parts.append(f"plus the worst case w* = gamma^-2 D' Z q_e of the H-infinity design at gamma = "
+                         f"{_gamma_text(scenario.gamma)} (paper eq. 16)")
     noise = None
     if output_feedback:
         ms = scenario.measurement
@@ -614,7 +623,8 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
     feedback : str or sequence of str or Feedback, optional
         ``"state"`` and/or ``"output"``; default both with ``[measurement]``, else state.
     worst_case : bool, optional
-        Overrides ``[disturbance] worst_case`` (add w* of eq. 16 of the H-infinity design).
+        Overrides ``[disturbance] worst_case``: add each law's own worst case (w* of eq. 16 for
+        hinf; for lqr gamma^-2 D' P q_e of its closed loop at gamma; cascade gets hinf's).
     progress : callable, optional
         Called as ``progress(index, total, message)`` before each run (e.g. a
         :class:`~hinf_cpp.output.progress.Progress`).
@@ -656,7 +666,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
         key = run_key(law, mode is Feedback.output)
         if progress is not None:
             progress(index, len(plan), f"running {key} on {base.name}")
-        disturbance = describe_disturbance(base, mode is Feedback.output)
+        disturbance = describe_disturbance(base, mode is Feedback.output, law)
         design_gamma = math.inf if law == _core.Law.lqr else float(base.gamma)
         try:
             result = run_law(base, law, mode)

@@ -55,7 +55,7 @@ __all__ = [
 ]
 
 #: What a run's status can be (StudyRun.status), in the order of the summary's columns.
-STATUSES = ["completed", "diverged", "conjugate_point", "coupling_violation", "solver_failure",
+STATUSES = ["completed", "diverged", "lost_track", "conjugate_point", "coupling_violation", "solver_failure",
             "invalid_input", "failed"]
 METRIC_NAMES = [definition.name for definition in _core.metric_table()]
 SEED_KEY = "measurement.seed"

@@ -48,14 +48,16 @@ long check_output_grid(double t0, double tf, double dt);
 // How a closed-loop run ended.
 enum class RunStatus {
   Completed,  // integrated over the whole horizon
-  Diverged    // stopped when the tracking error exceeded the divergence bound (see above):
+  Diverged,   // stopped when the tracking error exceeded the divergence bound (see above):
               // divergence_factor times the problem's scale
+  LostTrack   // integrated over the whole horizon, but it ended more than the scenario's
+              // lost_track farther from the desired path than it started (scenario.hpp)
 };
 template <>
 struct EnumNames<RunStatus> {
   static constexpr const char* what = "run status";
-  static constexpr std::array<std::pair<RunStatus, const char*>, 2> names{
-      {{RunStatus::Completed, "completed"}, {RunStatus::Diverged, "diverged"}}};
+  static constexpr std::array<std::pair<RunStatus, const char*>, 3> names{
+      {{RunStatus::Completed, "completed"}, {RunStatus::Diverged, "diverged"}, {RunStatus::LostTrack, "lost_track"}}};
 };
 
 // The estimator's series of an output-feedback run (paper §4), on the same output grid.
@@ -78,7 +80,7 @@ struct SimulationResult {
   RowMat w;    // applied disturbance (nw), noise channels included for output feedback
   std::optional<EstimatorSeries> estimator;  // output feedback only
   RunStatus status = RunStatus::Completed;  // how the run ended
-  std::string status_message;  // why the run stopped early; empty when completed
+  std::string status_message;  // why the run stopped early or lost the track; empty when completed
   int heading_index = -1;      // the model's heading component (angles.hpp), -1 if none
   std::string integrator;      // how the closed loop was integrated
   SolveStats stats;            // the counts of the closed loop's integration

@@ -127,6 +127,9 @@ struct Scenario {
   SolverOptions solver;             // every integration: the Riccati equations and the closed loop
   double output_dt = 0.01;          // [output] dt
   double divergence_factor = 1e3;   // [solver] divergence_factor (simulation.hpp)
+  double lost_track = 1.0;          // [solver] lost_track (m, > 0, may be inf): a run that ends
+                                    // more than this farther from the desired path than it
+                                    // started has status LostTrack (models with a position only)
 
   // A copy with the defaults filled in (Q = Qf = I, zero disturbance, N = sigma^2 I (a 1 x 1
   // N is that many times I), Q0 = 2 I).

@@ -60,6 +60,7 @@ namespace hinf {
 enum class RunOutcome {
   Completed,          // the closed loop ran over the whole horizon
   Diverged,           // the closed loop stopped at the divergence bound (simulation.hpp)
+  LostTrack,          // it ran to tf but ended off the path (Scenario::lost_track)
   ConjugatePoint,     // no design: the GRDE escapes at this gamma (gamma <= gamma*)
   CouplingViolation,  // output feedback: rho(Sigma Z) < gamma^2 failed
   SolverFailure,      // an integrator failed (SolverError)
@@ -69,9 +70,10 @@ enum class RunOutcome {
 template <>
 struct EnumNames<RunOutcome> {
   static constexpr const char* what = "run outcome";
-  static constexpr std::array<std::pair<RunOutcome, const char*>, 7> names{
+  static constexpr std::array<std::pair<RunOutcome, const char*>, 8> names{
       {{RunOutcome::Completed, "completed"},
        {RunOutcome::Diverged, "diverged"},
+       {RunOutcome::LostTrack, "lost_track"},
        {RunOutcome::ConjugatePoint, "conjugate_point"},
        {RunOutcome::CouplingViolation, "coupling_violation"},
        {RunOutcome::SolverFailure, "solver_failure"},
