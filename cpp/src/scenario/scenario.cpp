@@ -298,13 +298,10 @@ void judge_track(const Scenario& s, RunResult& result) {
   SimulationResult& run = result.simulation;
   const std::vector<int> position = s.model->position_indices();
   if (run.status != RunStatus::Completed || position.empty() || run.t.size() == 0) return;
-  const RowMat q_e = run.q_e();
-  const auto distance = [&](Eigen::Index row) {
-    double sum = 0.0;
-    for (int i : position) sum += q_e(row, i) * q_e(row, i);
-    return std::sqrt(sum);
-  };
-  const double start = distance(0), end = distance(q_e.rows() - 1);
+  double start = 0.0;  // positions are not angles: plain differences
+  for (int i : position) start += std::pow(run.q(0, i) - run.q_d(0, i), 2);
+  start = std::sqrt(start);
+  const double end = result.metrics.final_position_error;  // compute_metrics, on the same series
   if (!(end > start + s.lost_track)) return;
   run.status = RunStatus::LostTrack;
   run.status_message = str_cat("the run ended ", end, " m from the desired path at tf = ", run.t[run.t.size() - 1],
