@@ -11,6 +11,7 @@
 // the memory included), 3 numerical failure (solver, conjugate point, coupling condition), 130
 // interrupted (Ctrl-C; "hinf-sim: interrupted"), 1 anything else (a bug). Errors are one line on stderr. Output paths are checked before the
 // run; each file is written whole or not at all.
+#include <cmath>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -92,8 +93,10 @@ int main(int argc, char** argv) {
     const hinf::Metrics& m = result.metrics;
     std::cout << "scenario " << result.scenario_name << ": gamma = " << result.gamma
               << ", final position error = " << m.final_position_error
-              << ", RMS position error (last half) = " << m.rms_position_error_last_half
-              << ", L2 gain = " << m.l2_gain;
+              << ", RMS position error (last half) = " << m.rms_position_error_last_half;
+    // The disturbance's gain exists for a run from the desired start only (metrics.hpp).
+    if (!std::isnan(m.disturbance_gain)) std::cout << ", L2 gain from the desired start = " << m.disturbance_gain;
+    std::cout << ", response/disturbance ratio = " << m.response_ratio;
     if (result.gamma_star) std::cout << ", gamma* = " << *result.gamma_star;
     if (result.online)
       std::cout << ", sampled every " << result.sampling->period << " s: " << result.online->steps << " steps, "

@@ -6,6 +6,7 @@
 #include "casters.hpp"
 #include "fields.hpp"
 #include "hinf/control/analysis.hpp"
+#include "hinf/control/backstepping.hpp"
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/controller.hpp"
 #include "hinf/control/discrete_design.hpp"
@@ -1703,6 +1704,36 @@ Examples
       .def("checked_kappa", &HinfStateFeedback::checked_kappa, py::arg("t"),
            doc({"HinfStateFeedback::checked_kappa"}).c_str());
 
+  bind_options<BacksteppingGains>(m, "BacksteppingGains", {"BacksteppingGains"}, {}, R"(Examples
+--------
+>>> hc.BacksteppingGains(k=0.3)
+BacksteppingGains(k=0.3, k1=1.0, k2=2.0, k3=1.0))");
+
+  py::class_<BacksteppingController, Controller, py::smart_holder>(m, "BacksteppingController",
+      doc({"BacksteppingController", "BacksteppingController::BacksteppingController"}, R"(
+Parameters
+----------
+trajectory : Trajectory
+    A desired trajectory of a ShipModel.
+gains : BacksteppingGains, optional
+    k, k1, k2, k3 > 0.
+
+Raises
+------
+ValueError
+    A model other than the ship, or gains not > 0.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> law = hc.BacksteppingController(trajectory)
+>>> run = hc.simulate_state_feedback(trajectory, law, None, [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+>>> law.name(), bool(np.hypot(*run.q_e()[-1, 3:5]) < np.hypot(1.0, 1.0))  # closer at 10 s
+('backstepping', True))").c_str())
+      .def(py::init<TrajectoryPtr, const BacksteppingGains&>(), py::arg("trajectory"),
+           py::arg("gains") = BacksteppingGains{})
+      .def("gains", &BacksteppingController::gains, doc({"BacksteppingController::gains"}).c_str());
+
   bind_options<CascadeGains>(m, "CascadeGains", {"CascadeGains"}, {}, R"(Examples
 --------
 >>> hc.CascadeGains(k=0.5)
@@ -2021,7 +2052,19 @@ Examples
             for (const MetricDefinition& d : metric_table()) x.*(d.value) = state[i++].cast<double>();
             return x;
           }));
-  m.def("compute_metrics", &compute_metrics, py::arg("model"), py::arg("run"), py::arg("Q"),
+  m.def(
+      "compute_metrics",
+      [](const Model& model, const SimulationResult& run, const Mat& Q, const std::optional<Mat>& Qf, double gamma,
+         double initial_term) {
+        CostWeights weights;
+        weights.Q = Q;
+        if (Qf) weights.Qf = *Qf;
+        weights.gamma = gamma;
+        weights.initial_term = initial_term;
+        return compute_metrics(model, run, weights);
+      },
+      py::arg("model"), py::arg("run"), py::arg("Q"), py::arg("Qf") = py::none(),
+      py::arg("gamma") = std::numeric_limits<double>::infinity(), py::arg("initial_term") = NAN,
       doc({"compute_metrics"}, R"(
 Parameters
 ----------
@@ -2030,7 +2073,14 @@ model : Model
 run : SimulationResult
     The closed-loop run.
 Q : array_like, shape (n, n)
-    The weight of q_e in the L2 gain.
+    The weight of q_e in the tracking cost and the gains.
+Qf : array_like, shape (n, n), optional
+    The weight of q_e(tf) in the tracking cost; none: no terminal term.
+gamma : float, default inf
+    The H-infinity law's attenuation level, for attenuation_margin; inf: no margin.
+initial_term : float, default nan
+    The initial-error term of the law's bound (q_e0' Z(t0) q_e0 with state feedback); nan: no
+    margin.
 
 Returns
 -------
@@ -2039,7 +2089,8 @@ Metrics
 Raises
 ------
 ValueError
-    Series whose shapes do not fit the model, or Q not symmetric positive semidefinite.
+    Series whose shapes do not fit the model, Q or Qf not symmetric positive semidefinite, gamma
+    not > 0 or initial_term negative.
 
 Examples
 --------
@@ -2047,7 +2098,7 @@ Examples
 >>> run = hc.simulate_state_feedback(trajectory, hc.HinfStateFeedback(design), None,
 ...                               [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
 >>> metrics = hc.compute_metrics(trajectory.model(), run, np.eye(6))
->>> round(metrics.max_position_error, 3), metrics.l2_gain                # no disturbance: no gain
+>>> round(metrics.max_position_error, 3), metrics.response_ratio         # no disturbance: no gain
 (1.414, nan))").c_str());
   m.def("l2_norm", &l2_norm, py::arg("t"), py::arg("series"), doc({"l2_norm"}).c_str());
 

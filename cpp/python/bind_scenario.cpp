@@ -101,6 +101,7 @@ Examples
        {"desired_states", "DesiredStates or None"}, {"path_change", "PathChange or None"}, {"gamma", "float"},
        {"Q", "ndarray, shape (n, n)"}, {"Qf", "ndarray, shape (n, n)"}, {"kappa", "Signal (set: also a float)"},
        {"law", "Law (set: also its name)"}, {"cascade", "CascadeGains"},
+       {"backstepping", "BacksteppingGains"},
        {"disturbance", "VectorSignal (set: also a callable, a list of Signal or float, or None)"},
        {"worst_case", "bool"}, {"initial_q0", "ndarray, shape (n,)"}, {"measurement", "MeasurementSpec or None"},
        {"sampling", "SamplingSpec or None"}, {"receding_horizon", "RecedingHorizonOptions or None"},
@@ -150,6 +151,7 @@ Examples
       .def_property("law", [](const Scenario& s) { return s.law; }, [](Scenario& s, Law law) { s.law = law; },
                     member("law").c_str())
       .def_readwrite("cascade", &Scenario::cascade, member("cascade").c_str())
+      .def_readwrite("backstepping", &Scenario::backstepping, member("backstepping").c_str())
       .def_property("disturbance", [](const Scenario& s) { return s.disturbance; },
                     [](Scenario& s, const py::object& v) {
                       require(s.model != nullptr, "set Scenario.model before disturbance");

@@ -38,6 +38,31 @@ kg, > 0 (mass plus added mass in surge))contract"},
     {"AuvParameters::sirene", R"contract(The Sirene AUV as in Aguiar and Pascoal, "Dynamic positioning and way-point tracking of
 underactuated AUVs in the presence of ocean currents", Int. J. Control 80(7), 1092-1108,
 2007 (the defaults of the fields).)contract"},
+    {"BacksteppingController", R"contract(With p = (x, y), the commanded earth-frame velocity v_c = dp_d/dt - k (p - p_d) gives the
+heading command psi_c = atan2(v_c) - beta_d and the surge command u_c = |v_c| cos(beta_d),
+beta_d = atan2(v_d, u_d) the desired sideslip (the heading and surge that make the commanded
+course and speed on the desired trajectory); the yaw rate is backstepped through
+r_c = dpsi_c/dt - k1 z1:
+    z1 = wrap(psi - psi_c),  z2 = r - r_c,
+    u2 = -m_r u v + d_r r + dr_d/dt - z1 - k2 z2,
+    u1 = -m_u v r + d_u u + du_c/dt - k3 (u - u_c),
+with dpsi_c/dt and du_c/dt exact (from dv_c/dt = d2p_d/dt2 - k (dp/dt - dp_d/dt)) and dr_c/dt
+replaced by the desired yaw acceleration dr_d/dt, equal on the desired trajectory: the desired
+trajectory is a solution of the closed loop. The sideslip is the desired one, not the
+measured atan2(v, u): fed back, the measured one makes the sway's zero dynamics
+(1 + m_v) dv/dt = -d_v v + ... unstable for m_v < -1 (the paper's ship has m_v = -2). The
+ship moves forward (u_c >= 0 while |beta_d| < pi/2), so a desired point behind it is reached
+by turning round. Where |v_c| vanishes the heading command holds the heading. Needs the
+ShipModel (its parameters). Written from the ship's equations after Godhavn's construction
+(position as the output, the commanded velocity's direction as the heading command,
+backstepping through the yaw rate), not transcribed from his text.)contract"},
+    {"BacksteppingController::BacksteppingController", R"contract(InputError unless the trajectory's model is a ShipModel and the gains are finite and > 0.)contract"},
+    {"BacksteppingController::gains", R"contract(The gains it was made with.)contract"},
+    {"BacksteppingGains", R"contract(The gains of the backstepping law (BacksteppingController), each finite and > 0.)contract"},
+    {"BacksteppingGains::k", R"contract(position: commanded velocity p_d' - k (p - p_d) (1/s))contract"},
+    {"BacksteppingGains::k1", R"contract(heading towards the commanded velocity (1/s))contract"},
+    {"BacksteppingGains::k2", R"contract(yaw rate (1/s))contract"},
+    {"BacksteppingGains::k3", R"contract(surge speed (1/s))contract"},
     {"BuiltinVehicle::same_as", R"contract(The same vehicle with the same parameters.)contract"},
     {"CascadeController", R"contract(A cascaded tracking controller for the ship, of the type of Lefeber, Pettersen & Nijmeijer
 (IEEE TCST 11(1), 2003), used as a baseline. With z1 = x cos(psi) + y sin(psi) (the same for
@@ -88,6 +113,11 @@ controller object per thread.)contract"},
 leave n() out (it reads q as a NumPy array of whatever length it is given): it then
 reports 0, and callers check q against their model instead.)contract"},
     {"Controller::name", R"contract(The law's name ("hinf", "lqr", "cascade", ...), for results and messages.)contract"},
+    {"CostWeights", R"contract(What the tracking cost and the attenuation margin weigh (see above).)contract"},
+    {"CostWeights::Q", R"contract(weight of q_e (n x n, symmetric positive semidefinite))contract"},
+    {"CostWeights::Qf", R"contract(weight of q_e(tf) (n x n); empty: no terminal term)contract"},
+    {"CostWeights::gamma", R"contract(the law's attenuation level; infinite: no margin)contract"},
+    {"CostWeights::initial_term", R"contract(the bound's initial-error term (see above); NaN: no margin)contract"},
     {"CouplingPolicy", R"contract(What a violation of the coupling condition rho(Sigma Z) < gamma^2 does (scenario key
 [measurement] on_coupling_violation).)contract"},
     {"CouplingPolicy::error", R"contract(a CouplingConditionError at the first output time with a violation)contract"},
@@ -360,6 +390,7 @@ interval between v_i and v_{i+1}: no overshoot (the default))contract"},
     {"Interrupted", R"contract(Thrown by throw_if_interrupted(): not an InputError or a HinfError, so that no handler of
 bad input or numerical failure takes it for one (a study does not record it as a failed run).)contract"},
     {"Law", R"contract(The tracking law of a scenario ([controller] law).)contract"},
+    {"Law::backstepping", R"contract(the backstepping ship baseline (control/backstepping.hpp); likewise)contract"},
     {"Law::cascade", R"contract(the cascaded ship baseline (control/cascade.hpp); with [measurement] on the H-infinity estimate)contract"},
     {"Law::hinf", R"contract(the paper's H-infinity law (17)/(18), and (34) with measurements)contract"},
     {"Law::lqr", R"contract(the same design at gamma = inf; with [measurement] also the Kalman-Bucy filter)contract"},
@@ -572,6 +603,10 @@ beyond (lookups in hot loops should not allocate for the usual sizes).)contract"
 the window that starts at t on, the desired trajectory continues from q_d(t) with the inputs u_d.)contract"},
     {"PathChange::t", R"contract(s: a window's start after t0)contract"},
     {"PathChange::u_d", R"contract(the new desired inputs, m channels)contract"},
+    {"PathScale", R"contract(The path scale of divergence_bound (see above), gathered over output grids of one or more
+trajectories of the same model (the windows of a receding horizon).)contract"},
+    {"PathScale::add", R"contract(Takes in q_d on the times of `grid`.)contract"},
+    {"PathScale::scale", R"contract(The largest spread of a position component and |q_d_i| of another but the heading so far.)contract"},
     {"PiecewisePolynomial", R"contract(The dense output y(t) in R^dim of one solve: one polynomial piece per integrator step.)contract"},
     {"PiecewisePolynomial::append", R"contract(Adds a step's piece (of this dimension); pieces must be appended in integration order.)contract"},
     {"PiecewisePolynomial::backward_", R"contract(integrated toward decreasing t (the pieces were reversed))contract"},
@@ -728,7 +763,7 @@ window's desired trajectory (the run's q_d is simulation.q_d))contract"},
     {"RunStatus", R"contract(How a closed-loop run ended.)contract"},
     {"RunStatus::completed", R"contract(integrated over the whole horizon)contract"},
     {"RunStatus::diverged", R"contract(stopped when the tracking error exceeded the divergence bound (see above):
-divergence_factor times the problem's scale)contract"},
+divergence_factor times the path's scale)contract"},
     {"RunStatus::losttrack", R"contract(integrated over the whole horizon, but it ended more than the scenario's
 lost_track farther from the desired path than it started (scenario.hpp))contract"},
     {"SampledDesign", R"contract(Which design a sampled loop runs ([sampling] design).)contract"},
@@ -796,6 +831,7 @@ disturbance, the initial state, the measurement (output feedback) and the solver
 empty take the defaults that resolved() fills in.)contract"},
     {"Scenario::Q", R"contract(empty: identity)contract"},
     {"Scenario::Qf", R"contract(empty: identity)contract"},
+    {"Scenario::backstepping", R"contract(the gains of the backstepping law)contract"},
     {"Scenario::cascade", R"contract(the gains of the cascade law)contract"},
     {"Scenario::description", R"contract(free text)contract"},
     {"Scenario::desired_q0", R"contract(q_d(t0))contract"},
@@ -904,7 +940,7 @@ table's cubic pieces, and where it is taken.)contract"},
     {"Signal::table_t", R"contract(A table's times t_i (s), strictly increasing (empty for offset + harmonics).)contract"},
     {"Signal::table_values", R"contract(A table's values v_i, one per time (empty for offset + harmonics).)contract"},
     {"SimulationOptions", R"contract(How a closed loop is simulated (scenario keys [output] dt and [solver]).)contract"},
-    {"SimulationOptions::divergence_factor", R"contract(stop as diverged beyond this times the problem's scale (> 1))contract"},
+    {"SimulationOptions::divergence_factor", R"contract(stop as diverged beyond this times the path's scale (> 1))contract"},
     {"SimulationOptions::output_dt", R"contract(step of the output grid (s))contract"},
     {"SimulationOptions::solver", R"contract(the integrator of the closed loop)contract"},
     {"SimulationResult", R"contract(Time series on the output grid, one row per time.)contract"},
@@ -1113,8 +1149,11 @@ already answered).)contract"},
     {"code_trusted_by_environment", R"contract(The environment's answer to "may files run code": HINF_TRUST_CODE = 1 yes, unset, empty or 0
 no, anything else an InputError. The front ends use it as the default of their --trust-code.)contract"},
     {"compute_metrics", R"contract(The metrics of a closed-loop run of `model` (whose position and heading indices they use),
-with Q (n x n, symmetric positive semidefinite) weighting q_e in the L2 gain.
-InputError when the run's series do not fit the model or Q is not such a weight.)contract"},
+with Q (n x n, symmetric positive semidefinite) weighting q_e in the costs and gains.
+InputError when the run's series do not fit the model or Q is not such a weight.
+
+The same with the terminal weight and the bound of the H-infinity law (CostWeights); Qf must
+be an n x n symmetric positive semidefinite weight when given, gamma > 0, initial_term >= 0.)contract"},
     {"control/analysis.hpp", R"contract(gamma*, conjugate points and the certificates of paper §3.
 
 gamma* (eq. 14) is the infimum of the gammas for which the GRDE (13) has no conjugate point
@@ -1126,6 +1165,11 @@ evaluation per thread and round).
 With imperfect measurements (paper §4) a gamma must also keep the filter Riccati equation
 (36) (here with A = A_e(t)) bounded and positive definite and satisfy the coupling
 condition rho(Sigma Z) < gamma^2 on [t0, tf]; each condition is monotone in gamma too.)contract"},
+    {"control/backstepping.hpp", R"contract(The backstepping tracking baseline for the ship (models/ship.hpp): a law of the type of
+Godhavn (paper reference [3]: Godhavn, "Nonlinear tracking of underactuated surface vessels",
+IEEE CDC 1996, and his thesis, NTNU 1997), which steers the ship's velocity towards the
+desired position: it turns the ship to point where it must go, so a ship ahead of its desired
+point turns around (the paper's claim (i) contrasts its own law with this behaviour).)contract"},
     {"control/cascade.hpp", R"contract(The cascaded tracking baseline for the ship (models/ship.hpp): a law of the type of Lefeber,
 Pettersen & Nijmeijer, written for the ship's equations and parameters.)contract"},
     {"control/controller.hpp", R"contract(Tracking controllers: u = control(t, q) for the actual state q.)contract"},
@@ -1204,9 +1248,17 @@ definition): the results file, the bindings, the Python tables and docs/results.
 come from it. Integrals are trapezoid sums over the output grid; "position" is the model's
 position_indices() (x, y for the ship), "heading" its heading_index(); the heading error is
 wrapped to (-pi, pi] (angles.hpp); "last half" is the grid points with t >= (t0 + tf)/2.
-A metric that does not apply (no position, no heading, no disturbance, no output feedback)
-is NaN. A run that stopped early (status Diverged) reports only max_position_error, over
-the part it ran.)contract"},
+The tracking cost is the paper's L of eq. (37) on the run's errors (epsilon = 0):
+    L = |q_e(tf)|_Qf^2 + integral of |q_e|_Q^2 + |u - u_d|^2 dt,
+and the attenuation margin compares it with the right side of the H-infinity law's bound
+(eq. 39 with M = 0, which holds for the linearized loop):
+    margin = 1 - L / (gamma^2 ||w||^2 + initial_term),
+initial_term = q_e(t0)' Z(t0) q_e(t0) with state feedback (the game's value), gamma^2
+q_e(t0)' Q0 q_e(t0) with output feedback (eq. 39; the estimate starts at 0, w includes the
+measurement noise channels); negative when the bound is exceeded.
+A metric that does not apply (no position, no heading, no disturbance, no output feedback,
+no bound) is NaN. A run that stopped early (status Diverged) reports only
+max_position_error and heading_excursion, over the part it ran.)contract"},
     {"control/online_controller.hpp", R"contract(The controller on a vehicle: called once per sample with the latest measurement, it answers
 with the command to apply now and hold until the next call.
 
@@ -1390,8 +1442,12 @@ stay those of the design model.
 A closed loop that leaves the neighbourhood of the desired trajectory where the linearized
 design means anything stops early with status Diverged: when the tracking error |q_e|_inf
 (heading wrapped, angles.hpp) exceeds
-    divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, max_t |q_d(t)|_inf).
-Its time series then end at the last output time before that.)contract"},
+    divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, path scale),
+the path scale being the largest extent of the desired path on the output grid: the spread
+(max - min) of each position component, and the largest |q_d_i| of each other component but
+the heading (speeds and rates: a speed's scale is its size). On the paper's ship over 40 s
+that is the path's 40 m, so the default factor 10 stops a run 400 m or 400 m/s off, where a
+ship has physically left its path. Its time series then end at the last output time before.)contract"},
     {"control/trajectory.hpp", R"contract(The desired (feasible) trajectory of paper eq. (8):
     dq_d/dt = f(t, q_d) + G(t, q_d) u_d(t),   q_d(t0) = q_d0,
 integrated forward once with Dormand-Prince 5(4) at tight tolerances (restarting at the points
@@ -1485,6 +1541,7 @@ of built-in kinds:
     {"io/scenario_file.hpp", R"contract(Scenario files (TOML; docs/scenarios.md is the reference): the one reader and the writer.
 Model sections ([model], [plant]) are read and written through the table of model kinds
 (io/model_kinds.hpp).)contract"},
+    {"is_baseline", R"contract(True for the ship baselines (cascade, backstepping): laws without a Riccati design of their own.)contract"},
     {"l2_norm", R"contract(sqrt of the trapezoid integral of the squared row norms of series over times t.)contract"},
     {"law_escape_time", R"contract(The closed loop of a state-feedback law: u = u_d - kappa(t) K(t) (q - q_d), K = B_e' Z(t) of
 `law` (a design at any gamma: the H-infinity law at its own gamma, the LQR law at gamma = inf),

@@ -13,6 +13,7 @@
 
 #include "casters.hpp"
 #include "hinf/control/analysis.hpp"
+#include "hinf/control/backstepping.hpp"
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
@@ -86,6 +87,11 @@ struct Fields<AuvParameters> {
       field("m11", &AuvParameters::m11), field("m22", &AuvParameters::m22), field("m33", &AuvParameters::m33),
       field("X_u", &AuvParameters::X_u), field("X_uu", &AuvParameters::X_uu), field("Y_v", &AuvParameters::Y_v),
       field("Y_vv", &AuvParameters::Y_vv), field("N_r", &AuvParameters::N_r), field("N_rr", &AuvParameters::N_rr));
+};
+template <>
+struct Fields<BacksteppingGains> {
+  static constexpr auto list = std::make_tuple(field("k", &BacksteppingGains::k), field("k1", &BacksteppingGains::k1),
+                                               field("k2", &BacksteppingGains::k2), field("k3", &BacksteppingGains::k3));
 };
 template <>
 struct Fields<CascadeGains> {

@@ -12,7 +12,7 @@ core; this namespace is its API as a user needs it, plus scenario files:
 * the design: :class:`Trajectory` (q_d, u_d, A_e), :func:`solve_grde` (Z of paper eq. 13),
   :func:`gamma_star` (eq. 14), :func:`certify` (eqs. 22-24), :func:`solve_filter_riccati`
   (eq. 36);
-* laws and closed loops: :class:`HinfStateFeedback` (eqs. 17/18), :class:`CascadeController`,
+* laws and closed loops: :class:`HinfStateFeedback` (eqs. 17/18), :class:`CascadeController`, :class:`BacksteppingController`,
   :func:`simulate_state_feedback`, :func:`simulate_output_feedback` (eqs. 34-36),
   :class:`Metrics`;
 * errors: ValueError for bad input; :class:`HinfError` and its subclasses
@@ -29,7 +29,7 @@ Conventions (docs/mathematics.md): time in seconds; errors q_e = q - q_d (actual
 the heading wrapped to (-pi, pi]; Z(t) > 0 is the cost-to-go of paper eq. (13), solved backward
 from Z(tf) = Qf; the control is u = u_d - kappa B' Z q_e. The C++ API (cpp/include/hinf) is
 exported as it is: the same names, argument order and defaults; a C++ member function is a
-method (``trajectory.tf()``), a field of a C++ struct a property (``result.metrics.l2_gain``);
+method (``trajectory.tf()``), a field of a C++ struct a property (``result.metrics.response_ratio``);
 enums also take their names as strings (``scenario.law = "lqr"``). Scenarios, models, options
 and results pickle.
 
@@ -45,6 +45,8 @@ from hinf_cpp._core import (
     ActuatorLimits,
     Auv,
     AuvParameters,
+    BacksteppingController,
+    BacksteppingGains,
     CascadeController,
     CascadeGains,
     Certificates,
@@ -186,7 +188,8 @@ __all__ = [
     "GammaStarOptions", "GammaStarResult", "GammaTrial", "GammaCondition", "max_rho_sigma_z", "certify",
     "Certificates",
     # laws and closed loops
-    "Controller", "HinfStateFeedback", "CascadeController", "CascadeGains", "Disturbance", "wrap_angle",
+    "Controller", "HinfStateFeedback", "CascadeController", "CascadeGains",
+    "BacksteppingController", "BacksteppingGains", "Disturbance", "wrap_angle",
     "simulate_state_feedback", "SimulationOptions", "SimulationResult", "RunStatus", "simulate_output_feedback",
     "OutputFeedbackProblem", "OutputFeedbackOptions", "FilterLinearization", "CouplingPolicy", "EstimatorSeries",
     "Metrics", "MetricDefinition", "metric_table", "compute_metrics",

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'law_escape_time', 'law_gain', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'solve_law_riccati', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'BacksteppingController', 'BacksteppingGains', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'law_escape_time', 'law_gain', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'solve_law_riccati', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -1863,7 +1863,7 @@ class RunStatus:
         integrated over the whole horizon
     diverged
         stopped when the tracking error exceeded the divergence bound (see above):
-        divergence_factor times the problem's scale
+        divergence_factor times the path's scale
     lost_track
         integrated over the whole horizon, but it ended more than the scenario's
         lost_track farther from the desired path than it started (scenario.hpp)
@@ -2104,8 +2104,8 @@ class SimulationOptions:
     ----------
     output_dt : float, default 0.01
         step of the output grid (s)
-    divergence_factor : float, default 1000.0
-        stop as diverged beyond this times the problem's scale (> 1)
+    divergence_factor : float, default 10.0
+        stop as diverged beyond this times the path's scale (> 1)
     solver : SolverOptions, optional
         the integrator of the closed loop
     
@@ -2126,7 +2126,7 @@ class SimulationOptions:
         ...
     def __getstate__(self) -> tuple:
         ...
-    def __init__(self, output_dt: typing.SupportsFloat | typing.SupportsIndex = 0.01, divergence_factor: typing.SupportsFloat | typing.SupportsIndex = 1000.0, solver: SolverOptions = ...) -> None:
+    def __init__(self, output_dt: typing.SupportsFloat | typing.SupportsIndex = 0.01, divergence_factor: typing.SupportsFloat | typing.SupportsIndex = 10.0, solver: SolverOptions = ...) -> None:
         ...
     def __repr__(self) -> str:
         ...
@@ -2135,7 +2135,7 @@ class SimulationOptions:
     @property
     def divergence_factor(self) -> float:
         """
-        stop as diverged beyond this times the problem's scale (> 1)
+        stop as diverged beyond this times the path's scale (> 1)
         """
     @divergence_factor.setter
     def divergence_factor(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
@@ -2741,6 +2741,120 @@ class HinfStateFeedback(Controller):
         """
         The design Z and the gain scaling kappa(t) of the law.
         """
+class BacksteppingGains:
+    """
+    The gains of the backstepping law (BacksteppingController), each finite and > 0.
+    
+    Parameters
+    ----------
+    k : float, default 0.5
+        position: commanded velocity p_d' - k (p - p_d) (1/s)
+    k1 : float, default 1.0
+        heading towards the commanded velocity (1/s)
+    k2 : float, default 2.0
+        yaw rate (1/s)
+    k3 : float, default 1.0
+        surge speed (1/s)
+    
+    Examples
+    --------
+    >>> hc.BacksteppingGains(k=0.3)
+    BacksteppingGains(k=0.3, k1=1.0, k2=2.0, k3=1.0)
+    """
+    __hash__: typing.ClassVar[None] = None
+    __match_args__: typing.ClassVar[tuple] = ('k', 'k1', 'k2', 'k3')
+    def __eq__(self, arg0: BacksteppingGains) -> bool:
+        ...
+    def __getstate__(self) -> tuple:
+        ...
+    def __init__(self, k: typing.SupportsFloat | typing.SupportsIndex = 0.5, k1: typing.SupportsFloat | typing.SupportsIndex = 1.0, k2: typing.SupportsFloat | typing.SupportsIndex = 2.0, k3: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+        ...
+    def __repr__(self) -> str:
+        ...
+    def __setstate__(self, arg0: tuple) -> None:
+        ...
+    @property
+    def k(self) -> float:
+        """
+        position: commanded velocity p_d' - k (p - p_d) (1/s)
+        """
+    @k.setter
+    def k(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def k1(self) -> float:
+        """
+        heading towards the commanded velocity (1/s)
+        """
+    @k1.setter
+    def k1(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def k2(self) -> float:
+        """
+        yaw rate (1/s)
+        """
+    @k2.setter
+    def k2(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def k3(self) -> float:
+        """
+        surge speed (1/s)
+        """
+    @k3.setter
+    def k3(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class BacksteppingController(Controller):
+    """
+    With p = (x, y), the commanded earth-frame velocity v_c = dp_d/dt - k (p - p_d) gives the
+    heading command psi_c = atan2(v_c) - beta_d and the surge command u_c = |v_c| cos(beta_d),
+    beta_d = atan2(v_d, u_d) the desired sideslip (the heading and surge that make the commanded
+    course and speed on the desired trajectory); the yaw rate is backstepped through
+    r_c = dpsi_c/dt - k1 z1:
+        z1 = wrap(psi - psi_c),  z2 = r - r_c,
+        u2 = -m_r u v + d_r r + dr_d/dt - z1 - k2 z2,
+        u1 = -m_u v r + d_u u + du_c/dt - k3 (u - u_c),
+    with dpsi_c/dt and du_c/dt exact (from dv_c/dt = d2p_d/dt2 - k (dp/dt - dp_d/dt)) and dr_c/dt
+    replaced by the desired yaw acceleration dr_d/dt, equal on the desired trajectory: the desired
+    trajectory is a solution of the closed loop. The sideslip is the desired one, not the
+    measured atan2(v, u): fed back, the measured one makes the sway's zero dynamics
+    (1 + m_v) dv/dt = -d_v v + ... unstable for m_v < -1 (the paper's ship has m_v = -2). The
+    ship moves forward (u_c >= 0 while |beta_d| < pi/2), so a desired point behind it is reached
+    by turning round. Where |v_c| vanishes the heading command holds the heading. Needs the
+    ShipModel (its parameters). Written from the ship's equations after Godhavn's construction
+    (position as the output, the commanded velocity's direction as the heading command,
+    backstepping through the yaw rate), not transcribed from his text.
+    
+    InputError unless the trajectory's model is a ShipModel and the gains are finite and > 0.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        A desired trajectory of a ShipModel.
+    gains : BacksteppingGains, optional
+        k, k1, k2, k3 > 0.
+    
+    Raises
+    ------
+    ValueError
+        A model other than the ship, or gains not > 0.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> law = hc.BacksteppingController(trajectory)
+    >>> run = hc.simulate_state_feedback(trajectory, law, None, [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
+    >>> law.name(), bool(np.hypot(*run.q_e()[-1, 3:5]) < np.hypot(1.0, 1.0))  # closer at 10 s
+    ('backstepping', True)
+    """
+    def __init__(self, trajectory: Trajectory, gains: BacksteppingGains = ...) -> None:
+        ...
+    def gains(self) -> BacksteppingGains:
+        """
+        The gains it was made with.
+        """
 class CascadeGains:
     """
     The gains of the cascade law (CascadeController), each finite and > 0.
@@ -3316,9 +3430,17 @@ class Metrics:
     come from it. Integrals are trapezoid sums over the output grid; "position" is the model's
     position_indices() (x, y for the ship), "heading" its heading_index(); the heading error is
     wrapped to (-pi, pi] (angles.hpp); "last half" is the grid points with t >= (t0 + tf)/2.
-    A metric that does not apply (no position, no heading, no disturbance, no output feedback)
-    is NaN. A run that stopped early (status Diverged) reports only max_position_error, over
-    the part it ran.
+    The tracking cost is the paper's L of eq. (37) on the run's errors (epsilon = 0):
+        L = |q_e(tf)|_Qf^2 + integral of |q_e|_Q^2 + |u - u_d|^2 dt,
+    and the attenuation margin compares it with the right side of the H-infinity law's bound
+    (eq. 39 with M = 0, which holds for the linearized loop):
+        margin = 1 - L / (gamma^2 ||w||^2 + initial_term),
+    initial_term = q_e(t0)' Z(t0) q_e(t0) with state feedback (the game's value), gamma^2
+    q_e(t0)' Q0 q_e(t0) with output feedback (eq. 39; the estimate starts at 0, w includes the
+    measurement noise channels); negative when the bound is exceeded.
+    A metric that does not apply (no position, no heading, no disturbance, no output feedback,
+    no bound) is NaN. A run that stopped early (status Diverged) reports only
+    max_position_error and heading_excursion, over the part it ran.
     
     Attributes
     ----------
@@ -3332,6 +3454,12 @@ class Metrics:
         sqrt(mean over the last half of wrap(psi - psi_d)^2) (unit: rad)
     final_heading_error : float
         |wrap(psi - psi_d)| at tf (unit: rad)
+    heading_excursion : float
+        max over the grid of |e|, e = psi - psi_d followed continuously from wrap(e(t0)) (a full
+        turn reads 2 pi) (unit: rad)
+    turned_around : float
+        1 when |e| passes max(pi, |e(t0)|) + 0.1 (through +-pi) or |wrap(e)| > pi/2 on more than
+        half of the last half (tracks backwards), else 0 (docs/baselines.md) (unit: -)
     control_l2 : float
         sqrt(integral of |u|^2) (unit: input s^1/2)
     control_error_l2 : float
@@ -3339,9 +3467,17 @@ class Metrics:
     disturbance_l2 : float
         sqrt(integral of |w|^2) over every applied channel (the noise channels when sigma > 0)
         (unit: w s^1/2)
-    l2_gain : float
-        sqrt(integral of |q - q_d|_Q^2 + |u - u_d|^2) / disturbance_l2 (includes the response to the
-        initial error) (unit: -)
+    disturbance_gain : float
+        sqrt(tracking_cost) / disturbance_l2 for a run that starts on the desired trajectory
+        (q_e(t0) = 0); NaN from any other start (see response_ratio) (unit: -)
+    response_ratio : float
+        sqrt(tracking_cost) / disturbance_l2 from any start: includes the response to the initial
+        error (unit: -)
+    tracking_cost : float
+        |q_e(tf)|_Qf^2 + integral of |q - q_d|_Q^2 + |u - u_d|^2 (unit: -)
+    attenuation_margin : float
+        1 - tracking_cost / (gamma^2 disturbance_l2^2 + the initial-error term): >= 0 when the
+        H-infinity law's bound holds (hinf law only) (unit: -)
     max_rho_sigma_z : float
         max over the grid of the spectral radius of Sigma Z (output feedback; below gamma^2) (unit:
         -)
@@ -3366,6 +3502,11 @@ class Metrics:
     def __setstate__(self, arg0: tuple) -> None:
         ...
     @property
+    def attenuation_margin(self) -> float:
+        """
+        1 - tracking_cost / (gamma^2 disturbance_l2^2 + the initial-error term): >= 0 when the H-infinity law's bound holds (hinf law only) (unit: -)
+        """
+    @property
     def control_error_l2(self) -> float:
         """
         sqrt(integral of |u - u_d|^2) (unit: input s^1/2)
@@ -3374,6 +3515,11 @@ class Metrics:
     def control_l2(self) -> float:
         """
         sqrt(integral of |u|^2) (unit: input s^1/2)
+        """
+    @property
+    def disturbance_gain(self) -> float:
+        """
+        sqrt(tracking_cost) / disturbance_l2 for a run that starts on the desired trajectory (q_e(t0) = 0); NaN from any other start (see response_ratio) (unit: -)
         """
     @property
     def disturbance_l2(self) -> float:
@@ -3391,9 +3537,9 @@ class Metrics:
         |p - p_d| at tf (unit: m)
         """
     @property
-    def l2_gain(self) -> float:
+    def heading_excursion(self) -> float:
         """
-        sqrt(integral of |q - q_d|_Q^2 + |u - u_d|^2) / disturbance_l2 (includes the response to the initial error) (unit: -)
+        max over the grid of |e|, e = psi - psi_d followed continuously from wrap(e(t0)) (a full turn reads 2 pi) (unit: rad)
         """
     @property
     def max_position_error(self) -> float:
@@ -3404,6 +3550,11 @@ class Metrics:
     def max_rho_sigma_z(self) -> float:
         """
         max over the grid of the spectral radius of Sigma Z (output feedback; below gamma^2) (unit: -)
+        """
+    @property
+    def response_ratio(self) -> float:
+        """
+        sqrt(tracking_cost) / disturbance_l2 from any start: includes the response to the initial error (unit: -)
         """
     @property
     def rms_estimation_error_last_half(self) -> float:
@@ -3419,6 +3570,16 @@ class Metrics:
     def rms_position_error_last_half(self) -> float:
         """
         sqrt(mean over the last half of |p - p_d|^2) (unit: m)
+        """
+    @property
+    def tracking_cost(self) -> float:
+        """
+        |q_e(tf)|_Qf^2 + integral of |q - q_d|_Q^2 + |u - u_d|^2 (unit: -)
+        """
+    @property
+    def turned_around(self) -> float:
+        """
+        1 when |e| passes max(pi, |e(t0)|) + 0.1 (through +-pi) or |wrap(e)| > pi/2 on more than half of the last half (tracks backwards), else 0 (docs/baselines.md) (unit: -)
         """
 class GammaStarOptions:
     """
@@ -5686,6 +5847,8 @@ class Law:
         the same design at gamma = inf; with [measurement] also the Kalman-Bucy filter
     cascade
         the cascaded ship baseline (control/cascade.hpp); with [measurement] on the H-infinity estimate
+    backstepping
+        the backstepping ship baseline (control/backstepping.hpp); likewise
     
     Examples
     --------
@@ -5697,6 +5860,7 @@ class Law:
     (<Law.lqr: 1>, inf)
     """
     __members__: typing.ClassVar[dict[str, Law]]
+    backstepping: typing.ClassVar[Law]
     cascade: typing.ClassVar[Law]
     hinf: typing.ClassVar[Law]
     lqr: typing.ClassVar[Law]
@@ -6261,6 +6425,8 @@ class Scenario:
         the tracking law
     cascade : CascadeGains
         the gains of the cascade law
+    backstepping : BacksteppingGains
+        the gains of the backstepping law
     disturbance : VectorSignal (set: also a callable, a list of Signal or float, or None)
         w(t), nw channels (dim 0: all zero)
     worst_case : bool
@@ -6348,6 +6514,14 @@ class Scenario:
         """
     @Qf.setter
     def Qf(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> None:
+        ...
+    @property
+    def backstepping(self) -> BacksteppingGains:
+        """
+        the gains of the backstepping law
+        """
+    @backstepping.setter
+    def backstepping(self, arg0: BacksteppingGains) -> None:
         ...
     @property
     def cascade(self) -> CascadeGains:
@@ -6996,11 +7170,14 @@ def code_trusted_by_environment() -> bool:
     The environment's answer to "may files run code": HINF_TRUST_CODE = 1 yes, unset, empty or 0
     no, anything else an InputError. The front ends use it as the default of their --trust-code.
     """
-def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"]) -> Metrics:
+def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"] | None = None, gamma: typing.SupportsFloat | typing.SupportsIndex = ..., initial_term: typing.SupportsFloat | typing.SupportsIndex = ...) -> Metrics:
     """
     The metrics of a closed-loop run of `model` (whose position and heading indices they use),
-    with Q (n x n, symmetric positive semidefinite) weighting q_e in the L2 gain.
+    with Q (n x n, symmetric positive semidefinite) weighting q_e in the costs and gains.
     InputError when the run's series do not fit the model or Q is not such a weight.
+    
+    The same with the terminal weight and the bound of the H-infinity law (CostWeights); Qf must
+    be an n x n symmetric positive semidefinite weight when given, gamma > 0, initial_term >= 0.
     
     Parameters
     ----------
@@ -7009,7 +7186,14 @@ def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[num
     run : SimulationResult
         The closed-loop run.
     Q : array_like, shape (n, n)
-        The weight of q_e in the L2 gain.
+        The weight of q_e in the tracking cost and the gains.
+    Qf : array_like, shape (n, n), optional
+        The weight of q_e(tf) in the tracking cost; none: no terminal term.
+    gamma : float, default inf
+        The H-infinity law's attenuation level, for attenuation_margin; inf: no margin.
+    initial_term : float, default nan
+        The initial-error term of the law's bound (q_e0' Z(t0) q_e0 with state feedback); nan: no
+        margin.
     
     Returns
     -------
@@ -7018,7 +7202,8 @@ def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[num
     Raises
     ------
     ValueError
-        Series whose shapes do not fit the model, or Q not symmetric positive semidefinite.
+        Series whose shapes do not fit the model, Q or Qf not symmetric positive semidefinite, gamma
+        not > 0 or initial_term negative.
     
     Examples
     --------
@@ -7028,7 +7213,7 @@ def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[num
     >>> run = hc.simulate_state_feedback(trajectory, hc.HinfStateFeedback(design), None,
     ...                               [1.0, 0.0, 0.0, -1.0, -1.0, np.pi / 4])
     >>> metrics = hc.compute_metrics(trajectory.model(), run, np.eye(6))
-    >>> round(metrics.max_position_error, 3), metrics.l2_gain                # no disturbance: no gain
+    >>> round(metrics.max_position_error, 3), metrics.response_ratio         # no disturbance: no gain
     (1.414, nan)
     """
 def discrete_conjugate_time(sampled: SampledLinearization, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex) -> float:
@@ -8289,8 +8474,12 @@ def simulate_state_feedback(trajectory: Trajectory, controller: Controller, dist
     A closed loop that leaves the neighbourhood of the desired trajectory where the linearized
     design means anything stops early with status Diverged: when the tracking error |q_e|_inf
     (heading wrapped, angles.hpp) exceeds
-        divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, max_t |q_d(t)|_inf).
-    Its time series then end at the last output time before that.
+        divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, path scale),
+    the path scale being the largest extent of the desired path on the output grid: the spread
+    (max - min) of each position component, and the largest |q_d_i| of each other component but
+    the heading (speeds and rates: a speed's scale is its size). On the paper's ship over 40 s
+    that is the path's 40 m, so the default factor 10 stops a run 400 m or 400 m/s off, where a
+    ship has physically left its path. Its time series then end at the last output time before.
     
     Parameters
     ----------

@@ -29,6 +29,7 @@
 #include "hinf/models/ship.hpp"
 #include "hinf/numerics/signal.hpp"
 #include "references.hpp"
+#include "ship_runs.hpp"
 #include "tolerances.hpp"
 
 namespace {
@@ -36,43 +37,19 @@ namespace {
 using hinf::CascadeController;
 using hinf::CascadeGains;
 using hinf::Mat;
-using hinf::Method;
 using hinf::ShipParameters;
 using hinf::Vec;
+using hinf_test::constant_inputs;
 using hinf_test::kRoundoff;
-
-hinf::TrajectoryPtr ship_trajectory(const ShipParameters& p, const Vec& q_d0, const hinf::VectorSignal& u_d, double tf) {
-  return std::make_shared<const hinf::Trajectory>(std::make_shared<const hinf::ShipModel>(p), q_d0, u_d, 0.0, tf);
-}
-
-hinf::VectorSignal constant_inputs(double u1, double u2) {
-  return hinf::VectorSignal(std::vector<hinf::Signal>{hinf::Signal(u1), hinf::Signal(u2)});
-}
-
-hinf::VectorSignal paper_u_d() {
-  return hinf::VectorSignal(std::vector<hinf::Signal>{
-      hinf::Signal(1.0), hinf::Signal(0.0, {hinf::Harmonic{0.3, 0.2, 0.0, false}})});
-}
-
-Vec state(double u, double v, double r, double x, double y, double psi) {
-  Vec q(6);
-  q << u, v, r, x, y, psi;
-  return q;
-}
+using hinf_test::paper_u_d;
+using hinf_test::ship_trajectory;
+using hinf_test::state;
+using hinf_test::tight;
 
 Vec control(CascadeController& law, double t, const Vec& q) {
   Vec u(2);
   law.control(t, q, u);
   return u;
-}
-
-hinf::SimulationOptions tight(double output_dt) {
-  hinf::SimulationOptions o;
-  o.output_dt = output_dt;
-  o.solver.method = Method::ERK;
-  o.solver.rtol = 1e-11;
-  o.solver.atol = 1e-13;
-  return o;
 }
 
 TEST(CascadeLaw, PaperParametersByHand) {

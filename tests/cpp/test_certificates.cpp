@@ -470,14 +470,34 @@ TEST(Attenuation, CompletedSquareGainBelowGammaAndTheWorstCase) {
         // errs by ~dt^2 / 12 |f''| relative (~1e-7 for these frequencies), the integration at
         // rtol 1e-11 far less: 1e-5 of the size of the terms.
         EXPECT_LT(std::abs(cost - square), 1e-5 * scale) << gamma << " " << worst_case;
-        // The library's L2 gain (its own trapezoid sums): sqrt(int x / int |w|^2), summation
-        // round-off of 5001 terms.
-        const hinf::Metrics metrics = hinf::compute_metrics(p.trajectory->model(), run, p.Q);
-        const double gain = std::sqrt(trapezoid(run.t, x) / trapezoid(run.t, ww));
-        EXPECT_NEAR(metrics.l2_gain, gain, 4.0 * run.t.size() * kEps * gain);
+        // The library's tracking cost, ratio and margin (its own trapezoid sums) against these:
+        // summation round-off of 5001 terms.
+        hinf::CostWeights weights;
+        weights.Q = p.Q;
+        weights.Qf = p.Qf;
+        weights.gamma = gamma;
+        weights.initial_term = q0.dot(design->Z(0.0) * q0);
+        const hinf::Metrics metrics = hinf::compute_metrics(p.trajectory->model(), run, weights);
+        const double L = trapezoid(run.t, x) + q_end.dot(p.Qf * q_end);
+        const double gain = std::sqrt(L / trapezoid(run.t, ww));
+        const double roundoff = 4.0 * static_cast<double>(run.t.size()) * kEps;
+        EXPECT_NEAR(metrics.tracking_cost, L, roundoff * L);
+        EXPECT_NEAR(metrics.response_ratio, gain, roundoff * gain);
+        // The margin of the bound L <= gamma^2 ||w||^2 + q0' Z(0) q0 is -L_gamma + the completed
+        // square's initial term, over that bound.
+        const double bound = gamma * gamma * trapezoid(run.t, ww) + weights.initial_term;
+        EXPECT_NEAR(metrics.attenuation_margin, 1.0 - L / bound, roundoff);
         if (q0.norm() == 0.0) {
+          EXPECT_EQ(metrics.disturbance_gain, metrics.response_ratio) << "from the desired start";
           EXPECT_LE(cost, 0.0);
           EXPECT_LE(gain, gamma);
+        } else {
+          EXPECT_TRUE(std::isnan(metrics.disturbance_gain)) << "not from the desired start";
+        }
+        // The linear loop keeps the bound: the margin is >= 0 up to the trapezoid rule's error
+        // (1e-5 of the terms, as above).
+        EXPECT_GE(metrics.attenuation_margin, -1e-5);
+        if (q0.norm() == 0.0) {
           if (worst_case) {
             // w = v + w*: L_gamma = -gamma^2 int |v|^2 (closed form), up to the trapezoid rule.
             // The worst case amplifies w (|w|^2 / |v|^2 is the amplification of the terms).

@@ -872,7 +872,8 @@ TEST_F(PaperRun, JsonHasTheKeysOfTheContract) {
   // Metrics.
   const nlohmann::json& mt = j["metrics"];
   for (const char* key : {"rms_position_error_last_half", "max_position_error", "final_position_error",
-                          "control_l2", "control_error_l2", "disturbance_l2", "l2_gain"}) {
+                          "control_l2", "control_error_l2", "disturbance_l2", "response_ratio",
+                          "tracking_cost", "attenuation_margin", "heading_excursion", "turned_around"}) {
     ASSERT_TRUE(mt.contains(key)) << key;
     EXPECT_TRUE(mt[key].is_number()) << key;
   }

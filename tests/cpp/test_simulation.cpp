@@ -512,7 +512,26 @@ TEST(Metrics, ConstantSignalsHaveExactIntegrals) {
   EXPECT_NEAR(mt.control_l2, std::sqrt(5.0 * T), tol);
   EXPECT_NEAR(mt.control_error_l2, std::sqrt(5.0 * T), tol);
   EXPECT_NEAR(mt.disturbance_l2, std::sqrt(0.14 * T), tol);
-  EXPECT_NEAR(mt.l2_gain, std::sqrt((130.5 + 5.0) * T) / std::sqrt(0.14 * T), tol);
+  EXPECT_NEAR(mt.response_ratio, std::sqrt((130.5 + 5.0) * T) / std::sqrt(0.14 * T), tol);
+  EXPECT_NEAR(mt.tracking_cost, (130.5 + 5.0) * T, tol * 340.0);  // no Qf given: no terminal term
+  EXPECT_TRUE(std::isnan(mt.disturbance_gain)) << "q_e(t0) != 0: not from the desired start";
+  EXPECT_TRUE(std::isnan(mt.attenuation_margin)) << "no bound given";
+  // A constant heading error of 0.5 rad: that is the largest, and it never turns around.
+  EXPECT_EQ(mt.heading_excursion, 0.5);
+  EXPECT_EQ(mt.turned_around, 0.0);
+
+  // With Qf, gamma and the bound's initial term: L = (130.5 + 5) T + |q_e|_Qf^2, Qf = 2 I.
+  hinf::CostWeights weights;
+  weights.Q = Q;
+  weights.Qf = 2.0 * Mat::Identity(6, 6);
+  weights.gamma = 3.0;
+  weights.initial_term = 7.0;
+  const hinf::Metrics mb = hinf::compute_metrics(hinf::ShipModel(), r, weights);
+  const double L = 135.5 * T + 2.0 * q_e.squaredNorm();
+  EXPECT_NEAR(mb.tracking_cost, L, tol * L);
+  EXPECT_NEAR(mb.response_ratio, std::sqrt(L / (0.14 * T)), tol * 40.0);
+  EXPECT_NEAR(mb.attenuation_margin, 1.0 - L / (9.0 * 0.14 * T + 7.0), tol * 100.0);
+  EXPECT_LT(mb.attenuation_margin, 0.0) << "this made-up run exceeds the bound";
   EXPECT_TRUE(std::isnan(mt.max_rho_sigma_z)) << "state feedback: no Sigma";
   EXPECT_TRUE(std::isnan(mt.rms_estimation_error_last_half));
   // The plain L2 norm.
@@ -552,7 +571,8 @@ TEST(Metrics, LastHalfMaxFinalTrapezoidAndOutputFeedbackByHand) {
   // |u|^2 = [1, 4, 9, 4, 1]: 2.5 + 6.5 + 6.5 + 2.5 = 18.
   EXPECT_NEAR(mt.control_l2, std::sqrt(18.0), tol);
   EXPECT_EQ(mt.disturbance_l2, 0.0);
-  EXPECT_TRUE(std::isnan(mt.l2_gain)) << "no disturbance: the gain is undefined";
+  EXPECT_TRUE(std::isnan(mt.response_ratio)) << "no disturbance: the gain is undefined";
+  EXPECT_TRUE(std::isnan(mt.disturbance_gain)) << "no disturbance: the gain is undefined";
   EXPECT_EQ(mt.max_rho_sigma_z, 0.7);
   // Points 2, 3, 4: (4 + 1, 9 + 1, 16 + 1) -> sqrt(32 / 3).
   EXPECT_NEAR(mt.rms_estimation_error_last_half, std::sqrt(32.0 / 3.0), tol);
@@ -569,7 +589,42 @@ TEST(Metrics, ModelWithoutPositionGivesNaNPositionMetrics) {
   EXPECT_TRUE(std::isnan(mt.final_position_error));
   EXPECT_NEAR(mt.control_l2, 2.0, hinf_test::kRoundoff * 2.0);
   EXPECT_NEAR(mt.disturbance_l2, std::sqrt(2.0), hinf_test::kRoundoff * 2.0);
-  EXPECT_NEAR(mt.l2_gain, std::sqrt(4.0) / std::sqrt(2.0), hinf_test::kRoundoff * 2.0);  // u_e = 2 (u_d = 0), q_e = 0
+  // u_e = 2 (u_d = 0), q_e = 0: from the desired start, so both ratios.
+  EXPECT_NEAR(mt.response_ratio, std::sqrt(4.0) / std::sqrt(2.0), hinf_test::kRoundoff * 2.0);
+  EXPECT_EQ(mt.disturbance_gain, mt.response_ratio);
+  EXPECT_TRUE(std::isnan(mt.heading_excursion)) << "no heading";
+  EXPECT_TRUE(std::isnan(mt.turned_around)) << "no heading";
+}
+
+TEST(Metrics, HeadingExcursionFollowsTheErrorThroughWraps) {
+  // The heading error turns steadily through more than a full turn and back a little:
+  // e = 0, 1, 2, 3, 4, 5, 6.5, 6 rad; its wrapped samples jump by -2 pi past pi, the followed
+  // error does not. The largest |e| is 6.5 > max(pi, 0) + 0.1: turned around (through +-pi).
+  const std::vector<double> times{0, 1, 2, 3, 4, 5, 6, 7};
+  const double e[] = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.5, 6.0};
+  hinf::SimulationResult r = synthetic(times, 6, 2, 6);
+  for (Eigen::Index k = 0; k < 8; ++k) {
+    r.q_d(k, 5) = 0.1 * static_cast<double>(k);  // the desired heading (psi, index 5) turns too
+    r.q(k, 5) = r.q_d(k, 5) + e[k];
+  }
+  const hinf::Metrics mt = hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6));
+  // Sums of eight wrapped increments, each exact to round-off of values <= 2 pi.
+  EXPECT_NEAR(mt.heading_excursion, 6.5, hinf_test::kRoundoff * 64.0);
+  EXPECT_EQ(mt.turned_around, 1.0);
+  // An error bounded by 1.5 rad neither passes pi nor points backwards (|e| < pi/2).
+  for (Eigen::Index k = 0; k < 8; ++k) r.q(k, 5) = r.q_d(k, 5) + 1.5 * std::sin(static_cast<double>(k));
+  const hinf::Metrics small = hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6));
+  EXPECT_NEAR(small.heading_excursion, 1.5 * std::abs(std::sin(5.0)), hinf_test::kRoundoff * 8.0);  // at k = 5
+  EXPECT_EQ(small.turned_around, 0.0);
+  // Pointing backwards (|e| = 2 > pi/2) on the whole last half without passing pi: tracks
+  // the path backwards, turned around; the same on half the last half or less is not.
+  for (Eigen::Index k = 0; k < 8; ++k) r.q(k, 5) = r.q_d(k, 5) + 2.0;
+  const hinf::Metrics backwards = hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6));
+  EXPECT_NEAR(backwards.heading_excursion, 2.0, hinf_test::kRoundoff * 8.0);
+  EXPECT_EQ(backwards.turned_around, 1.0);
+  // Last half: t >= 3.5, points 4..7; backwards on 4 and 5 only: half, not more.
+  for (Eigen::Index k = 0; k < 8; ++k) r.q(k, 5) = r.q_d(k, 5) + (k == 4 || k == 5 ? 2.0 : 1.0);
+  EXPECT_EQ(hinf::compute_metrics(hinf::ShipModel(), r, Mat::Identity(6, 6)).turned_around, 0.0);
 }
 
 }  // namespace

@@ -65,7 +65,7 @@ def test_same_results_file(paper_outputs):
     assert a["scenario"] == "paper-fig1" and a["gamma"] == 5.0 and a["gamma_star"] is None
     assert np.array(a["Z0"]).shape == (6, 6)
     for key in ("rms_position_error_last_half", "max_position_error", "final_position_error", "control_l2",
-                "control_error_l2", "disturbance_l2", "l2_gain", "max_rho_sigma_z",
+                "control_error_l2", "disturbance_l2", "response_ratio", "max_rho_sigma_z",
                 "rms_estimation_error_last_half"):
         assert key in a["metrics"], key
     assert a["metrics"]["max_rho_sigma_z"] is None  # NaN (not applicable) is written as null

@@ -61,3 +61,41 @@ def test_a_study_counts_lost_runs_apart(tmp_path):
     assert status[(8.0, math.pi)] == "lost_track"
     lost = table[table["status"] == "lost_track"]
     assert all("lost_track = 1 m" in reason for reason in lost["reason"])
+
+
+def path_scale(run, model) -> float:
+    """The path's scale of the divergence bound, by its definition in docs/mathematics.md: the
+    spread of each desired position component, the largest |q_d| of each other component but
+    the heading, at least 1 and the initial error."""
+    q_d = np.asarray(run.q_d)
+    extents = [1.0, float(np.max(np.abs(np.asarray(run.q_e())[0])))]
+    for i in range(model.n()):
+        if i in model.position_indices():
+            extents.append(float(np.ptp(q_d[:, i])))
+        elif i != model.heading_index():
+            extents.append(float(np.max(np.abs(q_d[:, i]))))
+    return max(extents)
+
+
+def test_a_runaway_is_declared_diverged_where_it_leaves_the_physical_bound():
+    """The whole Figure-1 horizon (40 s) from 8 m aside with the heading reversed: the H-infinity
+    law runs away (surge 840 m/s, 2 km off at 40 s when nothing stops it). With the default
+    divergence_factor = 10 the run stops as diverged at the output time where |q_e|_inf first
+    exceeds 10 x the path's scale (22.3 m: the desired y spans 22.3 m), found here on the series
+    of the same run left unstopped; before (factor 1000 x max |q_d|) it ran to tf."""
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    scenario.initial_q0 = [1.0, 0.0, 0.0, 0.0, 8.0, math.pi]
+    stopped = hc.run_scenario(scenario).simulation
+    scenario.divergence_factor = 1e6
+    free = hc.run_scenario(scenario).simulation
+    assert free.status == hc.RunStatus.lost_track and stopped.status == hc.RunStatus.diverged
+    bound = 10.0 * path_scale(free, scenario.model)
+    assert "exceeded the divergence bound" in stopped.status_message
+    assert float(re.search(r"divergence bound ([0-9.e+-]+)", stopped.status_message).group(1)) == \
+        pytest.approx(bound, rel=1e-9)  # printed to 10 digits
+    error = np.max(np.abs(np.asarray(free.q_e())), axis=1)
+    crossing = free.t[np.argmax(error > bound)]
+    # The bound is checked at the integrator's steps and the series end at the last output time
+    # before: the stop lies within one output interval of the crossing on the output grid.
+    assert crossing - scenario.output_dt - 1e-9 <= stopped.t[-1] <= crossing + 1e-9
+    assert stopped.t[-1] < scenario.tf - 5.0  # early: 30.5 s of 40

@@ -279,10 +279,11 @@ def wrap(angle):
     return np.where(wrapped == -np.pi, np.pi, wrapped)
 
 
-def expected_metrics(run, Q, position: list[int], heading: int) -> dict:
+def expected_metrics(run, Q, position: list[int], heading: int, Qf=None, gamma: float = INF,
+                     initial_term: float = NAN) -> dict:
     """Each metric of hc.metric_table() by its definition, evaluated by NumPy on the run's series:
-    NaN where it does not apply (no position, no heading, no disturbance, no estimator; a run
-    that stopped early keeps only max_position_error)."""
+    NaN where it does not apply (no position, no heading, no disturbance, no estimator, no bound;
+    a run that stopped early keeps only max_position_error and the heading excursion)."""
     t = np.asarray(run.t)
     q_e = np.asarray(run.q_e())
     u_e = np.asarray(run.u) - np.asarray(run.u_d)
@@ -307,6 +308,16 @@ def expected_metrics(run, Q, position: list[int], heading: int) -> dict:
         if completed:
             out["rms_position_error_last_half"] = rms_last_half(error)
             out["final_position_error"] = float(error[-1])
+    if heading >= 0:
+        # The heading error followed through its wraps: its wrapped start plus cumulative wrapped
+        # increments; turned around through +-pi or backwards on most of the last half.
+        e = q_e[:, heading]
+        followed = e[0] + np.concatenate([[0.0], np.cumsum(wrap(np.diff(e)))])
+        out["heading_excursion"] = float(np.max(np.abs(followed)))
+        if completed:
+            through = out["heading_excursion"] > max(math.pi, abs(e[0])) + 0.1
+            backwards = np.count_nonzero(np.abs(e[last_half]) > math.pi / 2) > 0.5 * np.count_nonzero(last_half)
+            out["turned_around"] = float(through or backwards)
     if not completed:
         return out
     if heading >= 0:
@@ -319,8 +330,14 @@ def expected_metrics(run, Q, position: list[int], heading: int) -> dict:
     scale = np.maximum(np.maximum(np.max(np.abs(q_e), axis=1), np.max(np.abs(u_e), axis=1)), np.finfo(float).tiny)
     e, v = q_e / scale[:, None], u_e / scale[:, None]
     performance = scale * np.sqrt(np.maximum(0.0, np.einsum("ki,ij,kj->k", e, Q, e) + np.sum(v**2, axis=1)))
+    terminal = 0.0 if Qf is None else float(q_e[-1] @ np.asarray(Qf) @ q_e[-1])
+    out["tracking_cost"] = root_trapezoid(performance) ** 2 + terminal
     if out["disturbance_l2"] > 0.0:
-        out["l2_gain"] = root_trapezoid(performance) / out["disturbance_l2"]
+        out["response_ratio"] = math.sqrt(out["tracking_cost"]) / out["disturbance_l2"]
+        if not np.any(q_e[0]):
+            out["disturbance_gain"] = out["response_ratio"]
+    if math.isfinite(gamma) and not math.isnan(initial_term):
+        out["attenuation_margin"] = 1.0 - out["tracking_cost"] / (gamma**2 * out["disturbance_l2"] ** 2 + initial_term)
     if run.estimator is not None:
         out["max_rho_sigma_z"] = float(np.max(run.estimator.rho_sigma_z))
         estimation_error = np.asarray(run.estimator.q_hat) - q_e
@@ -330,18 +347,29 @@ def expected_metrics(run, Q, position: list[int], heading: int) -> dict:
     return out
 
 
-def check_metrics(metrics, run, Q, position: list[int], heading: int) -> None:
+# The metrics built from the weighted squares q_e'Q q_e (and q_e'Qf q_e).
+WEIGHTED = ("disturbance_gain", "response_ratio", "tracking_cost", "attenuation_margin")
+
+
+def check_metrics(metrics, run, Q, position: list[int], heading: int, Qf=None, gamma: float = INF,
+                  initial_term: float = NAN) -> None:
     """Each metric equal to its definition re-evaluated by NumPy: sums of up to len(t) terms in
     another order (summation_rtol), times a few operations on each term (ROUNDOFF). The weighted
-    squares q_e'Q q_e of l2_gain round off relative to n^2 |Q| |q_e|^2 instead (Q may be only
-    semidefinite, q_e near its null space): 1e-9 allows q_e'Q q_e + |u_e|^2 down to 3e-6 of
-    that (n <= 6: 36 eps / 1e-9)."""
+    squares q_e'Q q_e of the costs and ratios round off relative to n^2 |Q| |q_e|^2 instead (Q
+    may be only semidefinite, q_e near its null space): 1e-9 allows q_e'Q q_e + |u_e|^2 down to
+    3e-6 of that (n <= 6: 36 eps / 1e-9). The heading excursion sums len(t) wrapped increments."""
     assert [d.name for d in hc.metric_table()] == list(METRICS)
-    expected = expected_metrics(run, np.asarray(Q), position, heading)
+    expected = expected_metrics(run, np.asarray(Q), position, heading, Qf, gamma, initial_term)
     rtol = summation_rtol(len(run.t)) + ROUNDOFF
     for name in METRICS:
         value = getattr(metrics, name)
-        close(value, expected[name], 1e-9 if name == "l2_gain" else rtol, f"metric {name}")
+        if name == "heading_excursion" and not math.isnan(expected[name]):
+            # A sum of len(t) wrapped increments, each within round-off of pi: absolute error.
+            assert abs(value - expected[name]) <= len(run.t) * 4.0 * ROUNDOFF, f"metric {name} = {value!r}"
+            continue
+        close(value, expected[name], 1e-9 if name in WEIGHTED else rtol, f"metric {name}")
+        if name == "attenuation_margin":
+            continue  # may be negative: the bound exceeded
         if not math.isnan(value):
             assert math.isfinite(value) and value >= 0.0, f"metric {name} = {value}"
 
@@ -600,8 +628,19 @@ def check_run_result(result, scenario) -> None:
         assert np.max(np.abs(wrap(angle - difference[:, heading]))) <= slack, "the heading error is not wrapped"
         difference[:, heading] = angle
     np.testing.assert_array_equal(q_e, difference)
-    Q = scenario.resolved().Q  # an empty Q stands for the identity
-    check_metrics(result.metrics, result.simulation, Q, list(model.position_indices()), model.heading_index())
+    resolved = scenario.resolved()  # an empty Q stands for the identity
+    # The H-infinity law's bound (state feedback: q_e0' Z(t0) q_e0; output feedback:
+    # gamma^2 q_e0' Q0 q_e0 of eq. 39), for a fixed continuous-time design only.
+    gamma, initial_term = INF, NAN
+    if (result.law == hc.Law.hinf and result.solution is not None and scenario.sampling is None
+            and scenario.receding_horizon is None):
+        gamma = scenario.gamma
+        if output_feedback:
+            initial_term = gamma**2 * float(q_e[0] @ np.asarray(resolved.measurement.Q0) @ q_e[0])
+        else:
+            initial_term = float(q_e[0] @ np.asarray(result.Z0) @ q_e[0])
+    check_metrics(result.metrics, result.simulation, resolved.Q, list(model.position_indices()),
+                  model.heading_index(), resolved.Qf, gamma, max(0.0, initial_term))
 
     def refuse(constant):
         raise AssertionError(f"the results file holds {constant}")

@@ -157,23 +157,41 @@ def test_paper_figure1_metrics_recomputed(paper_run):
         "control_l2": l2(np.sum(run.u**2, axis=1)),
         "control_error_l2": l2(np.sum(u_e**2, axis=1)),
         "disturbance_l2": disturbance_l2,
-        "l2_gain": l2(np.einsum("ki,ij,kj->k", q_e, Q, q_e) + np.sum(u_e**2, axis=1)) / disturbance_l2,
     }
+    # The cost of eq. (37) with the scenario's Qf = I, its ratio to ||w||, and the margin of the
+    # bound L <= gamma^2 ||w||^2 + q_e0' Z(t0) q_e0 (gamma = 5).
+    cost = np.trapezoid(np.einsum("ki,ij,kj->k", q_e, Q, q_e) + np.sum(u_e**2, axis=1), t) + q_e[-1] @ q_e[-1]
+    expected["tracking_cost"] = cost
+    expected["response_ratio"] = math.sqrt(cost) / disturbance_l2
+    initial_term = q_e[0] @ paper_run.Z0 @ q_e[0]
+    expected["attenuation_margin"] = 1.0 - cost / (25.0 * disturbance_l2**2 + initial_term)
+    # The heading error followed through its wraps (it never wraps here: |e| < pi).
+    expected["heading_excursion"] = np.max(np.abs(heading))
     metrics = paper_run.metrics
     # The library's C++ sums, means and maxima against NumPy's over the same 4001 samples:
     # summation round-off only.
     rtol = summation_rtol(t.size)
     for name, value in expected.items():
         assert getattr(metrics, name) == pytest.approx(value, rel=rtol), name
-    # Output feedback metrics are absent (NaN) for state feedback.
+    # Output feedback metrics are absent (NaN) for state feedback; the start is off the path.
     assert math.isnan(metrics.max_rho_sigma_z)
     assert math.isnan(metrics.rms_estimation_error_last_half)
+    assert math.isnan(metrics.disturbance_gain) and np.any(q_e[0] != 0.0)
+    assert metrics.turned_around == 0.0 and metrics.attenuation_margin > 0.0
     # Every metric of the table is checked here.
-    assert {d.name for d in hc.metric_table()} == set(expected) | {"max_rho_sigma_z", "rms_estimation_error_last_half"}
+    assert {d.name for d in hc.metric_table()} == set(expected) | {
+        "max_rho_sigma_z", "rms_estimation_error_last_half", "disturbance_gain", "turned_around"}
     # Closed form: 3 channels of 0.1 cos(2 pi 0.2 t) over 8 whole periods: integral 3 * 0.01 * 20.
     assert metrics.disturbance_l2 == pytest.approx(math.sqrt(0.6), rel=1e-10)
-    # The same numbers from compute_metrics on the same run: the same code, exactly.
-    assert hc.compute_metrics(paper_run.trajectory.model(), run, Q) == metrics
+    # The same numbers from compute_metrics on the same run: the same code, exactly (the margin's
+    # initial term here is NumPy's product, not the library's: round-off).
+    again = hc.compute_metrics(paper_run.trajectory.model(), run, Q, Qf=np.eye(6), gamma=5.0,
+                               initial_term=float(initial_term))
+    for d in hc.metric_table():
+        if d.name == "attenuation_margin":
+            assert again.attenuation_margin == pytest.approx(metrics.attenuation_margin, rel=1e-12)
+        else:
+            np.testing.assert_array_equal(getattr(again, d.name), getattr(metrics, d.name), err_msg=d.name)
     # Z(t) bounds over [t0, tf] (paper eq. 22): they enclose the extremes on the output grid
     # (up to the round-off of two eigenvalue algorithms, relative to |Z| ~ 21) and agree with
     # those on a ten times finer grid.

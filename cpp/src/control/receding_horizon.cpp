@@ -224,18 +224,6 @@ HorizonWindow RecedingHorizon::next(const HorizonWindow& previous) const {
 
 namespace {
 
-// The largest |q_d|_inf on the output times of [t_a, t_b] of a window.
-double largest_desired(const Trajectory& trajectory, const std::vector<double>& grid) {
-  Vec q_d(trajectory.n());
-  std::size_t cursor = 0;
-  double largest = 0.0;
-  for (double t : grid) {
-    trajectory.q_d(t, q_d.data(), &cursor);
-    largest = std::max(largest, q_d.cwiseAbs().maxCoeff());
-  }
-  return largest;
-}
-
 // Appends the rows of `piece` after its first (the time the series already end with) to `all`.
 void append_rows(RowMat& all, const RowMat& piece, bool first) {
   const Eigen::Index skip = first ? 0 : 1, rows = piece.rows() - skip;
@@ -261,7 +249,8 @@ SimulationResult simulate_receding_horizon(const RecedingHorizon& horizon, const
 
   Vec q_e0(model.n());
   tracking_error(model.n(), heading, q0.data(), horizon.q_d0().data(), q_e0.data());
-  double scale = std::max(1.0, q_e0.cwiseAbs().maxCoeff());
+  const double scale = std::max(1.0, q_e0.cwiseAbs().maxCoeff());
+  PathScale path(horizon.model());  // the path's extent over the windows run so far
 
   SimulationResult result;
   result.heading_index = heading;
@@ -283,8 +272,8 @@ SimulationResult simulate_receding_horizon(const RecedingHorizon& horizon, const
     const Trajectory& window = *current.trajectory;
     const Trajectory piece(horizon.model_ptr(), window.q_d(current.t_start), window.u_d_signal(), current.t_start,
                            t_end, window.dense(), window.stats());
-    scale = std::max(scale, largest_desired(piece, output_grid(current.t_start, t_end, options.output_dt)));
-    summary.divergence_bound = options.divergence_factor * scale;
+    path.add(piece, output_grid(current.t_start, t_end, options.output_dt));
+    summary.divergence_bound = options.divergence_factor * std::max(scale, path.scale());
     HinfStateFeedback law(current.design, kappa);
     const SimulationResult part =
         detail::simulate_state_feedback(piece, law, disturbance, q, options, plant, summary.divergence_bound);

@@ -53,6 +53,35 @@ std::vector<double> output_grid(double t0, double tf, double dt) {
   return grid;
 }
 
+PathScale::PathScale(const Model& model)
+    : is_position_(static_cast<std::size_t>(model.n()), 0),
+      heading_(model.heading_index()),
+      low_(Vec::Constant(model.n(), std::numeric_limits<double>::infinity())),
+      high_(Vec::Constant(model.n(), -std::numeric_limits<double>::infinity())) {
+  for (int i : model.position_indices()) is_position_[static_cast<std::size_t>(i)] = 1;
+}
+
+void PathScale::add(const Trajectory& trajectory, const std::vector<double>& grid) {
+  Vec q_d(trajectory.n());
+  std::size_t cursor = 0;
+  for (double t : grid) {
+    trajectory.q_d(t, q_d.data(), &cursor);
+    low_ = low_.cwiseMin(q_d);
+    high_ = high_.cwiseMax(q_d);
+  }
+}
+
+double PathScale::scale() const {
+  double scale = 0.0;
+  for (Eigen::Index i = 0; i < low_.size(); ++i) {
+    if (i == heading_ || !(low_[i] <= high_[i])) continue;  // the heading error is wrapped; no point yet
+    const double extent = is_position_[static_cast<std::size_t>(i)] ? high_[i] - low_[i]
+                                                                      : std::max(std::abs(low_[i]), std::abs(high_[i]));
+    scale = std::max(scale, extent);
+  }
+  return scale;
+}
+
 double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::vector<double>& grid,
                         double divergence_factor) {
   const Model& model = trajectory.model();
@@ -60,13 +89,9 @@ double divergence_bound(const Trajectory& trajectory, const Vec& q0, const std::
   Vec q_d(n), q_e(n);
   trajectory.q_d(grid.front(), q_d.data());
   tracking_error(n, model.heading_index(), q0.data(), q_d.data(), q_e.data());
-  double scale = std::max(1.0, q_e.cwiseAbs().maxCoeff());
-  std::size_t cursor = 0;
-  for (double t : grid) {
-    trajectory.q_d(t, q_d.data(), &cursor);
-    scale = std::max(scale, q_d.cwiseAbs().maxCoeff());
-  }
-  return divergence_factor * scale;
+  PathScale path(model);
+  path.add(trajectory, grid);
+  return divergence_factor * std::max({1.0, q_e.cwiseAbs().maxCoeff(), path.scale()});
 }
 
 void check_plant_sizes(const Model& model, const Model& plant) {

@@ -121,7 +121,7 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
   }
   {
     TableReader r(*section(root, "controller", source, true), "[controller]", source,
-                  {"gamma", "Q", "Qf", "kappa", "law", "cascade"});
+                  {"gamma", "Q", "Qf", "kappa", "law", "cascade", "backstepping"});
     const toml::node* gamma = r.get("gamma");
     if (gamma == nullptr) r.fail("gamma", "is required");
     s.gamma = r.as_number(*gamma, "gamma", true);  // inf: the LQR limit
@@ -133,6 +133,16 @@ void read_sections(const toml::table& root, const std::string& source, Scenario&
       s.cascade.k = g.number_or("k", s.cascade.k);
       s.cascade.k1 = g.number_or("k1", s.cascade.k1);
       s.cascade.k2 = g.number_or("k2", s.cascade.k2);
+    }
+    if (const toml::node* node = r.get("backstepping")) {
+      const toml::table* table = node->as_table();
+      if (table == nullptr)
+        r.fail("backstepping", "expected a table { k = ..., k1 = ..., k2 = ..., k3 = ... }, got " + type_name(*node));
+      TableReader g(*table, "[controller]", source, {"k", "k1", "k2", "k3"}, "backstepping.");
+      s.backstepping.k = g.number_or("k", s.backstepping.k);
+      s.backstepping.k1 = g.number_or("k1", s.backstepping.k1);
+      s.backstepping.k2 = g.number_or("k2", s.backstepping.k2);
+      s.backstepping.k3 = g.number_or("k3", s.backstepping.k3);
     }
     if (r.has("Q")) s.Q = r.matrix("Q", n, n, true);
     if (r.has("Qf")) s.Qf = r.matrix("Qf", n, n, true);

@@ -55,6 +55,10 @@ std::string scenario_toml(const Scenario& s) {
   if (s.Qf.size() > 0) controller.insert("Qf", matrix_toml(s.Qf));
   insert_signal(controller, "kappa", s.kappa);
   controller.insert("cascade", toml::table{{"k", s.cascade.k}, {"k1", s.cascade.k1}, {"k2", s.cascade.k2}});
+  controller.insert("backstepping", toml::table{{"k", s.backstepping.k},
+                                                {"k1", s.backstepping.k1},
+                                                {"k2", s.backstepping.k2},
+                                                {"k3", s.backstepping.k3}});
   root.insert("controller", std::move(controller));
   toml::table disturbance{{"worst_case", s.worst_case}};
   insert_vector_signal(disturbance, "w", s.disturbance, "[disturbance]", /*all_channels=*/false,

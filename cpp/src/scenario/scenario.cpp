@@ -10,6 +10,7 @@
 #include "hinf/control/discrete_design.hpp"
 #include "hinf/control/output_feedback.hpp"
 #include "hinf/control/sampled_loop.hpp"
+#include "hinf/core/angles.hpp"
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
 #include "hinf/models/ship.hpp"
@@ -107,6 +108,11 @@ void Scenario::validate_settings() const {
       require(std::isfinite(g) && g > 0.0, "[controller] cascade gains k, k1, k2 must be > 0, got (", cascade.k,
               ", ", cascade.k1, ", ", cascade.k2, ")");
   }
+  if (law == Law::Backstepping) {
+    for (double g : {backstepping.k, backstepping.k1, backstepping.k2, backstepping.k3})
+      require(std::isfinite(g) && g > 0.0, "[controller] backstepping gains k, k1, k2, k3 must be > 0, got (",
+              backstepping.k, ", ", backstepping.k1, ", ", backstepping.k2, ", ", backstepping.k3, ")");
+  }
   require(!worst_case || std::isfinite(gamma),
           "[disturbance] worst_case needs a finite gamma: the worst-case disturbance gamma^-2 D' Z q_e is 0 at inf");
   if (measurement) {
@@ -132,8 +138,8 @@ void Scenario::validate_settings() const {
               "[sampling] measurement_period must be a whole multiple of period = ", sp.period, " s (the sensor"
               " is read at controller samples), got ", sp.measurement_period);
     }
-    require(law != Law::Cascade, "[sampling] runs the online controller of the H-infinity or LQR design; the"
-            " cascade law has no sampled form: remove [sampling] or choose law = \"hinf\" or \"lqr\"");
+    require(!is_baseline(law), "[sampling] runs the online controller of the H-infinity or LQR design; the ",
+            to_string(law), " law has no sampled form: remove [sampling] or choose law = \"hinf\" or \"lqr\"");
     require(sp.measurement_update != MeasurementUpdate::Discrete || sp.design == SampledDesign::Digital,
             "[sampling] measurement_update = \"discrete\" is the digital design's own filter: set design = "
             "\"digital\", or choose measurement_update = \"sampled\" or \"held\"");
@@ -161,8 +167,8 @@ void Scenario::validate_settings() const {
     } catch (const InputError& e) {
       throw InputError(str_cat("[receding_horizon] ", e.what()));
     }
-    require(law != Law::Cascade, "[receding_horizon] designs the H-infinity or LQR law over a moving window; the"
-            " cascade law has no design: remove [receding_horizon] or choose law = \"hinf\" or \"lqr\"");
+    require(!is_baseline(law), "[receding_horizon] designs the H-infinity or LQR law over a moving window; the ",
+            to_string(law), " law has no design: remove [receding_horizon] or choose law = \"hinf\" or \"lqr\"");
     require(!measurement || sampling, "[receding_horizon] with [measurement] runs through the online controller:"
             " add [sampling] (the continuous output-feedback loop has no receding-horizon form)");
     if (sampling) {
@@ -220,9 +226,9 @@ void Scenario::validate() const {
             "': its noise is set in [measurement] (sigma), not as a disturbance");
   }
   check_size(initial_q0, n, "[initial] q0");
-  if (law == Law::Cascade)
-    require(dynamic_cast<const ShipModel*>(model.get()) != nullptr,
-            "[controller] law = \"cascade\" is written for the ship model; the model is '", model->name(), "'");
+  if (is_baseline(law))
+    require(dynamic_cast<const ShipModel*>(model.get()) != nullptr, "[controller] law = \"", to_string(law),
+            "\" is written for the ship model; the model is '", model->name(), "': choose law = \"hinf\" or \"lqr\"");
   if (measurement) {
     const MeasurementSpec& ms = *measurement;
     const int p = static_cast<int>(model->C(t0).rows());
@@ -289,6 +295,29 @@ TrajectoryPtr trajectory_of(const Scenario& s) {
 // The law's gamma: the scenario's, or inf for the lqr law.
 double design_gamma(const Scenario& s) {
   return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
+}
+
+// Q, Qf and, for the H-infinity law of a fixed continuous-time design, the right side of its
+// bound (metrics.hpp): q_e0' Z(t0) q_e0 with state feedback, gamma^2 q_e0' Q0 q_e0 with output
+// feedback (eq. 39). Other laws, sampled loops and receding horizons have no such bound here.
+CostWeights cost_weights(const Scenario& s, const RunResult& result) {
+  CostWeights weights;
+  weights.Q = s.Q;
+  weights.Qf = s.Qf;
+  const SimulationResult& run = result.simulation;
+  if (s.law != Law::Hinf || !std::isfinite(s.gamma) || s.sampling || s.receding_horizon || !result.solution ||
+      run.t.size() == 0)
+    return weights;
+  Vec q_e0(s.model->n());
+  tracking_error(s.model->n(), s.model->heading_index(), run.q.row(0).data(), run.q_d.row(0).data(), q_e0.data());
+  weights.gamma = s.gamma;
+  if (s.measurement) {
+    weights.initial_term = s.gamma * s.gamma * q_e0.dot(s.measurement->Q0 * q_e0);
+  } else {
+    weights.initial_term = q_e0.dot(result.solution->Z(s.t0) * q_e0);
+  }
+  weights.initial_term = std::max(0.0, weights.initial_term);
+  return weights;
 }
 
 // A run that ran to tf but ended more than [solver] lost_track farther from the desired path
@@ -485,7 +514,7 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
                             bool sigma_eigenvalues) {
   // The cascade law with state feedback does not use the law's design: there it is only
   // reported, and a gamma at or below gamma* leaves it out instead of failing the run.
-  const bool design_needed = (s.law != Law::Cascade || s.measurement || s.worst_case) && !s.receding_horizon;
+  const bool design_needed = (!is_baseline(s.law) || s.measurement || s.worst_case) && !s.receding_horizon;
   if (design.error) std::rethrow_exception(design.error);
   if (!design.solution && design_needed) std::rethrow_exception(design.solution_error);
 
@@ -505,6 +534,8 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
   if (s.law == Law::Cascade) controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
+  else if (s.law == Law::Backstepping)
+    controller = std::make_unique<BacksteppingController>(result.trajectory, s.backstepping);
   else if (result.solution) controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
   const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
   if (s.receding_horizon && !s.sampling) {
@@ -541,7 +572,7 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   if (result.solution) result.Z0 = result.solution->Z(s.t0);
   result.Z_min_eig = design.Z_min_eig;
   result.Z_max_eig = design.Z_max_eig;
-  result.metrics = compute_metrics(*s.model, result.simulation, s.Q);
+  result.metrics = compute_metrics(*s.model, result.simulation, cost_weights(s, result));
   judge_track(s, result);
   result.timing.analysis = seconds_since(analysis_start);
   return result;

@@ -2,8 +2,8 @@
 
 ``compare(scenario)`` runs the scenario once per law (``"hinf"``: the paper's law at the
 scenario's gamma; ``"lqr"``: the same design at gamma = inf, with ``[measurement]`` the
-Kalman-Bucy filter; ``"cascade"``: the cascaded ship baseline, with ``[measurement]`` acting
-on the H-infinity estimate) and, for a scenario with ``[measurement]``, both with perfect
+Kalman-Bucy filter; ``"cascade"`` and ``"backstepping"``: the ship baselines of
+``docs/baselines.md``, with ``[measurement]`` acting on the H-infinity estimate) and, for a scenario with ``[measurement]``, both with perfect
 state feedback (the measurement removed) and with output feedback. It returns the runs and
 one metrics dictionary per run, and says which disturbance every number is for.
 
@@ -12,10 +12,10 @@ names (``"hinf,lqr"``, ``"state,output"``) are accepted where they come in and w
 they go out (tables, JSON).
 
 Metrics (:data:`METRICS`): the library's metrics of the results file (``metric_table()``,
-``RunResult.metrics``, ``docs/mathematics.md``) and one of the comparison's own,
-``l2_gain_from_desired``: the ``l2_gain`` of the same law and disturbance started on the
-desired trajectory (q(t0) = q_d(t0)), so that it is the disturbance's gain alone, not the
-response to the initial error (equal to ``l2_gain`` when the scenario starts there); and
+``RunResult.metrics``, ``docs/results.md``), with ``disturbance_gain`` taken from a second run
+of the same law and disturbance started on the desired trajectory (q(t0) = q_d(t0)) when the
+scenario starts elsewhere, so that it is the disturbance's gain alone, not the response to the
+initial error (``response_ratio`` is that); and one of the comparison's own,
 ``induced_l2_gain``: the law's own attenuation level, the induced L2 gain from w to the
 weighted error of its closed loop linearized along the desired trajectory over [t0, tf]
 (:func:`hinf_cpp.law_gain`), for the state-feedback runs of ``hinf`` and ``lqr``.
@@ -75,7 +75,7 @@ class MetricInfo:
     """A metric of the comparison table that the library does not compute.
 
     It has the attributes of :class:`hinf_cpp.MetricDefinition`, so that :data:`METRICS`
-    lists both kinds alike: ``l2_gain_from_desired`` is one.
+    lists both kinds alike: ``induced_l2_gain`` is one.
 
     Parameters
     ----------
@@ -93,18 +93,13 @@ class MetricInfo:
     >>> from hinf_cpp.analysis.comparison import METRICS, MetricInfo
     >>> info = next(m for m in METRICS if isinstance(m, MetricInfo))
     >>> info.name, info.label, info.unit
-    ('l2_gain_from_desired', 'L2 gain (from the desired start)', '-')
+    ('induced_l2_gain', 'induced L2 gain of the law', '-')
     """
 
     name: str
     label: str
     unit: str
     definition: str
-
-
-_L2_GAIN_FROM_DESIRED = MetricInfo(
-    "l2_gain_from_desired", "L2 gain (from the desired start)", "-",
-    "l2_gain of the same law and disturbance started at q(t0) = q_d(t0): the disturbance's alone")
 
 
 _INDUCED_L2_GAIN = MetricInfo(
@@ -115,21 +110,25 @@ _INDUCED_L2_GAIN = MetricInfo(
 
 
 def _comparison_metrics() -> list:
-    """The rows of the comparison table: the library's metrics, l2_gain_from_desired and
-    induced_l2_gain after l2_gain."""
+    """The rows of the comparison table: the library's metrics, induced_l2_gain after
+    disturbance_gain (the law's bound beside what the disturbance met)."""
     rows = []
     for definition in _core.metric_table():
         rows.append(definition)
-        if definition.name == "l2_gain":
-            rows += [_L2_GAIN_FROM_DESIRED, _INDUCED_L2_GAIN]
+        if definition.name == "disturbance_gain":
+            rows.append(_INDUCED_L2_GAIN)
     return rows
+
+
+# The ship baselines: laws without a Riccati design of their own.
+_BASELINES = (_core.Law.cascade, _core.Law.backstepping)
 
 
 def _induced_gain(scenario: _core.Scenario, result: _core.RunResult) -> float:
     """The law's induced L2 gain (hinf_cpp.law_gain) for a state-feedback run of hinf or lqr
     with its design kept; NaN for the others (the cascade law's closed loop, an estimator in
     the loop, the windows of a receding horizon)."""
-    if result.output_feedback or result.law == _core.Law.cascade or result.solution is None:
+    if result.output_feedback or result.law in _BASELINES or result.solution is None:
         return math.nan
     resolved = scenario.resolved()
     return float(_core.law_gain(result.solution, resolved.Q, resolved.Qf, resolved.kappa).gamma_star)
@@ -152,8 +151,8 @@ def parse_controllers(spec: str | Iterable[str | _core.Law] | None) -> list[_cor
     Parameters
     ----------
     spec : str or iterable of (str or hinf_cpp.Law) or None
-        A comma-separated list of names among ``hinf``, ``lqr``, ``cascade``, or a sequence of
-        names or :class:`hinf_cpp.Law` values; None means all three.
+        A comma-separated list of names among ``hinf``, ``lqr``, ``cascade``, ``backstepping``,
+        or a sequence of names or :class:`hinf_cpp.Law` values; None means all four.
 
     Returns
     -------
@@ -171,11 +170,11 @@ def parse_controllers(spec: str | Iterable[str | _core.Law] | None) -> list[_cor
     >>> parse_controllers("hinf,lqr")
     [<Law.hinf: 0>, <Law.lqr: 1>]
     >>> len(parse_controllers(None))
-    3
+    4
     >>> parse_controllers("hinf,mpc")
     Traceback (most recent call last):
         ...
-    ValueError: unknown controller 'mpc': choose from hinf, lqr, cascade
+    ValueError: unknown controller 'mpc': choose from hinf, lqr, cascade, backstepping
     """
     laws = _core.Law.__members__
     if spec is None:
@@ -610,9 +609,9 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
 
     ``"hinf"`` is the paper's law at the scenario's gamma, ``"lqr"`` the same design at
     gamma = inf (with ``[measurement]`` the Kalman-Bucy filter), ``"cascade"`` the cascaded
-    ship baseline. The metrics are those of :data:`METRICS`: the library's and
-    ``l2_gain_from_desired``, the ``l2_gain`` of the same run started on the desired
-    trajectory.
+    ship baseline. The metrics are those of :data:`METRICS`: the library's, with
+    ``disturbance_gain`` from the same run started on the desired trajectory, and
+    ``induced_l2_gain``.
 
     Parameters
     ----------
@@ -670,15 +669,15 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
         design_gamma = math.inf if law == _core.Law.lqr else float(base.gamma)
         try:
             result = run_law(base, law, mode)
-            gain_alone = (result.metrics.l2_gain if starts_on_desired
-                          else run_law(base, law, mode, from_desired=True).metrics.l2_gain)
+            gain_alone = (result.metrics.disturbance_gain if starts_on_desired
+                          else run_law(base, law, mode, from_desired=True).metrics.disturbance_gain)
         except _core.HinfError as error:
             metrics = {m.name: math.nan for m in METRICS}
             runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics,
                                       error=" ".join(str(error).split())))
             continue
         metrics = {m.name: getattr(result.metrics, m.name) for m in _core.metric_table()}
-        metrics[_L2_GAIN_FROM_DESIRED.name] = gain_alone
+        metrics["disturbance_gain"] = gain_alone
         metrics[_INDUCED_L2_GAIN.name] = _induced_gain(base, result)
         metrics = {m.name: float(metrics[m.name]) for m in METRICS}
         runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics, result=result))

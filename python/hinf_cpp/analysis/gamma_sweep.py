@@ -72,9 +72,10 @@ class GammaSweep:
         The smallest gamma of the output-feedback design, for a scenario with [measurement].
     gammas : numpy.ndarray, shape (count,)
         The gammas run, increasing.
-    l2_gain : numpy.ndarray, shape (count,)
-        The measured L2 gain of each run, sqrt(int |q_e|_Q^2 + |u_e|^2 dt) /
-        sqrt(int |w|^2 dt).
+    response_ratio : numpy.ndarray, shape (count,)
+        The measured ratio of each run (metric ``response_ratio``): sqrt(|q_e(tf)|_Qf^2 +
+        int |q_e|_Q^2 + |u_e|^2 dt) / sqrt(int |w|^2 dt); the L2 gain of the disturbance alone
+        when ``zero_initial_error``.
     cost : numpy.ndarray, shape (count,)
         L_gamma of paper eq. (12) of each run (:func:`cost_L_gamma`).
     zero_initial_error : bool
@@ -90,9 +91,9 @@ class GammaSweep:
     >>> sweep = sweep_gamma(hc.load_scenario(hc.scenario_path("paper_fig1")), count=3)
     >>> round(sweep.gamma_star, 3), sweep.gammas.shape
     (1.335, (3,))
-    >>> bool(np.all(sweep.l2_gain < sweep.gammas)), bool(np.all(sweep.cost < 0))
+    >>> bool(np.all(sweep.response_ratio < sweep.gammas)), bool(np.all(sweep.cost < 0))
     (True, True)
-    >>> bool(np.all((sweep.l2_gain <= sweep.induced_gain) & (sweep.induced_gain < sweep.gammas)))
+    >>> bool(np.all((sweep.response_ratio <= sweep.induced_gain) & (sweep.induced_gain < sweep.gammas)))
     True
     """
 
@@ -100,7 +101,7 @@ class GammaSweep:
     gamma_star: float
     gamma_star_output_feedback: float | None
     gammas: np.ndarray
-    l2_gain: np.ndarray       # sqrt(int |q_e|_Q^2 + |u_e|^2) / sqrt(int |w|^2)
+    response_ratio: np.ndarray  # sqrt(|q_e(tf)|_Qf^2 + int |q_e|_Q^2 + |u_e|^2) / sqrt(int |w|^2)
     cost: np.ndarray          # L_gamma of eq. (12)
     zero_initial_error: bool  # True: q(t0) = q_d(t0), so the gain is the disturbance's alone
     induced_gain: np.ndarray  # hinf_cpp.law_gain of the design at each gamma (NaN: no design kept)
@@ -112,7 +113,7 @@ class GammaSweep:
             "gamma_star_output_feedback": self.gamma_star_output_feedback,
             "zero_initial_error": self.zero_initial_error,
             "gamma": self.gammas.tolist(),
-            "l2_gain": self.l2_gain.tolist(),
+            "response_ratio": self.response_ratio.tolist(),
             "cost_L_gamma": self.cost.tolist(),
             "induced_l2_gain": self.induced_gain.tolist(),
         }
@@ -167,8 +168,8 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
     >>> sweep = sweep_gamma(hc.load_scenario(hc.scenario_path("paper_fig1")), count=3, upper=20.0)
     >>> sweep.gammas.round(2)
     array([ 1.34,  5.17, 20.  ])
-    >>> sweep.l2_gain.round(2)
-    array([1.15, 1.04, 1.02])
+    >>> sweep.response_ratio.round(2)
+    array([1.15, 1.05, 1.03])
     """
     if count < 2:
         raise ValueError(f"sweep_gamma needs count >= 2, got {count}")
@@ -213,7 +214,7 @@ def sweep_gamma(scenario: _core.Scenario, count: int = 12, upper: float | None =
         gamma_star=star,
         gamma_star_output_feedback=star_of,
         gammas=gammas,
-        l2_gain=np.array([r.metrics.l2_gain for r in results]),
+        response_ratio=np.array([r.metrics.response_ratio for r in results]),
         cost=np.array([cost_L_gamma(r, resolved.Q, resolved.Qf) for r in results]),
         zero_initial_error=zero_initial_error,
         induced_gain=np.array([induced(r) for r in results]),
@@ -226,7 +227,7 @@ def sweep_figure(sweep: GammaSweep):
 
     fig = Figure(figsize=(7.0, 6.4), layout="constrained")
     ax_gain, ax_cost = fig.subplots(2, 1, sharex=True)
-    ax_gain.plot(sweep.gammas, sweep.l2_gain, "o-", color="tab:blue", label="measured L2 gain")
+    ax_gain.plot(sweep.gammas, sweep.response_ratio, "o-", color="tab:blue", label="measured L2 gain")
     ax_gain.plot(sweep.gammas, sweep.induced_gain, "s-", color="tab:green",
                  label="induced L2 gain of the law (linearized, worst case over all w)")
     ax_gain.plot(sweep.gammas, sweep.gammas, "--", color="gray",

@@ -120,7 +120,7 @@ def scenario_from_dict(root: dict, source: str = "<dict>", *, trust_code: bool |
     >>> hc.scenario_from_dict(root)
     Traceback (most recent call last):
         ...
-    ValueError: <dict>: [controller] unknown key 'gama' (known keys: gamma, Q, Qf, kappa, law, cascade)
+    ValueError: <dict>: [controller] unknown key 'gama' (known keys: gamma, Q, Qf, kappa, law, cascade, backstepping)
     """
     allow_code = code_allowed(trust_code)
     if needs_planning(root):

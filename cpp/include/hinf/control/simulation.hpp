@@ -8,8 +8,12 @@
 // A closed loop that leaves the neighbourhood of the desired trajectory where the linearized
 // design means anything stops early with status Diverged: when the tracking error |q_e|_inf
 // (heading wrapped, angles.hpp) exceeds
-//     divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, max_t |q_d(t)|_inf).
-// Its time series then end at the last output time before that.
+//     divergence_bound = divergence_factor * max(1, |q_e(t0)|_inf, path scale),
+// the path scale being the largest extent of the desired path on the output grid: the spread
+// (max - min) of each position component, and the largest |q_d_i| of each other component but
+// the heading (speeds and rates: a speed's scale is its size). On the paper's ship over 40 s
+// that is the path's 40 m, so the default factor 10 stops a run 400 m or 400 m/s off, where a
+// ship has physically left its path. Its time series then end at the last output time before.
 #pragma once
 
 #include <cmath>
@@ -30,7 +34,7 @@ namespace hinf {
 // How a closed loop is simulated (scenario keys [output] dt and [solver]).
 struct SimulationOptions {
   double output_dt = 0.01;         // step of the output grid (s)
-  double divergence_factor = 1e3;  // stop as diverged beyond this times the problem's scale (> 1)
+  double divergence_factor = 10.0;  // stop as diverged beyond this times the path's scale (> 1)
   SolverOptions solver;            // the integrator of the closed loop
 
   void validate() const;  // InputError naming the option and its admissible range
@@ -49,7 +53,7 @@ long check_output_grid(double t0, double tf, double dt);
 enum class RunStatus {
   Completed,  // integrated over the whole horizon
   Diverged,   // stopped when the tracking error exceeded the divergence bound (see above):
-              // divergence_factor times the problem's scale
+              // divergence_factor times the path's scale
   LostTrack   // integrated over the whole horizon, but it ended more than the scenario's
               // lost_track farther from the desired path than it started (scenario.hpp)
 };
@@ -88,6 +92,22 @@ struct SimulationResult {
   // The tracking errors q - q_d, one row per output time, the heading component wrapped to
   // (-pi, pi].
   RowMat q_e() const;
+};
+
+// The path scale of divergence_bound (see above), gathered over output grids of one or more
+// trajectories of the same model (the windows of a receding horizon).
+class PathScale {
+ public:
+  explicit PathScale(const Model& model);
+  // Takes in q_d on the times of `grid`.
+  void add(const Trajectory& trajectory, const std::vector<double>& grid);
+  // The largest spread of a position component and |q_d_i| of another but the heading so far.
+  double scale() const;
+
+ private:
+  std::vector<char> is_position_;
+  int heading_;
+  Vec low_, high_;
 };
 
 // The divergence bound of the run from q0 along the trajectory (see above).

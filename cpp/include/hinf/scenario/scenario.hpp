@@ -8,6 +8,7 @@
 #include <string>
 
 #include "hinf/control/analysis.hpp"
+#include "hinf/control/backstepping.hpp"
 #include "hinf/control/cascade.hpp"
 #include "hinf/control/metrics.hpp"
 #include "hinf/control/online_controller.hpp"
@@ -79,14 +80,19 @@ struct SamplingSpec {
 enum class Law {
   Hinf,    // the paper's H-infinity law (17)/(18), and (34) with measurements
   Lqr,     // the same design at gamma = inf; with [measurement] also the Kalman-Bucy filter
-  Cascade  // the cascaded ship baseline (control/cascade.hpp); with [measurement] on the H-infinity estimate
+  Cascade,      // the cascaded ship baseline (control/cascade.hpp); with [measurement] on the H-infinity estimate
+  Backstepping  // the backstepping ship baseline (control/backstepping.hpp); likewise
 };
 template <>
 struct EnumNames<Law> {
   static constexpr const char* what = "law";
-  static constexpr std::array<std::pair<Law, const char*>, 3> names{
-      {{Law::Hinf, "hinf"}, {Law::Lqr, "lqr"}, {Law::Cascade, "cascade"}}};
+  static constexpr std::array<std::pair<Law, const char*>, 4> names{{{Law::Hinf, "hinf"},
+                                                                     {Law::Lqr, "lqr"},
+                                                                     {Law::Cascade, "cascade"},
+                                                                     {Law::Backstepping, "backstepping"}}};
 };
+// True for the ship baselines (cascade, backstepping): laws without a Riccati design of their own.
+inline bool is_baseline(Law law) { return law == Law::Cascade || law == Law::Backstepping; }
 
 // A scenario: the model, the horizon, the desired trajectory, the law and its design, the
 // disturbance, the initial state, the measurement (output feedback) and the solver. Fields left
@@ -110,6 +116,7 @@ struct Scenario {
   Signal kappa = Signal(1.0);  // gain scaling kappa(t) of the law (17)/(18), > 0
   Law law = Law::Hinf;        // the tracking law
   CascadeGains cascade;       // the gains of the cascade law
+  BacksteppingGains backstepping;  // the gains of the backstepping law
   VectorSignal disturbance;   // w(t), nw channels (dim 0: all zero)
   bool worst_case = false;    // adds the worst-case disturbance gamma^-2 D' Z q_e of paper
                               // eq. (16) (Z of the H-infinity design at gamma, whatever the
@@ -126,7 +133,7 @@ struct Scenario {
                                                // over [t0, tf]
   SolverOptions solver;             // every integration: the Riccati equations and the closed loop
   double output_dt = 0.01;          // [output] dt
-  double divergence_factor = 1e3;   // [solver] divergence_factor (simulation.hpp)
+  double divergence_factor = 10.0;  // [solver] divergence_factor (simulation.hpp)
   double lost_track = 1.0;          // [solver] lost_track (m, > 0, may be inf): a run that ends
                                     // more than this farther from the desired path than it
                                     // started has status LostTrack (models with a position only)
