@@ -585,8 +585,10 @@ def test_cli_study_resumed_says_which_failed_runs_it_did_not_run_again(tmp_path)
     again = cli("study", path, "--out", tmp_path / "out", "--quiet")
     assert again.returncode == 0, again.stderr
     assert "(5 runs: completed 1, diverged 1, conjugate_point 1, coupling_violation 1, invalid_input 1)" in again.stdout
-    assert f"their invalid_input runs (1) were not run again; if a file was missing then, delete " \
-        f"{tmp_path / 'out'}/partial" in again.stdout
+    assert "their invalid_input runs (1) were refused for the scenario itself and were not run again" in again.stdout
+    # Each run that did not complete is listed with the command that runs it again alone.
+    assert "runs that did not complete (each runs again alone with its command):" in again.stdout
+    assert again.stdout.count("hinf-cpp run ") >= 4, again.stdout
 
 
 @pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
@@ -710,3 +712,121 @@ def test_plant_axes_perturb_the_simulated_plant_only(tmp_path):
         np.testing.assert_array_equal(result.Z0, nominal.Z0)  # the design is the nominal model's
         np.testing.assert_array_equal(result.metrics.rms_position_error_last_half,
                                       df["rms_position_error_last_half"][run])
+
+
+# ---- matrix parameters, laws that do not apply, files missing where a run ran ----
+
+FOSSEN = pathlib.Path(hc.scenario_path("fossen_vessel_turn"))
+
+
+def write_fossen_study(folder: pathlib.Path, body: str) -> pathlib.Path:
+    """A study over a copy of fossen_vessel_turn.toml (preset supply_vessel, no M or D written;
+    a 5-unit horizon for speed)."""
+    (folder / "fossen.toml").write_text(FOSSEN.read_text().replace("tf = 200.0", "tf = 5.0"))
+    path = folder / "study.toml"
+    path.write_text(textwrap.dedent(body))
+    return path
+
+
+def test_a_relative_axis_on_a_matrix_entry_takes_the_models_entry_as_its_base(tmp_path):
+    """plant.M[0][0] with neither [plant] nor [model] writing M: the base is the preset's m11
+    (1.1274, docs/vehicles.md), the plant's other entries are the model's, and the replay
+    command (which sets the whole matrix first) gives the row exactly."""
+    path = write_fossen_study(tmp_path, """\
+        [study]
+        scenario = "fossen.toml"
+        samples = 2
+        [[random]]
+        key = "plant.M[0][0]"
+        distribution = "uniform"
+        low = 0.8
+        high = 1.2
+        relative = true
+        """)
+    study = hs.load_study(path)
+    preset = hc.load_scenario(FOSSEN).model.named_parameters()
+    assert study.random[0].base == 1.1274 == preset["M[0][0]"]
+    df = hs.run_study(study, workers=1, progress=False)
+    assert (df["status"] == "completed").all()
+    rng = np.random.default_rng(np.random.SeedSequence(0).spawn(2)[1])
+    assert df["plant.M[0][0]"][1] == rng.uniform(0.8, 1.2) * 1.1274
+    plant = study.scenario(1).plant.named_parameters()
+    assert plant["M[0][0]"] == df["plant.M[0][0]"][1]
+    assert all(plant[name] == value for name, value in preset.items() if name != "M[0][0]")
+    assert study.model_arrays == {"plant.M": [[1.1274, 0.0, 0.0], [0.0, 1.8902, -0.0744], [0.0, -0.0744, 0.1278]]}
+    command = df["replay"][1]
+    assert command.startswith("hinf-cpp run ") and "--set 'plant.M=[[1.1274, 0.0, 0.0], " in command
+    if HINF_CPP.exists():
+        import shlex
+
+        out = tmp_path / "run.json"
+        done = subprocess.run([str(HINF_CPP)] + shlex.split(command)[1:] + ["--json", str(out)], capture_output=True,
+                              text=True, timeout=120)
+        assert done.returncode == 0, done.stderr
+        metrics = json.loads(out.read_text())["metrics"]
+        assert metrics["final_position_error"] == df["final_position_error"][1]
+
+
+def test_a_law_that_does_not_apply_to_the_model_is_an_error_when_the_study_is_read(tmp_path):
+    path = write_fossen_study(tmp_path, """\
+        [study]
+        scenario = "fossen.toml"
+        [[grid]]
+        key = "controller.law"
+        values = ["hinf", "lqr", "cascade"]
+        """)
+    with pytest.raises(ValueError) as error:
+        hs.load_study(path)
+    message = str(error.value)
+    assert message.startswith(f"{path}: [[grid]] 1: controller.law = \"cascade\" does not apply to the model "
+                              "'fossen_vessel'")
+    assert "remove \"cascade\" from the values of controller.law" in message and "\n" not in message
+    # The laws that apply: no error, and no row refused.
+    path.write_text(path.read_text().replace(', "cascade"', ""))
+    assert hs.load_study(path).runs == 2
+
+
+@pytest.mark.skipif(not HINF_CPP.exists(), reason="hinf-cpp is not installed next to this Python")
+def test_cli_a_law_that_does_not_apply_is_one_line_and_exit_status_2(tmp_path):
+    path = write_fossen_study(tmp_path, """\
+        [study]
+        scenario = "fossen.toml"
+        [[grid]]
+        key = ["controller.law", "feedback"]
+        values = [["hinf", "state"], ["cascade", "state"]]
+        """)
+    done = cli("study", path, "--out", tmp_path / "out", "--quiet")
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert "controller.law = \"cascade\" does not apply to the model 'fossen_vessel'" in done.stderr
+    assert not (tmp_path / "out" / "runs.parquet").exists()
+
+
+def test_a_chunk_refused_for_a_missing_file_is_run_again_on_resume(tmp_path):
+    """An invalid_input row whose file was missing where it ran (not about its values) is not
+    kept: its chunk runs again, and the study says how many chunks it ran again; a value the
+    reader refuses stays an invalid_input row that is kept."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    study = small_study(tmp_path)
+    expected = hs.run_study(study, workers=1, out=tmp_path, progress=False)
+    path = tmp_path / "partial" / "chunk-00001.parquet"
+    table = pq.read_table(path)
+    missing = "[plant] file: cannot read model description '/gone/model.json': No such file or directory"
+    table = table.set_column(table.schema.get_field_index("status"), "status",
+                             pa.array(["invalid_input"] + table["status"].to_pylist()[1:]))
+    table = table.set_column(table.schema.get_field_index("reason"), "reason",
+                             pa.array([missing] + table["reason"].to_pylist()[1:]))
+    pq.write_table(table, path)
+    resumed = hs.run_study(study, workers=1, out=tmp_path, progress=False)
+    pdt.assert_frame_equal(resumed, expected, check_exact=True)
+    assert resumed.attrs["reused_chunks"] == 1 and resumed.attrs["rerun_chunks"] == 1
+    assert resumed.attrs["reused_runs"] == 5
+    # A refused value is kept (it would be refused again).
+    table = pq.read_table(path)
+    table = table.set_column(table.schema.get_field_index("status"), "status",
+                             pa.array(["invalid_input"] + table["status"].to_pylist()[1:]))
+    pq.write_table(table, path)
+    kept = hs.run_study(study, workers=1, out=tmp_path, progress=False)
+    assert kept.attrs["reused_chunks"] == 2 and kept.attrs["rerun_chunks"] == 0
+    assert kept["status"][5] == "invalid_input"

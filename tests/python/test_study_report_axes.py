@@ -171,7 +171,10 @@ def test_a_gamma_inf_grid_finishes_with_every_output(tmp_path, monkeypatch):
     table = hs.run_study(study, workers=1, progress=False)
     figures = capture_figures(monkeypatch)
     written = report.write_study_outputs(study, table, tmp_path / "out")
-    assert [p.name for p in written] == ["runs.parquet", "runs.csv", "summary.md", "distribution.png", "gamma.png"]
+    assert [p.name for p in written] == ["runs.parquet", "runs.csv", "summary.md", "distribution.png",
+                                         "distribution.pdf", "gamma.png", "gamma.pdf"]
+    assert all(p.stat().st_size > 0 for p in written)
+    assert (tmp_path / "out" / "gamma.pdf").read_bytes().startswith(b"%PDF")
     ax = figures["gamma.png"].axes[0]
     assert tick_texts(ax) == ["5", "10", "inf"]
     assert list(ax.get_xticks()) == [5.0, 10.0, 15.0]  # one step of the grid right of 10
@@ -236,8 +239,10 @@ def test_the_region_of_attraction_has_a_panel_per_gamma_including_inf():
 def test_metric_axes_carry_their_units(sigma_table):
     distribution = report.distribution_figure(sigma_table, METRIC).axes[0]
     assert distribution.get_ylabel() == "RMS position error, last half [m]"
-    gamma = report.gamma_figure(sigma_table, "l2_gain").axes[0]
-    assert (gamma.get_ylabel(), gamma.get_xlabel()) == ("L2 gain [-]", "gamma [-]")
+    # A dimensionless metric of hc.metric_table() (its name and label read there, not written here).
+    ratio = next(d for d in hc.metric_table() if d.unit == "-")
+    gamma = report.gamma_figure(sigma_table, ratio.name).axes[0]
+    assert (gamma.get_ylabel(), gamma.get_xlabel()) == (f"{ratio.label} [-]", "gamma [-]")
     heading = report.gamma_figure(sigma_table, "rms_heading_error_last_half").axes[0]
     assert heading.get_ylabel() == "RMS heading error, last half [rad]"
     # A column that is not a metric of hc.metric_table() keeps its name.

@@ -6,7 +6,8 @@ and plots a table (it imports matplotlib).
 """
 
 from hinf_cpp.studies.study import (STATUSES, ClusterError, GridAxis, RandomAxis, Study, load_study, local_cores,
-                                    replay, replay_command, run_study, study_from_dict, study_table_schema)
+                                    replay, replay_command, replay_commands, run_study, study_from_dict,
+                                    study_table_schema)
 
 __all__ = ["STATUSES", "ClusterError", "GridAxis", "RandomAxis", "Study", "load_study", "local_cores", "replay",
-           "replay_command", "run_study", "study_from_dict", "study_table_schema"]
+           "replay_command", "replay_commands", "run_study", "study_from_dict", "study_table_schema"]

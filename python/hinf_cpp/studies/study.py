@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import concurrent.futures
 import contextlib
+import copy
 import dataclasses
 import functools
 import hashlib
@@ -49,6 +50,7 @@ __all__ = [
     "local_cores",
     "replay",
     "replay_command",
+    "replay_commands",
     "run_study",
     "study_from_dict",
     "study_table_schema",
@@ -229,6 +231,10 @@ class Study:
         compiles the source, or writes the Python file, into its own cache and runs that
         model, so no worker needs the model folder (default: none). A Python model file
         travels alone: modules it imports from beside it must be installed on the workers.
+    model_arrays : dict, optional
+        The array parameters that an axis indexes into (``plant.M[0][0]``) but the base
+        scenario does not write, written whole into `base` from the model ("plant.M": the
+        matrix); the replay command sets them before the entry (default: none).
 
     Examples
     --------
@@ -257,6 +263,7 @@ class Study:
     report: dict
     trust_code: bool = False
     model_files: dict = dataclasses.field(default_factory=dict)
+    model_arrays: dict = dataclasses.field(default_factory=dict)
 
     @property
     def grid_shape(self) -> tuple[int, ...]:
@@ -435,6 +442,75 @@ def _on_this_machine(study: Study) -> Study:
     return study if base is study.base else dataclasses.replace(study, base=base)
 
 
+def _model_parameters(scenario: _core.Scenario, head: str) -> dict:
+    """The named parameters of the scenario's plant (head "plant", when it has one) or model:
+    numbers by key, a matrix entry as NAME[i][j] (Model.named_parameters())."""
+    vehicle = getattr(scenario, "plant", None) if head == "plant" else None
+    vehicle = vehicle if vehicle is not None else scenario.model
+    if hasattr(vehicle, "named_parameters"):
+        return dict(vehicle.named_parameters())
+    parameters = vehicle.parameters()
+    if not isinstance(parameters, dict):
+        parameters = {name: getattr(parameters, name) for name in dir(parameters)
+                      if not name.startswith("_") and isinstance(getattr(parameters, name), (int, float))}
+    return parameters
+
+
+def _array_parameter(parameters: dict, name: str) -> list | None:
+    """A matrix (or vector) parameter as nested lists from its entries NAME[i][j] (None: none)."""
+    entries = {}
+    for key, value in parameters.items():
+        match = re.fullmatch(re.escape(name) + r"((?:\[\d+\])+)", key)
+        if match:
+            entries[tuple(int(i) for i in re.findall(r"\d+", match.group(1)))] = float(value)
+    if not entries or len({len(index) for index in entries}) != 1:
+        return None
+
+    def build(prefix: tuple) -> list:
+        depth = len(prefix)
+        size = 1 + max(index[depth] for index in entries if index[:depth] == prefix)
+        if depth + 1 == len(next(iter(entries))):
+            return [entries.get(prefix + (i,), 0.0) for i in range(size)]
+        return [build(prefix + (i,)) for i in range(size)]
+    return build(())
+
+
+def _with_model_arrays(base: dict, keys: list[str], source: str, trust_code: bool) -> tuple[dict, dict]:
+    """The base document with every array parameter that an axis key indexes into (plant.M[0][0],
+    model.D[1][2]) written out whole when the scenario does not write it: for plant.X, [model]'s X
+    (when [plant] has the same kind), else the model's own parameter (Model.named_parameters(),
+    the kind's default or its preset's). An axis then sets one entry of the model's matrix, and a
+    relative axis takes that entry as its base (docs/studies.md). Also the arrays written, by key
+    ("plant.M": its value), for the replay command (set before the entry)."""
+    scenario = None
+    written = {}
+    for key in keys:
+        try:
+            path = key_path(key)
+        except ValueError:
+            continue  # said where the key is read
+        if not (len(path) >= 3 and path[0] in ("plant", "model") and isinstance(path[1], str)
+                and isinstance(path[2], int)):
+            continue
+        head, name = path[0], path[1]
+        table = base.get(head) if isinstance(base.get(head), dict) else {}
+        if name in table:
+            continue
+        model = base.get("model") if isinstance(base.get("model"), dict) else {}
+        value = None
+        if head == "plant" and ("kind" not in table or table.get("kind") == model.get("kind")) and name in model:
+            value = copy.deepcopy(model[name])
+        else:
+            if scenario is None:
+                scenario = scenario_from_dict(base, source, trust_code=trust_code)
+            value = _array_parameter(_model_parameters(scenario, head), name)
+        if value is None:
+            continue  # not an array parameter of the model: the reader says what is wrong
+        base = {**base, head: {**table, name: value}}
+        written[f"{head}.{name}"] = value
+    return base, written
+
+
 def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> float:
     """The base value of a relative axis: the key in the scenario; for plant.X, else [model]'s X
     (when [plant] has the same kind), else the model's parameter X (Model.named_parameters(),
@@ -455,15 +531,7 @@ def _relative_base(base: dict, scenario: _core.Scenario | None, key: str) -> flo
             return float(value)
         raise ValueError(f"relative = true: '{candidate}' is {value!r} in the scenario, not a number")
     if head in ("plant", "model") and rest and scenario is not None:
-        vehicle = getattr(scenario, "plant", None) if head == "plant" else None
-        vehicle = vehicle if vehicle is not None else scenario.model
-        if hasattr(vehicle, "named_parameters"):
-            parameters = dict(vehicle.named_parameters())
-        else:
-            parameters = vehicle.parameters()
-            if not isinstance(parameters, dict):
-                parameters = {name: getattr(parameters, name) for name in dir(parameters)
-                              if not name.startswith("_") and isinstance(getattr(parameters, name), (int, float))}
+        parameters = _model_parameters(scenario, head)
         if rest in parameters:
             return float(parameters[rest])
         raise ValueError(f"relative = true: the model has no parameter '{rest}' "
@@ -618,6 +686,13 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
             raise ValueError(f"{at}: controller.gamma values must be numbers (gamma.png draws them)")
         grid.append(axis)
 
+    random_keys = [table.get("key") for table in definition.get("random", [])
+                   if isinstance(table, dict) and isinstance(table.get("key"), str)]
+    try:
+        base, model_arrays = _with_model_arrays(base, [key for axis in grid for key in axis.keys] + random_keys,
+                                                scenario_source, allow_code)
+    except ValueError as error:
+        raise ValueError(f"{where}: [study] scenario: {error}") from None
     base_scenario = None
     random = []
     for i, table in enumerate(definition.get("random", [])):
@@ -675,12 +750,47 @@ def study_from_dict(definition: dict, source: str = "<study>", folder: str | os.
 
     study = Study(name=str(head.get("name", pathlib.Path(source).stem)), description=str(head.get("description", "")),
                   source=scenario_source, base=base, seed=seed, samples=samples, grid=tuple(grid),
-                  random=tuple(random), chunk=chunk, definition=definition, report=report, trust_code=allow_code)
+                  random=tuple(random), chunk=chunk, definition=definition, report=report, trust_code=allow_code,
+                  model_arrays=model_arrays)
     study.scenario(0)  # a key the reader refuses, or a value it cannot take, is an error here
+    _check_laws(study, where)
     if allow_code:  # the model files it names travel with it: a Dask worker needs neither path nor folder
         base, carried = _carry_models(base, scenario_source)
         study = dataclasses.replace(study, base=base, model_files=carried)
     return study
+
+
+LAW_KEY = "controller.law"
+
+
+def _check_laws(study: Study, where: str) -> None:
+    """Every value of a controller.law grid axis applies to the study's model: the scenario of run 0
+    with only its law changed is read and checked whole (Scenario.validate, as a run does: the
+    cascade law is written for the ship alone), so that a law that does not apply is an error
+    before any run, not an invalid_input row per run. A problem that run 0 has with its own law
+    too is not the law's: its rows say it."""
+    document = None
+    for number, axis in enumerate(study.grid, start=1):
+        if LAW_KEY not in axis.keys:
+            continue
+        for law in dict.fromkeys(axis.column(LAW_KEY)):
+            if document is None:
+                document = study.document(0)
+                try:
+                    study.scenario(0).resolved().validate()
+                except ValueError:
+                    return  # run 0 is refused whatever its law
+            changed = copy.deepcopy(document)
+            try:
+                set_key(changed, LAW_KEY, law)
+                scenario_from_dict(changed, study.source, trust_code=study.trust_code).resolved().validate()
+            except ValueError as error:
+                model = document.get("model", {}).get("kind") if isinstance(document.get("model"), dict) else None
+                model = model or study.scenario(0).model.name()
+                raise ValueError(f"{where}: [[grid]] {number}: controller.law = {toml_value(law)} does not apply "
+                                 f"to the model '{model}' of the base scenario ({error}): remove "
+                                 f"{toml_value(law)} from the values of controller.law, or study that law "
+                                 "with a model it is written for") from None
 
 
 def _numbers(values: list) -> bool:
@@ -691,15 +801,15 @@ def _check_report(report: Any, grid: list[GridAxis], keys: set[str], where: str)
     """[report] checked as the study is read (hinf_cpp.studies.report uses it after the runs)."""
     if not isinstance(report, dict):
         raise ValueError(f"{where} must be a table")
-    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric", "group_by"},
-          where)
+    _only(report, {"metrics", "distribution", "roa", "position_tol", "heading_tol", "gamma_metric", "group_by",
+                   "heatmap", "heatmap_metric", "units"}, where)
     group_by = report.get("group_by", [])
     if not (isinstance(group_by, list) and all(isinstance(k, str) and k in keys for k in group_by)):
         raise ValueError(f"{where} group_by must list grid or random keys of the study")
     metrics = report.get("metrics", [])
     if not (isinstance(metrics, list) and all(isinstance(name, str) for name in metrics)):
         raise ValueError(f"{where} metrics must be a list of metric names, got {metrics!r}")
-    for name in metrics + [report.get("distribution"), report.get("gamma_metric")]:
+    for name in metrics + [report.get("distribution"), report.get("gamma_metric"), report.get("heatmap_metric")]:
         if name is not None and name not in METRIC_NAMES:
             raise ValueError(f"{where}: no metric {name!r} (metrics: {', '.join(METRIC_NAMES)})")
     for name in ("position_tol", "heading_tol"):
@@ -713,6 +823,19 @@ def _check_report(report: Any, grid: list[GridAxis], keys: set[str], where: str)
             values = next((axis.column(key) for axis in grid if key in axis.keys), [])
             if not _numbers(values):
                 raise ValueError(f"{where} roa: the values of '{key}' must be numbers (roa.png draws them)")
+    heatmap = report.get("heatmap")
+    if heatmap is not None:
+        axes = [next((i for i, axis in enumerate(grid) if key in axis.keys), None) if isinstance(key, str) else None
+                for key in (heatmap if isinstance(heatmap, list) else [])]
+        if not (len(axes) == 2 and None not in axes and axes[0] != axes[1]):
+            raise ValueError(f"{where} heatmap must name two grid keys of different [[grid]] axes [x, y], "
+                             f"got {heatmap!r}")
+    units = report.get("units", {})
+    if not (isinstance(units, dict) and all(isinstance(unit, str) for unit in units.values())):
+        raise ValueError(f"{where} units must be a table of key = \"unit\" (e.g. \"measurement.sigma\" = \"m\")")
+    unknown = sorted(set(units) - keys)
+    if unknown:
+        raise ValueError(f"{where} units: '{unknown[0]}' is not a grid or random key of the study")
     return report
 
 
@@ -884,6 +1007,18 @@ def _to_pandas(table):
     return table.to_pandas(types_mapper={pa.int64(): pd.Int64Dtype()}.get)
 
 
+# What the reader says of a file the scenario names (a model.json, its library, a Python model
+# file or module) that is missing or unreadable where the run ran: not about the run's values.
+_FILE_PROBLEM = re.compile(r"No such file or directory|Permission denied|Input/output error|Stale file handle"
+                           r"|Too many open files|cannot load '.*' as a shared library|cannot import ")
+
+
+def _outside_the_scenario(reason: str | None) -> bool:
+    """Whether a run refused as invalid_input was refused for a file that was missing or could
+    not be read where it ran (which a resumed study runs again), not for its values."""
+    return bool(reason) and _FILE_PROBLEM.search(reason) is not None
+
+
 _MARKER_TEXT = ("The saved runs of a hinf_cpp study (hinf-cpp study --out, docs/studies.md). A study deletes "
                 "and rewrites its chunk files here.\n")
 
@@ -978,9 +1113,11 @@ class _Partial:
         return self.folder / f"chunk-{chunk:05d}.parquet"
 
     def load(self, chunk: int):
-        """The saved table of a chunk, or None (not saved, unreadable, of another study, or with
-        a row of status "failed": an exception that is not about the run's values, which
-        may not happen again)."""
+        """The saved table of a chunk; None when it is not saved, unreadable or of another
+        study; "rerun" when a run of it failed for a reason outside the scenario, which may
+        not happen again: a row of status "failed" (an exception that is not about the run's
+        values) or an "invalid_input" row whose file was missing or unreadable where it ran
+        (:func:`_outside_the_scenario`)."""
         import pyarrow.parquet as pq
 
         path = self.path(chunk)
@@ -992,8 +1129,12 @@ class _Partial:
             return None
         if (table.schema.metadata or {}).get(self._HASH) != self.hash.encode():
             return None
-        if not table.schema.equals(study_table_schema(self.study)) or "failed" in table["status"].to_pylist():
+        if not table.schema.equals(study_table_schema(self.study)):
             return None
+        statuses, reasons = table["status"].to_pylist(), table["reason"].to_pylist()
+        if any(status == "failed" or (status == "invalid_input" and _outside_the_scenario(reason))
+               for status, reason in zip(statuses, reasons)):
+            return "rerun"
         return table.replace_schema_metadata(None)
 
     def save(self, chunk: int, table) -> None:
@@ -1119,7 +1260,7 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     out : str or os.PathLike, optional
         Keeps finished chunks in out/partial/ so that an interrupted study resumes where it
         stopped (a study that changed starts over; a chunk of another study, or with a row of
-        status "failed", runs again). The folder is locked while the study runs; an
+        status "failed" or refused for a missing file, runs again). The folder is locked while the study runs; an
         out/partial that this function did not make is refused, not deleted.
     progress : bool or callable, optional
         True (default): a progress line on a terminal; False: none; a callable is called as
@@ -1128,11 +1269,15 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     Returns
     -------
     pandas.DataFrame
-        The columns of :func:`study_table_schema` (integers as nullable Int64).
+        The columns of :func:`study_table_schema` (integers as nullable Int64), then
+        ``replay``: the command that runs the row alone (:func:`replay_commands`).
         ``attrs["restarted"]`` is True when saved chunks in `out` were of another study and
         were deleted; ``attrs["reused_chunks"]`` is the number of saved chunks used, of
-        ``attrs["chunks"]``, and ``attrs["reused_statuses"]`` the statuses of their runs
-        (status -> count; their ``invalid_input`` rows were not run again).
+        ``attrs["chunks"]``, ``attrs["reused_runs"]`` their runs and
+        ``attrs["reused_statuses"]`` the statuses of those (status -> count; their
+        ``invalid_input`` rows were not run again); ``attrs["rerun_chunks"]`` counts the saved
+        chunks run again because a run of theirs failed for a reason outside the scenario
+        (status "failed", or a file missing where it ran).
 
     Raises
     ------
@@ -1171,10 +1316,13 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     chunks = [(start, min(start + study.chunk, study.runs)) for start in range(0, study.runs, study.chunk)]
     with _Partial(pathlib.Path(out), study) if out is not None else contextlib.nullcontext() as partial:
         tables: dict[int, Any] = {}
+        rerun_chunks = 0  # saved, but run again: a run failed for a reason outside the scenario
         if partial is not None:
             for index in range(len(chunks)):
                 table = partial.load(index)
-                if table is not None:
+                if isinstance(table, str):
+                    rerun_chunks += 1
+                elif table is not None:
                     tables[index] = table
         todo = [index for index in range(len(chunks)) if index not in tables]
         reused_chunks = len(tables)
@@ -1268,9 +1416,12 @@ def run_study(study: Study | str | os.PathLike, workers: int | None = None, clie
     table = pa.concat_tables([tables[i] for i in range(len(chunks))]) if chunks else \
         study_table_schema(study).empty_table()
     frame = _to_pandas(table)
+    frame["replay"] = replay_commands(study)
     frame.attrs["restarted"] = bool(partial is not None and partial.restarted)
     frame.attrs["reused_chunks"] = reused_chunks
     frame.attrs["reused_statuses"] = reused_statuses
+    frame.attrs["reused_runs"] = int(sum(reused_statuses.values()))
+    frame.attrs["rerun_chunks"] = rerun_chunks
     frame.attrs["chunks"] = len(chunks)
     return frame
 
@@ -1322,7 +1473,9 @@ def replay_command(study: Study, run: int, scenario: str | None = None) -> str:
 
     ``--set KEY=VALUE`` for each value of its row (floats written exactly), "feedback" last,
     and ``--seed N`` for a drawn measurement seed (left out for a state-feedback run, which
-    has no noise).
+    has no noise); first, ``--set`` of each array parameter that the study wrote whole into
+    its base scenario (``Study.model_arrays``: an axis ``plant.M[0][0]`` of a scenario that
+    does not write M).
 
     Parameters
     ----------
@@ -1357,11 +1510,87 @@ def replay_command(study: Study, run: int, scenario: str | None = None) -> str:
 
     document = study.document(run)
     settings = study.settings(run)
-    parts = ["hinf-cpp", "run", shlex.quote(scenario or study.source)]
+    parts = ["hinf-cpp", "run", shlex.quote(scenario or study.source), *_set_arguments(study.model_arrays.items())]
     ordered = [s for s in settings if s[0] != FEEDBACK_KEY] + [s for s in settings if s[0] == FEEDBACK_KEY]
-    for key, value in ordered:
-        if key != SEED_KEY:
-            parts += ["--set", shlex.quote(f"{key}={toml_value(value)}")]
+    parts += _set_arguments(ordered)
     if any(key == SEED_KEY for key, _ in settings) and "measurement" in document:
         parts += ["--seed", str(document["measurement"]["seed"])]
     return " ".join(parts)
+
+
+def _inline_toml(value: Any) -> str:
+    """A value as TOML text on one line (``--set`` takes one line): arrays inline."""
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_inline_toml(v) for v in value) + "]"
+    return toml_value(value)
+
+
+def _set_arguments(settings) -> list[str]:
+    """``--set KEY=VALUE`` arguments of (key, value) pairs, quoted for a POSIX shell; the
+    measurement seed is left to ``--seed``."""
+    import shlex
+
+    return [part for key, value in settings if key != SEED_KEY
+            for part in ("--set", shlex.quote(f"{key}={_inline_toml(value)}"))]
+
+
+def replay_commands(study: Study, scenario: str | None = None) -> list[str]:
+    """:func:`replay_command` of every run of a study, in run order (the table's ``replay``
+    column).
+
+    The same text as ``replay_command(study, run, scenario)`` for each run, made from the
+    settings of each grid point and of each sample once (a study of 1000 samples at 3 grid
+    points makes 3 + 1000 pieces, not 3000 documents).
+
+    Parameters
+    ----------
+    study : Study
+        The study.
+    scenario : str, optional
+        The scenario file as written in the commands (default ``study.source``).
+
+    Returns
+    -------
+    list of str
+        One command per run.
+
+    Examples
+    --------
+    >>> from hinf_cpp.studies import study_from_dict
+    >>> from hinf_cpp.studies.study import replay_commands
+    >>> study = study_from_dict({
+    ...     "study": {"name": "gammas", "scenario": str(hc.scenario_path("paper_fig1"))},
+    ...     "grid": [{"key": "controller.gamma", "values": [5.0, 10.0]}]})
+    >>> for command in replay_commands(study, scenario="paper_fig1.toml"):
+    ...     print(command)
+    hinf-cpp run paper_fig1.toml --set controller.gamma=5.0
+    hinf-cpp run paper_fig1.toml --set controller.gamma=10.0
+    """
+    import shlex
+
+    head = " ".join(["hinf-cpp", "run", shlex.quote(scenario or study.source),
+                     *_set_arguments(study.model_arrays.items())])
+    # run = grid point x samples + sample: the grid keys' part once per grid point, the random
+    # keys' part once per sample, "feedback" last, --seed when the run keeps [measurement].
+    seeded = SEED_KEY in study.columns
+    points = []
+    for point in range(study.grid_points):
+        run = point * study.samples
+        settings = study.settings(run)
+        settings = settings[:len(settings) - len(study.random)]
+        measured = seeded and "measurement" in study.document(run)
+        points.append((" ".join(_set_arguments([s for s in settings if s[0] != FEEDBACK_KEY])),
+                       " ".join(_set_arguments([s for s in settings if s[0] == FEEDBACK_KEY])),
+                       measured, dict(settings).get(SEED_KEY)))
+    samples = []
+    for sample in range(study.samples):
+        settings = study.settings(sample)  # grid point 0: its random draws are those of every grid point
+        drawn = settings[len(settings) - len(study.random):]
+        samples.append((" ".join(_set_arguments(drawn)), dict(drawn).get(SEED_KEY)))
+    commands = []
+    for grid_part, feedback_part, measured, grid_seed in points:
+        for random_part, drawn_seed in samples:
+            seed = drawn_seed if drawn_seed is not None else grid_seed
+            parts = (head, grid_part, random_part, feedback_part, f"--seed {seed}" if measured else "")
+            commands.append(" ".join(part for part in parts if part))
+    return commands
