@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The main job: set-up (scripts/setup.sh), then the paper's runs with their figures, results
-# files and a metrics table in out/paper/ (or the folder given as the first argument), and the
+# The main job: set-up (scripts/setup.sh), then the paper's runs with their figures (the x-y
+# paths, and per law the tracking errors and the inputs against time), results files and a
+# metrics table in out/paper/ (or the folder given as the first argument), an animation of
+# Figure 1 (fig1_run.gif, docs/results.md; about a second), and the
 # built-in vehicles' runs (docs/vehicles.md) in its subfolder vehicles/ and the planned
 # scenarios (docs/planning.md) in planned/ (a few seconds more each), and a small study (50 noise
 # seeds of Figure 2 per law, docs/studies.md) in studies/quick_monte_carlo/ (a few seconds; the
@@ -17,6 +19,7 @@ cd "$ROOT"
 bash scripts/setup.sh
 OUT="${1:-out/paper}"
 .venv/bin/hinf-cpp paper --out "$OUT"
+.venv/bin/hinf-cpp animate scenarios/paper_fig1.toml -o "$OUT/fig1_run.gif"
 .venv/bin/hinf-cpp vehicles --out "$OUT/vehicles"
 .venv/bin/hinf-cpp planned --out "$OUT/planned"
 .venv/bin/hinf-cpp study studies/quick_monte_carlo.toml --out "$OUT/studies/quick_monte_carlo"

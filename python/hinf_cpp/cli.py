@@ -1,16 +1,19 @@
 """The ``hinf-cpp`` command line.
 
     hinf-cpp run SCENARIO.toml [--set KEY=VALUE ...] [--seed N] [--json OUT.json] [--csv OUT.csv] [--npz OUT.npz]
-                 [--plot OUT.png] [--gamma-star]
+                 [--plot OUT.png] [--marine] [--gamma-star]
     hinf-cpp plan SCENARIO.toml -o PLANNED.toml [--json REPORT.json] [--plot OUT.png] [--no-cache]
     hinf-cpp compare SCENARIO.toml [--controllers hinf,lqr,cascade] [--feedback state,output]
-                     [--worst-case] [--json OUT.json] [--plot OUT.png] [--quiet]
-    hinf-cpp recovery [SCENARIO.toml ...] [--controllers ...] [--json OUT.json] [--plot OUT.png] [--quiet]
-    hinf-cpp report SCENARIO.toml --out DIR [--controllers ...] [--quiet]
+                     [--worst-case] [--json OUT.json] [--plot OUT.png] [--marine] [--quiet]
+    hinf-cpp recovery [SCENARIO.toml ...] [--controllers ...] [--json OUT.json] [--plot OUT.png] [--marine] [--quiet]
+    hinf-cpp report SCENARIO.toml --out DIR [--controllers ...] [--pdf] [--marine] [--quiet]
     hinf-cpp gamma-star SCENARIO.toml [--output-feedback] [--json OUT.json] [bracket options]
     hinf-cpp certify SCENARIO.toml [--json OUT.json]
     hinf-cpp sweep-gamma SCENARIO.toml [--plot OUT.png] [--json OUT.json] [--count N] [--quiet]
-    hinf-cpp paper [--out DIR] [--quiet]
+    hinf-cpp gain-frequency SCENARIO.toml -o OUTDIR [--laws hinf,lqr] [--channels 1,2,3]
+                            [--frequencies LOW:HIGH:COUNT | W1,W2,...] [--amplitude A] [--quiet]
+    hinf-cpp paper [--out DIR] [--marine] [--quiet]
+    hinf-cpp animate SCENARIO.toml -o RUN.gif|RUN.mp4 [--frames N] [--fps F] [--width PIXELS] [--marine]
     hinf-cpp vehicles [--out DIR] [--quiet]
     hinf-cpp planned [--out DIR] [--no-cache] [--quiet]
     hinf-cpp study STUDY.toml --out DIR [--workers N | --scheduler ADDRESS] [--quiet]
@@ -41,6 +44,7 @@ import time
 import warnings
 
 from hinf_cpp import _core
+from hinf_cpp.output.animation import DEFAULT_FPS, DEFAULT_FRAMES, DEFAULT_WIDTH, MAX_FPS, MAX_FRAMES
 from hinf_cpp.output.files import check_output_folder, check_output_path, write_text
 from hinf_cpp.analysis.comparison import Feedback
 from hinf_cpp.output.progress import Progress
@@ -199,7 +203,7 @@ def cmd_run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         from hinf_cpp.output.plotting import save_figure, xy_figure
 
-        save_figure(xy_figure(result, waypoints=_planned_waypoints(planned)), args.plot)
+        save_figure(xy_figure(result, waypoints=_planned_waypoints(planned), marine=args.marine), args.plot)
     print(summary(result))
     if result.simulation.status != _core.RunStatus.completed:
         print(f"hinf-cpp: warning: the run {result.simulation.status.name}: {result.simulation.status_message}",
@@ -341,7 +345,7 @@ def cmd_sweep_gamma(args: argparse.Namespace) -> int:
                             progress=progress)
     print(f"scenario {scenario.name}: gamma* = {sweep.gamma_star:.6g}")
     print(f"  {'gamma':>10}  {'L2 gain':>10}  {'L_gamma':>12}")
-    for g, gain, cost in zip(sweep.gammas, sweep.l2_gain, sweep.cost):
+    for g, gain, cost in zip(sweep.gammas, sweep.response_ratio, sweep.cost):
         print(f"  {g:10.5g}  {gain:10.5g}  {cost:12.5g}")
     if args.plot is not None:
         save_figure(sweep_figure(sweep), args.plot)
@@ -351,12 +355,81 @@ def cmd_sweep_gamma(args: argparse.Namespace) -> int:
     return 0
 
 
-def metrics_markdown(rows: list[tuple[str, _core.RunResult]]) -> str:
-    """A Markdown table with one column per run."""
+def _frequency_grid(text: str) -> list[float]:
+    """--frequencies: LOW:HIGH:COUNT (log-spaced, rad/s) or a comma-separated list (rad/s)."""
+    import numpy as np
+
+    def bad(why: str) -> argparse.ArgumentTypeError:
+        return argparse.ArgumentTypeError(f"invalid frequencies '{text}': {why}; give LOW:HIGH:COUNT "
+                                          "(log-spaced, rad/s) or a comma-separated list such as 0.1,1,10")
+    try:
+        if ":" in text:
+            parts = text.split(":")
+            if len(parts) != 3:
+                raise bad("three fields LOW:HIGH:COUNT are needed")
+            low, high, count = float(parts[0]), float(parts[1]), int(parts[2])
+            if not (0 < low < high < math.inf) or count < 2:
+                raise bad("0 < LOW < HIGH and COUNT >= 2 are needed")
+            return [float(x) for x in np.geomspace(low, high, count)]
+        values = [float(part) for part in text.split(",")]
+    except ValueError:
+        raise bad("not numbers") from None
+    if not all(0 < x < math.inf for x in values):
+        raise bad("every frequency must be a finite number > 0")
+    return values
+
+
+def _channel_list(text: str) -> list[int]:
+    try:
+        values = [int(part) for part in text.split(",")]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"invalid channels '{text}': comma-separated channel numbers "
+                                         "counted from 1 (w1, w2, ...), such as 1,2,3") from None
+    return values
+
+
+def cmd_gain_frequency(args: argparse.Namespace) -> int:
+    from hinf_cpp.analysis.attenuation import frequency_figure, gain_against_frequency
+    from hinf_cpp.analysis.comparison import parse_controllers
+    from hinf_cpp.output.plotting import save_figure
+
+    laws = parse_controllers(args.laws)
+    _check_outputs(folders=[args.out])
+    scenario = load_scenario(args.scenario)
+    with Progress(quiet=args.quiet) as progress:
+        table = gain_against_frequency(scenario, laws, channels=args.channels, frequencies=args.frequencies,
+                                       amplitude=args.amplitude, progress=progress)
+    out = pathlib.Path(args.out)
+    print(f"scenario {scenario.name}: measured gain of the nonlinear closed loop for w_c = {args.amplitude:g} "
+          "sin(omega (t - t0)) on one channel, from the desired start; bound: the law's induced L2 gain")
+    print(f"  {'law':<5} {'channel':>7}  {'omega':>9}  {'gain':>8}  {'bound':>8}  status")
+    for row in table.itertuples():
+        print(f"  {row.law:<5} {'w' + str(row.channel):>7}  {row.omega:9.4g}  {row.gain:8.4g}  {row.bound:8.4g}  "
+              f"{row.status}")
+    csv = out / "gain_frequency.csv"
+    write_text(csv, table.to_csv(index=False))
+    written = [csv]
+    for channel in sorted(set(table["channel"])):
+        written.append(save_figure(frequency_figure(table, channel, f"{scenario.name}: gain against frequency, "
+                                                                    f"disturbance channel w{channel}"),
+                                   out / f"gain_frequency_w{channel}.png"))
+    print(f"wrote {', '.join(str(path) for path in written)}")
+    return 0
+
+
+def metrics_markdown(rows: list[tuple[str, _core.RunResult]], alone: list[float] | None = None) -> str:
+    """A Markdown table with one column per run; `alone`, one per run, is the disturbance's gain
+    of the same run started on the desired trajectory (the run's own is NaN from elsewhere),
+    shown next to gamma."""
     header = "| metric | " + " | ".join(label for label, _ in rows) + " |"
     lines = [header, "|---" * (len(rows) + 1) + "|"]
     lines.append("| gamma | " + " | ".join(_format(r.gamma) for _, r in rows) + " |")
+    gains = alone if alone is not None else [r.metrics.disturbance_gain for _, r in rows]
+    if any(math.isfinite(g) for g in gains):
+        lines.append("| disturbance_gain (from the desired start) | " + " | ".join(_format(g) for g in gains) + " |")
     for name in METRIC_NAMES:
+        if name == "disturbance_gain":
+            continue
         values = [getattr(r.metrics, name) for _, r in rows]
         if all(not math.isfinite(v) for v in values):
             continue
@@ -405,7 +478,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
         runs = comparison.results()
         if not runs:
             raise _core.HinfError("every run failed: nothing to plot")
-        save_figure(paths_figure(runs), args.plot)
+        save_figure(paths_figure(runs, marine=args.marine), args.plot)
         print(f"wrote {args.plot}")
     return 0
 
@@ -425,20 +498,20 @@ def cmd_recovery(args: argparse.Namespace) -> int:
                                heading_tolerance=math.radians(args.heading_tol), progress=progress)
     definitions = study.to_dict()["definitions"]
     print("recovery from poor initial conditions")
-    for key in ("recovers", "turns_around", "settling_time"):
+    for key in ("status", "recovers", "turns_around", "settling_time"):
         print(f"  {key.replace('_', ' ')}: {definitions[key]}")
     print()
     print(text_table(*study.table()), end="")
     for v in study.verdicts:
-        if v.error:
-            print(f"  {v.controller.name} on {v.scenario} failed: {v.error}")
+        if v.status != "completed":
+            print(f"  {v.controller.name} on {v.scenario} {v.status}: {v.error}")
         elif v.turns_around:
             print(f"  {v.controller.name} on {v.scenario} turns around: {v.turn.reason}")
     if args.json is not None:
         write_text(args.json, json.dumps(study.to_dict(), indent=2) + "\n")
         print(f"wrote {args.json}")
     if args.plot is not None:
-        save_figure(recovery_figure(study), args.plot)
+        save_figure(recovery_figure(study, marine=args.marine), args.plot)
         print(f"wrote {args.plot}")
     return 0
 
@@ -452,7 +525,7 @@ def cmd_report(args: argparse.Namespace) -> int:
     scenario = load_scenario(args.scenario)
     with Progress(quiet=args.quiet) as progress:
         report = write_report(scenario, args.out, controllers, feedback=args.feedback,
-                              worst_case=True if args.worst_case else None, pdf=args.pdf,
+                              worst_case=True if args.worst_case else None, pdf=args.pdf, marine=args.marine,
                               progress=progress)
     print(_comparison_header(report.comparison))
     notes = _comparison_notes(report.comparison)
@@ -510,12 +583,12 @@ def cmd_export_controller(args: argparse.Namespace) -> int:
 def cmd_paper(args: argparse.Namespace) -> int:
     from hinf_cpp.scenario import scenario_path
     from hinf_cpp.analysis.comparison import compare
-    from hinf_cpp.output.plotting import paths_figure, save_figure, xy_figure
+    from hinf_cpp.output.plotting import controls_figure, errors_figure, paths_figure, save_figure, xy_figure
 
     _check_outputs(folders=[args.out])
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    rows = []
+    rows, alone = [], []
     scenarios = {}
     for figure, name in [("Figure 1", "paper_fig1"), ("Figure 2", "paper_fig2")]:
         scenarios[name] = load_scenario(scenario_path(name))
@@ -523,22 +596,27 @@ def cmd_paper(args: argparse.Namespace) -> int:
         stem = name.replace("paper_", "")
         write_text(out / f"{stem}.json", _core.results_json(result) + "\n")
         write_text(out / f"{stem}.csv", _core.results_csv(result))
-        save_figure(xy_figure(result, title=f"Paper {figure}: {result.scenario_name}"), out / f"{stem}_xy.png")
+        save_figure(xy_figure(result, title=f"Paper {figure}: {result.scenario_name}", marine=args.marine),
+                    out / f"{stem}_xy.png")
         print(summary(result))
         rows.append((figure, result))
-    table = metrics_markdown(rows)
+        # The disturbance's own gain: the same run from the desired start.
+        from_desired = scenarios[name].copy()
+        from_desired.initial_q0 = from_desired.desired_q0
+        alone.append(_core.run_scenario(from_desired).metrics.disturbance_gain)
+    table = metrics_markdown(rows, alone)
     write_text(out / "metrics.md", table)
     print()
     print(table, end="")
 
-    # The three laws on Figure 1 (state feedback) and on Figure 2 (output feedback).
+    # The laws on Figure 1 (state feedback) and on Figure 2 (output feedback).
     sections = ["# The tracking laws compared on the paper's runs", "",
                 "hinf: the paper's H-infinity law (gamma = 5); lqr: the same design at gamma = inf (with "
-                "measurements, the Kalman-Bucy filter); cascade: the cascaded baseline (with measurements, "
-                "on the H-infinity estimate). Heading errors are wrapped to (-pi, pi]; 'last half' is "
-                f"t >= {0.5 * (scenarios['paper_fig1'].t0 + scenarios['paper_fig1'].tf):g} s; 'L2 gain (from "
-                "the desired start)' is the same run started on the desired trajectory, the disturbance's "
-                "gain alone.", ""]
+                "measurements, the Kalman-Bucy filter); cascade and backstepping: the ship baselines (with "
+                "measurements, on the H-infinity estimate). Heading errors are wrapped to (-pi, pi]; 'last "
+                f"half' is t >= {0.5 * (scenarios['paper_fig1'].t0 + scenarios['paper_fig1'].tf):g} s; 'L2 "
+                "gain from the desired start' is that of the same run started on the desired trajectory, "
+                "the disturbance's gain alone, to hold against the law's own induced L2 gain.", ""]
     with Progress(quiet=args.quiet) as progress:
         for figure, name, feedback in [("Figure 1", "paper_fig1", Feedback.state),
                                        ("Figure 2", "paper_fig2", Feedback.output)]:
@@ -546,19 +624,44 @@ def cmd_paper(args: argparse.Namespace) -> int:
             stem = name.replace("paper_", "")
             mode = f"{feedback.name} feedback"
             write_text(out / f"comparison_{stem}.json", comparison.to_json() + "\n")
-            save_figure(paths_figure(comparison.results(),
-                                     title=f"Paper {figure} scenario: the three laws, {mode}"),
-                        out / f"comparison_{stem}_paths.png")
+            runs, title = comparison.results(), f"Paper {figure} scenario: the laws compared, {mode}"
+            # The paths, the tracking errors and the inputs against time, per law.
+            save_figure(paths_figure(runs, title=title, marine=args.marine), out / f"comparison_{stem}_paths.png")
+            save_figure(errors_figure(runs, title=f"{title}: tracking errors"), out / f"comparison_{stem}_errors.png")
+            save_figure(controls_figure(runs, title=f"{title}: inputs"), out / f"comparison_{stem}_controls.png")
             header, table_rows = comparison.table()
             sections += [f"## {figure} scenario ({comparison.scenario}), {mode}", "",
                          f"Disturbance: {comparison.runs[0].disturbance['description']}.", "",
                          markdown_table(header, table_rows),
-                         f"![{figure}: x-y paths of the three laws](comparison_{stem}_paths.png)", ""]
-            print(f"\n{figure} scenario, {mode}: the three laws")
+                         f"![{figure}: x-y paths of the laws](comparison_{stem}_paths.png)", "",
+                         f"![{figure}: position and heading errors of the laws against time]"
+                         f"(comparison_{stem}_errors.png)", "",
+                         f"![{figure}: inputs u of the laws and the desired u_d against time]"
+                         f"(comparison_{stem}_controls.png)", ""]
+            print(f"\n{figure} scenario, {mode}: the laws compared")
             print(text_table(header, table_rows), end="")
     write_text(out / "comparison.md", "\n".join(sections))
     print(f"\nwrote {out}/: " + ", ".join(sorted(p.name for p in out.iterdir())))
     print(f"output folder: {out.resolve()}")
+    return 0
+
+
+def cmd_animate(args: argparse.Namespace) -> int:
+    from hinf_cpp.output.animation import animate_run, check_animation_path
+
+    check_animation_path(args.output)  # before the run: the suffix, ffmpeg for .mp4, the folder
+    scenario, planned = _load_with_plan(args.scenario)
+    if planned is not None:
+        _print_plans(planned)
+    result = _core.run_scenario(scenario)
+    animation = animate_run(result, args.output, frames=args.frames, fps=args.fps, width=args.width,
+                            marine=args.marine)
+    status = result.simulation.status
+    print(f"scenario {result.scenario_name}: {run_key(result.law, result.output_feedback)}, t in "
+          f"[{animation.times[0]:g}, {animation.times[-1]:g}] s" + ("" if status == _core.RunStatus.completed
+                                                                  else f" ({status.name})"))
+    print(f"wrote {animation.path} ({animation.frames} frames at {animation.fps:g} fps, "
+          f"{animation.pixel_map.width}x{animation.pixel_map.height} pixels)")
     return 0
 
 
@@ -596,7 +699,7 @@ def cmd_planned(args: argparse.Namespace) -> int:
 
 def cmd_study(args: argparse.Namespace) -> int:
     from hinf_cpp.studies.study import load_study, local_cores, run_study
-    from hinf_cpp.studies.report import status_counts, write_study_outputs
+    from hinf_cpp.studies.report import failed_runs_text, status_counts, write_study_outputs
 
     if args.workers is not None and args.scheduler is not None:
         raise ValueError("--workers and --scheduler exclude each other: --workers sets the local threads, "
@@ -628,15 +731,24 @@ def cmd_study(args: argparse.Namespace) -> int:
         print(f"resumed: reused {table.attrs['reused_chunks']} of {table.attrs['chunks']} chunks saved in "
               f"{args.out}/partial ({sum(reused.values())} runs: {kept})")
         if reused.get("invalid_input"):
-            print(f"note: their invalid_input runs ({reused['invalid_input']}) were not run again; if a file "
-                  f"was missing then, delete {args.out}/partial to run them again")
+            print(f"note: their invalid_input runs ({reused['invalid_input']}) were refused for the scenario "
+                  "itself and were not run again (runs refused for a missing or unreadable file run again)")
+    if table.attrs.get("rerun_chunks"):
+        print(f"note: {table.attrs['rerun_chunks']} saved chunks held runs that failed for a reason outside the "
+              "scenario (a lost worker, a missing file): they ran again")
     counts = status_counts(table)
     statuses = ", ".join(f"{name} {int(counts[name].sum())}" for name in counts.columns
                          if name != "runs" and counts[name].sum() > 0)
     where = f"Dask scheduler {args.scheduler}" if client is not None else \
         f"{args.workers or local_cores()} local threads"
-    print(f"study {study.name}: {study.runs} runs ({statuses}) in {seconds:.1f} s on {where}")
+    ran = study.runs - int(table.attrs.get("reused_runs", 0))
+    done = f"{study.runs} runs" if ran == study.runs else f"{study.runs} runs, {ran} run by this invocation"
+    print(f"study {study.name}: {done} ({statuses}) in {seconds:.1f} s on {where}")
     print(f"wrote {args.out}/: " + ", ".join(sorted(p.name for p in written)))
+    failed = failed_runs_text(table, table=str(pathlib.Path(args.out) / "runs.csv"))
+    if failed:
+        print("runs that did not complete (each runs again alone with its command):")
+        print(failed)
     if not (table["status"] == "completed").any():
         return _fail(f"all {study.runs} runs of the study failed (none completed): their statuses and reasons "
                      f"are in {pathlib.Path(args.out) / 'runs.parquet'}", 1)
@@ -665,6 +777,12 @@ def _add_comparison_options(parser: argparse.ArgumentParser) -> None:
                              "its closed loop; cascade: hinf's)")
 
 
+def _add_marine(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--marine", action="store_true",
+                        help="x-y figures in the marine convention: North up, East right (the ship's x is North, "
+                             "y East: y drawn horizontally, x vertically)")
+
+
 def _add_quiet(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
 
@@ -691,6 +809,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--csv", help="write the time series (CSV)")
     run.add_argument("--npz", help="write every time series, the metrics and the metadata (NPZ)")
     run.add_argument("--plot", help="write the x-y plot (PNG, PDF or SVG)")
+    _add_marine(run)
     run.add_argument("--gamma-star", action="store_true", help="also compute gamma* (eq. 14) for the results file")
     run.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                      help="set a scenario key (VALUE is a TOML value: controller.gamma=12, "
@@ -710,6 +829,7 @@ def build_parser() -> argparse.ArgumentParser:
     comp.add_argument("scenario", help="scenario file (TOML)")
     _add_comparison_options(comp)
     _add_outputs(comp, json="the metrics of every run", plot="the overlaid x-y paths", quiet=True)
+    _add_marine(comp)
     comp.set_defaults(handler=cmd_compare)
 
     rec = sub.add_parser("recovery", help="recovery from poor initial conditions, turning around")
@@ -719,7 +839,10 @@ def build_parser() -> argparse.ArgumentParser:
                      help="recovered: final position error below this (m, default 0.5)")
     rec.add_argument("--heading-tol", type=float, default=10.0,
                      help="recovered: final wrapped heading error below this (degrees, default 10)")
-    _add_outputs(rec, json="the verdicts", plot="the x-y paths, one panel per scenario", quiet=True)
+    _add_outputs(rec, json="the verdicts", plot="the x-y paths, one panel per scenario (every law's run; "
+                                                 "those that did not complete dotted, an x where they stop)",
+                 quiet=True)
+    _add_marine(rec)
     rec.set_defaults(handler=cmd_recovery)
 
     rep = sub.add_parser("report", help="comparison, figures, tables and results files in a folder")
@@ -727,6 +850,7 @@ def build_parser() -> argparse.ArgumentParser:
     rep.add_argument("--out", required=True, help="output folder")
     _add_comparison_options(rep)
     rep.add_argument("--pdf", action="store_true", help="also write every figure as a vector PDF")
+    _add_marine(rep)
     _add_quiet(rep)
     rep.set_defaults(handler=cmd_report)
 
@@ -757,6 +881,23 @@ def build_parser() -> argparse.ArgumentParser:
     _add_outputs(sweep, json="the sweep", plot="the figure", quiet=True)
     sweep.set_defaults(handler=cmd_sweep_gamma)
 
+    gains = sub.add_parser("gain-frequency", help="each law's measured gain against the frequency of a "
+                                                   "single-channel sinusoid, with its bound (law_gain)")
+    gains.add_argument("scenario", help="scenario file (TOML)")
+    gains.add_argument("-o", "--out", required=True, help="output folder (gain_frequency.csv, "
+                                                          "gain_frequency_wC.png per channel)")
+    gains.add_argument("--laws", default="hinf,lqr",
+                       help="comma-separated laws among hinf, lqr (default hinf,lqr; cascade has no "
+                            "linearization)")
+    gains.add_argument("--channels", type=_channel_list,
+                       help="comma-separated disturbance channels from 1 (default: all but "
+                            "measurement-noise channels)")
+    gains.add_argument("--frequencies", type=_frequency_grid,
+                       help="LOW:HIGH:COUNT log-spaced or a comma-separated list, rad/s (default 0.01:100:17)")
+    gains.add_argument("--amplitude", type=float, default=0.01, help="sinusoid amplitude (default 0.01)")
+    _add_quiet(gains)
+    gains.set_defaults(handler=cmd_gain_frequency)
+
     model = sub.add_parser("model", help="symbolic models (CasADi): export one for scenario files")
     model_sub = model.add_subparsers(dest="model_command", required=True)
     export = model_sub.add_parser("export", help="generate, compile and write a model's folder (model.json, "
@@ -774,10 +915,24 @@ def build_parser() -> argparse.ArgumentParser:
     exporter.set_defaults(handler=cmd_export_controller)
 
     paper = sub.add_parser("paper", help="the paper's runs: figures, results files, metrics and the "
-                                         "comparison of the three laws")
+                                         "comparison of the laws")
     paper.add_argument("--out", default="out/paper", help="output folder (default: out/paper)")
+    _add_marine(paper)
     _add_quiet(paper)
     paper.set_defaults(handler=cmd_paper)
+
+    animate = sub.add_parser("animate", help="an animation of a run (GIF; MP4 with ffmpeg on PATH): the vessel "
+                                             "oriented by its heading, the desired position, the trail")
+    animate.add_argument("scenario", help="scenario file (TOML)")
+    animate.add_argument("-o", "--output", required=True, help="write the animation (.gif, or .mp4 with ffmpeg)")
+    animate.add_argument("--frames", type=_frame_count, default=DEFAULT_FRAMES, metavar="N",
+                         help=f"frames, 2 to {MAX_FRAMES} (default {DEFAULT_FRAMES})")
+    animate.add_argument("--fps", type=_frame_rate, default=DEFAULT_FPS, metavar="F",
+                         help=f"frames per second, in (0, {MAX_FPS:g}] (default {DEFAULT_FPS:g})")
+    animate.add_argument("--width", type=_frame_width, default=DEFAULT_WIDTH, metavar="PIXELS",
+                         help=f"frame width in pixels (default {DEFAULT_WIDTH}; the height follows the path)")
+    _add_marine(animate)
+    animate.set_defaults(handler=cmd_animate)
 
     vehicles = sub.add_parser("vehicles", help="the built-in vehicles' shipped scenarios: results files, "
                                                "x-y figures and a table of the tracking")
@@ -806,6 +961,37 @@ def build_parser() -> argparse.ArgumentParser:
                              help="let the files read load and run the code they name (a [model] of kind "
                                   "\"casadi\" or \"python\"); the same as HINF_TRUST_CODE=1 (docs/trust.md)")
     return parser
+
+
+def _frame_count(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = None
+    if value is None or not 2 <= value <= MAX_FRAMES:
+        raise argparse.ArgumentTypeError(f"invalid frame count '{text}': an integer from 2 to {MAX_FRAMES}")
+    return value
+
+
+def _frame_rate(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not 0.0 < value <= MAX_FPS:
+        raise argparse.ArgumentTypeError(f"invalid frame rate '{text}': a number of frames per second in "
+                                         f"(0, {MAX_FPS:g}]")
+    return value
+
+
+def _frame_width(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = None
+    if value is None or not 160 <= value <= 4096:
+        raise argparse.ArgumentTypeError(f"invalid width '{text}': an integer number of pixels from 160 to 4096")
+    return value
 
 
 def _positive_int(text: str) -> int:

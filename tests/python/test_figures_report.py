@@ -181,6 +181,100 @@ def test_paths_figure_arrows_show_the_heading(tmp_path):
     png_size(plotting.save_figure(fig, tmp_path / "arrows.png"))
 
 
+def test_overlaid_runs_stay_distinguishable(comparison):
+    """hinf and lqr nearly coincide on Figure 2 (RMS errors within 5%): every run has its own
+    marker and line style (per law), the markers sparse (at most 15 per line, evenly spaced in
+    time or arc length) and at other points for each run, so that they do not stack."""
+    runs = comparison.results()
+    for fig, axes in [(plotting.errors_figure(runs), 2), (plotting.controls_figure(runs), 2),
+                      (plotting.paths_figure(runs), 1)]:
+        for ax in fig.axes[:axes]:
+            lines = [line for line in ax.get_lines() if line.get_label() in dict(runs)]
+            assert [line.get_label() for line in lines] == [label for label, _ in runs]
+            looks = {(line.get_color(), line.get_marker(), line.get_linestyle()) for line in lines}
+            assert len(looks) == len(runs)
+            state = [line for line in lines if "output" not in line.get_label()]
+            assert len({(line.get_marker(), line.get_linestyle()) for line in state}) == len(state)
+            every = [set(line.get_markevery()) for line in lines]
+            assert all(10 <= len(e) <= 15 for e in every)
+            if ax.get_xlabel() == "time t [s]":
+                # One output grid for all: each run's markers at other times.
+                assert all(not (a & b) for i, a in enumerate(every) for b in every[i + 1:])
+    # On the paths, hinf's and lqr's markers (their paths coincide to centimetres) are apart by
+    # at least a tenth of their spacing (they are shifted by a sixth of it in arc length).
+    paths = {line.get_label(): line for line in plotting.paths_figure(runs).axes[0].get_lines()}
+
+    def marks(label: str) -> np.ndarray:
+        line = paths[label]
+        every = line.get_markevery()
+        return np.column_stack([line.get_xdata()[every], line.get_ydata()[every]])
+
+    for a, b in [("hinf", "lqr"), ("hinf/output-feedback", "lqr/output-feedback")]:
+        pa, pb = marks(a), marks(b)
+        spacing = np.mean(np.hypot(*np.diff(pa, axis=0).T))
+        gaps = np.hypot(pa[:, None, 0] - pb[None, :, 0], pa[:, None, 1] - pb[None, :, 1])
+        assert gaps.min() > 0.1 * spacing, (a, b, gaps.min(), spacing)
+    fig = plotting.errors_figure(runs)
+    markers = {line.get_label(): line.get_marker() for line in fig.axes[0].get_lines()}
+    assert (markers["hinf"], markers["lqr"], markers["cascade"]) == ("o", "s", "^")
+
+
+def data_box(h: np.ndarray, v: np.ndarray, margin: float = 0.06):
+    """The limits an x-y panel should have: the data's box widened by 6% of its larger side."""
+    pad = margin * max(np.ptp(h), np.ptp(v))
+    return (h.min() - pad, h.max() + pad), (v.min() - pad, v.max() + pad)
+
+
+@pytest.mark.parametrize("marine", [False, True])
+def test_xy_panels_are_sized_to_their_data(tmp_path, marine):
+    """Limits from the data with a margin (hand computation), equal scale, and the axes box in
+    the data's shape: its on-screen aspect is the data's, so it is not padded with empty space,
+    and it covers at least 40% of the figure. Marine: y (East) right, x (North) up, the heading
+    arrows along (sin psi, cos psi)."""
+    result = run_law(short("paper_fig1", 40.0), "hinf")
+    q, q_d = result.simulation.q, result.simulation.q_d
+    h, v = (4, 3) if marine else (3, 4)
+    for fig in (plotting.xy_figure(result, heading_arrows=5, marine=marine),
+                plotting.paths_figure([("hinf", result)], heading_arrows=5, marine=marine)):
+        ax = fig.axes[0]
+        xlim, ylim = data_box(np.concatenate([q[:, h], q_d[:, h]]), np.concatenate([q[:, v], q_d[:, v]]))
+        # Limits: the hand-computed box to round-off of the sums (1e-12 m on 20 m).
+        assert ax.get_xlim() == pytest.approx(xlim, abs=1e-12)
+        assert ax.get_ylim() == pytest.approx(ylim, abs=1e-12)
+        assert ax.get_aspect() == 1.0 and ax.get_adjustable() == "box"
+        fig.draw_without_rendering()   # the layout and the equal aspect applied, as when saved
+        box = ax.get_window_extent()
+        # The box's on-screen aspect is the data's, to a pixel of rounding (0.5% of ~800 px).
+        assert box.width / box.height == pytest.approx((xlim[1] - xlim[0]) / (ylim[1] - ylim[0]), rel=5e-3)
+        position = ax.get_position()
+        assert position.width * position.height > 0.4
+        actual = [line for line in ax.get_lines() if line.get_label() in ("actual", "hinf")]
+        np.testing.assert_array_equal(actual[0].get_xdata(), q[:, h])
+        np.testing.assert_array_equal(actual[0].get_ydata(), q[:, v])
+        assert ax.get_xlabel() == ("East y [m]" if marine else "x [m]")
+        assert ax.get_ylabel() == ("North x [m]" if marine else "y [m]")
+        quiver = [c for c in ax.collections if c.__class__.__name__ == "Quiver"][-1]
+        psi0 = q[0, 5]
+        direction = (math.sin(psi0), math.cos(psi0)) if marine else (math.cos(psi0), math.sin(psi0))
+        first = np.array([quiver.U[0], quiver.V[0]])
+        np.testing.assert_allclose(first / np.linalg.norm(first), direction, atol=1e-12)
+        png_size(plotting.save_figure(fig, tmp_path / f"xy_{marine}.png"))
+
+
+def test_a_straight_path_is_not_a_strip():
+    """Along a straight line (u_d = [1, 0], started on it; the disturbance moves it by
+    centimetres) the shorter side of the panel is still a fifth of the longer: (0.2 + 2 * 0.06)
+    / (1 + 2 * 0.06) of it with the margins."""
+    s = short("paper_fig1", 10.0)
+    s.desired_u = [1.0, 0.0]
+    s.initial_q0 = s.desired_q0
+    result = run_law(s, "hinf")
+    ax = plotting.xy_figure(result).axes[0]
+    width = ax.get_xlim()[1] - ax.get_xlim()[0]
+    height = ax.get_ylim()[1] - ax.get_ylim()[0]
+    assert height / width == pytest.approx((0.2 + 2 * 0.06) / (1 + 2 * 0.06), rel=0.05)
+
+
 # ---- exports ---------------------------------------------------------------------------------------
 
 def test_npz_round_trip_is_exact(tmp_path, output_run):
@@ -343,15 +437,27 @@ def test_cli_paper_writes_the_comparison(tmp_path):
     names = {p.name for p in out.iterdir()}
     assert {"fig1_xy.png", "fig2_xy.png", "fig1.json", "fig2.json", "metrics.md", "comparison.md",
             "comparison_fig1_paths.png", "comparison_fig2_paths.png", "comparison_fig1.json",
-            "comparison_fig2.json"} <= names
+            "comparison_fig2.json", "comparison_fig1_errors.png", "comparison_fig2_errors.png",
+            "comparison_fig1_controls.png", "comparison_fig2_controls.png"} <= names
     for name in names:
         if name.endswith(".png"):
             png_size(out / name)
     text = (out / "comparison.md").read_text()
+    for stem in ("fig1", "fig2"):
+        for kind in ("paths", "errors", "controls"):
+            assert f"](comparison_{stem}_{kind}.png)" in text
     assert "| metric | unit | hinf | lqr | cascade |" in text
     assert "| metric | unit | hinf/output-feedback | lqr/output-feedback | cascade/output-feedback |" in text
     fig2 = json.loads((out / "comparison_fig2.json").read_text())
     assert all(v["feedback"] == "output" for v in fig2["controllers"].values())
+    # metrics.md leads with the disturbance's own gain (Figure 1 starts off the path, so it is
+    # that of the same run from the desired start: the comparison's hinf entry, the same run).
+    rows = {line.split("|")[1].strip(): line.split("|")[2:-1] for line in (out / "metrics.md").read_text().splitlines()}
+    assert list(rows)[2:4] == ["gamma", "disturbance_gain (from the desired start)"]
+    fig1 = json.loads((out / "comparison_fig1.json").read_text())
+    gain = float(rows["disturbance_gain (from the desired start)"][0])
+    assert gain == pytest.approx(fig1["controllers"]["hinf"]["disturbance_gain"], rel=1e-5)  # 6 digits
+    assert gain < 5.0 < float(rows["response_ratio"][0]) * 2  # below gamma; the ratio with the start is not
 
 
 # ---- progress ----------------------------------------------------------------------------------------
@@ -367,7 +473,7 @@ def test_progress_line_on_a_terminal_only():
     with Progress(stream=terminal) as progress:
         compare(scenario, progress=progress)
     text = terminal.getvalue()
-    assert "\r[1/3] running hinf on paper-fig1 ..." in text and "[3/3] running cascade on paper-fig1 ..." in text
+    assert "\r[1/4] running hinf on paper-fig1 ..." in text and "[4/4] running backstepping on paper-fig1 ..." in text
     assert text.endswith("\r") and text.split("\r")[-2].strip() == ""   # the line is erased at the end
     quiet = FakeTerminal()
     with Progress(quiet=True, stream=quiet) as progress:
@@ -415,4 +521,4 @@ def test_cli_progress_on_a_pseudo_terminal(tmp_path, quiet):
     if quiet:
         assert stderr == ""
     else:
-        assert "[1/3] running hinf on paper-fig1 ..." in stderr and "[3/3] running cascade" in stderr
+        assert "[1/4] running hinf on paper-fig1 ..." in stderr and "[4/4] running backstepping" in stderr

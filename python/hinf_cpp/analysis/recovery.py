@@ -25,6 +25,15 @@ turns around
 settling time
     the first grid time after which the position error stays below ``position_tolerance``
     (None when the final error is not below it).
+status
+    how the run ended: ``completed``, ``diverged`` (the closed loop stopped at the divergence
+    bound), ``lost_track`` (it ran to tf but ended farther from the path than it started, by
+    more than ``[solver] lost_track``), or, when there is no closed loop to judge, the
+    failure: ``conjugate_point``, ``coupling_violation``, ``solver_failure``, ``failed`` (the
+    words of a study's status, :data:`hinf_cpp.studies.study.STATUSES`). Only a completed run
+    is judged: a run that did not complete does not recover, and whether it turns around is
+    not judged (None, ``-`` in the table), since the heading of a vehicle that diverged or
+    lost the path says nothing about how the law turns it.
 """
 
 from __future__ import annotations
@@ -51,6 +60,7 @@ __all__ = [
     "RecoveryVerdict",
     "TurnAround",
     "assess_recovery",
+    "failure_status",
     "recovery_study",
     "shipped_poor_scenarios",
     "turn_around",
@@ -182,10 +192,10 @@ class RecoveryVerdict:
     controller : hinf_cpp.Law
         The law.
     recovers : bool
-        Final position error below the position tolerance and final wrapped heading error
-        below the heading tolerance.
-    turns_around : bool
-        :func:`turn_around`'s verdict.
+        The run completed, with the final position error below the position tolerance and the
+        final wrapped heading error below the heading tolerance.
+    turns_around : bool or None
+        :func:`turn_around`'s verdict; None (not judged) for a run that did not complete.
     initial_position_error : float
         |p(t0) - p_d(t0)| (m, the model's unit of length).
     initial_heading_error : float
@@ -200,11 +210,15 @@ class RecoveryVerdict:
     max_abs_heading_error : float
         max |e(t)| of the continuous error (rad).
     turn : TurnAround or None
-        The turn-around verdict (None when the run failed).
+        The turn-around verdict (None when the run did not complete).
     result : hinf_cpp.RunResult, optional
-        The run.
+        The run (None when it failed before its closed loop).
     error : str, optional
-        The numerical failure, when the run failed (the numbers are then NaN).
+        The numerical failure, when the run failed (the numbers are then NaN), or the status
+        message of a run that diverged or lost track.
+    status : str, optional
+        How the run ended (module docstring): ``completed`` (default), ``diverged``,
+        ``lost_track``, or the failure (``conjugate_point``, ...).
 
     Examples
     --------
@@ -213,14 +227,14 @@ class RecoveryVerdict:
     >>> verdict = assess_recovery(result)
     >>> verdict.controller, verdict.recovers, verdict.turns_around
     (<Law.hinf: 0>, True, False)
-    >>> round(verdict.initial_heading_error, 4), verdict.settling_time
-    (3.1416, 5.48)
+    >>> round(verdict.initial_heading_error, 4), verdict.settling_time, verdict.status
+    (3.1416, 5.48, 'completed')
     """
 
     scenario: str
     controller: _core.Law
     recovers: bool
-    turns_around: bool
+    turns_around: bool | None       # None: not judged (the run did not complete)
     initial_position_error: float   # m
     initial_heading_error: float    # rad, e(t0), in (-pi, pi]
     final_position_error: float     # m
@@ -230,6 +244,7 @@ class RecoveryVerdict:
     turn: TurnAround | None
     result: _core.RunResult | None = None
     error: str | None = None
+    status: str = "completed"
 
     def to_dict(self) -> dict:
         def number(x):
@@ -238,6 +253,7 @@ class RecoveryVerdict:
         return {
             "scenario": self.scenario,
             "controller": self.controller.name,
+            "status": self.status,
             "recovers": self.recovers,
             "turns_around": self.turns_around,
             "turn_reason": self.turn.reason if self.turn else "",
@@ -266,9 +282,11 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
                     backwards_fraction: float = BACKWARDS_FRACTION) -> RecoveryVerdict:
     """Whether a run recovers and whether it turns the ship around (module docstring).
 
-    Recovers: the final position error is below `position_tolerance` and the final wrapped
-    heading error below `heading_tolerance`. Turns around: :func:`turn_around` of the
-    continuous heading error (:func:`hinf_cpp.analysis.comparison.heading_error`).
+    Recovers: the run completed, its final position error is below `position_tolerance` and
+    its final wrapped heading error below `heading_tolerance`. Turns around: :func:`turn_around`
+    of the continuous heading error (:func:`hinf_cpp.analysis.comparison.heading_error`). A run
+    that diverged or lost track keeps its status: it does not recover, whether it turns around
+    is not judged (None), its final errors are those where it stopped.
 
     Parameters
     ----------
@@ -305,6 +323,11 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
     (True, 0.071)
     >>> assess_recovery(result, position_tolerance=0.05).recovers
     False
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.initial_q0 = [1.0, 0.0, 0.0, 0.0, 8.0, np.pi]  # 8 m aside, heading reversed
+    >>> lost = assess_recovery(hc.run_scenario(scenario))
+    >>> lost.status, lost.recovers, lost.turns_around
+    ('diverged', False, None)
     """
     if not (position_tolerance > 0.0 and heading_tolerance > 0.0):
         raise ValueError(f"the tolerances must be > 0, got position {position_tolerance} m and heading "
@@ -314,7 +337,12 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
         raise ValueError(f"recovery needs a heading: the model '{result.trajectory.model().name()}' has none")
     t = np.asarray(result.simulation.t)
     pe = _position_error(result)
-    turn = turn_around(t, e, margin, backwards_fraction)
+    status = result.simulation.status.name
+    completed = status == "completed"
+    # Checked for every run (bad options are an error either way), kept for completed ones.
+    turn = turn_around(t, e, margin, backwards_fraction) if t.size >= 2 else None
+    if not completed:
+        turn = None
     final_heading = float(abs(wrap_angles(e[-1])))
     above = np.flatnonzero(pe >= position_tolerance)
     if above.size == 0:
@@ -326,8 +354,8 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
     return RecoveryVerdict(
         scenario=result.scenario_name,
         controller=result.law if controller is None else parse_controllers([controller])[0],
-        recovers=bool(pe[-1] < position_tolerance and final_heading < heading_tolerance),
-        turns_around=turn.turned,
+        recovers=bool(completed and pe[-1] < position_tolerance and final_heading < heading_tolerance),
+        turns_around=turn.turned if turn is not None else None,
         initial_position_error=float(pe[0]),
         initial_heading_error=float(e[0]),
         final_position_error=float(pe[-1]),
@@ -336,7 +364,37 @@ def assess_recovery(result: _core.RunResult, controller: _core.Law | str | None 
         max_abs_heading_error=float(np.max(np.abs(e))),
         turn=turn,
         result=result,
+        error=None if completed else " ".join(result.simulation.status_message.split()),
+        status=status,
     )
+
+
+def failure_status(error: BaseException) -> str:
+    """The status word of a run that failed before its closed loop ended, as a study names it.
+
+    Parameters
+    ----------
+    error : BaseException
+        The exception of the run.
+
+    Returns
+    -------
+    str
+        ``conjugate_point``, ``coupling_violation``, ``solver_failure``, ``invalid_input``
+        (a ValueError) or ``failed``.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.recovery import failure_status
+    >>> failure_status(hc.SolverError("the integrator failed")), failure_status(RuntimeError("?"))
+    ('solver_failure', 'failed')
+    """
+    for kind, status in ((_core.ConjugatePointError, "conjugate_point"),
+                         (_core.CouplingConditionError, "coupling_violation"),
+                         (_core.SolverError, "solver_failure"), (ValueError, "invalid_input")):
+        if isinstance(error, kind):
+            return status
+    return "failed"
 
 
 def shipped_poor_scenarios() -> list[pathlib.Path]:
@@ -389,8 +447,8 @@ class RecoveryStudy:
     >>> study.verdict("poor-heading-180", "cascade").recovers
     True
     >>> header, rows = study.table()
-    >>> header[:4], rows[0][:4]
-    (['scenario', 'controller', 'recovers', 'turns around'], ['poor-heading-180', 'hinf', True, False])
+    >>> header[:5], rows[0][:5]
+    (['scenario', 'controller', 'status', 'recovers', 'turns around'], ['poor-heading-180', 'hinf', 'completed', True, False])
     """
 
     verdicts: list[RecoveryVerdict]
@@ -416,24 +474,28 @@ class RecoveryStudy:
         raise KeyError(f"no verdict for controller '{law.name}' on scenario '{scenario}'")
 
     def table(self) -> tuple[list[str], list[list[Any]]]:
-        """Header and rows: one row per scenario and controller."""
-        header = ["scenario", "controller", "recovers", "turns around", "final |p_e| [m]",
+        """Header and rows: one row per scenario and controller; a run that did not complete
+        shows its status, does not recover, and its turn-around is not judged (None)."""
+        header = ["scenario", "controller", "status", "recovers", "turns around", "final |p_e| [m]",
                   "final |wrap(e_psi)| [deg]", "settling time [s]", "max |e_psi| [deg]"]
         rows = []
         for v in self.verdicts:
-            if v.error is not None:
-                rows.append([v.scenario, v.controller.name, "failed", "-", None, None, None, None])
+            if v.result is None:
+                rows.append([v.scenario, v.controller.name, v.status, None, None, None, None, None, None])
                 continue
-            rows.append([v.scenario, v.controller.name, v.recovers, v.turns_around, v.final_position_error,
-                         math.degrees(v.final_heading_error), v.settling_time,
+            rows.append([v.scenario, v.controller.name, v.status, v.recovers, v.turns_around,
+                         v.final_position_error, math.degrees(v.final_heading_error), v.settling_time,
                          math.degrees(v.max_abs_heading_error)])
         return header, rows
 
     def to_dict(self) -> dict:
         return {
             "definitions": {
-                "recovers": f"final position error < {self.position_tolerance:g} m and final wrapped heading "
-                            f"error < {math.degrees(self.heading_tolerance):g} deg",
+                "status": "how the run ended: completed, diverged, lost_track, or the failure before the closed "
+                          "loop ended (conjugate_point, coupling_violation, solver_failure, failed); only "
+                          "completed runs are judged",
+                "recovers": f"the run completed, final position error < {self.position_tolerance:g} m and final "
+                            f"wrapped heading error < {math.degrees(self.heading_tolerance):g} deg",
                 "turns_around": f"|psi - psi_d| (unwrapped) exceeds max(pi, |e(t0)|) + {self.margin:g} rad, or "
                                 f"|wrap(psi - psi_d)| > pi/2 on more than {100 * self.backwards_fraction:g}% "
                                 "of the last half",
@@ -477,7 +539,8 @@ def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | No
     Returns
     -------
     RecoveryStudy
-        A run that fails numerically is kept with ``error`` set.
+        A run that fails numerically is kept with ``error`` and ``status`` set; a run that
+        diverged or lost track keeps its run, its status and its status message.
 
     Raises
     ------
@@ -510,9 +573,9 @@ def recovery_study(scenarios: Sequence[_core.Scenario | str | pathlib.Path] | No
             try:
                 result = run_law(scenario, law, feedback)
             except _core.HinfError as error:
-                verdicts.append(RecoveryVerdict(scenario.name, law, False, False, math.nan, math.nan, math.nan,
+                verdicts.append(RecoveryVerdict(scenario.name, law, False, None, math.nan, math.nan, math.nan,
                                                 math.nan, None, math.nan, None,
-                                                error=" ".join(str(error).split())))
+                                                error=" ".join(str(error).split()), status=failure_status(error)))
                 continue
             verdicts.append(assess_recovery(result, law, position_tolerance=position_tolerance,
                                             heading_tolerance=heading_tolerance, margin=margin,

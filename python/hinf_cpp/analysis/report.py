@@ -84,7 +84,7 @@ class Report:
     comparison: Comparison
 
 
-def _figures(comparison: Comparison) -> list[tuple[str, str, Callable]]:
+def _figures(comparison: Comparison, marine: bool = False) -> list[tuple[str, str, Callable]]:
     """(file name, caption, factory) of the figures that apply to the comparison's runs."""
     runs = comparison.results()
     if not runs:
@@ -96,8 +96,9 @@ def _figures(comparison: Comparison) -> list[tuple[str, str, Callable]]:
     if planar:
         figures.append(("paths.png", "x-y paths: desired (solid), actual (dashed; dash-dotted for output "
                         "feedback), starts marked, arrows along the paths show the heading",
-                        lambda: paths_figure(runs)))
-        figures.append(("errors.png", "position error |p - p_d| and wrapped heading error against time",
+                        lambda: paths_figure(runs, marine=marine)))
+        figures.append(("errors.png", "position error |p - p_d| and wrapped heading error against time, "
+                        "per law (colour, line style and marker)",
                         lambda: errors_figure(runs)))
     figures.append(("controls.png", "control inputs against time: desired u_d and applied u",
                     lambda: controls_figure(runs)))
@@ -137,7 +138,7 @@ def _report_markdown(comparison: Comparison, figures: list[tuple[str, str, Calla
 def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
                  controllers: str | Sequence[str] | None = None, *,
                  feedback: str | Sequence[str] | None = None, worst_case: bool | None = None,
-                 pdf: bool = False, progress: ProgressCallback | None = None) -> Report:
+                 pdf: bool = False, marine: bool = False, progress: ProgressCallback | None = None) -> Report:
     """Run the comparison of the laws on a scenario and write the report folder.
 
     Runs :func:`~hinf_cpp.analysis.comparison.compare` and writes into `out` the files of the
@@ -161,6 +162,9 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
         Overrides ``[disturbance] worst_case`` (add w* of paper eq. (16)).
     pdf : bool
         Also write each figure as a vector PDF (``paths.pdf``, ...).
+    marine : bool
+        Draw the x-y paths in the marine convention: North up, East right (y horizontal, x
+        vertical).
     progress : callable, optional
         ``progress(index, total, message)``: the runs, then each file group written.
 
@@ -190,7 +194,7 @@ def write_report(scenario: _core.Scenario, out: str | pathlib.Path,
     check_output_folder(folder)
     comparison = compare(scenario, controllers, feedback=feedback, worst_case=worst_case, progress=progress)
     folder.mkdir(parents=True, exist_ok=True)
-    figures = _figures(comparison)
+    figures = _figures(comparison, marine)
     steps = len(figures) + len(comparison.results()) + 1
     step = 0
 

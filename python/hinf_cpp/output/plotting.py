@@ -4,8 +4,18 @@ Every function takes one :class:`RunResult` or a list of ``(label, RunResult)`` 
 runs of a comparison, overlaid) and returns a :class:`matplotlib.figure.Figure`; save it
 with :func:`save_figure` (PNG, or vector PDF / SVG from the file name's suffix).
 
-Line styles of overlaid runs: colour by law (hinf blue, lqr orange, cascade green), dashed
-for state feedback and dash-dotted for output feedback; the desired path is solid black.
+Line styles of overlaid runs: colour by law (hinf blue, lqr orange, cascade green) and a
+marker by law (hinf circles, lqr squares, cascade triangles) at sparse intervals, shifted per
+run, so that runs whose lines coincide stay distinguishable; paths dashed for state feedback
+and dash-dotted for output feedback, time series by law (hinf solid, lqr dashed, cascade
+dash-dotted; backstepping, where the library has it: purple diamonds, dotted); the desired path
+is solid black. A run that did not complete (diverged,
+lost_track) is dotted, an x marks its last point, and its status is in its label.
+
+x-y panels are sized to their data: equal scale on both axes, limits from the data with a
+margin (the axes box takes the data's shape instead of padding it with empty space). With
+``marine=True`` they follow the marine convention, North up and East right: for the ship x is
+North and y is East, so y is drawn horizontally and x vertically.
 """
 
 from __future__ import annotations
@@ -37,7 +47,20 @@ Runs = Union[_core.RunResult, Sequence[tuple[str, _core.RunResult]]]
 
 _LAW_COLOURS = {_core.Law.hinf: "tab:blue", _core.Law.lqr: "tab:orange", _core.Law.cascade: "tab:green"}
 _LAW_COLOURS_OUTPUT = {_core.Law.hinf: "#0b2e73", _core.Law.lqr: "#9c4200", _core.Law.cascade: "#145214"}
-_OTHER_COLOURS = ["tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
+_OTHER_COLOURS = ["tab:red", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray"]
+_LAW_MARKERS = {_core.Law.hinf: "o", _core.Law.lqr: "s", _core.Law.cascade: "^"}
+_OTHER_MARKERS = ["v", "P", "X", "*", "h", "p"]
+_LAW_DASHES = {_core.Law.hinf: "-", _core.Law.lqr: "--", _core.Law.cascade: "-."}
+if hasattr(_core.Law, "backstepping"):  # the second ship baseline, where the library has it
+    _LAW_COLOURS[_core.Law.backstepping] = "tab:purple"
+    _LAW_COLOURS_OUTPUT[_core.Law.backstepping] = "#4b2673"
+    _LAW_MARKERS[_core.Law.backstepping] = "D"
+    _LAW_DASHES[_core.Law.backstepping] = ":"
+# Markers per line: evenly spaced in time (time series) or in arc length (paths), each run's
+# shifted by a share of the spacing so that coinciding lines do not stack them.
+_MARKS = 14
+# The margin of an x-y panel around its data, a fraction of the data's larger side.
+_XY_MARGIN = 0.06
 
 
 def _runs(runs: Runs) -> list[tuple[str, _core.RunResult]]:
@@ -52,28 +75,152 @@ def _runs(runs: Runs) -> list[tuple[str, _core.RunResult]]:
     return out
 
 
+def _completed(result: _core.RunResult) -> bool:
+    return result.simulation.status == _core.RunStatus.completed
+
+
+def _run_label(label: str, result: _core.RunResult) -> str:
+    """The label, with the run's status when it did not complete ("lqr (diverged)")."""
+    return label if _completed(result) else f"{label} ({result.simulation.status.name})"
+
+
 def _styles(runs: list[tuple[str, _core.RunResult]]) -> list[dict]:
-    """Colour by law (a darker shade for output feedback); ``ls`` for paths: dashed for state
-    feedback, dash-dotted for output feedback (time plots use solid lines)."""
-    styles, spare = [], iter(_OTHER_COLOURS * 4)
-    for _, result in runs:
+    """Per run: colour by law (a darker shade for output feedback); ``ls`` for paths: dashed for
+    state feedback, dash-dotted for output feedback, dotted for a run that did not complete;
+    ``dash`` for time series by law; ``marker`` by law; ``shift`` the run's shift of its markers,
+    a share of their spacing."""
+    styles, spare, spare_markers = [], iter(_OTHER_COLOURS * 4), iter(_OTHER_MARKERS * 4)
+    for i, (_, result) in enumerate(runs):
         palette = _LAW_COLOURS_OUTPUT if result.output_feedback else _LAW_COLOURS
         colour = palette.get(result.law) or next(spare)
-        styles.append({"color": colour, "ls": "-." if result.output_feedback else "--"})
-    # Two runs with the same law and mode (e.g. two scenarios) get distinct colours.
-    seen = set()
+        path_ls = "-." if result.output_feedback else "--"
+        styles.append({"color": colour, "ls": path_ls if _completed(result) else ":",
+                       "dash": _LAW_DASHES.get(result.law, ":"),
+                       "marker": _LAW_MARKERS.get(result.law) or next(spare_markers),
+                       "shift": i / len(runs),
+                       "output": bool(result.output_feedback)})
+    # Two runs with the same law and mode (e.g. two scenarios) get distinct colours and markers.
+    seen, seen_styles = set(), set()
     for style in styles:
         if style["color"] in seen:
             style["color"] = next(spare)
         seen.add(style["color"])
+        if (style["marker"], style["dash"]) in seen_styles:
+            style["marker"] = next(spare_markers)
+        seen_styles.add((style["marker"], style["dash"]))
     return styles
 
 
-def _series_style(style: dict) -> dict:
-    """Line style of a time plot: solid; output-feedback runs (noisy) thinner, lighter, below."""
-    if style["ls"] == "-.":
-        return {"color": style["color"], "ls": "-", "lw": 0.8, "alpha": 0.8, "zorder": 2}
-    return {"color": style["color"], "ls": "-", "lw": 1.4, "zorder": 3}
+def _path_style(style: dict, h: np.ndarray, v: np.ndarray) -> dict:
+    """Keyword arguments of an x-y path's line: colour, line style, markers evenly spaced in arc
+    length (not at the start, which has its own mark)."""
+    every = _arrow_indices(h, v, _MARKS + 1, offset=style["shift"])[1:]
+    return {"color": style["color"], "ls": style["ls"], "marker": style["marker"], "markevery": list(every),
+            "ms": 5, "mec": "white", "mew": 0.6}
+
+
+def _series_style(style: dict, points: int) -> dict:
+    """Line style of a time plot of `points` samples: by law (solid, dashed, dash-dotted) with
+    markers evenly spaced in time; output-feedback runs (noisy) thinner, lighter, below."""
+    step = max(1, points // _MARKS)
+    every = list(range(int(style["shift"] * step), points, step))
+    common = {"color": style["color"], "ls": style["dash"], "marker": style["marker"], "markevery": every, "ms": 4}
+    if style["output"]:
+        return {**common, "lw": 0.8, "alpha": 0.8, "zorder": 2}
+    return {**common, "lw": 1.4, "zorder": 3}
+
+
+def _mark_end(ax, h: np.ndarray, v: np.ndarray, result: _core.RunResult, colour: str) -> None:
+    """An x at the last point of a run that did not complete."""
+    if not _completed(result) and h.size:
+        ax.plot(h[-1], v[-1], "x", color=colour, ms=10, mew=2.2, zorder=8)
+
+
+def _plane(q: np.ndarray, ix: int, iy: int, marine: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(horizontal, vertical) coordinates of positions: (x, y), or (y, x) in the marine
+    convention (North up, East right)."""
+    q = np.atleast_2d(q)
+    return (q[:, iy], q[:, ix]) if marine else (q[:, ix], q[:, iy])
+
+
+def _plane_labels(ax, length_unit: str, marine: bool) -> None:
+    if marine:
+        ax.set_xlabel(f"East y [{length_unit}]")
+        ax.set_ylabel(f"North x [{length_unit}]")
+    else:
+        ax.set_xlabel(f"x [{length_unit}]")
+        ax.set_ylabel(f"y [{length_unit}]")
+
+
+def _data_box(points: list[tuple[np.ndarray, np.ndarray]], margin: float = _XY_MARGIN):
+    """(h limits, v limits): the data's bounding box (finite points), each side widened by
+    `margin` times its larger side, the shorter side at least a fifth of the longer (a
+    straight path is not drawn as a strip one line high)."""
+    h = np.concatenate([np.asarray(p[0], dtype=float).ravel() for p in points])
+    v = np.concatenate([np.asarray(p[1], dtype=float).ravel() for p in points])
+    keep = np.isfinite(h) & np.isfinite(v)
+    h, v = h[keep], v[keep]
+    lo = np.array([h.min(), v.min()])
+    hi = np.array([h.max(), v.max()])
+    span = hi - lo
+    longest = max(float(span.max()), 1e-9 * max(1.0, float(np.abs(np.concatenate([lo, hi])).max())))
+    pad = margin * longest
+    grow = np.maximum(0.2 * longest - span, 0.0) / 2.0
+    lo, hi = lo - grow - pad, hi + grow + pad
+    return (float(lo[0]), float(hi[0])), (float(lo[1]), float(hi[1]))
+
+
+def _fit_to_data(ax, points: list[tuple[np.ndarray, np.ndarray]], margin: float = _XY_MARGIN) -> None:
+    """Equal scale, limits from the data with a margin, the axes box in the data's shape."""
+    xlim, ylim = _data_box(points, margin)
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    ax.set_aspect("equal", adjustable="box")
+
+
+def _view_data(data: list[tuple[np.ndarray, np.ndarray]], results: list[_core.RunResult]):
+    """The points an x-y panel of overlaid runs is sized to: the desired path (``data[0]``), the
+    completed runs, every run's start, and the points of failed runs within half the longer
+    side of that box (a run that diverged or lost track thousands of metres away would
+    otherwise shrink the rest to a dot; its label says how far off it ended, an arrow where it
+    leaves the panel)."""
+    core = [data[0]] + [hv for hv, r in zip(data[1:], results) if _completed(r)]
+    core += [(hv[0][:1], hv[1][:1]) for hv in data[1:]]
+    failed = [hv for hv, r in zip(data[1:], results) if not _completed(r)]
+    if not failed:
+        return data
+    (h0, h1), (v0, v1) = _data_box(core, 0.0)
+    reach = 0.5 * max(h1 - h0, v1 - v0)
+    near = []
+    for h, v in failed:
+        keep = (h >= h0 - reach) & (h <= h1 + reach) & (v >= v0 - reach) & (v <= v1 + reach)
+        near.append((h[keep], v[keep]))
+    return core + near
+
+
+def _inside(h: np.ndarray, v: np.ndarray, box) -> np.ndarray:
+    (h0, h1), (v0, v1) = box
+    return (h >= h0) & (h <= h1) & (v >= v0) & (v <= v1)
+
+
+def _exit_arrow(ax, h: np.ndarray, v: np.ndarray, box, colour: str) -> None:
+    """An arrow where a path that ends outside the panel last leaves it, along its direction."""
+    inside = _inside(h, v, box)
+    if not inside.any() or inside[-1]:
+        return
+    k = int(np.flatnonzero(inside)[-1])
+    direction = np.array([h[k + 1] - h[k], v[k + 1] - v[k]])  # equal aspect: the same on screen
+    direction = direction / max(float(np.hypot(*direction)), 1e-300)
+    ax.annotate("", (h[k], v[k]), xytext=tuple(-22.0 * direction), textcoords="offset points",
+                arrowprops={"arrowstyle": "-|>", "color": colour, "lw": 1.6}, zorder=9)
+
+
+def _xy_figsize(points: list[tuple[np.ndarray, np.ndarray]], width: float, extra: float) -> tuple[float, float]:
+    """A figure size whose height follows the data's aspect (between 0.45 and 1.3 widths), so
+    that the equal-aspect panel fills it: `extra` inches for the title and labels."""
+    xlim, ylim = _data_box(points)
+    ratio = (ylim[1] - ylim[0]) / (xlim[1] - xlim[0])
+    return width, float(np.clip(0.85 * width * ratio + extra, 0.45 * width, 1.3 * width))
 
 
 def _position_indices(result: _core.RunResult) -> tuple[int, int]:
@@ -132,16 +279,19 @@ def _arrow_indices(x: np.ndarray, y: np.ndarray, count: int, offset: float = 0.0
 
 
 def _heading_arrows(ax, q: np.ndarray, model: _core.Model, count: int, length: float, color: str,
-                    offset: float = 0.0) -> None:
+                    offset: float = 0.0, marine: bool = False) -> None:
     heading = model.heading_index()
     if heading < 0 or count <= 0:
         return
     ix, iy = model.position_indices()
     k = _arrow_indices(q[:, ix], q[:, iy], count, offset)
     psi = q[k, heading]
-    ax.quiver(q[k, ix], q[k, iy], length * np.cos(psi), length * np.sin(psi), angles="xy",
-              scale_units="xy", scale=1.0, color=color, width=0.005, headwidth=4, headlength=5,
-              zorder=6)
+    # The heading's direction (cos psi, sin psi) in (x, y); swapped with the axes in the marine view.
+    dx, dy = length * np.cos(psi), length * np.sin(psi)
+    h, v = _plane(q[k], ix, iy, marine)
+    u, w = (dy, dx) if marine else (dx, dy)
+    ax.quiver(h, v, u, w, angles="xy", scale_units="xy", scale=1.0, color=color, width=0.005, headwidth=4,
+              headlength=5, zorder=6)
 
 
 def _window(result: _core.RunResult, t_max: float | None) -> np.ndarray:
@@ -156,7 +306,7 @@ def _span(paths: list[np.ndarray]) -> float:
 
 
 def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows: int = 0,
-              length_unit: str = "m", waypoints=(), ax=None) -> Figure:
+              length_unit: str = "m", waypoints=(), ax=None, marine: bool = False) -> Figure:
     """The paper's x-y plot of one run: desired path solid, actual path dashed, starts marked.
 
     Optionally arrows of the heading along the actual path, and the waypoints a desired
@@ -177,11 +327,13 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
         The waypoints to mark.
     ax : matplotlib.axes.Axes, optional
         Draw into these axes (their figure is returned) instead of a new figure.
+    marine : bool, optional
+        The marine convention: North up, East right (y horizontal, x vertical; default False).
 
     Returns
     -------
     matplotlib.figure.Figure
-        The figure.
+        The figure: equal scale, limits from the data with a margin.
 
     Raises
     ------
@@ -197,27 +349,34 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
     ('paper-fig1: hinf, gamma = 5', 'x [m]')
     >>> save_figure(figure, "paper_fig1_xy.png").name
     'paper_fig1_xy.png'
+    >>> xy_figure(result, marine=True).axes[0].get_xlabel()  # North up, East right
+    'East y [m]'
     """
     ix, iy = _position_indices(result)
     sim = result.simulation
+    desired_hv, actual_hv = _plane(sim.q_d, ix, iy, marine), _plane(sim.q, ix, iy, marine)
+    data = [desired_hv, actual_hv]
+    if waypoints:
+        data.append(_plane(np.array([[w.x, w.y] for w in waypoints]), 0, 1, marine))
     if ax is None:
-        fig = Figure(figsize=(6.4, 5.2), layout="constrained")
+        fig = Figure(figsize=_xy_figsize(data, 6.4, 1.2), layout="constrained")
         ax = fig.subplots()
     else:
         fig = ax.figure
     desired = "planned (desired)" if waypoints else "desired"
-    ax.plot(sim.q_d[:, ix], sim.q_d[:, iy], "-", color="black", lw=1.5, label=desired)
-    ax.plot(sim.q[:, ix], sim.q[:, iy], "--", color="tab:blue", lw=1.5, label="actual")
+    ax.plot(*desired_hv, "-", color="black", lw=1.5, label=desired)
+    ax.plot(*actual_hv, ":" if not _completed(result) else "--", color="tab:blue", lw=1.5,
+            label=_run_label("actual", result))
+    _mark_end(ax, *actual_hv, result, "tab:blue")
     if waypoints:
-        _waypoint_marks(ax, waypoints, 0.04 * _span([sim.q_d[:, [ix, iy]]]))
-    ax.plot(sim.q_d[0, ix], sim.q_d[0, iy], "o", color="black", ms=5, label="desired start")
-    ax.plot(sim.q[0, ix], sim.q[0, iy], "s", color="tab:blue", ms=5, label="actual start")
+        _waypoint_marks(ax, waypoints, 0.04 * _span([sim.q_d[:, [ix, iy]]]), marine)
+    ax.plot(desired_hv[0][0], desired_hv[1][0], "o", color="black", ms=5, label="desired start")
+    ax.plot(actual_hv[0][0], actual_hv[1][0], "s", color="tab:blue", ms=5, label="actual start")
     if heading_arrows > 0:
         length = 0.05 * _span([sim.q[:, [ix, iy]], sim.q_d[:, [ix, iy]]])
-        _heading_arrows(ax, sim.q, result.trajectory.model(), heading_arrows, length, "tab:blue")
-    ax.set_xlabel(f"x [{length_unit}]")
-    ax.set_ylabel(f"y [{length_unit}]")
-    ax.set_aspect("equal", adjustable="datalim")
+        _heading_arrows(ax, sim.q, result.trajectory.model(), heading_arrows, length, "tab:blue", marine=marine)
+    _plane_labels(ax, length_unit, marine)
+    _fit_to_data(ax, data)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize="small")
     ax.set_title(title if title is not None else
@@ -225,35 +384,39 @@ def xy_figure(result: _core.RunResult, title: str | None = None, heading_arrows:
     return fig
 
 
-def _waypoint_marks(ax, waypoints, length: float) -> None:
+def _waypoint_marks(ax, waypoints, length: float, marine: bool = False) -> None:
     """Crosses at the waypoints, a line along each given heading, and the waypoint's number."""
-    x = [w.x for w in waypoints]
-    y = [w.y for w in waypoints]
-    ax.plot(x, y, "x", color="tab:red", ms=7, mew=1.6, label="waypoints", zorder=7)
+    def plane(x: float, y: float) -> tuple[float, float]:
+        return (y, x) if marine else (x, y)
+
+    h, v = zip(*(plane(w.x, w.y) for w in waypoints))
+    ax.plot(h, v, "x", color="tab:red", ms=7, mew=1.6, label="waypoints", zorder=7)
     for j, w in enumerate(waypoints):
         if w.heading is not None:
-            ax.plot([w.x, w.x + length * math.cos(w.heading)], [w.y, w.y + length * math.sin(w.heading)], "-",
-                    color="tab:red", lw=1.2, zorder=7)
+            end = plane(w.x + length * math.cos(w.heading), w.y + length * math.sin(w.heading))
+            start = plane(w.x, w.y)
+            ax.plot([start[0], end[0]], [start[1], end[1]], "-", color="tab:red", lw=1.2, zorder=7)
         if len(waypoints) <= 12:
-            ax.annotate(str(j), (w.x, w.y), textcoords="offset points", xytext=(4, 4), fontsize="x-small",
+            ax.annotate(str(j), plane(w.x, w.y), textcoords="offset points", xytext=(4, 4), fontsize="x-small",
                         color="tab:red")
 
 
-def plan_figure(planned_plan, title: str | None = None, length_unit: str = "m") -> Figure:
+def plan_figure(planned_plan, title: str | None = None, length_unit: str = "m", marine: bool = False) -> Figure:
     """A plan (hinf_cpp.planning.planner.Plan) before any tracking: the re-simulated desired path, the
-    planned states at the nodes, and the waypoints."""
+    planned states at the nodes, and the waypoints (``marine``: North up, East right)."""
     model = planned_plan.model
     ix, iy = model.position_indices()
     t = np.linspace(planned_plan.t0, planned_plan.tf, 2001)
     q = np.array([planned_plan.trajectory.q_d(tk) for tk in t])
-    fig = Figure(figsize=(6.4, 5.2), layout="constrained")
+    desired_hv, nodes_hv = _plane(q, ix, iy, marine), _plane(planned_plan.q, ix, iy, marine)
+    data = [desired_hv, nodes_hv, _plane(np.array([[w.x, w.y] for w in planned_plan.waypoints]), 0, 1, marine)]
+    fig = Figure(figsize=_xy_figsize(data, 6.4, 1.2), layout="constrained")
     ax = fig.subplots()
-    ax.plot(q[:, ix], q[:, iy], "-", color="black", lw=1.5, label="desired (re-simulated)")
-    ax.plot(planned_plan.q[:, ix], planned_plan.q[:, iy], ".", color="tab:gray", ms=3, label="planned nodes")
-    _waypoint_marks(ax, planned_plan.waypoints, 0.04 * _span([q[:, [ix, iy]]]))
-    ax.set_xlabel(f"x [{length_unit}]")
-    ax.set_ylabel(f"y [{length_unit}]")
-    ax.set_aspect("equal", adjustable="datalim")
+    ax.plot(*desired_hv, "-", color="black", lw=1.5, label="desired (re-simulated)")
+    ax.plot(*nodes_hv, ".", color="tab:gray", ms=3, label="planned nodes")
+    _waypoint_marks(ax, planned_plan.waypoints, 0.04 * _span([q[:, [ix, iy]]]), marine)
+    _plane_labels(ax, length_unit, marine)
+    _fit_to_data(ax, data)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize="small")
     ax.set_title(title or f"plan for the {model.name()} model: {len(planned_plan.waypoints)} waypoints")
@@ -261,12 +424,16 @@ def plan_figure(planned_plan, title: str | None = None, length_unit: str = "m") 
 
 
 def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | None = None, ax=None,
-                 t_max: float | None = None, legend: bool = True, length_unit: str = "m") -> Figure:
+                 t_max: float | None = None, legend: bool = True, length_unit: str = "m",
+                 marine: bool = False) -> Figure:
     """Overlaid x-y paths of runs of the same desired path.
 
     The desired path (solid black, its start heading arrowed) and each run's actual path
-    (coloured by law; dashed, dash-dotted for output feedback) with its start marked
-    (square) and ``heading_arrows`` arrows of the heading along it (the first at the start).
+    (coloured by law, with the law's marker at sparse intervals; dashed, dash-dotted for
+    output feedback) with its start marked (square) and ``heading_arrows`` arrows of the
+    heading along it (the first at the start). A run that did not complete (diverged,
+    lost_track) is dotted, with an x at its last point and its status in its label. The panel
+    is sized to the data (equal scale, a margin around the paths).
 
     Parameters
     ----------
@@ -284,6 +451,8 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
         Draw the legend in the axes.
     length_unit : str
         The unit of x and y in the axis labels (the model's unit of length).
+    marine : bool
+        The marine convention: North up, East right (y horizontal, x vertical; default False).
 
     Returns
     -------
@@ -306,6 +475,10 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
     >>> figure = paths_figure(runs[:2], t_max=20.0)
     >>> figure.axes[0].get_title()
     'paper-fig2: x-y paths (arrows: heading, t <= 20 s)'
+    >>> [line.get_marker() for line in figure.axes[0].get_lines() if line.get_label() in ("hinf", "lqr")]
+    ['o', 's']
+    >>> paths_figure(runs[:2], marine=True).axes[0].get_ylabel()
+    'North x [m]'
     """
     runs = _runs(runs)
     first = runs[0][1]
@@ -313,27 +486,43 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
     model = first.trajectory.model()
     if heading_arrows is None:
         heading_arrows = max(2, min(5, 12 // len(runs)))
+    q_d = first.simulation.q_d[_window(first, t_max)]
+    paths = [r.simulation.q[_window(r, t_max)] for _, r in runs]
+    data = [_plane(q_d, ix, iy, marine)] + [_plane(q, ix, iy, marine) for q in paths]
+    view = _data_box(_view_data(data, [r for _, r in runs]))
     if ax is None:
-        fig = Figure(figsize=(7.2, 5.8), layout="constrained")
+        fig = Figure(figsize=_xy_figsize(_view_data(data, [r for _, r in runs]), 7.2, 1.4), layout="constrained")
         ax = fig.subplots()
     else:
         fig = ax.figure
-    q_d = first.simulation.q_d[_window(first, t_max)]
-    paths = [r.simulation.q[_window(r, t_max)] for _, r in runs]
-    length = 0.045 * _span([q_d[:, [ix, iy]]] + [q[:, [ix, iy]] for q in paths])
-    ax.plot(q_d[:, ix], q_d[:, iy], "-", color="black", lw=2.0, label="desired", zorder=2)
-    ax.plot(q_d[0, ix], q_d[0, iy], "o", color="black", ms=6, zorder=5)
-    _heading_arrows(ax, q_d, model, 1, length, "black")
+    length = 0.045 * max(view[0][1] - view[0][0], view[1][1] - view[1][0]) / (1.0 + 2.0 * _XY_MARGIN)
+    desired_hv = data[0]
+    ax.plot(*desired_hv, "-", color="black", lw=2.0, label="desired", zorder=2)
+    ax.plot(desired_hv[0][0], desired_hv[1][0], "o", color="black", ms=6, zorder=5)
+    _heading_arrows(ax, q_d, model, 1, length, "black", marine=marine)
     widths = np.linspace(2.4, 1.2, len(runs)) if len(runs) > 1 else [1.6]
-    for i, ((label, _), q, style, width) in enumerate(zip(runs, paths, _styles(runs), widths)):
-        ax.plot(q[:, ix], q[:, iy], lw=width, label=label, zorder=3, **style)
-        ax.plot(q[0, ix], q[0, iy], "s", color=style["color"], ms=6, zorder=5)
-        _heading_arrows(ax, q, model, heading_arrows, length, style["color"], offset=i / len(runs))
+    for i, ((label, result), q, hv, style, width) in enumerate(zip(runs, paths, data[1:], _styles(runs), widths)):
+        name = _run_label(label, result)
+        inside = _inside(*hv, view)
+        if not _completed(result) and not inside[-1]:
+            # It ends outside the panel: how far, in the label; the arrows on the part inside.
+            off = float(position_error(result)[-1])
+            name = (f"{label} ({result.simulation.status.name}, ends "
+                    f"{f'{off:,.0f}' if off >= 100.0 else f'{off:.3g}'} {length_unit} off the path)")
+            q = q[:max(int(np.argmin(inside)), 1)]
+        ax.plot(*hv, lw=width, label=name, zorder=3, **_path_style(style, *hv))
+        ax.plot(hv[0][0], hv[1][0], "s", color=style["color"], ms=6, zorder=5)
+        _mark_end(ax, *hv, result, style["color"])
+        _exit_arrow(ax, *hv, view, style["color"])
+        _heading_arrows(ax, q, model, heading_arrows, length, style["color"], offset=i / len(runs), marine=marine)
     ax.plot([], [], "o", color="black", ms=6, label="desired start")
     ax.plot([], [], "s", color="gray", ms=6, label="actual start")
-    ax.set_xlabel(f"x [{length_unit}]")
-    ax.set_ylabel(f"y [{length_unit}]")
-    ax.set_aspect("equal", adjustable="datalim")
+    if any(not _completed(r) for _, r in runs):
+        ax.plot([], [], "x", color="gray", ms=8, mew=2.0, label="where a failed run stops")
+    _plane_labels(ax, length_unit, marine)
+    ax.set_xlim(*view[0])
+    ax.set_ylim(*view[1])
+    ax.set_aspect("equal", adjustable="box")
     ax.grid(True, alpha=0.3)
     if legend:
         ax.legend(loc="best", fontsize="small")
@@ -346,7 +535,9 @@ def paths_figure(runs: Runs, title: str | None = None, heading_arrows: int | Non
 def errors_figure(runs: Runs, title: str | None = None) -> Figure:
     """Position error |p - p_d| (log scale) and wrapped heading error against time.
 
-    Two panels sharing the time axis (s); the heading error wrap(psi - psi_d) in degrees.
+    Two panels sharing the time axis (s); the heading error wrap(psi - psi_d) in degrees. Runs
+    are told apart by colour, line style and a marker per law at sparse intervals; a run that
+    did not complete has its status in its label and an x where it stops.
 
     Parameters
     ----------
@@ -381,17 +572,21 @@ def errors_figure(runs: Runs, title: str | None = None) -> Figure:
     ax_p, ax_h = fig.subplots(2, 1, sharex=True)
     errors = [position_error(result) for _, result in runs]
     peak = max(float(np.max(e)) for e in errors)
-    # Four decades below the peak: a start on the path (error 0) stays readable on a log axis.
-    floor = 1e-4 * peak if peak > 0.0 else 1e-12
+    # Four decades below the peak of the completed runs: a start on the path (error 0) stays
+    # readable on a log axis, and a run that diverged does not push the others below the floor.
+    completed = [float(np.max(e)) for e, (_, r) in zip(errors, runs) if _completed(r)]
+    reference = max(completed) if completed else peak
+    floor = 1e-4 * reference if reference > 0.0 else 1e-12
     largest = 0.0
     for (label, result), error, style in zip(runs, errors, _styles(runs)):
         t = result.simulation.t
-        ax_p.plot(t, np.maximum(error, floor), label=label, **_series_style(style))
+        ax_p.plot(t, np.maximum(error, floor), label=_run_label(label, result), **_series_style(style, len(t)))
+        _mark_end(ax_p, np.asarray(t), np.maximum(error, floor), result, style["color"])
         heading = result.trajectory.model().heading_index()
         if heading >= 0:
             e = np.degrees(result.simulation.q_e()[:, heading])
             largest = max(largest, float(np.max(np.abs(e))))
-            ax_h.plot(t, e, label=label, **_series_style(style))
+            ax_h.plot(t, e, label=_run_label(label, result), **_series_style(style, len(t)))
     ax_p.set_yscale("log")
     ax_p.set_ylim(floor, 2.0 * max(peak, floor))
     ax_p.set_ylabel("position error |p - p_d| [m]")
@@ -412,7 +607,7 @@ def controls_figure(runs: Runs, title: str | None = None) -> Figure:
     """Each input against time: the desired input u_d (solid black) and the applied ones.
 
     One panel per input, sharing the time axis (s); the ship's inputs labelled in m/s^2 and
-    rad/s^2.
+    rad/s^2. Runs are told apart by colour, line style and a marker per law at sparse intervals.
 
     Parameters
     ----------
@@ -450,7 +645,8 @@ def controls_figure(runs: Runs, title: str | None = None) -> Figure:
     axes = np.atleast_1d(fig.subplots(m, 1, sharex=True))
     for i, ax in enumerate(axes):
         for (label, result), style in zip(runs, _styles(runs)):
-            ax.plot(result.simulation.t, result.simulation.u[:, i], label=label, **_series_style(style))
+            ax.plot(result.simulation.t, result.simulation.u[:, i], label=_run_label(label, result),
+                    **_series_style(style, len(result.simulation.t)))
         ax.plot(first.simulation.t, first.simulation.u_d[:, i], "-", color="black", lw=1.8,
                 label="desired u_d", zorder=4)
         ax.set_ylabel(f"u{i + 1} [{units[i]}]")
@@ -604,11 +800,14 @@ def coupling_figure(runs: Runs, title: str | None = None) -> Figure:
     return fig
 
 
-def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figure:
-    """One panel of overlaid x-y paths per scenario of a recovery study.
+def recovery_figure(study, columns: int = 3, t_max: float | None = None, marine: bool = False) -> Figure:
+    """One panel of overlaid x-y paths per scenario of a recovery study, every law's run drawn.
 
-    Each panel is :func:`paths_figure` of the scenario's runs (failed runs left out), labelled
-    by law, with one legend for the figure.
+    Each panel is :func:`paths_figure` of the scenario's runs, labelled by law. A run that did
+    not complete (diverged, lost_track) is drawn dotted with an x where it stops and its status
+    in the legend (and, when it ends outside the panel, a note where it leaves it); a run that
+    failed before its closed loop (a conjugate point, a solver failure) is named in the panel
+    with its status. One legend for the figure.
 
     Parameters
     ----------
@@ -619,6 +818,8 @@ def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figu
     t_max : float, optional
         The time window drawn (s, absolute); default per panel: the latest settling time of
         its runs plus 5 s (the whole horizon when a run does not settle).
+    marine : bool, optional
+        The marine convention: North up, East right (y horizontal, x vertical; default False).
 
     Returns
     -------
@@ -647,25 +848,32 @@ def recovery_figure(study, columns: int = 3, t_max: float | None = None) -> Figu
     rows = math.ceil(len(scenarios) / columns)
     fig = Figure(figsize=(4.6 * columns, 4.3 * rows + 0.6), layout="constrained")
     axes = np.atleast_1d(fig.subplots(rows, columns)).ravel()
-    handles = labels = None
+    legend: dict[str, object] = {}
     for ax, name in zip(axes, scenarios):
-        verdicts = [v for v in study.verdicts if v.scenario == name and v.result is not None]
-        if not verdicts:
+        verdicts = [v for v in study.verdicts if v.scenario == name]
+        drawn = [v for v in verdicts if v.result is not None]
+        no_run = [v for v in verdicts if v.result is None]
+        if not drawn:
             ax.set_title(f"{name}: every run failed")
-            continue
-        window = t_max
-        if window is None:
-            settling = [v.settling_time for v in verdicts]
-            if all(s is not None for s in settling):
-                window = max(settling) + 5.0 + float(verdicts[0].result.simulation.t[0])
-        paths_figure([(v.controller.name, v.result) for v in verdicts], heading_arrows=4, ax=ax,
-                     t_max=window, legend=False,
-                     title=name + ("" if window is None else f" (t <= {window:.0f} s)"))
-        handles, labels = ax.get_legend_handles_labels()
+        else:
+            window = t_max
+            if window is None:
+                settling = [v.settling_time for v in drawn]
+                if all(s is not None for s in settling):
+                    window = max(settling) + 5.0 + float(drawn[0].result.simulation.t[0])
+            paths_figure([(v.controller.name, v.result) for v in drawn], heading_arrows=4, ax=ax,
+                         t_max=window, legend=False, marine=marine,
+                         title=name + ("" if window is None else f" (t <= {window:.0f} s)"))
+        if no_run:
+            ax.text(0.02, 0.02, "\n".join(f"{v.controller.name}: {v.status}, no run to draw" for v in no_run),
+                    transform=ax.transAxes, fontsize="x-small", color="tab:red", va="bottom", ha="left")
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            legend.setdefault(label, handle)
     for ax in axes[len(scenarios):]:
         ax.set_visible(False)
-    if handles:
-        fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize="small")
+    if legend:
+        fig.legend(list(legend.values()), list(legend), loc="outside lower center",
+                   ncol=min(len(legend), 2 * columns), fontsize="small")
     return fig
 
 
