@@ -2290,6 +2290,121 @@ Examples
 >>> P = hc.solve_law_riccati(lqr, np.eye(6), np.eye(6), 2.2)
 >>> bool(np.all(np.linalg.eigvalsh(P.value(0.0)) > 0))
 True)").c_str());
+  m.def("controller_gain",
+        [](const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
+           const GammaStarOptions& options) { return controller_gain(trajectory, controller, Q, Qf, options); },
+        py::arg("trajectory"), py::arg("controller"), py::arg("Q"), py::arg("Qf"),
+        py::arg("options") = GammaStarOptions{}, py::call_guard<ComputationScope>(),
+        doc({"controller_gain", "control/analysis.hpp"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory the controller tracks (its model's n and m).
+controller : Controller
+    Any state-feedback controller: CascadeController, BacksteppingController, a law written in
+    Python. It is linearized along the trajectory, K(t) = -du/dq at q_d(t), by its
+    control_jacobian (central differences unless it has its own).
+Q : array_like, shape (n, n)
+    Weight of the tracking error in z, symmetric positive semidefinite.
+Qf : array_like, shape (n, n)
+    Weight of the final error, symmetric positive definite.
+options : GammaStarOptions, optional
+    The bracket, tolerance, evaluations and solver options of the search (one gamma at a time).
+
+Returns
+-------
+GammaStarResult
+    The induced L2 gain of the controller's linearized closed loop from w to z on [t0, tf] as
+    gamma_star.
+
+Raises
+------
+ValueError
+    A controller of other sizes than the model, Q or Qf not such weights, bad options.
+SolverError
+    An integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> gains = [hc.controller_gain(trajectory, law, np.eye(6), np.eye(6)).gamma_star
+...          for law in (hc.CascadeController(trajectory), hc.BacksteppingController(trajectory))]
+>>> [round(gain, 2) for gain in gains]                       # the ship baselines' attenuation
+[4.33, 2.57])").c_str());
+  m.def("controller_escape_time", &controller_escape_time, py::arg("trajectory"), py::arg("controller"), py::arg("Q"),
+        py::arg("Qf"), py::arg("gamma"), py::arg("options") = SolverOptions{}, py::call_guard<ComputationScope>(),
+        doc({"controller_escape_time"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory the controller tracks.
+controller : Controller
+    The controller (see controller_gain).
+Q : array_like, shape (n, n)
+    The weight of the tracking error in z.
+Qf : array_like, shape (n, n)
+    The weight of the final error.
+gamma : float
+    The level tested.
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+float
+    The first escape of the controller's closed-loop Riccati equation (backward from tf), or
+    NaN: its induced L2 gain is below gamma.
+
+Raises
+------
+ValueError
+    As controller_gain.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> law = hc.BacksteppingController(trajectory)
+>>> hc.controller_escape_time(trajectory, law, np.eye(6), np.eye(6), 10.0)
+nan)").c_str());
+  m.def("solve_controller_riccati", &solve_controller_riccati, py::arg("trajectory"), py::arg("controller"),
+        py::arg("Q"), py::arg("Qf"), py::arg("gamma"), py::arg("options") = SolverOptions{},
+        py::call_guard<ComputationScope>(),
+        doc({"solve_controller_riccati"}, R"(Parameters
+----------
+trajectory : Trajectory
+    The desired trajectory the controller tracks.
+controller : Controller
+    The controller (see controller_gain).
+Q : array_like, shape (n, n)
+    The weight of the tracking error in z.
+Qf : array_like, shape (n, n)
+    The weight of the final error.
+gamma : float
+    Above the controller's gain (controller_gain).
+options : SolverOptions, optional
+    Integrator and tolerances.
+
+Returns
+-------
+SymmetricSolution
+    P(t) of the controller's closed-loop Riccati equation; its worst-case disturbance at gamma
+    is w = gamma^-2 D_e' P (q - q_d) (hc.Disturbance takes it).
+
+Raises
+------
+ValueError
+    As controller_gain.
+ConjugatePointError
+    gamma is at or below the controller's gain.
+SolverError
+    The integration failed.
+
+Examples
+--------
+)" HINF_TRAJECTORY_EXAMPLE R"(
+>>> P = hc.solve_controller_riccati(trajectory, hc.BacksteppingController(trajectory), np.eye(6), np.eye(6), 10.0)
+>>> bool(np.all(np.linalg.eigvalsh(P.value(0.0)) > 0))
+True)").c_str());
   m.def("gamma_star_output_feedback",
         [](const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, const Mat& N, const Mat& Sigma0,
            const GammaStarOptions& options) {

@@ -1460,6 +1460,13 @@ open-loop-unstable vehicle's growth acts over one interval only (second construc
 A Trajectory is immutable once made: its const functions
 keep no state (lookups take caller-owned cursors), so one trajectory may be read from several
 threads at once (run_scenarios shares one between runs, study.hpp).)contract"},
+    {"controller_escape_time", R"contract(The same two for any state-feedback controller of the trajectory's model (the ship
+baselines, a law written in Python), linearized along the trajectory: K(t) = -du/dq at
+(t, q_d(t)) from controller.control_jacobian (central differences unless it has its own).
+Calls the controller from this thread only. InputError for a controller of other sizes.)contract"},
+    {"controller_gain", R"contract(The same for any state-feedback controller of the trajectory's model, linearized along it
+(controller_escape_time, riccati.hpp): the ship baselines have one too. The
+gammas are tried one at a time (the controller is called from this thread only).)contract"},
     {"core/angles.hpp", R"contract(Angles, and the tracking error of a model whose state has a heading angle.
 
 The heading error psi - psi_d is an angle: wherever it enters a control law, an estimator or
@@ -1935,6 +1942,7 @@ it within their integration error); InputError when it does not start as the hor
     {"simulate_state_feedback", R"contract(The closed loop of `plant` (null: the trajectory's model) under `controller`: the plant's f,
 G and D are integrated; the trajectory (of the design model) gives q_d and the divergence
 bound. A plant other than the design model is the model error of a robustness study.)contract"},
+    {"solve_controller_riccati", R"contract(P at gamma for that controller, stored (its worst case is w = gamma^-2 D_e' P x).)contract"},
     {"solve_discrete_game", R"contract(Solves the game Riccati difference equation backward from M_N = Qf. Q (n x n) symmetric
 positive semidefinite, Qf symmetric positive definite, gamma > 0 (may be +inf). InputError for
 bad input; ConjugatePointError when gamma^2 T I - D_k' M_{k+1} D_k is not positive definite at

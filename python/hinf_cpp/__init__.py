@@ -146,6 +146,9 @@ from hinf_cpp._core import (
     grde_escape_time,
     law_escape_time,
     law_gain,
+    controller_gain,
+    controller_escape_time,
+    solve_controller_riccati,
     solve_law_riccati,
     max_rho_sigma_z,
     metric_table,
@@ -184,7 +187,8 @@ __all__ = [
     # the design
     "Trajectory", "TrajectoryOptions", "SolverOptions", "Method", "NewtonSystems", "StepStats", "PiecewisePolynomial",
     "solve_grde", "solve_game_are", "SymmetricSolution", "RiccatiSolution", "SolveStats", "solve_filter_riccati",
-    "FilterRiccatiSolution", "grde_escape_time", "filter_escape_time", "law_gain", "law_escape_time", "solve_law_riccati", "gamma_star", "gamma_star_output_feedback",
+    "FilterRiccatiSolution", "grde_escape_time", "filter_escape_time", "law_gain", "law_escape_time", "solve_law_riccati",
+    "controller_gain", "controller_escape_time", "solve_controller_riccati", "gamma_star", "gamma_star_output_feedback",
     "GammaStarOptions", "GammaStarResult", "GammaTrial", "GammaCondition", "max_rho_sigma_z", "certify",
     "Certificates",
     # laws and closed loops

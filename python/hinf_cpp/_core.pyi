@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'BacksteppingController', 'BacksteppingGains', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'law_escape_time', 'law_gain', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'solve_law_riccati', 'standard_normal_samples', 'wrap_angle']
+__all__: list[str] = ['ActuatorLimits', 'Auv', 'AuvParameters', 'BacksteppingController', 'BacksteppingGains', 'CascadeController', 'CascadeGains', 'Certificates', 'ConjugatePointError', 'Controller', 'CouplingConditionError', 'CouplingPolicy', 'DesiredStates', 'DiscreteDesign', 'DiscreteOutputFeedback', 'Disturbance', 'EstimatorSeries', 'FilterLinearization', 'FilterRiccatiSolution', 'FleetModel', 'FossenVessel', 'FossenVesselParameters', 'GammaCondition', 'GammaStarOptions', 'GammaStarResult', 'GammaTrial', 'GeneratedFunction', 'GeneratedModel', 'Harmonic', 'HinfError', 'HinfStateFeedback', 'HorizonWindow', 'Hovercraft', 'HovercraftParameters', 'Interpolation', 'Law', 'LinearModel', 'MeasurementSpec', 'MeasurementUpdate', 'MeasurementUse', 'Method', 'MetricDefinition', 'Metrics', 'Model', 'ModelStructure', 'NewtonSystems', 'OnlineController', 'OnlineCounts', 'OnlineFilter', 'OnlineOptions', 'OutputFeedbackOptions', 'OutputFeedbackProblem', 'PathChange', 'PiecewisePolynomial', 'PlanarVtol', 'PlanarVtolParameters', 'RecedingHorizon', 'RecedingHorizonOptions', 'RecedingHorizonReport', 'RecedingOnlineController', 'RecedingOnlineStatus', 'RiccatiSolution', 'RunOutcome', 'RunResult', 'RunStatus', 'SampledDesign', 'SampledLaw', 'SampledLinearization', 'SampledLoopOptions', 'SamplingSpec', 'Scenario', 'ShipModel', 'ShipParameters', 'Signal', 'SimulationOptions', 'SimulationResult', 'SolveStats', 'SolverError', 'SolverOptions', 'StepReport', 'StepStats', 'StepStatus', 'StudyOptions', 'StudyRun', 'SymmetricSolution', 'TerminalWeight', 'Timing', 'Trajectory', 'TrajectoryOptions', 'VectorSignal', 'WindowGammaStar', 'certify', 'check_model_structure', 'check_scenario_toml', 'clear_interrupt', 'code_trusted_by_environment', 'compute_metrics', 'controller_escape_time', 'controller_gain', 'discrete_conjugate_time', 'filter_escape_time', 'gamma_star', 'gamma_star_discrete', 'gamma_star_discrete_output_feedback', 'gamma_star_output_feedback', 'grde_escape_time', 'interrupt_requested', 'l2_norm', 'law_escape_time', 'law_gain', 'load_scenario_toml', 'max_rho_sigma_z', 'metric_table', 'needs_planning_toml', 'noise_sample_count', 'output_count', 'output_grid', 'overshoot_warning', 'parse_model_toml', 'parse_scenario_toml', 'parse_signal_toml', 'receding_horizon_gamma_star', 'request_interrupt', 'results_csv', 'results_json', 'run_scenario', 'run_scenario_with_noise', 'run_scenarios', 'scenario_certificates', 'scenario_gamma_star', 'scenario_gamma_star_output_feedback', 'scenario_noise', 'scenario_receding_horizon', 'scenario_toml', 'scenario_warnings', 'set_python_model_hook', 'simulate_output_feedback', 'simulate_receding_horizon', 'simulate_sampled', 'simulate_sampled_receding_horizon', 'simulate_state_feedback', 'solve_controller_riccati', 'solve_discrete_game', 'solve_discrete_output_feedback', 'solve_filter_riccati', 'solve_game_are', 'solve_grde', 'solve_law_riccati', 'standard_normal_samples', 'wrap_angle']
 class HinfError(RuntimeError):
     """
     The exceptions of hinf_cpp.
@@ -7216,6 +7216,104 @@ def compute_metrics(model: Model, run: SimulationResult, Q: typing.Annotated[num
     >>> round(metrics.max_position_error, 3), metrics.response_ratio         # no disturbance: no gain
     (1.414, nan)
     """
+def controller_escape_time(trajectory: Trajectory, controller: Controller, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: SolverOptions = ...) -> float:
+    """
+    The same two for any state-feedback controller of the trajectory's model (the ship
+    baselines, a law written in Python), linearized along the trajectory: K(t) = -du/dq at
+    (t, q_d(t)) from controller.control_jacobian (central differences unless it has its own).
+    Calls the controller from this thread only. InputError for a controller of other sizes.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The desired trajectory the controller tracks.
+    controller : Controller
+        The controller (see controller_gain).
+    Q : array_like, shape (n, n)
+        The weight of the tracking error in z.
+    Qf : array_like, shape (n, n)
+        The weight of the final error.
+    gamma : float
+        The level tested.
+    options : SolverOptions, optional
+        Integrator and tolerances.
+    
+    Returns
+    -------
+    float
+        The first escape of the controller's closed-loop Riccati equation (backward from tf), or
+        NaN: its induced L2 gain is below gamma.
+    
+    Raises
+    ------
+    ValueError
+        As controller_gain.
+    SolverError
+        The integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> law = hc.BacksteppingController(trajectory)
+    >>> hc.controller_escape_time(trajectory, law, np.eye(6), np.eye(6), 10.0)
+    nan
+    """
+def controller_gain(trajectory: Trajectory, controller: Controller, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], options: GammaStarOptions = ...) -> GammaStarResult:
+    """
+    The same for any state-feedback controller of the trajectory's model, linearized along it
+    (controller_escape_time, riccati.hpp): the ship baselines have one too. The
+    gammas are tried one at a time (the controller is called from this thread only).
+    
+    gamma*, conjugate points and the certificates of paper §3.
+    
+    gamma* (eq. 14) is the infimum of the gammas for which the GRDE (13) has no conjugate point
+    on [t0, tf]. Whether a given gamma passes is decided by grde_escape_time(), which follows
+    the inverse W = Z^-1 through an escape, so no escape between solver steps is missed. The
+    pass/fail answer is monotone in gamma, so gamma* is found by bisection (k-section: one
+    evaluation per thread and round).
+    
+    With imperfect measurements (paper §4) a gamma must also keep the filter Riccati equation
+    (36) (here with A = A_e(t)) bounded and positive definite and satisfy the coupling
+    condition rho(Sigma Z) < gamma^2 on [t0, tf]; each condition is monotone in gamma too.
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The desired trajectory the controller tracks (its model's n and m).
+    controller : Controller
+        Any state-feedback controller: CascadeController, BacksteppingController, a law written in
+        Python. It is linearized along the trajectory, K(t) = -du/dq at q_d(t), by its
+        control_jacobian (central differences unless it has its own).
+    Q : array_like, shape (n, n)
+        Weight of the tracking error in z, symmetric positive semidefinite.
+    Qf : array_like, shape (n, n)
+        Weight of the final error, symmetric positive definite.
+    options : GammaStarOptions, optional
+        The bracket, tolerance, evaluations and solver options of the search (one gamma at a time).
+    
+    Returns
+    -------
+    GammaStarResult
+        The induced L2 gain of the controller's linearized closed loop from w to z on [t0, tf] as
+        gamma_star.
+    
+    Raises
+    ------
+    ValueError
+        A controller of other sizes than the model, Q or Qf not such weights, bad options.
+    SolverError
+        An integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> gains = [hc.controller_gain(trajectory, law, np.eye(6), np.eye(6)).gamma_star
+    ...          for law in (hc.CascadeController(trajectory), hc.BacksteppingController(trajectory))]
+    >>> [round(gain, 2) for gain in gains]                       # the ship baselines' attenuation
+    [4.33, 2.57]
+    """
 def discrete_conjugate_time(sampled: SampledLinearization, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
     The latest sample time t_k at which the existence condition fails (the recursion stops there),
@@ -8522,6 +8620,48 @@ def simulate_state_feedback(trajectory: Trajectory, controller: Controller, dist
     >>> error = np.hypot(run.q_e()[:, 3], run.q_e()[:, 4])       # position error (m)
     >>> round(float(error[0]), 3), bool(error[-1] < 0.1)
     (1.414, True)
+    """
+def solve_controller_riccati(trajectory: Trajectory, controller: Controller, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex, options: SolverOptions = ...) -> SymmetricSolution:
+    """
+    P at gamma for that controller, stored (its worst case is w = gamma^-2 D_e' P x).
+    
+    Parameters
+    ----------
+    trajectory : Trajectory
+        The desired trajectory the controller tracks.
+    controller : Controller
+        The controller (see controller_gain).
+    Q : array_like, shape (n, n)
+        The weight of the tracking error in z.
+    Qf : array_like, shape (n, n)
+        The weight of the final error.
+    gamma : float
+        Above the controller's gain (controller_gain).
+    options : SolverOptions, optional
+        Integrator and tolerances.
+    
+    Returns
+    -------
+    SymmetricSolution
+        P(t) of the controller's closed-loop Riccati equation; its worst-case disturbance at gamma
+        is w = gamma^-2 D_e' P (q - q_d) (hc.Disturbance takes it).
+    
+    Raises
+    ------
+    ValueError
+        As controller_gain.
+    ConjugatePointError
+        gamma is at or below the controller's gain.
+    SolverError
+        The integration failed.
+    
+    Examples
+    --------
+    >>> u_d = [1.0, hc.Signal(0.0, [hc.Harmonic(amplitude=0.3, omega=0.2)])]       # paper Fig. 1
+    >>> trajectory = hc.Trajectory(hc.ShipModel(), [1, 0, 0, 0, 0, 0], u_d, 0.0, 10.0)
+    >>> P = hc.solve_controller_riccati(trajectory, hc.BacksteppingController(trajectory), np.eye(6), np.eye(6), 10.0)
+    >>> bool(np.all(np.linalg.eigvalsh(P.value(0.0)) > 0))
+    True
     """
 def solve_discrete_game(trajectory: typing.Any, period: typing.SupportsFloat | typing.SupportsIndex, Q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], Qf: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], gamma: typing.SupportsFloat | typing.SupportsIndex) -> DiscreteDesign:
     """

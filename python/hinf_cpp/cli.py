@@ -773,8 +773,8 @@ def _add_comparison_options(parser: argparse.ArgumentParser) -> None:
     modes = [mode.name for mode in Feedback]
     parser.add_argument("--feedback", help=f"{', '.join(modes)} or {','.join(modes)} (default: all with [measurement])")
     parser.add_argument("--worst-case", action="store_true",
-                        help="add each law's own worst-case disturbance at gamma (hinf: w* of eq. 16; lqr: that of "
-                             "its closed loop; cascade: hinf's)")
+                        help="add each law's own worst-case disturbance at gamma (hinf: w* of eq. 16; the others: "
+                             "that of their own closed loop)")
 
 
 def _add_marine(parser: argparse.ArgumentParser) -> None:

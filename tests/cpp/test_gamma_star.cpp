@@ -21,6 +21,9 @@
 #include <vector>
 
 #include "hinf/control/analysis.hpp"
+#include "hinf/control/backstepping.hpp"
+#include "hinf/control/cascade.hpp"
+#include "hinf/control/controller.hpp"
 #include "hinf/control/riccati.hpp"
 #include "hinf/control/trajectory.hpp"
 #include "hinf/core/errors.hpp"
@@ -882,7 +885,65 @@ TEST(LawGain, TheHinfLawsClosedLoopSolutionAtItsGammaIsItsDesign) {
   EXPECT_GT((P2->value(0.0) - Z->Z(0.0)).norm(), 1e-3 * Z->Z(0.0).norm());
 }
 
+// The H-infinity law seen only through control(): its Jacobian comes from the default central
+// differences, not from the design's K = kappa B'Z.
+class ControlOnly final : public hinf::Controller {
+ public:
+  explicit ControlOnly(hinf::RiccatiSolutionPtr design) : law_(std::move(design)) {}
+  std::string name() const override { return "control-only"; }
+  int n() const override { return law_.n(); }
+  int m() const override { return law_.m(); }
+  void control(double t, const hinf::ConstVecRef& q, hinf::VecRef u) override { law_.control(t, q, u); }
+
+ private:
+  hinf::HinfStateFeedback law_;
+};
+
+TEST(LawGain, AControllersLinearizationGivesTheDesignsGain) {
+  // The same law two ways: its design's K(t) = B'Z(t), and -du/dq of its control() by central
+  // differences along q_d (truncation and round-off ~1e-9 of K). Escape times and gains agree
+  // to the searches' tolerance (rtol 1e-7 of gamma, escapes to 1e-6).
+  const auto trajectory = paper_trajectory();
+  const Mat I = Mat::Identity(6, 6);
+  const auto design = hinf::solve_grde(trajectory, I, I, 5.0);
+  ControlOnly controller(design);
+  const double by_design = hinf::law_gain(design, I, I).gamma_star;
+  const double by_controller = hinf::controller_gain(trajectory, controller, I, I).gamma_star;
+  std::printf("[law gain] design %.9f, controller %.9f\n", by_design, by_controller);
+  EXPECT_NEAR(by_controller, by_design, 2e-6 * by_design);
+  const double gamma = 0.99 * by_design;  // below the gain: both escape, at the same time
+  const double t_design = hinf::law_escape_time(design, I, I, gamma);
+  const double t_controller = hinf::controller_escape_time(trajectory, controller, I, I, gamma);
+  ASSERT_FALSE(std::isnan(t_design));
+  EXPECT_NEAR(t_controller, t_design, 1e-5 * 40.0);
+}
+
+TEST(LawGain, TheShipBaselinesHaveAGainAboveGammaStar) {
+  // No state-feedback law does better than the game's gamma*: the cascade and backstepping
+  // laws, linearized along the paper's path, have gains above it (finite: their linearized
+  // loops have no conjugate point at large gamma).
+  const auto trajectory = paper_trajectory();
+  const Mat I = Mat::Identity(6, 6);
+  const double star = hinf::gamma_star(trajectory, I, I).gamma_star;
+  hinf::CascadeController cascade(trajectory);
+  hinf::BacksteppingController backstepping(trajectory);
+  for (hinf::Controller* law : std::vector<hinf::Controller*>{&cascade, &backstepping}) {
+    const GammaStarResult gain = hinf::controller_gain(trajectory, *law, I, I);
+    std::printf("[law gain] %s: %.6f (gamma* %.6f)\n", law->name().c_str(), gain.gamma_star, star);
+    EXPECT_TRUE(gain.converged) << law->name();
+    EXPECT_GE(gain.gamma_star, star * (1 - 2e-6)) << law->name();
+    EXPECT_TRUE(std::isfinite(gain.gamma_star)) << law->name();
+  }
+}
+
 TEST(LawGain, BadInputIsAnInputError) {
+  {
+    // A controller whose sizes are not the model's.
+    const auto trajectory = paper_trajectory();
+    ScalarLaw c;
+    ControlOnly scalar(c.law());
+    EXPECT_THROW(hinf::controller_gain(trajectory, scalar, Mat::Identity(6, 6), Mat::Identity(6, 6)), hinf::InputError);
+  }
   ScalarLaw c;
   const auto law = c.law();
   EXPECT_THROW(hinf::law_escape_time(nullptr, m11(1.0), m11(1.0), 2.0), hinf::InputError);

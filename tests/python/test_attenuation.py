@@ -179,12 +179,11 @@ def test_ship_frequency_gains_stay_below_each_laws_bound(ship):
 
 
 @pytest.mark.parametrize("call, match", [
-    (lambda s: gain_against_frequency(s, "cascade"), "no linearized closed loop"),
     (lambda s: gain_against_frequency(s, "hinf", channels=7), "does not exist"),
     (lambda s: gain_against_frequency(s, "hinf", channels=4), "measurement-noise channel"),
     (lambda s: gain_against_frequency(s, "hinf", frequencies=[1.0, 0.0]), "frequencies must be"),
     (lambda s: gain_against_frequency(s, "hinf", amplitude=-1.0), "amplitude must be"),
-    (lambda s: law_run(s, "cascade"), "no linearized closed loop"),
+    (lambda s: law_run(s, "mpc"), "unknown controller 'mpc'"),
 ])
 def test_bad_input_is_a_value_error(ship, call, match):
     with pytest.raises(ValueError, match=match):
@@ -242,7 +241,7 @@ def test_cli_writes_the_table_and_one_figure_per_channel(tmp_path, capsys):
     (["--frequencies", "a,b"], "not numbers"),
     (["--channels", "x"], "invalid channels 'x'"),
     (["--channels", "9"], "disturbance channel 9 does not exist"),
-    (["--laws", "cascade"], "no linearized closed loop"),
+    (["--laws", "mpc"], "unknown controller 'mpc'"),
 ])
 def test_cli_bad_input_is_one_line(tmp_path, capsys, args, match):
     try:
@@ -262,3 +261,13 @@ def test_cli_checks_its_output_folder_first(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "not a directory" in err and err.count("\n") == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["plain_file"]
+
+
+def test_the_baselines_gain_against_frequency_stays_below_their_own_bound(ship):
+    """The ship baselines, linearized along the path (hinf_cpp.controller_gain), have a bound
+    too: the measured gains of small sinusoids stay below it (the same 1e-3 margin), and they
+    have no design gamma."""
+    table = gain_against_frequency(ship, "cascade,backstepping", channels=[2], frequencies=[0.05, 1.0])
+    assert set(table.status) == {"completed"} and set(table.law) == {"cascade", "backstepping"}
+    assert np.all(table.gain <= table.bound * (1.0 + 1e-3))
+    assert np.all(np.isnan(table.gamma))

@@ -58,14 +58,16 @@ def test_bad_input_is_a_value_error(trajectory, call, match):
 
 def test_compare_reports_each_laws_own_attenuation():
     """hinf's gain lies between gamma* and its gamma (the game's value bounds every law from
-    below; the law guarantees its gamma); lqr has one too; cascade and output feedback have none."""
+    below; the law guarantees its gamma); lqr and the baselines (their controllers linearized)
+    have one above gamma* too; output feedback has none."""
     scenario = hc.load_scenario(hc.scenario_path("paper_fig2"))
     comparison = compare(scenario)
     gains = {run.key: run.metrics["induced_l2_gain"] for run in comparison.runs}
     star = hc.scenario_gamma_star(scenario).gamma_star
     assert star * (1 - 1e-6) <= gains["hinf"] < scenario.gamma
-    assert gains["lqr"] >= star * (1 - 1e-6)
-    assert all(math.isnan(gains[key]) for key in gains if key == "cascade" or key.endswith("output-feedback"))
+    for key in ("lqr", "cascade", "backstepping"):
+        assert gains[key] >= star * (1 - 1e-6), key
+    assert all(math.isnan(gains[key]) for key in gains if key.endswith("output-feedback"))
 
 
 def test_the_lqr_run_meets_its_own_worst_case():
@@ -92,7 +94,7 @@ def test_the_lqr_run_meets_its_own_worst_case():
     assert np.allclose(w0, own, rtol=1e-9, atol=1e-12)
     assert np.abs(own - hinf).max() > 1e-3
     comparison = compare(scenario, "hinf,lqr", worst_case=True)
-    assert "LQR law's own worst case" in comparison["lqr"].disturbance["description"]
+    assert "lqr law's own worst case" in comparison["lqr"].disturbance["description"]
     assert "eq. 16" in comparison["hinf"].disturbance["description"]
 
 
@@ -101,3 +103,54 @@ def test_lqr_below_its_gain_has_no_worst_case():
     scenario.worst_case, scenario.law, scenario.gamma = True, hc.Law.lqr, 1.5  # the LQR law's gain is 2.2
     with pytest.raises(hc.ConjugatePointError, match="closed-loop Riccati equation of the law"):
         hc.run_scenario(scenario)
+
+
+class PythonBackstepping(hc.Controller):
+    """The backstepping law seen through a controller written in Python: the binding's
+    controller_gain takes any hc.Controller (its Jacobian by central differences)."""
+
+    def __init__(self, trajectory):
+        hc.Controller.__init__(self)
+        self.law = hc.BacksteppingController(trajectory)
+
+    def name(self):
+        return "python-backstepping"
+
+    def n(self):
+        return 6
+
+    def m(self):
+        return 2
+
+    def control(self, t, q):
+        return self.law.control(t, q)
+
+
+class OneInput(PythonBackstepping):
+    def m(self):
+        return 1
+
+
+def test_a_baseline_run_meets_its_own_worst_case():
+    """[disturbance] worst_case with backstepping adds gamma^-2 D' P q_e, P of its own closed
+    loop linearized along the trajectory (solve_controller_riccati), not the design's Z; and the
+    gain of the same law written in Python is the C++ controller's."""
+    scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    scenario.tf, scenario.worst_case, scenario.law, scenario.gamma = 10.0, True, hc.Law.backstepping, 5.0
+    result = hc.run_scenario(scenario)
+    resolved = scenario.resolved()
+    t0, gamma = result.simulation.t[0], scenario.gamma
+    law = hc.BacksteppingController(result.trajectory, resolved.backstepping)
+    P = hc.solve_controller_riccati(result.trajectory, law, resolved.Q, resolved.Qf, gamma, resolved.solver)
+    q_e = result.simulation.q[0] - result.trajectory.q_d(t0)
+    signals = hc.Disturbance(scenario.disturbance).eval(t0, result.simulation.q[0])
+    own = signals + result.trajectory.D_e(t0).T @ P.value(t0) @ q_e / gamma**2
+    # The same P by the same code with the scenario's solver: round-off.
+    assert np.allclose(result.simulation.w[0], own, rtol=1e-9, atol=1e-12)
+    gain = hc.controller_gain(result.trajectory, law, resolved.Q, resolved.Qf).gamma_star
+    in_python = hc.controller_gain(result.trajectory, PythonBackstepping(result.trajectory), resolved.Q,
+                                   resolved.Qf).gamma_star
+    assert in_python == pytest.approx(gain, rel=1e-9)  # the same Jacobians, through Python
+    assert gain < gamma
+    with pytest.raises(ValueError, match="controller takes q of 6 numbers and gives u of 1; the model 'ship'"):
+        hc.controller_gain(result.trajectory, OneInput(result.trajectory), resolved.Q, resolved.Qf)

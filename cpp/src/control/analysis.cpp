@@ -220,6 +220,19 @@ GammaStarResult law_gain(const RiccatiSolutionPtr& law, const Mat& Q, const Mat&
   }, options);
 }
 
+GammaStarResult controller_gain(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
+                                const GammaStarOptions& options) {
+  options.validate();
+  controller_escape_time(trajectory, controller, Q, Qf, std::numeric_limits<double>::infinity(), options.solver);
+  // One gamma at a time: the controller keeps lookup state and is called from this thread only.
+  GammaStarOptions serial = options;
+  serial.threads = 1;
+  return bisect([&](double gamma) {
+    const double t = controller_escape_time(trajectory, controller, Q, Qf, gamma, options.solver);
+    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+  }, serial);
+}
+
 GammaStarResult gamma_star_discrete(const SampledLinearizationPtr& sampled, const Mat& Q, const Mat& Qf,
                                     const GammaStarOptions& options) {
   require(sampled != nullptr, "gamma_star_discrete needs a sampled linearization");

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+
+#include "hinf/control/controller.hpp"
 
 #include "hinf/core/checks.hpp"
 #include "hinf/core/errors.hpp"
@@ -22,12 +25,29 @@ namespace {
 
 enum class RiccatiKind { Control, Filter, ClosedLoop };
 
-// A state-feedback law u = u_d - kappa(t) B_e' Z(t) (q - q_d) whose closed loop is analysed.
+// The gain K(t) (m x n) of a state-feedback law u ~ u_d - K(t) (q - q_d) whose closed loop is
+// analysed: kappa(t) B_e' Z(t) of a design, or -du/dq of a controller at q_d(t). Writes into a
+// matrix of that size.
 struct ClosedLoopLaw {
-  const RiccatiSolution* design;
-  const Signal* gain_scaling;
-  double kappa(double t) const { return (*gain_scaling)(t); }
+  std::function<void(double t, Mat& K)> gain;
 };
+
+// The law u = u_d - kappa(t) B_e' Z(t) (q - q_d) of a design.
+ClosedLoopLaw design_law(const RiccatiSolution& design, const Signal& kappa) {
+  return {[&design, &kappa, cursor = std::size_t{0}](double t, Mat& K) mutable {
+    design.gain(t, K.data(), &cursor);
+    K *= kappa(t);
+  }};
+}
+
+// Any controller, linearized along the trajectory: K(t) = -du/dq at (t, q_d(t)).
+ClosedLoopLaw controller_law(const Trajectory& trajectory, Controller& controller) {
+  return {[&trajectory, &controller, q_d = Vec(trajectory.n())](double t, Mat& K) mutable {
+    trajectory.q_d(t, q_d.data());
+    controller.control_jacobian(t, q_d, K);
+    K = -K;
+  }};
+}
 
 // The equation's name in messages.
 const char* equation_name(RiccatiKind kind) {
@@ -135,8 +155,7 @@ class RiccatiProblem {
     trajectory_.A_e(t, q_d_, A_);
     if (!constant_) set_input_terms(t, q_d_);
     if (kind_ == RiccatiKind::ClosedLoop) {
-      law_->design->gain(t, K_.data(), &law_cursor_);
-      K_ *= law_->kappa(t);
+      law_->gain(t, K_);
       T_.noalias() = B_ * K_;
       T_ = A_ - T_;  // A_cl
       G_.noalias() = K_.transpose() * K_;
@@ -171,7 +190,6 @@ class RiccatiProblem {
   const Model& model_;
   RiccatiKind kind_;
   const ClosedLoopLaw* law_;  // ClosedLoop only
-  std::size_t law_cursor_ = 0;
   double shift_;
   int n_;
   double sign_;
@@ -259,7 +277,8 @@ double solution_scale(const Trajectory& trajectory, RiccatiKind kind, const Mat&
   if (kind == RiccatiKind::Control) {
     R_scale = largest_eigenvalue(Q);
   } else if (kind == RiccatiKind::ClosedLoop) {
-    const Mat K = law->kappa(t_start) * law->design->gain(t_start);
+    Mat K(trajectory.model().m(), trajectory.n());
+    law->gain(t_start, K);
     R_scale = largest_eigenvalue(Q + K.transpose() * K);
   } else {
     const Mat D = trajectory.D_e(t_start);
@@ -691,7 +710,7 @@ void check_law_input(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf,
 double law_escape_time(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma, const Signal& kappa,
                        const SolverOptions& options) {
   check_law_input(law, Q, Qf, gamma, kappa, options);
-  const ClosedLoopLaw closed{law.get(), &kappa};
+  const ClosedLoopLaw closed = design_law(*law, kappa);
   return escape_or_nan(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
                        options, &closed);
 }
@@ -700,10 +719,41 @@ std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolution
                                                            double gamma, const Signal& kappa,
                                                            const SolverOptions& options) {
   check_law_input(law, Q, Qf, gamma, kappa, options);
-  const ClosedLoopLaw closed{law.get(), &kappa};
+  const ClosedLoopLaw closed = design_law(*law, kappa);
   auto [dense, stats] = solve(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(),
                               symmetrized(Qf), options, /*store=*/true, &closed);
   return std::make_shared<const SymmetricSolution>(law->trajectory_ptr(), gamma, std::move(dense), stats);
+}
+
+namespace {
+
+void check_controller_input(const TrajectoryPtr& trajectory, const Controller& controller, const Mat& Q, const Mat& Qf,
+                            double gamma, const SolverOptions& options) {
+  check_grde_input(trajectory, Q, Qf, gamma, options);
+  const Model& model = trajectory->model();
+  require((controller.n() == 0 || controller.n() == model.n()) && controller.m() == model.m(), "the ",
+          controller.name(), " controller takes q of ", controller.n(), " numbers and gives u of ", controller.m(),
+          "; the model '", model.name(), "' has n = ", model.n(), " and m = ", model.m());
+}
+
+}  // namespace
+
+double controller_escape_time(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
+                              double gamma, const SolverOptions& options) {
+  check_controller_input(trajectory, controller, Q, Qf, gamma, options);
+  const ClosedLoopLaw closed = controller_law(*trajectory, controller);
+  return escape_or_nan(*trajectory, RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf), options,
+                       &closed);
+}
+
+std::shared_ptr<const SymmetricSolution> solve_controller_riccati(const TrajectoryPtr& trajectory,
+                                                                  Controller& controller, const Mat& Q, const Mat& Qf,
+                                                                  double gamma, const SolverOptions& options) {
+  check_controller_input(trajectory, controller, Q, Qf, gamma, options);
+  const ClosedLoopLaw closed = controller_law(*trajectory, controller);
+  auto [dense, stats] = solve(*trajectory, RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
+                              options, /*store=*/true, &closed);
+  return std::make_shared<const SymmetricSolution>(trajectory, gamma, std::move(dense), stats);
 }
 
 }  // namespace hinf

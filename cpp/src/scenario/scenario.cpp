@@ -293,6 +293,12 @@ TrajectoryPtr trajectory_of(const Scenario& s) {
 }
 
 // The law's gamma: the scenario's, or inf for the lqr law.
+// The controller of a ship baseline (cascade, backstepping) along the trajectory.
+std::unique_ptr<Controller> baseline_controller(const Scenario& s, const TrajectoryPtr& trajectory) {
+  if (s.law == Law::Cascade) return std::make_unique<CascadeController>(trajectory, s.cascade);
+  return std::make_unique<BacksteppingController>(trajectory, s.backstepping);
+}
+
 double design_gamma(const Scenario& s) {
   return s.law == Law::Lqr ? std::numeric_limits<double>::infinity() : s.gamma;
 }
@@ -380,6 +386,11 @@ ScenarioDesign design_scenario(const Scenario& s) {
     }
     if (s.worst_case && s.law == Law::Lqr && design.solution)
       design.game = solve_law_riccati(design.solution, s.Q, s.Qf, s.gamma, s.kappa, s.solver);
+    if (s.worst_case && is_baseline(s.law)) {
+      // A baseline's own worst case, from its closed loop linearized along the trajectory.
+      std::unique_ptr<Controller> law = baseline_controller(s, design.trajectory);
+      design.game = solve_controller_riccati(design.trajectory, *law, s.Q, s.Qf, s.gamma, s.solver);
+    }
     if (design.solution) design.solution->eigenvalue_bounds(design.Z_min_eig, design.Z_max_eig);
   } catch (...) {
     design.error = std::current_exception();
@@ -390,15 +401,26 @@ ScenarioDesign design_scenario(const Scenario& s) {
 
 namespace {
 
-// The gamma of the game design of [disturbance] worst_case with the lqr law, if there is one.
+// The gamma of the game design of [disturbance] worst_case with the lqr law or a baseline (the
+// law's own closed loop), if there is one.
 std::optional<double> game_gamma(const Scenario& s) {
-  if (s.worst_case && s.law == Law::Lqr) return s.gamma;
+  if (s.worst_case && (s.law == Law::Lqr || is_baseline(s.law))) return s.gamma;
   return std::nullopt;
 }
 
 // The LQR law's own worst case depends on its gain scaling kappa (K = kappa B'Z).
 bool same_kappa(const Scenario& a, const Scenario& b) {
   return VectorSignal(std::vector<Signal>{a.kappa}).same_signals(VectorSignal(std::vector<Signal>{b.kappa}));
+}
+
+// The same law for a game: the LQR law's worst case depends on kappa, a baseline's on its gains.
+bool same_game_law(const Scenario& a, const Scenario& b) {
+  if (a.law != b.law) return false;
+  if (a.law == Law::Lqr) return same_kappa(a, b);
+  if (a.law == Law::Cascade)
+    return a.cascade.k == b.cascade.k && a.cascade.k1 == b.cascade.k1 && a.cascade.k2 == b.cascade.k2;
+  const BacksteppingGains &x = a.backstepping, &y = b.backstepping;
+  return x.k == y.k && x.k1 == y.k1 && x.k2 == y.k2 && x.k3 == y.k3;
 }
 
 bool same_matrix(const Mat& a, const Mat& b) {
@@ -423,7 +445,7 @@ bool same_design(const Scenario& a, const Scenario& b) {
          a.desired_u.same_signals(b.desired_u) && same_states(a, b) && design_gamma(a) == design_gamma(b) &&
          same_matrix(a.Q, b.Q) &&
          same_matrix(a.Qf, b.Qf) && a.solver == b.solver && game_gamma(a) == game_gamma(b) &&
-         (!game_gamma(a) || same_kappa(a, b)) &&
+         (!game_gamma(a) || same_game_law(a, b)) &&
          a.receding_horizon.has_value() == b.receding_horizon.has_value() &&
          (!a.receding_horizon || (a.receding_horizon->window == b.receding_horizon->window &&
                                   a.receding_horizon->update == b.receding_horizon->update &&
@@ -526,16 +548,13 @@ RunResult simulate_scenario(const Scenario& s, const ScenarioDesign& design, con
   result.trajectory = design.trajectory;
   result.plant = s.plant;
   result.solution = design.solution;
-  // The law's own worst case: P of its closed loop at gamma (Z itself for hinf; for cascade,
-  // whose closed loop law_gain does not cover, the H-infinity design's).
+  // The law's own worst case: P of its closed loop at gamma (Z itself for hinf).
   const std::shared_ptr<const SymmetricSolution> game =
       design.game ? design.game : std::shared_ptr<const SymmetricSolution>(design.solution);
 
   const auto simulate_start = std::chrono::steady_clock::now();
   std::unique_ptr<Controller> controller;
-  if (s.law == Law::Cascade) controller = std::make_unique<CascadeController>(result.trajectory, s.cascade);
-  else if (s.law == Law::Backstepping)
-    controller = std::make_unique<BacksteppingController>(result.trajectory, s.backstepping);
+  if (is_baseline(s.law)) controller = baseline_controller(s, result.trajectory);
   else if (result.solution) controller = std::make_unique<HinfStateFeedback>(result.solution, s.kappa);
   const Disturbance disturbance = s.worst_case ? Disturbance(s.disturbance, game) : Disturbance(s.disturbance);
   if (s.receding_horizon && !s.sampling) {

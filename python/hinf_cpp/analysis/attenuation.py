@@ -1,20 +1,22 @@
 """Attenuation of each state-feedback law: its worst-case disturbance and its gain against frequency.
 
 A state-feedback law u = u_d - K(t) q_e, K = kappa B_e' Z (the H-infinity law: Z of the GRDE at
-its gamma; the LQR law: at gamma = inf), linearized along the desired trajectory, is the closed
-loop
+its gamma; the LQR law: at gamma = inf; for the ship baselines K = -du/dq at q_d), linearized
+along the desired trajectory, is the closed loop
 
     dx/dt = A_cl(t) x + D_e(t) w,   A_cl = A_e - B_e K,   x(t0) = 0,
 
 with the weighted error |z|^2 = x'Q x + |K x|^2 and the end cost x(tf)'Qf x(tf). Its induced L2
-gain, sup_w sqrt(x(tf)'Qf x(tf) + int |z|^2) / ||w||, is :func:`hinf_cpp.law_gain`.
+gain, sup_w sqrt(x(tf)'Qf x(tf) + int |z|^2) / ||w||, is :func:`hinf_cpp.law_gain`
+(:func:`hinf_cpp.controller_gain` for the baselines).
 
 :func:`worst_disturbance` finds the disturbance that attains it: the maximizer of that ratio, by
 power iteration on T*T (T: w -> (z, x(tf))), on a uniform grid with RK4 and the exact adjoint of
 the discrete map. :func:`gain_against_frequency` measures the gain of the NONLINEAR closed loop
-for single-channel sinusoids over a range of frequencies (:func:`measured_ratio`), and
-:func:`frequency_figure` draws it against each law's bound. The cascade law has no
-linearization here (:func:`hinf_cpp.law_gain` does not cover it), so it is left out.
+for single-channel sinusoids over a range of frequencies (:func:`measured_ratio`), for every
+law, and :func:`frequency_figure` draws it against each law's bound. worst_disturbance takes a
+design (hinf, lqr); a baseline's worst case is the feedback one of
+:func:`hinf_cpp.solve_controller_riccati`.
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ from typing import Iterable, Sequence
 import numpy as np
 
 from hinf_cpp import _core
-from hinf_cpp.analysis.comparison import parse_controllers
+from hinf_cpp.analysis.comparison import induced_gain, parse_controllers
 from hinf_cpp.output.progress import ProgressCallback
 
 __all__ = [
@@ -38,10 +40,8 @@ __all__ = [
     "worst_disturbance",
 ]
 
-# The laws with a linearized closed loop (hinf_cpp.law_gain): the cascade law has none.
-_LINEARIZED_LAWS = (_core.Law.hinf, _core.Law.lqr)
 # Colours by law, as the other figures of the package draw them (output/plotting.py).
-_LAW_COLOURS = {"hinf": "tab:blue", "lqr": "tab:orange", "cascade": "tab:green"}
+_LAW_COLOURS = {"hinf": "tab:blue", "lqr": "tab:orange", "cascade": "tab:green", "backstepping": "tab:purple"}
 
 
 @dataclasses.dataclass
@@ -358,8 +358,6 @@ def _variant(scenario: _core.Scenario, law: _core.Law) -> _core.Scenario:
     if scenario.sampling is not None or scenario.receding_horizon is not None:
         raise ValueError(f"scenario '{scenario.name}': the attenuation of a law is that of its continuous "
                          "state-feedback design over [t0, tf]; remove [sampling] and [receding_horizon]")
-    if law not in _LINEARIZED_LAWS:
-        raise ValueError(f"law '{law.name}' has no linearized closed loop (hinf_cpp.law_gain): choose hinf or lqr")
     variant = scenario.copy()
     variant.law = law
     variant.measurement = None
@@ -378,20 +376,20 @@ def law_run(scenario: _core.Scenario, law: _core.Law | str, disturbance=None) ->
     scenario : hinf_cpp.Scenario
         The scenario (not changed); no [sampling] or [receding_horizon].
     law : hinf_cpp.Law or str
-        ``"hinf"`` or ``"lqr"`` (the laws with a linearized closed loop).
+        ``"hinf"``, ``"lqr"``, ``"cascade"`` or ``"backstepping"``.
     disturbance : list of hinf_cpp.Signal or float, or hinf_cpp.VectorSignal, optional
         The nw channels of w (default: none, w = 0).
 
     Returns
     -------
     hinf_cpp.RunResult
-        The run; its ``solution`` is the law's design (for :func:`worst_disturbance` and
-        :func:`hinf_cpp.law_gain`).
+        The run; its ``solution`` is the law's design for hinf and lqr (for
+        :func:`worst_disturbance` and :func:`hinf_cpp.law_gain`).
 
     Raises
     ------
     ValueError
-        The cascade law or an unknown one, a scenario with [sampling] or [receding_horizon], a
+        An unknown law, a scenario with [sampling] or [receding_horizon], a
         disturbance without nw channels.
     hinf_cpp.HinfError
         The design or the run failed numerically.
@@ -451,7 +449,7 @@ def gain_against_frequency(scenario: _core.Scenario, laws: str | Sequence = "hin
     state feedback and w_c(t) = amplitude sin(omega (t - t0)) on channel c alone (the other
     channels 0); the gain is :func:`measured_ratio` of the run. Each law's bound is its induced
     L2 gain, :func:`hinf_cpp.law_gain` of its design: in the linear regime (a small amplitude)
-    no disturbance measures more. The cascade law has no linearization and is refused.
+    no disturbance measures more. The baselines' bound is :func:`hinf_cpp.controller_gain`.
 
     Parameters
     ----------
@@ -480,7 +478,7 @@ def gain_against_frequency(scenario: _core.Scenario, laws: str | Sequence = "hin
     Raises
     ------
     ValueError
-        An unknown or cascade law, a channel that does not exist or carries measurement noise,
+        An unknown law, a channel that does not exist or carries measurement noise,
         frequencies or amplitude not > 0, a scenario with [sampling] or [receding_horizon].
     hinf_cpp.HinfError
         A design failed numerically.
@@ -499,10 +497,6 @@ def gain_against_frequency(scenario: _core.Scenario, laws: str | Sequence = "hin
     import pandas as pd
 
     chosen = parse_controllers(laws)
-    for law in chosen:
-        if law not in _LINEARIZED_LAWS:
-            raise ValueError(f"law '{law.name}' has no linearized closed loop (hinf_cpp.law_gain): choose hinf "
-                             "and/or lqr")
     nw = scenario.model.nw()
     channel_list = _channels(channels, scenario.model)
     omegas = _frequencies(np.geomspace(0.01, 100.0, 17) if frequencies is None else frequencies)
@@ -517,7 +511,9 @@ def gain_against_frequency(scenario: _core.Scenario, laws: str | Sequence = "hin
         if progress is not None:
             progress(index, total, f"designing {law.name} on {scenario.name}")
         design = law_run(scenario, law)
-        bound = float(_core.law_gain(design.solution, resolved.Q, resolved.Qf, resolved.kappa).gamma_star)
+        bound = induced_gain(_variant(scenario, law), design)
+        # A design's gamma (hinf; inf for lqr); the baselines have none.
+        design_gamma = float(design.gamma) if law in (_core.Law.hinf, _core.Law.lqr) else math.nan
         for channel in channel_list:
             for omega in omegas:
                 index += 1
@@ -530,7 +526,7 @@ def gain_against_frequency(scenario: _core.Scenario, laws: str | Sequence = "hin
                 status = run.simulation.status.name
                 gain = measured_ratio(run.simulation, resolved.Q, resolved.Qf) if status == "completed" else math.nan
                 rows.append({"law": law.name, "channel": channel, "omega": float(omega), "gain": gain,
-                             "bound": bound, "gamma": float(design.gamma), "status": status})
+                             "bound": bound, "gamma": design_gamma, "status": status})
     return pd.DataFrame(rows, columns=["law", "channel", "omega", "gain", "bound", "gamma", "status"])
 
 

@@ -37,6 +37,7 @@ from hinf_cpp.output.tables import run_key
 
 __all__ = [
     "METRICS",
+    "induced_gain",
     "Comparison",
     "ComparisonRun",
     "Feedback",
@@ -120,17 +121,44 @@ def _comparison_metrics() -> list:
     return rows
 
 
-# The ship baselines: laws without a Riccati design of their own.
-_BASELINES = (_core.Law.cascade, _core.Law.backstepping)
+def induced_gain(scenario: _core.Scenario, result: _core.RunResult) -> float:
+    """The induced L2 gain of a run's law, its closed loop linearized along the trajectory.
 
+    :func:`hinf_cpp.law_gain` of the design kept (hinf, lqr) or :func:`hinf_cpp.controller_gain`
+    of the baseline's controller (cascade, backstepping), with the scenario's weights.
 
-def _induced_gain(scenario: _core.Scenario, result: _core.RunResult) -> float:
-    """The law's induced L2 gain (hinf_cpp.law_gain) for a state-feedback run of hinf or lqr
-    with its design kept; NaN for the others (the cascade law's closed loop, an estimator in
-    the loop, the windows of a receding horizon)."""
-    if result.output_feedback or result.law in _BASELINES or result.solution is None:
+    Parameters
+    ----------
+    scenario : hinf_cpp.Scenario
+        The scenario run (its Q, Qf, kappa and the baselines' gains).
+    result : hinf_cpp.RunResult
+        Its run (the law, the trajectory and the design).
+
+    Returns
+    -------
+    float
+        The gain; NaN with an estimator in the loop (output feedback) or without a single
+        design over [t0, tf] (a receding horizon).
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis.comparison import induced_gain
+    >>> scenario = hc.load_scenario(hc.scenario_path("paper_fig1"))
+    >>> scenario.tf, scenario.law = 10.0, hc.Law.backstepping
+    >>> round(induced_gain(scenario, hc.run_scenario(scenario)), 2)
+    2.57
+    """
+    if result.output_feedback or result.trajectory is None:
         return math.nan
     resolved = scenario.resolved()
+    if result.law == _core.Law.cascade:
+        law = _core.CascadeController(result.trajectory, resolved.cascade)
+        return float(_core.controller_gain(result.trajectory, law, resolved.Q, resolved.Qf).gamma_star)
+    if result.law == _core.Law.backstepping:
+        law = _core.BacksteppingController(result.trajectory, resolved.backstepping)
+        return float(_core.controller_gain(result.trajectory, law, resolved.Q, resolved.Qf).gamma_star)
+    if result.solution is None:
+        return math.nan
     return float(_core.law_gain(result.solution, resolved.Q, resolved.Qf, resolved.kappa).gamma_star)
 
 
@@ -316,8 +344,9 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
 
     The signals of [disturbance] (the non-zero channels; with output feedback the
     measurement-noise channels are left out), the law's worst case when ``worst_case`` is set
-    (w* = gamma^-2 D' Z q_e of paper eq. (16) for hinf and cascade; for lqr its own,
-    gamma^-2 D' P q_e with P of its closed loop at gamma, :func:`hinf_cpp.solve_law_riccati`),
+    (w* = gamma^-2 D' Z q_e of paper eq. (16) for hinf; for the others their own,
+    gamma^-2 D' P q_e with P of their closed loop at gamma: :func:`hinf_cpp.solve_law_riccati`
+    for lqr, :func:`hinf_cpp.solve_controller_riccati` for the baselines),
     and with output feedback the measurement noise.
 
     Parameters
@@ -373,8 +402,8 @@ def describe_disturbance(scenario: _core.Scenario, output_feedback: bool | None 
         parts.append("no disturbance signals")
     if scenario.worst_case:
         law = scenario.law if law is None else law
-        if law == _core.Law.lqr:
-            parts.append(f"plus the LQR law's own worst case w* = gamma^-2 D' P q_e at gamma = "
+        if law != _core.Law.hinf:
+            parts.append(f"plus the {law.name} law's own worst case w* = gamma^-2 D' P q_e at gamma = "
                          f"{_gamma_text(scenario.gamma)} (P of its closed loop)")
         else:
             parts.append(f"plus the worst case w* = gamma^-2 D' Z q_e of the H-infinity design at gamma = "
@@ -623,7 +652,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
         ``"state"`` and/or ``"output"``; default both with ``[measurement]``, else state.
     worst_case : bool, optional
         Overrides ``[disturbance] worst_case``: add each law's own worst case (w* of eq. 16 for
-        hinf; for lqr gamma^-2 D' P q_e of its closed loop at gamma; cascade gets hinf's).
+        hinf; for the others gamma^-2 D' P q_e of their own closed loop at gamma).
     progress : callable, optional
         Called as ``progress(index, total, message)`` before each run (e.g. a
         :class:`~hinf_cpp.output.progress.Progress`).
@@ -678,7 +707,7 @@ def compare(scenario: _core.Scenario, controllers: str | Sequence[str] | None = 
             continue
         metrics = {m.name: getattr(result.metrics, m.name) for m in _core.metric_table()}
         metrics["disturbance_gain"] = gain_alone
-        metrics[_INDUCED_L2_GAIN.name] = _induced_gain(base, result)
+        metrics[_INDUCED_L2_GAIN.name] = induced_gain(base, result)
         metrics = {m.name: float(metrics[m.name]) for m in METRICS}
         runs.append(ComparisonRun(key, law, mode, design_gamma, disturbance, metrics, result=result))
     return Comparison(scenario=base.name, gamma=float(base.gamma),

@@ -87,6 +87,11 @@ GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const 
 // gamma; the LQR law (a design at gamma = inf) has one too.
 GammaStarResult law_gain(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, const Signal& kappa = Signal(1.0),
                          const GammaStarOptions& options = {});
+// The same for any state-feedback controller of the trajectory's model, linearized along it
+// (controller_escape_time, riccati.hpp): the ship baselines have one too. The
+// gammas are tried one at a time (the controller is called from this thread only).
+GammaStarResult controller_gain(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
+                                const GammaStarOptions& options = {});
 
 // The smallest gamma for the output-feedback design: no conjugate point of the GRDE, the
 // filter Riccati equation (36) with A_e(t) bounded and positive definite from Sigma0, and

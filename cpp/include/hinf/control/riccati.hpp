@@ -178,4 +178,16 @@ std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolution
                                                            double gamma, const Signal& kappa = Signal(1.0),
                                                            const SolverOptions& options = {});
 
+class Controller;  // controller.hpp
+// The same two for any state-feedback controller of the trajectory's model (the ship
+// baselines, a law written in Python), linearized along the trajectory: K(t) = -du/dq at
+// (t, q_d(t)) from controller.control_jacobian (central differences unless it has its own).
+// Calls the controller from this thread only. InputError for a controller of other sizes.
+double controller_escape_time(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
+                              double gamma, const SolverOptions& options = {});
+// P at gamma for that controller, stored (its worst case is w = gamma^-2 D_e' P x).
+std::shared_ptr<const SymmetricSolution> solve_controller_riccati(const TrajectoryPtr& trajectory,
+                                                                  Controller& controller, const Mat& Q, const Mat& Qf,
+                                                                  double gamma, const SolverOptions& options = {});
+
 }  // namespace hinf
