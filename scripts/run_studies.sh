@@ -7,6 +7,6 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 OUT="${1:-out/studies}"
 HINF_CPP="${HINF_CPP:-.venv/bin/hinf-cpp}"
-for study in fig2_monte_carlo model_uncertainty region_of_attraction gamma_sweep; do
+for study in fig2_monte_carlo model_uncertainty region_of_attraction gamma_sweep turn_around; do
   "$HINF_CPP" study "studies/$study.toml" --out "$OUT/$study"
 done

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 import pathlib
+import textwrap
 from typing import Sequence
 
 import numpy as np
@@ -1140,7 +1141,9 @@ def heatmap_figure(df, x: str, y: str, metric: str, other_columns: Sequence[str]
         bar = fig.colorbar(image, ax=axes, shrink=0.9)
         bar.set_label(f"mean {_metric_label(metric)}", fontsize=8)
         bar.ax.tick_params(labelsize=7)
-    fig.suptitle(title or f"{_metric_label(metric)}: mean of the completed runs per cell (grey: none)", fontsize=9)
+    # Wrapped to the figure's width (a long metric label ran off both edges).
+    text = title or f"{_metric_label(metric)}: mean of the completed runs per cell (grey: none)"
+    fig.suptitle(textwrap.fill(text, width=max(40, int(11 * fig.get_figwidth()))), fontsize=9)
     return fig
 
 
