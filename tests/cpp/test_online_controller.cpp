@@ -580,7 +580,9 @@ TEST(OutputFeedback, StepAllocatesNothing) {
   EXPECT_EQ(controller.counts().steps, 100000);
   EXPECT_GT(controller.counts().saturated, 0);
   EXPECT_GT(controller.counts().predicted, 20000);
-  if (update != hinf::MeasurementUpdate::Discrete) EXPECT_GT(late, 500);  // discrete: the estimate is at t_k
+  if (update != hinf::MeasurementUpdate::Discrete) {
+    EXPECT_GT(late, 500);  // discrete: the estimate is at t_k
+  }
   EXPECT_GT(controller.counts().largest_rho, 0.0);
   EXPECT_EQ(controller.counts().lost, 0);
   }
@@ -727,7 +729,9 @@ TEST(DiscreteOutputFeedback, ItsGammaStarApproachesTheContinuousOne) {
                 digital.gamma_star, continuous.gamma_star, hinf::to_string(digital.binding).c_str(),
                 digital.t_escape_lower);
     EXPECT_EQ(digital.binding, hinf::GammaCondition::Coupling);
-    if (T == 0.01) EXPECT_NEAR(digital.gamma_star / continuous.gamma_star, 1.0, 0.01);
+    if (T == 0.01) {
+      EXPECT_NEAR(digital.gamma_star / continuous.gamma_star, 1.0, 0.01);
+    }
     EXPECT_GT(digital.gamma_star, previous);
     previous = digital.gamma_star;
   }

@@ -787,6 +787,12 @@ def _label(law: str, output_feedback: bool) -> str:
     return f"{law}/{'output' if output_feedback else 'state'}"
 
 
+def _wrapped(text: str, width: int) -> str:
+    """Text broken into lines of about `width` characters (at least 30): a long metric label
+    ran off the figure's edges."""
+    return textwrap.fill(text, width=max(30, width))
+
+
 def _metric_label(metric: str) -> str:
     """A metric's axis label, "label [unit]" from hc.metric_table(); another column's name."""
     for definition in _core.metric_table():
@@ -943,8 +949,9 @@ def distribution_figure(df, metric: str, title: str | None = None, other_columns
             patch.set_facecolor(colour)
             patch.set_alpha(0.5)
     ax.set_xlabel(note, fontsize=7)
-    ax.set_ylabel(_metric_label(metric))
-    ax.set_title(title or f"{_metric_label(metric)}: completed runs (whiskers 5-95 %)", fontsize=9)
+    ax.set_ylabel(_wrapped(_metric_label(metric), 40))
+    ax.set_title(_wrapped(title or f"{_metric_label(metric)}: completed runs (whiskers 5-95 %)",
+                          int(11 * fig.get_figwidth())), fontsize=9)
     ax.grid(True, axis="y", alpha=0.3)
     return fig
 
@@ -1141,9 +1148,8 @@ def heatmap_figure(df, x: str, y: str, metric: str, other_columns: Sequence[str]
         bar = fig.colorbar(image, ax=axes, shrink=0.9)
         bar.set_label(f"mean {_metric_label(metric)}", fontsize=8)
         bar.ax.tick_params(labelsize=7)
-    # Wrapped to the figure's width (a long metric label ran off both edges).
     text = title or f"{_metric_label(metric)}: mean of the completed runs per cell (grey: none)"
-    fig.suptitle(textwrap.fill(text, width=max(40, int(11 * fig.get_figwidth()))), fontsize=9)
+    fig.suptitle(_wrapped(text, int(11 * fig.get_figwidth())), fontsize=9)
     return fig
 
 
@@ -1392,8 +1398,9 @@ def gamma_figure(df, metric: str, gamma_key: str = "controller.gamma", title: st
                 ax.axvline(position, color="tab:red", lw=0.6, ls=":", alpha=0.7)
         ax.plot([], [], color="tab:red", lw=0.6, ls=":", label="some runs failed")
     _gamma_axis(ax, gammas, log, inf_at)
-    ax.set_ylabel(_metric_label(metric))
-    ax.set_title(title or f"{_metric_label(metric)} against gamma: median, 5-95 % band of the samples", fontsize=9)
+    ax.set_ylabel(_wrapped(_metric_label(metric), 40))
+    ax.set_title(_wrapped(title or f"{_metric_label(metric)} against gamma: median, 5-95 % band of the samples",
+                          int(11 * fig.get_figwidth())), fontsize=9)
     ax.grid(True, alpha=0.3)
     if drawn or len(failed):
         if shown:
