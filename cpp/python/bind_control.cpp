@@ -81,22 +81,22 @@ Disturbance to_disturbance(const py::object& value, int dim) {
 }
 
 
-// RiccatiSolution and FilterRiccatiSolution: (trajectory, gamma, dense output, stats).
+// RiccatiSolution and FilterRiccatiSolution: (trajectory, gamma, dense output, stats, blocks).
 template <class Solution, class... Options>
 void def_solution_pickle(py::class_<Solution, Options...>& cls) {
   cls.def(py::pickle(
       [](const Solution& s) {
-        return py::make_tuple<py::return_value_policy::copy>(s.trajectory_ptr(), s.gamma(), s.dense(), s.stats());
+        return py::make_tuple<py::return_value_policy::copy>(s.trajectory_ptr(), s.gamma(), s.dense(), s.stats(),
+                                                             s.blocks());
       },
       [](const py::tuple& state) {
-        check_state(state, 4, "Riccati solution");
+        check_state(state, 5, "Riccati solution");
         auto trajectory = state[0].cast<TrajectoryPtr>();
         require(trajectory != nullptr, "a pickled Riccati solution needs its trajectory");
-        auto dense = state[2].cast<PiecewisePolynomial>();
-        require(dense.dim() == packed_size(trajectory->n()), "a pickled Riccati solution of n = ", trajectory->n(),
-                " needs ", packed_size(trajectory->n()), " components, got ", dense.dim());
-        return std::make_shared<Solution>(std::move(trajectory), state[1].cast<double>(), std::move(dense),
-                                          state[3].cast<SolveStats>());
+        // The constructor checks the blocks against n and the dense output's size.
+        return std::make_shared<Solution>(std::move(trajectory), state[1].cast<double>(),
+                                          state[2].cast<PiecewisePolynomial>(), state[3].cast<SolveStats>(),
+                                          state[4].cast<std::vector<int>>());
       }));
 }
 
@@ -1416,7 +1416,8 @@ array([ 0.219, 20.815]))").c_str())
            doc({"SymmetricSolution::eigenvalue_bounds"}, "Returns (m, M).").c_str())
       .def("dense", &SymmetricSolution::dense, py::return_value_policy::reference_internal,
            doc({"SymmetricSolution::dense"}).c_str())
-      .def("stats", &SymmetricSolution::stats, doc({"SymmetricSolution::dense"}).c_str());
+      .def("stats", &SymmetricSolution::stats, doc({"SymmetricSolution::dense"}).c_str())
+      .def("blocks", &SymmetricSolution::blocks, doc({"SymmetricSolution::blocks"}).c_str());
 
   py::class_<RiccatiSolution, SymmetricSolution, py::smart_holder> riccati(m, "RiccatiSolution",
       doc({"RiccatiSolution", "control/riccati.hpp"}, R"(

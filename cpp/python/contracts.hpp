@@ -118,6 +118,8 @@ reports 0, and callers check q against their model instead.)contract"},
     {"CostWeights::Qf", R"contract(weight of q_e(tf) (n x n); empty: no terminal term)contract"},
     {"CostWeights::gamma", R"contract(the law's attenuation level; infinite: no margin)contract"},
     {"CostWeights::initial_term", R"contract(the bound's initial-error term (see above); NaN: no margin)contract"},
+    {"Coupling", R"contract(How a matrix couples states: by its entries (n x n: entry (i, j) couples states i and j) or
+by its columns (n x k input matrix: each column couples the states it acts on).)contract"},
     {"CouplingPolicy", R"contract(What a violation of the coupling condition rho(Sigma Z) < gamma^2 does (scenario key
 [measurement] on_coupling_violation).)contract"},
     {"CouplingPolicy::error", R"contract(a CouplingConditionError at the first output time with a violation)contract"},
@@ -214,6 +216,7 @@ kMaxDimension).)contract"},
 |r| <= max L_i sum |q_e,i|^2 = max L_i |q_e|^2.)contract"},
     {"FleetModel::same_as", R"contract(The same count of the same member.)contract"},
     {"FleetModel::state_names", R"contract(The member's names with the vehicle's number: "x_1", ..., "x_k".)contract"},
+    {"FleetModel::uncoupled_blocks", R"contract(The member's groups, once per vehicle.)contract"},
     {"FossenVessel", R"contract(Its equations are generated from its statement (python/hinf_cpp/models/builtin.py,
 fossen_vessel(); models/builtin_vehicle.hpp), with M^-1 computed once here.)contract"},
     {"FossenVessel::FossenVessel", R"contract(InputError unless M and D are finite 3 x 3 matrices, M symmetric positive definite and the
@@ -400,6 +403,7 @@ w = [process disturbance (D.cols()), measurement noise (p)], and D is padded wit
     {"LinearModel::A", R"contract(A (n x n) and B (n x m) as given to the constructor.)contract"},
     {"LinearModel::named_parameters", R"contract(A[i][j], B[i][j], D[i][j] (process D), C[i][j]: the entries of the scenario file's matrices.)contract"},
     {"LinearModel::process_D", R"contract(The matrices as given to the constructor: D without the noise channels, C empty if none.)contract"},
+    {"LinearModel::uncoupled_blocks", R"contract(The groups of states that A, B and D leave uncoupled, read from their nonzeros.)contract"},
     {"MeasurementSpec", R"contract([measurement]: imperfect, noisy measurements (paper §4).)contract"},
     {"MeasurementSpec::N", R"contract(filter weight N = E E' (empty: sigma^2 I))contract"},
     {"MeasurementSpec::Q0", R"contract(Sigma(t0) = (Q0 - eta I)^-1 (empty: 2 I))contract"},
@@ -480,6 +484,11 @@ implemented in Python); the built-in models compare their type and named_paramet
     {"Model::state_dependent_inputs", R"contract(True when G or D depend on q (then constant_input_matrices() must be false, and dGudq
 must be implemented).)contract"},
     {"Model::state_names", R"contract(Names of the state components (for tables, CSV headers and plots).)contract"},
+    {"Model::uncoupled_blocks", R"contract(The sizes of consecutive groups of states that no equation of the model couples, in
+order, summing to n: for every t, q and u, df/dq, G, D and d(G u)/dq are block-diagonal in
+these groups (a group's inputs and disturbances act on it alone). The Riccati solves split
+a problem that is also uncoupled in its weights into these blocks. {n} unless the model
+knows better (a fleet: its vehicles; a linear model: from its matrices).)contract"},
     {"ModelKind::keys", R"contract(the section's keys besides "kind"; any other key is refused
 (naming the kinds it belongs to, if any) before read is called)contract"},
     {"ModelKind::name", R"contract(kind = "<name>")contract"},
@@ -597,6 +606,18 @@ the output grid).)contract"},
 (noise_sample_count rows), one column per measured output)contract"},
     {"OutputFeedbackProblem::sample_period", R"contract(T (s): v is held over [t0 + k T, t0 + (k+1) T))contract"},
     {"OutputFeedbackProblem::sigma", R"contract(noise standard deviation: E w = sigma v on the noise channels)contract"},
+    {"PackedBlocks", R"contract(The storage of a block-diagonal symmetric n x n matrix: the packed triangles (types.hpp) of
+its diagonal blocks one after the other, sum k(k+1)/2 numbers for blocks of sizes k. A Riccati
+equation whose model and weights are uncoupled in groups of states (Model::uncoupled_blocks)
+keeps X block-diagonal; it is integrated and stored in this form. One block of size n is the
+plain packed storage.)contract"},
+    {"PackedBlocks::PackedBlocks", R"contract(Blocks of the given sizes (each >= 1), in order.)contract"},
+    {"PackedBlocks::dim", R"contract(numbers stored)contract"},
+    {"PackedBlocks::expand", R"contract(The whole packed X (n(n+1)/2 numbers, types.hpp) from the storage.)contract"},
+    {"PackedBlocks::n", R"contract(the matrix's size)contract"},
+    {"PackedBlocks::offset", R"contract(block b: states start[b] .. start[b] + size[b] - 1,
+its packed triangle at offset[b])contract"},
+    {"PackedBlocks::pack", R"contract(X (n x n; the blocks only are read) into the storage, and back (zero off the blocks).)contract"},
     {"PackedScratch", R"contract(Scratch space for one packed symmetric n x n matrix: on the stack up to n = 16, on the heap
 beyond (lookups in hot loops should not allocate for the usual sizes).)contract"},
     {"PathChange", R"contract([path_change]: the path changed under way, with [receding_horizon] (receding_horizon.hpp): from
@@ -1028,8 +1049,10 @@ run has what compute_metrics gives for the part it ran)contract"},
     {"StudyRun::simulate_seconds", R"contract(closed loop and metrics)contract"},
     {"StudyRun::status", R"contract(how the run ended)contract"},
     {"SymmetricSolution", R"contract(A symmetric-matrix-valued solution X(t) on [t0, tf] kept as dense output.)contract"},
-    {"SymmetricSolution::dense", R"contract(The dense output of X's packed upper triangle (n(n+1)/2 components, types.hpp) and the
-counts of its solve.)contract"},
+    {"SymmetricSolution::SymmetricSolution", R"contract(X's dense output in the storage of `blocks` (empty: one block, the plain packed X).)contract"},
+    {"SymmetricSolution::blocks", R"contract(The sizes of the diagonal blocks X is stored in ({n}: the whole X).)contract"},
+    {"SymmetricSolution::dense", R"contract(The dense output of X as stored (PackedBlocks of blocks(): the packed upper triangle,
+n(n+1)/2 components, unless X was solved in uncoupled blocks) and the counts of its solve.)contract"},
     {"SymmetricSolution::derivative", R"contract(dX/dt at t (per second): the derivative of the dense output.)contract"},
     {"SymmetricSolution::eigenvalue_bounds", R"contract(m and M with m I <= X(t) <= M I on the whole interval (paper eq. 22): the extremes over
 the ends and midpoints of the solver's steps, each refined by a golden-section search
@@ -1570,6 +1593,8 @@ A_e(t).)contract"},
 InputError naming the path.)contract"},
     {"max_rho_sigma_z", R"contract(The largest value of rho(Sigma(t) Z(t)) on [t0, tf] and where it is taken.)contract"},
     {"memory_budget_bytes", R"contract(The share of the physical memory one run may use for its stored results: a quarter.)contract"},
+    {"merge_coupled_blocks", R"contract(The coarsest merge of the consecutive groups `blocks` (sizes summing to M.rows()) that M does
+not couple: groups joined by a nonzero of M become one group (Model::uncoupled_blocks).)contract"},
     {"metric_table", R"contract(The metrics, in the order of the results file.)contract"},
     {"model_kind_names", R"contract(The registered kinds' names in the order of registration (the built-in kinds first).)contract"},
     {"models/auv.hpp", R"contract(An AUV in the horizontal plane with quadratic drag (the Sirene preset).

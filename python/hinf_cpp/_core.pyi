@@ -2498,10 +2498,14 @@ class SymmetricSolution:
     >>> np.round(design.eigenvalue_bounds(), 3)                   # m and M of eq. (22)
     array([ 0.219, 20.815])
     """
+    def blocks(self) -> list[int]:
+        """
+        The sizes of the diagonal blocks X is stored in ({n}: the whole X).
+        """
     def dense(self) -> PiecewisePolynomial:
         """
-        The dense output of X's packed upper triangle (n(n+1)/2 components, types.hpp) and the
-        counts of its solve.
+        The dense output of X as stored (PackedBlocks of blocks(): the packed upper triangle,
+        n(n+1)/2 components, unless X was solved in uncoupled blocks) and the counts of its solve.
         """
     def derivative(self, t: typing.Any) -> typing.Any:
         """
@@ -2533,8 +2537,8 @@ class SymmetricSolution:
         """
     def stats(self) -> SolveStats:
         """
-        The dense output of X's packed upper triangle (n(n+1)/2 components, types.hpp) and the
-        counts of its solve.
+        The dense output of X as stored (PackedBlocks of blocks(): the packed upper triangle,
+        n(n+1)/2 components, unless X was solved in uncoupled blocks) and the counts of its solve.
         """
     def t0(self) -> float:
         """
@@ -2597,7 +2601,7 @@ class RiccatiSolution(SymmetricSolution):
         
         Shape (n, n) for a number t, (k, n, n) for a 1-D array of k times.
         """
-    def __getstate__(self) -> tuple[Trajectory, float, PiecewisePolynomial, SolveStats]:
+    def __getstate__(self) -> tuple[Trajectory, float, PiecewisePolynomial, SolveStats, list[int]]:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...
@@ -2637,7 +2641,7 @@ class FilterRiccatiSolution(SymmetricSolution):
         
         Shape (n, n) for a number t, (k, n, n) for a 1-D array of k times.
         """
-    def __getstate__(self) -> tuple[Trajectory, float, PiecewisePolynomial, SolveStats]:
+    def __getstate__(self) -> tuple[Trajectory, float, PiecewisePolynomial, SolveStats, list[int]]:
         ...
     def __setstate__(self, arg0: tuple) -> None:
         ...

@@ -51,12 +51,33 @@ def test_fleet_grde_is_block_diagonal(ship, paper_u_d):
     options = hc.SolverOptions("bdf", rtol=1e-10, atol=1e-12)
     Z1 = hc.solve_grde(single, np.eye(6), np.eye(6), 5.0, options)
     Zk = hc.solve_grde(fleet, np.eye(12), np.eye(12), 5.0, options)
-    assert Zk.stats().method == "bdf (Lyapunov Newton)" and Z1.stats().method == "bdf (dense Newton)"
+    # Detected from the fleet and the block-diagonal weights: one GRDE per ship.
+    assert Zk.stats().method == "bdf (Lyapunov Newton) in 2 uncoupled blocks"
+    assert Z1.stats().method == "bdf (dense Newton)"
     for t in np.linspace(0.0, 40.0, 41):
         expected = np.kron(np.eye(count), Z1.Z(t))
         # Two solves at rtol 1e-10 of a solution of size |Z| ~ 5: global errors of a few 1e-9
         # each (the solve is stable backward in time); 1e-7 leaves a factor 20.
         assert np.max(np.abs(Zk.Z(t) - expected)) < 1e-7 * max(1.0, np.max(np.abs(expected))), t
+
+
+def test_fleet_solution_is_stored_by_ship_and_pickles(ship, paper_u_d):
+    count = 3
+    fleet = hc.Trajectory(hc.FleetModel(ship, count), stacked(PAPER_Q_D0, count), paper_u_d * count, 0.0, 40.0)
+    Z = hc.solve_grde(fleet, np.eye(18), np.eye(18), 5.0)
+    assert Z.blocks() == [6, 6, 6] and Z.dense().dim() == 3 * 21  # three packed 6 x 6 triangles
+    copy = pickle.loads(pickle.dumps(Z))
+    assert copy.blocks() == Z.blocks()
+    times = np.linspace(0.0, 40.0, 101)
+    np.testing.assert_array_equal(copy.Z(times), Z.Z(times))
+    state = list(Z.__getstate__())
+    state[4] = [6, 12]  # the same states, but another storage than the dense output's
+    broken = hc.RiccatiSolution.__new__(hc.RiccatiSolution)
+    with pytest.raises(ValueError, match="needs 99 components, got 63"):
+        broken.__setstate__(tuple(state))
+    state[4] = [6, 6]
+    with pytest.raises(ValueError, match="n = 18 cannot be stored in blocks of 12 states"):
+        broken.__setstate__(tuple(state))
 
 
 def test_fleet_bad_input_and_pickle(ship):

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 
 #include "hinf/control/controller.hpp"
 
@@ -20,6 +21,43 @@
 #include "numerics/symmetric_extremes.hpp"
 
 namespace hinf {
+
+PackedBlocks::PackedBlocks(const std::vector<int>& sizes) {
+  for (int k : sizes) {
+    require(k >= 1, "a block of a symmetric matrix needs at least one row, got ", k);
+    start.push_back(n);
+    size.push_back(k);
+    offset.push_back(dim);
+    n += k;
+    dim += packed_size(k);
+  }
+}
+
+bool PackedBlocks::all_of_size(int k) const {
+  return std::all_of(size.begin(), size.end(), [k](int s) { return s == k; });
+}
+
+void PackedBlocks::pack(const Mat& X, double* stored) const {
+  for (int b = 0; b < count(); ++b) pack_symmetric(Mat(X.block(start[b], start[b], size[b], size[b])), stored + offset[b]);
+}
+
+void PackedBlocks::unpack(const double* stored, Mat& X) const {
+  X.setZero(n, n);
+  for (int b = 0; b < count(); ++b) {
+    const double* block = stored + offset[b];
+    for (int j = 0, k = 0; j < size[b]; ++j)
+      for (int i = 0; i <= j; ++i, ++k) X(start[b] + i, start[b] + j) = X(start[b] + j, start[b] + i) = block[k];
+  }
+}
+
+void PackedBlocks::expand(const double* stored, double* packed) const {
+  std::fill(packed, packed + packed_size(n), 0.0);
+  for (int b = 0; b < count(); ++b) {
+    const double* block = stored + offset[b];
+    for (int j = 0, k = 0; j < size[b]; ++j)
+      for (int i = 0; i <= j; ++i) packed[packed_index(start[b] + i, start[b] + j)] = block[k++];
+  }
+}
 
 namespace {
 
@@ -69,6 +107,7 @@ const char* equation_name(RiccatiKind kind) {
 //   dW/dt = -sign (M_w' W + W M_w + R_w - W S_w W),
 //   M_w = (M + c S)',  R_w = -c S,  S_w = M + M' - R / c + c S.
 // N is the state dimension when known at compile time (fixed-size Eigen types), else Dynamic.
+// With `blocks` (a PackedBlocks of more than one block) the state holds the blocks of X only.
 template <int N>
 class RiccatiProblem {
  public:
@@ -76,29 +115,75 @@ class RiccatiProblem {
   using VecN = Eigen::Matrix<double, N, 1>;
 
   RiccatiProblem(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
-                 const Mat& N_inv, const ClosedLoopLaw* law, double shift = 0.0)
+                 const Mat& N_inv, const ClosedLoopLaw* law, double shift = 0.0, const PackedBlocks* blocks = nullptr)
       : trajectory_(trajectory), model_(trajectory.model()), kind_(kind), law_(law), shift_(shift), n_(trajectory.n()),
+        dim_(blocks ? blocks->dim : packed_size(n_)), blocks_(blocks),
         sign_((kind == RiccatiKind::Filter ? 1.0 : -1.0) * (shift > 0.0 ? -1.0 : 1.0)),
         inv_gamma2_(std::isinf(gamma) ? 0.0 : 1.0 / (gamma * gamma)),
         constant_(model_.constant_input_matrices()), Q_(Q), N_inv_(N_inv) {
     for (auto* M : {&M_, &R_, &S_, &R0_, &S0_, &shifted_, &X_, &A_, &T_, &G_}) M->resize(n_, n_);
     q_d_.resize(n_);
     if (kind_ == RiccatiKind::ClosedLoop) K_.resize(model_.m(), n_);
+    if (blocks_) {
+      if (blocks_->all_of_size(6)) six_.resize(static_cast<std::size_t>(blocks_->count()));
+      else
+        for (int k : blocks_->size) any_.emplace_back(k);
+      full_piece_.resize(static_cast<std::size_t>(packed_size(n_)) * 8);
+    }
     if (constant_) set_input_terms(trajectory.t0(), trajectory.q_d0());
   }
 
   int n() const { return n_; }
+  // The numbers in the integrator's state: packed_size(n), or the blocks' when split.
+  int dim() const { return dim_; }
+  const PackedBlocks* blocks() const { return blocks_; }
+
+  // X (n x n) to the integrator's state and back.
+  void pack(const Mat& X, double* x) const {
+    if (blocks_) blocks_->pack(X, x);
+    else pack_symmetric(X, x);
+  }
+  void unpack(const double* x, Mat& X) const {
+    if (blocks_) blocks_->unpack(x, X);
+    else unpack_symmetric(x, X);
+  }
+  // A step's dense output as a piece of the whole packed X (itself unless split; the expanded
+  // piece lives until the next call).
+  DensePiece full_piece(const DensePiece& piece) {
+    if (!blocks_) return piece;
+    const int p = packed_size(n_);
+    const std::size_t needed = static_cast<std::size_t>(piece.degree + 1) * p;
+    if (full_piece_.size() < needed) full_piece_.resize(needed);
+    for (int j = 0; j <= piece.degree; ++j)
+      blocks_->expand(piece.coeffs + static_cast<long>(j) * piece.dim, full_piece_.data() + static_cast<long>(j) * p);
+    return {piece.t_start, piece.t_end, piece.degree, p, full_piece_.data()};
+  }
 
   void rhs(double t, const double* x, double* dx) {
     coefficients_at(t);
-    unpack_symmetric(x, X_);
-    detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx, diagonal_S_);
+    if (!blocks_) {
+      unpack_symmetric(x, X_);
+      detail::riccati_rhs(sign_, M_, R_, S_, X_, T_, G_, dx, diagonal_S_);
+    } else if (!six_.empty()) {
+      block_rhs(six_, x, dx);
+    } else {
+      block_rhs(any_, x, dx);
+    }
     // One sum tells whether every entry is finite (an overflow of a huge, escaping X also makes
     // it inf: then the model is asked, and only a model that returns non-finite numbers at
     // (t, q_d(t)) is blamed, as the model's InputError instead of a conjugate point).
     double sum = 0.0;
-    for (int i = 0, p = packed_size(n_); i < p; ++i) sum += dx[i];
+    for (int i = 0; i < dim_; ++i) sum += dx[i];
     if (!std::isfinite(sum)) check_finite_outputs(model_, t, q_d_);
+  }
+
+  // M_cl = M - S X of block b (BDF's Newton systems of a split problem).
+  void block_closed_loop(double t, const double* x, int b, Mat& M_cl) {
+    coefficients_at(t);
+    const int s = blocks_->start[b], k = blocks_->size[b];
+    Mat X(k, k);
+    unpack_symmetric(x + blocks_->offset[b], X);
+    M_cl = M_.block(s, s, k, k) - S_.block(s, s, k, k) * X;
   }
 
   void jacobian(double t, const double* x, double* J) {
@@ -186,12 +271,38 @@ class RiccatiProblem {
     }
   }
 
+  // The workspace of one block of a split problem (fixed-size for blocks of 6, the ship's).
+  template <int B>
+  struct BlockWork {
+    using MatB = Eigen::Matrix<double, B, B>;
+    explicit BlockWork(int k = B) : M(k, k), R(k, k), S(k, k), X(k, k), T(k, k), G(k, k) {}
+    MatB M, R, S, X, T, G;
+  };
+
+  template <int B>
+  void block_rhs(std::vector<BlockWork<B>>& work, const double* x, double* dx) {
+    for (int b = 0; b < blocks_->count(); ++b) {
+      BlockWork<B>& w = work[static_cast<std::size_t>(b)];
+      const int s = blocks_->start[b], k = blocks_->size[b], at = blocks_->offset[b];
+      w.M = M_.block(s, s, k, k);
+      w.R = R_.block(s, s, k, k);
+      w.S = S_.block(s, s, k, k);
+      unpack_symmetric(x + at, w.X);
+      detail::riccati_rhs(sign_, w.M, w.R, w.S, w.X, w.T, w.G, dx + at, diagonal_S_);
+    }
+  }
+
   const Trajectory& trajectory_;
   const Model& model_;
   RiccatiKind kind_;
   const ClosedLoopLaw* law_;  // ClosedLoop only
   double shift_;
   int n_;
+  int dim_;
+  const PackedBlocks* blocks_;
+  std::vector<BlockWork<6>> six_;
+  std::vector<BlockWork<Eigen::Dynamic>> any_;
+  std::vector<double> full_piece_;
   double sign_;
   double inv_gamma2_;
   bool constant_;
@@ -223,22 +334,51 @@ class RiccatiNewton final : public NewtonSystem {
   Mat M_cl_;
 };
 
-// integrate() of the Riccati problem with its Newton systems solved the cheaper way; the method
-// used, with the Newton solver of BDF, is in the stats.
+// The Newton systems of a split problem: one Lyapunov equation per block.
+template <int N>
+class BlockRiccatiNewton final : public NewtonSystem {
+ public:
+  explicit BlockRiccatiNewton(RiccatiProblem<N>& problem) : problem_(problem) {
+    for (int k : problem.blocks()->size) lyapunov_.emplace_back(k);
+  }
+  void refresh(double t, const double* y) override {
+    for (int b = 0; b < problem_.blocks()->count(); ++b) {
+      problem_.block_closed_loop(t, y, b, M_cl_);
+      lyapunov_[static_cast<std::size_t>(b)].factor(M_cl_);
+    }
+  }
+  bool solve(double gamma, const double* b, double* x) override {
+    const std::vector<int>& offset = problem_.blocks()->offset;
+    for (std::size_t k = 0; k < lyapunov_.size(); ++k)
+      if (!lyapunov_[k].solve(gamma * problem_.sign(), b + offset[k], x + offset[k])) return false;
+    return true;
+  }
+
+ private:
+  RiccatiProblem<N>& problem_;
+  std::vector<detail::LyapunovNewton> lyapunov_;
+  Mat M_cl_;
+};
+
+// integrate() of the Riccati problem with its Newton systems solved the cheaper way (a split
+// problem: per block); the method used, with the Newton solver of BDF, is in the stats.
 template <int N, class OnStep>
 StepStats integrate_problem(RiccatiProblem<N>& problem, const SolverOptions& options, double t_start,
                             double t_end, double* x, OnStep&& on_step) {
-  const int p = packed_size(problem.n());
-  const bool lyapunov = options.newton_systems == NewtonSystems::Lyapunov ||
+  const bool split = problem.blocks() != nullptr;
+  const bool lyapunov = split || options.newton_systems == NewtonSystems::Lyapunov ||
                         (options.newton_systems == NewtonSystems::Auto && problem.n() > kDenseNewtonMaxStates);
-  RiccatiNewton<N> newton(problem);
+  std::unique_ptr<NewtonSystem> newton;
+  if (split) newton = std::make_unique<BlockRiccatiNewton<N>>(problem);
+  else if (lyapunov) newton = std::make_unique<RiccatiNewton<N>>(problem);
   StepStats stats = integrate(
-      options, p, [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
+      options, problem.dim(), [&problem](double t, const double* y, double* dy) { problem.rhs(t, y, dy); },
       [&problem](double t, const double* y, const double*, double* J) { problem.jacobian(t, y, J); }, t_start,
-      t_end, x, on_step, lyapunov ? &newton : nullptr);
+      t_end, x, on_step, newton.get());
   const std::string newton_kind = lyapunov ? "bdf (Lyapunov Newton)" : "bdf (dense Newton)";
   const std::size_t at = stats.method.find("bdf");
   if (at != std::string::npos) stats.method.replace(at, 3, newton_kind);
+  if (split) stats.method += str_cat(" in ", problem.blocks()->count(), " uncoupled blocks");
   return stats;
 }
 
@@ -335,23 +475,22 @@ bool is_too_much_work(const SolverError& e) { return e.flag().find("TOO_MUCH_WOR
 template <int N>
 double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma, const Mat& N_inv,
                     const ClosedLoopLaw* law, const Mat& X_from, double t_from, double t_end, double c,
-                    const SolverOptions& options) {
+                    const SolverOptions& options, const PackedBlocks* blocks) {
   const int n = static_cast<int>(X_from.rows());
-  const int p = packed_size(n);
-  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law, c);
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law, c, blocks);
   const Mat shifted = 0.5 * (X_from + X_from.transpose()) + c * Mat::Identity(n, n);
   const Eigen::LLT<Mat> llt(shifted);
   if (llt.info() != Eigen::Success) return t_from;  // X_from has an eigenvalue <= -c: past an escape
   const Mat W0 = c * llt.solve(Mat::Identity(n, n));
-  std::vector<double> w(static_cast<std::size_t>(p));
-  pack_symmetric(0.5 * (W0 + W0.transpose()), w.data());
+  std::vector<double> w(static_cast<std::size_t>(problem.dim()));
+  problem.pack(0.5 * (W0 + W0.transpose()), w.data());
   SolverOptions o = options;
   o.atol = 1e-2 * options.rtol * c / (largest_eigenvalue(X_from) + c);
   detail::DefinitenessSearch<N> search(n);
   double found = NAN;
   try {
     integrate_problem(problem, o, t_from, t_end, w.data(), [&](const DensePiece& piece) {
-      const double theta = search.first_loss(piece);
+      const double theta = search.first_loss(problem.full_piece(piece));
       if (std::isnan(theta)) return StepAction::Continue;
       found = piece.time(theta);
       return StepAction::Stop;
@@ -378,14 +517,15 @@ template <int N>
 std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& trajectory, RiccatiKind kind,
                                                              const Mat& Q, double gamma, const Mat& N_inv,
                                                              const ClosedLoopLaw* law, const Mat& X_start,
-                                                             const SolverOptions& options, bool store) {
+                                                             const SolverOptions& options, bool store,
+                                                             const PackedBlocks* blocks) {
   const int n = static_cast<int>(X_start.rows());
-  const int p = packed_size(n);
   const double t_start = start_of(trajectory, kind), t_end = end_of(trajectory, kind);
   const double t0 = trajectory.t0(), tf = trajectory.tf();
-  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law);
+  RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law, 0.0, blocks);
+  const int p = problem.dim();
   std::vector<double> x(static_cast<std::size_t>(p));
-  pack_symmetric(X_start, x.data());
+  problem.pack(X_start, x.data());
   blame_model_if_not_finite(trajectory, {t_start});  // the scale below is taken there
   const double scale = solution_scale(trajectory, kind, Q, law, X_start);
   // atol is meant for solutions of order 1: a smaller solution gets a proportionally smaller one
@@ -401,9 +541,9 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
   auto decide_escape = [&]() {
     if (no_escape) return;
     Mat X(n, n);
-    unpack_symmetric(x.data(), X);
+    problem.unpack(x.data(), X);
     const double t_escape =
-        escape_after<N>(trajectory, kind, Q, gamma, N_inv, law, X, t_last, t_end, scale, options);
+        escape_after<N>(trajectory, kind, Q, gamma, N_inv, law, X, t_last, t_end, scale, options, blocks);
     if (!std::isnan(t_escape)) {
       blame_model_if_not_finite(trajectory, {t_last, t_escape});
       throw_escape(kind, t_escape, gamma, t0, tf, "");
@@ -496,13 +636,46 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
 
 // Solves (store = true: keeps the dense output) or only integrates (store = false: enough to
 // find escapes) the Riccati problem of `kind` over the trajectory's horizon.
-std::pair<PiecewisePolynomial, SolveStats> solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q,
-                                                 double gamma, const Mat& N_inv, const Mat& X_start,
-                                                 const SolverOptions& options, bool store = true,
-                                                 const ClosedLoopLaw* law = nullptr) {
-  return detail::with_state_size(trajectory.n(), [&](auto size) {
-    return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, law, X_start, options, store);
+// The blocks a GRDE splits into: the model's uncoupled groups of states, joined where Q or the
+// start Qf couple them; one block for the other equations, or when BDF is told to solve its
+// Newton systems densely.
+std::vector<int> riccati_blocks(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, const Mat& X_start,
+                                const SolverOptions& options) {
+  const Model& model = trajectory.model();
+  const int n = trajectory.n();
+  if (kind != RiccatiKind::Control || options.newton_systems == NewtonSystems::Dense) return {n};
+  std::vector<int> blocks = model.uncoupled_blocks();
+  int total = 0;
+  for (int k : blocks) {
+    require(k >= 1, "the model '", model.name(), "' gives a group of ", k, " states in uncoupled_blocks()");
+    total += k;
+  }
+  require(total == n, "the model '", model.name(), "' gives uncoupled_blocks() of ", total,
+          " states in all; it has n = ", n);
+  blocks = merge_coupled_blocks(blocks, Q, Coupling::Entries);
+  return merge_coupled_blocks(blocks, X_start, Coupling::Entries);
+}
+
+// A solve's dense output in the storage of `blocks` (PackedBlocks), and its counts.
+struct Solved {
+  PiecewisePolynomial X;
+  SolveStats stats;
+  std::vector<int> blocks;
+};
+
+Solved solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma, const Mat& N_inv,
+             const Mat& X_start, const SolverOptions& options, bool store = true, const ClosedLoopLaw* law = nullptr) {
+  const PackedBlocks blocks(riccati_blocks(trajectory, kind, Q, X_start, options));
+  if (blocks.count() > 1) {
+    auto [X, stats] = integrate_riccati<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, law, X_start, options,
+                                                        store, &blocks);
+    return {std::move(X), stats, blocks.size};
+  }
+  auto [X, stats] = detail::with_state_size(trajectory.n(), [&](auto size) {
+    return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, law, X_start, options, store,
+                                                    nullptr);
   });
+  return {std::move(X), stats, {}};
 }
 
 // Escape time of an integration without storage, NaN when there is none.
@@ -525,14 +698,14 @@ void check_gamma(double gamma) {
 Mat symmetrized(const Mat& M) { return 0.5 * (M + M.transpose()); }
 
 template <int N>
-void extremes_over(const PiecewisePolynomial& X, const std::vector<double>& times, double& lambda_min,
+void extremes_over(const SymmetricSolution& X, const std::vector<double>& times, double& lambda_min,
                    double& lambda_max) {
-  const int n = static_cast<int>(std::lround((std::sqrt(8.0 * X.dim() + 1.0) - 1.0) / 2.0));
-  std::vector<double> p(static_cast<std::size_t>(X.dim()));
+  const int n = X.n();
+  std::vector<double> p(static_cast<std::size_t>(packed_size(n)));
   Eigen::Matrix<double, N, N> Xt(n, n);
   std::size_t cursor = 0;
   for (double t : times) {
-    X.eval(t, p.data(), &cursor);
+    X.packed(t, p.data(), &cursor);
     unpack_symmetric(p.data(), Xt);
     double lo = 0.0, hi = 0.0;
     detail::symmetric_eigen_extremes(Xt, lo, hi);
@@ -542,18 +715,18 @@ void extremes_over(const PiecewisePolynomial& X, const std::vector<double>& time
 }
 
 template <int N>
-void extremes_at(const PiecewisePolynomial& X, double t, double& lo, double& hi) {
-  const int n = static_cast<int>(std::lround((std::sqrt(8.0 * X.dim() + 1.0) - 1.0) / 2.0));
+void extremes_at(const SymmetricSolution& X, double t, double& lo, double& hi) {
+  const int n = X.n();
   PackedScratch packed(n);
-  X.eval(t, packed.data());
+  X.packed(t, packed.data());
   Eigen::Matrix<double, N, N> Xt(n, n);
   unpack_symmetric(packed.data(), Xt);
   detail::symmetric_eigen_extremes(Xt, lo, hi);
 }
 
 template <int N>
-void continuous_bounds(const PiecewisePolynomial& X, double& lambda_min, double& lambda_max) {
-  const std::vector<double> times = detail::step_samples(X.breakpoints());
+void continuous_bounds(const SymmetricSolution& X, double& lambda_min, double& lambda_max) {
+  const std::vector<double> times = detail::step_samples(X.dense().breakpoints());
   auto smallest = [&X](double t) {
     double lo = 0.0, hi = 0.0;
     extremes_at<N>(X, t, lo, hi);
@@ -571,29 +744,40 @@ void continuous_bounds(const PiecewisePolynomial& X, double& lambda_min, double&
 }  // namespace
 
 void SymmetricSolution::eigenvalue_bounds(double& lambda_min, double& lambda_max) const {
-  detail::with_state_size(n_, [&](auto size) { continuous_bounds<decltype(size)::value>(X_, lambda_min, lambda_max); });
+  detail::with_state_size(n_, [&](auto size) { continuous_bounds<decltype(size)::value>(*this, lambda_min, lambda_max); });
 }
 
 SymmetricSolution::SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X,
-                                     SolveStats stats)
+                                     SolveStats stats, std::vector<int> blocks)
     : trajectory_(std::move(trajectory)), n_(trajectory_->n()), gamma_(gamma), X_(std::move(X)),
-      stats_(stats) {}
+      stats_(stats), blocks_(blocks.empty() ? std::vector<int>{n_} : blocks) {
+  require(blocks_.n == n_, "a Riccati solution of n = ", n_, " cannot be stored in blocks of ", blocks_.n,
+          " states in all");
+  require(blocks_.dim == X_.dim(), "a Riccati solution of n = ", n_, " stored in ", blocks_.count(), " block(s) needs ",
+          blocks_.dim, " components, got ", X_.dim());
+}
 
 Mat SymmetricSolution::value(double t) const { return unpacked(t, false); }
 
 Mat SymmetricSolution::derivative(double t) const { return unpacked(t, true); }
 
 Mat SymmetricSolution::unpacked(double t, bool derivative) const {
-  std::vector<double> p(static_cast<std::size_t>(packed_size(n_)));
+  std::vector<double> p(static_cast<std::size_t>(blocks_.dim));
   if (derivative) X_.eval_derivative(t, p.data());
   else X_.eval(t, p.data());
   Mat out(n_, n_);
-  unpack_symmetric(p.data(), out);
+  blocks_.unpack(p.data(), out);
   return out;
 }
 
 void SymmetricSolution::packed(double t, double* out, std::size_t* cursor) const {
-  X_.eval(t, out, cursor);
+  if (blocks_.count() == 1) {
+    X_.eval(t, out, cursor);
+    return;
+  }
+  PackedScratch stored(n_);  // blocks_.dim <= packed_size(n_)
+  X_.eval(t, stored.data(), cursor);
+  blocks_.expand(stored.data(), out);
 }
 
 void SymmetricSolution::eigenvalue_range(const std::vector<double>& times, double& lambda_min,
@@ -601,12 +785,12 @@ void SymmetricSolution::eigenvalue_range(const std::vector<double>& times, doubl
   require(!times.empty(), "eigenvalue_range needs at least one time");
   lambda_min = std::numeric_limits<double>::infinity();
   lambda_max = -std::numeric_limits<double>::infinity();
-  detail::with_state_size(n_, [&](auto size) { extremes_over<decltype(size)::value>(X_, times, lambda_min, lambda_max); });
+  detail::with_state_size(n_, [&](auto size) { extremes_over<decltype(size)::value>(*this, times, lambda_min, lambda_max); });
 }
 
 RiccatiSolution::RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z,
-                                 SolveStats stats)
-    : SymmetricSolution(std::move(trajectory), gamma, std::move(Z), stats), m_(trajectory_->m()) {
+                                 SolveStats stats, std::vector<int> blocks)
+    : SymmetricSolution(std::move(trajectory), gamma, std::move(Z), stats, std::move(blocks)), m_(trajectory_->m()) {
   const Model& model = trajectory_->model();
   constant_B_ = model.constant_input_matrices();
   if (constant_B_) B_ = SparseMatrix(model.G(trajectory_->t0(), trajectory_->q_d0()));
@@ -621,9 +805,9 @@ Mat RiccatiSolution::gain(double t) const {
 void RiccatiSolution::gain(double t, double* out, std::size_t* cursor) const {
   if (constant_B_) {
     // K(j, c) = sum_i B(i, j) Z(i, c), column-major m x n.
-    PackedScratch packed(n_);
-    double* z = packed.data();
-    X_.eval(t, z, cursor);
+    PackedScratch whole(n_);
+    double* z = whole.data();
+    packed(t, z, cursor);
     for (int k = 0; k < m_ * n_; ++k) out[k] = 0.0;
     const int n = n_, m = m_;
     B_.for_each([&](int i, int j, double b) {
@@ -666,9 +850,9 @@ Mat check_filter_input(const TrajectoryPtr& trajectory, const Mat& N, const Mat&
 RiccatiSolutionPtr solve_grde(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf,
                               double gamma, const SolverOptions& options) {
   check_grde_input(trajectory, Q, Qf, gamma, options);
-  auto [dense, stats] = solve(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(),
+  auto [dense, stats, blocks] = solve(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(),
                               symmetrized(Qf), options);
-  return std::make_shared<const RiccatiSolution>(trajectory, gamma, std::move(dense), stats);
+  return std::make_shared<const RiccatiSolution>(trajectory, gamma, std::move(dense), stats, blocks);
 }
 
 
@@ -676,9 +860,9 @@ FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, c
                                               const Mat& Q, double gamma, const Mat& Sigma0,
                                               const SolverOptions& options) {
   const Mat N_inv = check_filter_input(trajectory, N, Q, gamma, Sigma0, options);
-  auto [dense, stats] = solve(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv,
+  auto [dense, stats, blocks] = solve(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv,
                               symmetrized(Sigma0), options);
-  return std::make_shared<const FilterRiccatiSolution>(trajectory, gamma, std::move(dense), stats);
+  return std::make_shared<const FilterRiccatiSolution>(trajectory, gamma, std::move(dense), stats, blocks);
 }
 
 double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
@@ -720,9 +904,9 @@ std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolution
                                                            const SolverOptions& options) {
   check_law_input(law, Q, Qf, gamma, kappa, options);
   const ClosedLoopLaw closed = design_law(*law, kappa);
-  auto [dense, stats] = solve(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(),
+  auto [dense, stats, blocks] = solve(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(),
                               symmetrized(Qf), options, /*store=*/true, &closed);
-  return std::make_shared<const SymmetricSolution>(law->trajectory_ptr(), gamma, std::move(dense), stats);
+  return std::make_shared<const SymmetricSolution>(law->trajectory_ptr(), gamma, std::move(dense), stats, blocks);
 }
 
 namespace {
@@ -751,9 +935,9 @@ std::shared_ptr<const SymmetricSolution> solve_controller_riccati(const Trajecto
                                                                   double gamma, const SolverOptions& options) {
   check_controller_input(trajectory, controller, Q, Qf, gamma, options);
   const ClosedLoopLaw closed = controller_law(*trajectory, controller);
-  auto [dense, stats] = solve(*trajectory, RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
+  auto [dense, stats, blocks] = solve(*trajectory, RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
                               options, /*store=*/true, &closed);
-  return std::make_shared<const SymmetricSolution>(trajectory, gamma, std::move(dense), stats);
+  return std::make_shared<const SymmetricSolution>(trajectory, gamma, std::move(dense), stats, blocks);
 }
 
 }  // namespace hinf

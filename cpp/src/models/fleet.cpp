@@ -35,6 +35,13 @@ FleetModel::FleetModel(ModelPtr member, int count) : member_(std::move(member)),
           kMaxDimension, " components the library sizes arrays for");
 }
 
+std::vector<int> FleetModel::uncoupled_blocks() const {
+  const std::vector<int> one = member_->uncoupled_blocks();
+  std::vector<int> blocks;
+  for (int i = 0; i < count_; ++i) blocks.insert(blocks.end(), one.begin(), one.end());
+  return blocks;
+}
+
 std::string FleetModel::name() const { return str_cat("fleet of ", count_, " ", member_->name()); }
 
 void FleetModel::f(double t, const ConstVecRef& q, VecRef out) const {

@@ -201,6 +201,48 @@ void validate_model(const Model& model, double t, const ConstVecRef& q) {
   check_finite(D, str_cat("D(t, q) of the model '", s.name, "'"));
 }
 
+std::vector<int> merge_coupled_blocks(const std::vector<int>& blocks, const Mat& M, Coupling coupling) {
+  const int n = static_cast<int>(M.rows());
+  // reach[i]: the last state that state i is joined with; consecutive groups are then the
+  // maximal runs whose joins stay inside them (a union of intervals).
+  std::vector<int> reach(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) reach[i] = i;
+  int start = 0;
+  for (int size : blocks) {
+    require(size >= 1 && start + size <= n, "merge_coupled_blocks: groups of sizes that do not add up to ", n);
+    reach[start] = start + size - 1;
+    start += size;
+  }
+  require(start == n, "merge_coupled_blocks: groups of sizes that do not add up to ", n);
+  auto join = [&reach](int a, int b) { reach[std::min(a, b)] = std::max(reach[std::min(a, b)], std::max(a, b)); };
+  for (Eigen::Index j = 0; j < M.cols(); ++j) {
+    int first = -1, last = -1;
+    for (int i = 0; i < n; ++i) {
+      if (M(i, j) == 0.0) continue;
+      if (coupling == Coupling::Entries) join(i, static_cast<int>(j));
+      if (first < 0) first = i;
+      last = i;
+    }
+    if (coupling == Coupling::Columns && first >= 0) join(first, last);
+  }
+  std::vector<int> merged;
+  for (int i = 0, begin = 0, end = 0; i < n; ++i) {
+    end = std::max(end, reach[i]);
+    if (i == end) {
+      merged.push_back(end - begin + 1);
+      begin = i + 1;
+    }
+  }
+  return merged;
+}
+
+std::vector<int> LinearModel::uncoupled_blocks() const {
+  const std::vector<int> each_state(static_cast<std::size_t>(n()), 1);
+  std::vector<int> blocks = merge_coupled_blocks(each_state, A_, Coupling::Entries);
+  blocks = merge_coupled_blocks(blocks, B_, Coupling::Columns);
+  return merge_coupled_blocks(blocks, D_, Coupling::Columns);
+}
+
 LinearModel::LinearModel(Mat A, Mat B, Mat D, Mat C)
     : A_(std::move(A)), B_(std::move(B)), D_(std::move(D)), C_(std::move(C)) {
   const int n = static_cast<int>(A_.rows());

@@ -49,10 +49,34 @@ struct SolveStats {
 // zero (no process noise, no weight) crosses zero by round-off and integration error only.
 constexpr double kSemidefiniteTolerance = 1e-6;
 
+// The storage of a block-diagonal symmetric n x n matrix: the packed triangles (types.hpp) of
+// its diagonal blocks one after the other, sum k(k+1)/2 numbers for blocks of sizes k. A Riccati
+// equation whose model and weights are uncoupled in groups of states (Model::uncoupled_blocks)
+// keeps X block-diagonal; it is integrated and stored in this form. One block of size n is the
+// plain packed storage.
+struct PackedBlocks {
+  std::vector<int> start, size, offset;  // block b: states start[b] .. start[b] + size[b] - 1,
+                                         // its packed triangle at offset[b]
+  int n = 0;    // the matrix's size
+  int dim = 0;  // numbers stored
+
+  // Blocks of the given sizes (each >= 1), in order.
+  explicit PackedBlocks(const std::vector<int>& sizes = {});
+  int count() const { return static_cast<int>(size.size()); }
+  bool all_of_size(int k) const;
+  // X (n x n; the blocks only are read) into the storage, and back (zero off the blocks).
+  void pack(const Mat& X, double* stored) const;
+  void unpack(const double* stored, Mat& X) const;
+  // The whole packed X (n(n+1)/2 numbers, types.hpp) from the storage.
+  void expand(const double* stored, double* packed) const;
+};
+
 // A symmetric-matrix-valued solution X(t) on [t0, tf] kept as dense output.
 class SymmetricSolution {
  public:
-  SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X, SolveStats stats);
+  // X's dense output in the storage of `blocks` (empty: one block, the plain packed X).
+  SymmetricSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial X, SolveStats stats,
+                    std::vector<int> blocks = {});
   virtual ~SymmetricSolution() = default;
 
   // The desired trajectory it was solved along.
@@ -79,10 +103,12 @@ class SymmetricSolution {
   // over the neighbouring steps.
   void eigenvalue_bounds(double& lambda_min, double& lambda_max) const;
 
-  // The dense output of X's packed upper triangle (n(n+1)/2 components, types.hpp) and the
-  // counts of its solve.
+  // The dense output of X as stored (PackedBlocks of blocks(): the packed upper triangle,
+  // n(n+1)/2 components, unless X was solved in uncoupled blocks) and the counts of its solve.
   const PiecewisePolynomial& dense() const { return X_; }
   const SolveStats& stats() const { return stats_; }
+  // The sizes of the diagonal blocks X is stored in ({n}: the whole X).
+  const std::vector<int>& blocks() const { return blocks_.size; }
 
  protected:
   TrajectoryPtr trajectory_;
@@ -90,6 +116,7 @@ class SymmetricSolution {
   double gamma_;
   PiecewisePolynomial X_;
   SolveStats stats_;
+  PackedBlocks blocks_;
 
  private:
   Mat unpacked(double t, bool derivative) const;
@@ -98,7 +125,8 @@ class SymmetricSolution {
 // Z(t) of the GRDE (13).
 class RiccatiSolution final : public SymmetricSolution {
  public:
-  RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z, SolveStats stats);
+  RiccatiSolution(TrajectoryPtr trajectory, double gamma, PiecewisePolynomial Z, SolveStats stats,
+                  std::vector<int> blocks = {});
 
   // The model's number of inputs (the rows of the gain).
   int m() const { return m_; }

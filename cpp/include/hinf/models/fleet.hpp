@@ -49,6 +49,8 @@ class FleetModel final : public Model {
   std::vector<std::string> state_names() const override;
   std::vector<int> position_indices() const override;
   int heading_index() const override { return -1; }
+  // The member's groups, once per vehicle.
+  std::vector<int> uncoupled_blocks() const override;
   // The same count of the same member.
   bool same_as(const Model& other) const override;
 

@@ -96,6 +96,13 @@ class Model {
   // records them.
   virtual std::vector<std::pair<std::string, double>> named_parameters() const { return {}; }
 
+  // The sizes of consecutive groups of states that no equation of the model couples, in
+  // order, summing to n: for every t, q and u, df/dq, G, D and d(G u)/dq are block-diagonal in
+  // these groups (a group's inputs and disturbances act on it alone). The Riccati solves split
+  // a problem that is also uncoupled in its weights into these blocks. {n} unless the model
+  // knows better (a fleet: its vehicles; a linear model: from its matrices).
+  virtual std::vector<int> uncoupled_blocks() const { return {n()}; }
+
   // True when `other` is the same model: the same equations with the same parameters, so that
   // the designs along one desired trajectory are the same for both (run_scenarios shares designs
   // by it). The default is the model itself only (a model that cannot tell, such as one
@@ -148,6 +155,13 @@ void check_dimensions(const ModelStructure& structure);
 // state-dependent input matrices. InputError naming the first fault.
 void check_structure(const ModelStructure& structure);
 
+// How a matrix couples states: by its entries (n x n: entry (i, j) couples states i and j) or
+// by its columns (n x k input matrix: each column couples the states it acts on).
+enum class Coupling { Entries, Columns };
+// The coarsest merge of the consecutive groups `blocks` (sizes summing to M.rows()) that M does
+// not couple: groups joined by a nonzero of M become one group (Model::uncoupled_blocks).
+std::vector<int> merge_coupled_blocks(const std::vector<int>& blocks, const Mat& M, Coupling coupling);
+
 // What the model says about itself (n, m, nw checked first by check_dimensions, since the
 // rest is sized by them); check_structure checks the rest.
 ModelStructure structure_of(const Model& model);
@@ -195,6 +209,8 @@ class LinearModel final : public Model {
   Mat C(double t) const override;
   std::vector<int> noise_channels() const override;
   double remainder_bound(double, const ConstVecRef&, double) const override { return 0.0; }
+  // The groups of states that A, B and D leave uncoupled, read from their nonzeros.
+  std::vector<int> uncoupled_blocks() const override;
   // A (n x n) and B (n x m) as given to the constructor.
   const Mat& A() const { return A_; }
   const Mat& B() const { return B_; }
