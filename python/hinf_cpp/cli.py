@@ -44,12 +44,15 @@ import time
 import warnings
 
 from hinf_cpp import _core
-from hinf_cpp.output.animation import DEFAULT_FPS, DEFAULT_FRAMES, DEFAULT_WIDTH, MAX_FPS, MAX_FRAMES
+from hinf_cpp.output.animation_options import (DEFAULT_FPS, DEFAULT_FRAMES, DEFAULT_WIDTH, MAX_FPS, MAX_FRAMES,
+                                               MAX_WIDTH, MIN_WIDTH)
 from hinf_cpp.output.files import check_output_folder, check_output_path, write_text
-from hinf_cpp.analysis.comparison import Feedback
-from hinf_cpp.output.progress import Progress
+from hinf_cpp.output.tables import Feedback, markdown_table, run_key, text_table
 from hinf_cpp.scenario import load_scenario
-from hinf_cpp.output.tables import markdown_table, run_key, text_table
+
+# Above: what every command and the parser need, all light. Each command imports the rest itself
+# (analyses, figures, exports, the planner, studies): a plain `run` loads none of pandas,
+# matplotlib, SciPy, CasADi or Pillow (tests/python/test_cli_startup.py).
 
 # Words shared with hinf-sim (cpp/app/hinf_sim.cpp).
 OUT_OF_MEMORY = "not enough memory for this run: shorten the horizon, use a larger [output] dt or shorter tables"
@@ -181,7 +184,8 @@ def _load_with_settings(path: str, settings: list[str], seed: int | None):
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from hinf_cpp.output.export import npz_path, save_npz
+    if args.npz is not None:
+        from hinf_cpp.output.export import npz_path, save_npz
 
     _check_outputs(files=[args.json, args.csv, None if args.npz is None else npz_path(args.npz)],
                    figures=[args.plot])
@@ -336,6 +340,7 @@ def cmd_certify(args: argparse.Namespace) -> int:
 def cmd_sweep_gamma(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.gamma_sweep import sweep_figure, sweep_gamma
     from hinf_cpp.output.plotting import save_figure
+    from hinf_cpp.output.progress import Progress
 
     _check_outputs(files=[args.json], figures=[args.plot])
     scenario = load_scenario(args.scenario)
@@ -392,6 +397,7 @@ def cmd_gain_frequency(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.attenuation import frequency_figure, gain_against_frequency
     from hinf_cpp.analysis.comparison import parse_controllers
     from hinf_cpp.output.plotting import save_figure
+    from hinf_cpp.output.progress import Progress
 
     laws = parse_controllers(args.laws)
     _check_outputs(folders=[args.out])
@@ -458,6 +464,7 @@ def _comparison_notes(comparison) -> list[str]:
 def cmd_compare(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.comparison import compare, parse_controllers
     from hinf_cpp.output.plotting import paths_figure, save_figure
+    from hinf_cpp.output.progress import Progress
 
     controllers = parse_controllers(args.controllers)
     _check_outputs(files=[args.json], figures=[args.plot])
@@ -486,6 +493,7 @@ def cmd_compare(args: argparse.Namespace) -> int:
 def cmd_recovery(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.comparison import parse_controllers
     from hinf_cpp.output.plotting import recovery_figure, save_figure
+    from hinf_cpp.output.progress import Progress
     from hinf_cpp.analysis.recovery import recovery_study
 
     controllers = parse_controllers(args.controllers)
@@ -519,6 +527,7 @@ def cmd_recovery(args: argparse.Namespace) -> int:
 def cmd_report(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.comparison import parse_controllers
     from hinf_cpp.analysis.report import write_report
+    from hinf_cpp.output.progress import Progress
 
     controllers = parse_controllers(args.controllers)
     _check_outputs(folders=[args.out])
@@ -584,6 +593,7 @@ def cmd_paper(args: argparse.Namespace) -> int:
     from hinf_cpp.scenario import scenario_path
     from hinf_cpp.analysis.comparison import compare
     from hinf_cpp.output.plotting import controls_figure, errors_figure, paths_figure, save_figure, xy_figure
+    from hinf_cpp.output.progress import Progress
 
     _check_outputs(folders=[args.out])
     out = pathlib.Path(args.out)
@@ -667,6 +677,7 @@ def cmd_animate(args: argparse.Namespace) -> int:
 
 def cmd_vehicles(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.gallery import VEHICLES, gallery_table, run_vehicle, write_gallery
+    from hinf_cpp.output.progress import Progress
 
     _check_outputs(folders=[args.out])
     runs = []
@@ -683,6 +694,7 @@ def cmd_vehicles(args: argparse.Namespace) -> int:
 
 def cmd_planned(args: argparse.Namespace) -> int:
     from hinf_cpp.analysis.gallery import PLANNED, planned_table, run_planned, write_planned_gallery
+    from hinf_cpp.output.progress import Progress
 
     _check_outputs(folders=[args.out])
     runs = []
@@ -700,6 +712,7 @@ def cmd_planned(args: argparse.Namespace) -> int:
 def cmd_study(args: argparse.Namespace) -> int:
     from hinf_cpp.studies.study import load_study, local_cores, run_study
     from hinf_cpp.studies.report import failed_runs_text, status_counts, write_study_outputs
+    from hinf_cpp.output.progress import Progress
 
     if args.workers is not None and args.scheduler is not None:
         raise ValueError("--workers and --scheduler exclude each other: --workers sets the local threads, "
@@ -989,8 +1002,9 @@ def _frame_width(text: str) -> int:
         value = int(text)
     except ValueError:
         value = None
-    if value is None or not 160 <= value <= 4096:
-        raise argparse.ArgumentTypeError(f"invalid width '{text}': an integer number of pixels from 160 to 4096")
+    if value is None or not MIN_WIDTH <= value <= MAX_WIDTH:
+        raise argparse.ArgumentTypeError(f"invalid width '{text}': an integer number of pixels from {MIN_WIDTH} "
+                                         f"to {MAX_WIDTH}")
     return value
 
 

@@ -24,7 +24,6 @@ weighted error of its closed loop linearized along the desired trajectory over [
 from __future__ import annotations
 
 import dataclasses
-import enum
 import json
 import math
 from typing import Any, Iterable, Sequence
@@ -33,14 +32,15 @@ import numpy as np
 
 from hinf_cpp import _core
 from hinf_cpp.output.progress import ProgressCallback
-from hinf_cpp.output.tables import run_key
+# Feedback is defined beside run_key, so that the command line's parser names its members
+# without loading the analyses; it is documented under hinf_cpp.analysis, which exports it.
+from hinf_cpp.output.tables import Feedback, run_key
 
 __all__ = [
     "METRICS",
     "induced_gain",
     "Comparison",
     "ComparisonRun",
-    "Feedback",
     "MetricInfo",
     "compare",
     "describe_disturbance",
@@ -50,25 +50,6 @@ __all__ = [
     "run_law",
     "wrap_angles",
 ]
-
-
-class Feedback(enum.Enum):
-    """What a run's law acts on: the true state, or the estimate from the measurements.
-
-    ``Feedback.state``: perfect state feedback (the scenario's [measurement] removed);
-    ``Feedback.output``: output feedback (paper §4: the filter of paper eq. (36), the
-    estimator, the law on the estimate), for a scenario with [measurement]. The members'
-    values are their names, as written in tables and JSON.
-
-    Examples
-    --------
-    >>> from hinf_cpp.analysis import Feedback
-    >>> Feedback("output"), [mode.name for mode in Feedback]
-    (<Feedback.output: 'output'>, ['state', 'output'])
-    """
-
-    state = "state"    # perfect state feedback ([measurement] removed)
-    output = "output"  # output feedback (paper §4): filter, estimator, law on the estimate
 
 
 @dataclasses.dataclass(frozen=True)

@@ -10,6 +10,9 @@ returned as :class:`PixelMap` so that a frame can be read back against the run.
 The view is sized to the data: the desired and actual paths over the run, with equal scale on
 both axes and a margin. With ``marine=True`` it is drawn in the marine convention (North up,
 East right: for the ship x is North and y is East, so y is horizontal and x vertical).
+
+The options' defaults and bounds (``DEFAULT_FRAMES``, ``MAX_FPS``, ...) are those of
+:mod:`~hinf_cpp.output.animation_options`, importable from here too.
 """
 
 from __future__ import annotations
@@ -26,16 +29,13 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 from hinf_cpp import _core
+from hinf_cpp.output.animation_options import (DEFAULT_FPS, DEFAULT_FRAMES, DEFAULT_WIDTH, MAX_FPS, MAX_FRAMES,
+                                               MAX_WIDTH, MIN_WIDTH)
 from hinf_cpp.output.files import atomic_output, check_output_path
 from hinf_cpp.output.tables import run_key
 
 __all__ = [
     "ANIMATION_SUFFIXES",
-    "DEFAULT_FPS",
-    "DEFAULT_FRAMES",
-    "DEFAULT_WIDTH",
-    "MAX_FPS",
-    "MAX_FRAMES",
     "VESSEL_RGB",
     "Animation",
     "PixelMap",
@@ -45,17 +45,6 @@ __all__ = [
 
 #: The file endings an animation can be written as (.mp4 needs ffmpeg on PATH).
 ANIMATION_SUFFIXES = (".gif", ".mp4")
-#: Frames of an animation unless told otherwise.
-DEFAULT_FRAMES = 100
-#: Frames per second unless told otherwise.
-DEFAULT_FPS = 20.0
-#: Width of the frames (pixels) unless told otherwise; the height follows the data.
-DEFAULT_WIDTH = 640
-#: The most frames of an animation.
-MAX_FRAMES = 2000
-#: The highest frame rate: a GIF stores each frame's delay in hundredths of a second.
-MAX_FPS = 50.0
-_MIN_WIDTH, _MAX_WIDTH = 160, 4096
 
 # The fixed palette of the frames (index: colour).
 _BACKGROUND, _DESIRED, _GHOST, _TRAIL, _VESSEL, _TEXT, _START = range(7)
@@ -167,8 +156,8 @@ def _check_options(frames, fps, width) -> None:
     if isinstance(fps, bool) or not isinstance(fps, numbers.Real) or not (0.0 < fps <= MAX_FPS):
         raise ValueError(f"fps must be a number in (0, {MAX_FPS:g}] (a GIF stores each frame's delay in "
                          f"hundredths of a second), got {fps!r}")
-    if isinstance(width, bool) or not isinstance(width, numbers.Integral) or not _MIN_WIDTH <= width <= _MAX_WIDTH:
-        raise ValueError(f"width must be an integer in [{_MIN_WIDTH}, {_MAX_WIDTH}] (pixels), got {width!r}")
+    if isinstance(width, bool) or not isinstance(width, numbers.Integral) or not MIN_WIDTH <= width <= MAX_WIDTH:
+        raise ValueError(f"width must be an integer in [{MIN_WIDTH}, {MAX_WIDTH}] (pixels), got {width!r}")
 
 
 def check_animation_path(path: str | os.PathLike) -> pathlib.Path:

@@ -1,12 +1,16 @@
 """Plain-text, Markdown and CSV renderings of small tables (a header and rows of cells).
 
 Cells are strings, numbers (non-finite shown as ``-`` in text and Markdown, empty in CSV),
-booleans (``yes`` / ``no``) or None (``-``).
+booleans (``yes`` / ``no``) or None (``-``). Runs are named by :func:`run_key`; what a run's law
+acts on, :class:`~hinf_cpp.analysis.Feedback`, is defined here, beside it (the command line's
+parser names its members without loading the analyses), and imported from
+:mod:`hinf_cpp.analysis`.
 """
 
 from __future__ import annotations
 
 import csv
+import enum
 import io
 import math
 from typing import Any, Sequence
@@ -14,6 +18,25 @@ from typing import Any, Sequence
 from hinf_cpp import _core
 
 __all__ = ["csv_table", "format_cell", "markdown_table", "run_key", "text_table"]
+
+
+class Feedback(enum.Enum):
+    """What a run's law acts on: the true state, or the estimate from the measurements.
+
+    ``Feedback.state``: perfect state feedback (the scenario's [measurement] removed);
+    ``Feedback.output``: output feedback (paper §4: the filter of paper eq. (36), the
+    estimator, the law on the estimate), for a scenario with [measurement]. The members'
+    values are their names, as written in tables and JSON.
+
+    Examples
+    --------
+    >>> from hinf_cpp.analysis import Feedback
+    >>> Feedback("output"), [mode.name for mode in Feedback]
+    (<Feedback.output: 'output'>, ['state', 'output'])
+    """
+
+    state = "state"    # perfect state feedback ([measurement] removed)
+    output = "output"  # output feedback (paper §4): filter, estimator, law on the estimate
 
 
 def run_key(law: _core.Law, output_feedback: bool) -> str:

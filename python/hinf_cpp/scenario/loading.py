@@ -12,7 +12,6 @@ from __future__ import annotations
 import os
 import pathlib
 import warnings
-from importlib import resources
 from typing import Any
 
 from hinf_cpp import _core
@@ -200,6 +199,8 @@ def scenario_path(name: str) -> pathlib.Path:
         ...
     ValueError: no shipped scenario 'paper_fig9' (shipped: auv_s_curve, ...)
     """
+    from importlib import resources  # here: it brings tempfile and shutil, which reading a file does not need
+
     folder = pathlib.Path(str(resources.files("hinf_cpp") / "scenarios"))
     path = folder / f"{name}.toml"
     if not path.exists():

@@ -35,15 +35,17 @@ import math
 import os
 import pathlib
 import re
-import shutil
 import tomllib
+from typing import TYPE_CHECKING
 
 from hinf_cpp import _core
-from hinf_cpp.models.codegen import _write_atomically
-from hinf_cpp.models.codegen import default_cache_dir as compile_cache_dir
-from hinf_cpp.planning.planner import (Plan, PlanOptions, UnreachableWaypointError, Waypoint, default_cache_dir, plan,
-                                       plan_path_change, waypoints_from_path)
 from hinf_cpp.scenario.documents import code_allowed, resolve_callable, toml_text
+
+# Every scenario file is read through this module (load_planned) and most plan nothing: the
+# planner (NumPy, the vehicles' CasADi statements) and the compile cache are imported by the
+# functions that plan or copy a compiled model.
+if TYPE_CHECKING:
+    from hinf_cpp.planning.planner import Plan, PlanOptions, Waypoint
 
 __all__ = ["PLANNING_KEYS", "PlannedScenario", "load_planned", "needs_planning", "plan_scenario",
            "planned_scenario_toml"]
@@ -273,6 +275,8 @@ def plan_scenario(root: dict, source: str = "<dict>", cache: bool = True,
     >>> result.metrics.final_position_error < 0.1
     True
     """
+    from hinf_cpp.planning.planner import default_cache_dir, plan, plan_path_change
+
     planning = {name: _planning_keys(root.get(name)) for name in PLANNED_SECTIONS}
     if not any(planning.values()):
         raise ValueError(f"{source}: neither [desired] nor [path_change] gives waypoints, a path or plan options: "
@@ -367,6 +371,8 @@ def _check_planning_table(table: dict, keys: dict, name: str, source: str) -> No
 def _prefixed(source: str, where: str):
     """The planner's ValueErrors with the source and the table in front (the model's section for
     a model without a CasADi form); an unreachable waypoint stays an UnreachableWaypointError."""
+    from hinf_cpp.planning.planner import UnreachableWaypointError
+
     try:
         yield
     except UnreachableWaypointError as error:
@@ -430,6 +436,11 @@ def planned_scenario_toml(planned: PlannedScenario, output: str | os.PathLike) -
     >>> 'kind = "ship"' in text
     True
     """
+    import shutil
+
+    from hinf_cpp.models.codegen import _write_atomically
+    from hinf_cpp.models.codegen import default_cache_dir as compile_cache_dir
+
     output = pathlib.Path(output)
     text = _core.scenario_toml(planned.scenario)
     cache = os.path.realpath(compile_cache_dir())
@@ -510,6 +521,8 @@ def _known(table, known: tuple[str, ...], where: str) -> dict:
 
 
 def _plan_options(table, source: str, m: int, section: str) -> PlanOptions:
+    from hinf_cpp.planning.planner import PlanOptions
+
     where = f"{source}: [{section}.plan]"
     fields = tuple(field.name for field in dataclasses.fields(PlanOptions))
     values = {}
@@ -534,6 +547,8 @@ def _plan_options(table, source: str, m: int, section: str) -> PlanOptions:
 
 
 def _waypoints(value, source: str, section: str) -> list[Waypoint]:
+    from hinf_cpp.planning.planner import Waypoint
+
     where = f"{source}: [{section}] waypoints"
     if not isinstance(value, list) or not value:
         raise ValueError(f"{where}: expected an array of tables {{ x = ..., y = ..., t = ... }}, got "
@@ -549,6 +564,8 @@ def _waypoints(value, source: str, section: str) -> list[Waypoint]:
 
 
 def _path_waypoints(value, source: str, start, t0: float, tolerance: float, section: str) -> list[Waypoint]:
+    from hinf_cpp.planning.planner import waypoints_from_path
+
     where = f"{source}: [{section}] path"
     table = _known(value, PATH_KEYS, where)
     for key in PATH_KEYS:
