@@ -604,7 +604,7 @@ Examples
 >>> u, report = controller.step(0.1, q0, 0.1)
 >>> u.round(3), report.status, report.saturated
 (array([ 2.   , -1.941]), <StepStatus.ok: 0>, True))").c_str())
-      .def(py::init<SampledLawPtr, const OnlineOptions&>(), py::arg("law"), py::arg("options") = OnlineOptions{})
+      .def(py::init<SampledLawPtr, const OnlineOptions&>(), py::arg("law"), default_struct_arg<OnlineOptions>("options"))
       .def("law", [](const OnlineController& c) { return &c.law(); }, py::return_value_policy::reference_internal,
            doc({"OnlineController::law"}).c_str())
       .def("options", &OnlineController::options, doc({"OnlineController::law"}).c_str())
@@ -765,7 +765,7 @@ void bind_sampled_loop(py::module_& m) {
           return simulate_sampled(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
-        py::arg("options") = SampledLoopOptions{}, py::arg("plant") = py::none(),
+        default_struct_arg<SampledLoopOptions>("options"), py::arg("plant") = py::none(),
         doc({"simulate_sampled", "control/sampled_loop.hpp"}, R"(Parameters
 ----------
 trajectory : Trajectory
@@ -1084,7 +1084,7 @@ Examples
              return std::make_shared<RecedingOnlineController>(std::move(horizon), period, options,
                                                                to_signal(kappa, "kappa"), thread);
            }),
-           py::arg("horizon"), py::arg("period"), py::arg("options") = OnlineOptions{}, py::arg("kappa") = 1.0,
+           py::arg("horizon"), py::arg("period"), default_struct_arg<OnlineOptions>("options"), py::arg("kappa") = 1.0,
            py::arg("background") = true)
       .def("period", &RecedingOnlineController::period, "The controller's period T (s).")
       .def("options", &RecedingOnlineController::options, doc({"RecedingOnlineController::options"}).c_str())
@@ -1122,7 +1122,7 @@ Examples
           return simulate_sampled(trajectory, controller, w, q0, options, plant ? plant->get() : nullptr);
         },
         py::arg("trajectory"), py::arg("controller"), py::arg("disturbance"), py::arg("q0"),
-        py::arg("options") = SampledLoopOptions{}, py::arg("plant") = py::none(),
+        default_struct_arg<SampledLoopOptions>("options"), py::arg("plant") = py::none(),
         doc({"simulate_sampled", "control/sampled_loop.hpp"}, R"(Parameters
 ----------
 trajectory : Trajectory

@@ -259,7 +259,7 @@ template <class Vehicle, class Parameters>
 void bind_vehicle(py::module_& m, const char* name, const std::string& text) {
   const std::string type = name;
   py::class_<Vehicle, Model, py::smart_holder>(m, name, text.c_str())
-      .def(py::init<const Parameters&>(), py::arg("parameters") = Parameters{})
+      .def(py::init<const Parameters&>(), default_struct_arg<Parameters>("parameters"))
       .def("parameters", &Vehicle::parameters, doc({str_cat(type, "::parameters")}).c_str())
       .def(py::pickle(
           [](const Vehicle& model) { return py::make_tuple<py::return_value_policy::copy>(model.parameters()); },
@@ -438,7 +438,10 @@ Examples
 ...                        C=np.array([[1.0, 0.0]]))
 >>> model.n(), model.m(), model.nw(), model.noise_channels()      # w = [process (2), noise (1)]
 (2, 1, 3, [2]))").c_str())
-      .def(py::init<Mat, Mat, Mat, Mat>(), py::arg("A"), py::arg("B"), py::arg("D"), py::arg("C") = Mat())
+      .def(py::init([](Mat A, Mat B, Mat D, std::optional<Mat> C) {
+             return LinearModel(std::move(A), std::move(B), std::move(D), C ? std::move(*C) : Mat());
+           }),
+           py::arg("A"), py::arg("B"), py::arg("D"), py::arg_v("C", py::none(), "None"))
       .def("A", &LinearModel::A, doc({"LinearModel::A"}).c_str())
       .def("B", &LinearModel::B, doc({"LinearModel::A"}).c_str())
       .def("process_D", &LinearModel::process_D, doc({"LinearModel::process_D"}).c_str())

@@ -505,16 +505,49 @@ void def_fields(py::class_<T, Options...>& cls, bool writable) {
   });
 }
 
+// Loading the module must not import NumPy (it would cost every `hinf-cpp` command about 80 ms
+// before any work; benchmarks/README.md): no default argument may be an array, or print one.
+// pybind11 converts each default to a Python object and, without a description, prints its
+// repr into the signature when a function is defined.
+
+// A keyword argument defaulting to a struct's T{}, shown as "T()": its repr would print its
+// arrays through NumPy.
+template <class T>
+py::arg_v default_struct_arg(const char* name) {
+  static const std::string shown = python_type_name<T>() + "()";  // arg_v keeps the pointer
+  return py::arg_v(name, T{}, shown.c_str());
+}
+
+// A field of a keyword constructor: an array is taken as an optional array, None (the default,
+// shown as "...") keeping T{}'s value.
+template <class V>
+using FieldArgument = std::conditional_t<std::is_base_of_v<Eigen::EigenBase<V>, V>, std::optional<V>, V>;
+template <class V>
+void assign_field(V& field, V&& value) {
+  field = std::move(value);
+}
+template <class V>
+void assign_field(V& field, std::optional<V>&& value) {
+  if (value) field = std::move(*value);
+}
+
 // The keyword argument of field I with its default from `defaults`; an array's default shows as
-// "..." in the signature (its repr, "array([], shape=(0, 0), dtype=float64)", says nothing), an
-// empty VectorSignal as the expression that makes one.
+// "..." in the signature, an empty VectorSignal as the expression that makes one, a struct left
+// at its own default as "T()".
 template <class T, std::size_t I>
 py::arg_v field_arg(const T& defaults) {
   const auto& f = std::get<I>(Fields<T>::list);
   using V = typename std::decay_t<decltype(f)>::Value;
-  if constexpr (std::is_base_of_v<Eigen::EigenBase<V>, V>) return py::arg_v(f.name, defaults.*(f.member), "...");
-  else if constexpr (std::is_same_v<V, VectorSignal>) return py::arg_v(f.name, defaults.*(f.member), "VectorSignal([])");
-  else return py::arg(f.name) = defaults.*(f.member);
+  if constexpr (std::is_base_of_v<Eigen::EigenBase<V>, V>) {
+    return py::arg_v(f.name, py::none(), "...");
+  } else if constexpr (std::is_same_v<V, VectorSignal>) {
+    return py::arg_v(f.name, defaults.*(f.member), "VectorSignal([])");
+  } else if constexpr (has_fields<V>::value) {
+    if (same(defaults.*(f.member), V{})) return default_struct_arg<V>(f.name);
+    return py::arg(f.name) = defaults.*(f.member);
+  } else {
+    return py::arg(f.name) = defaults.*(f.member);
+  }
 }
 
 // The keyword constructor T(field1=T{}.field1, ...), followed by check(object).
@@ -522,9 +555,9 @@ template <class T, class Check, class... Options, std::size_t... I>
 void def_field_init(py::class_<T, Options...>& cls, Check check, std::index_sequence<I...>) {
   using List = std::decay_t<decltype(Fields<T>::list)>;
   const T defaults{};
-  cls.def(py::init([check](typename std::tuple_element_t<I, List>::Value... values) {
+  cls.def(py::init([check](FieldArgument<typename std::tuple_element_t<I, List>::Value>... values) {
             T object;
-            ((object.*(std::get<I>(Fields<T>::list).member) = std::move(values)), ...);
+            (assign_field(object.*(std::get<I>(Fields<T>::list).member), std::move(values)), ...);
             check(object);
             return object;
           }),
