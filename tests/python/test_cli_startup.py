@@ -1,5 +1,6 @@
 """The command line imports what a command needs: a plain ``hinf-cpp run`` (no plot, no plan) and
-``hinf-cpp --help`` load none of the heavy optional libraries (issue 24: start-up time).
+``hinf-cpp --help`` load none of the heavy optional libraries, and loading the package does not
+import NumPy (start-up time).
 
 Each case runs in a fresh interpreter, since the test process itself has imported them. The
 time is measured by benchmarks/bench_startup.py, not here.
@@ -47,3 +48,12 @@ def test_run_loads_no_heavy_library(tmp_path, settings):
 
 def test_help_loads_no_heavy_library(tmp_path):
     assert command_line(["--help"], tmp_path) == {"status": 0, "loaded": []}
+
+
+def test_loading_the_package_does_not_import_numpy():
+    """NumPy (~50-80 ms) loads at the first array conversion, not with the extension: no default
+    argument of the bindings is an array or prints one (cpp/python/fields.hpp)."""
+    script = "import sys, hinf_cpp, hinf_cpp.cli; print('numpy' in sys.modules)"
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "False"
