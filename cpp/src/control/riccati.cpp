@@ -131,6 +131,12 @@ class RiccatiProblem {
       full_piece_.resize(static_cast<std::size_t>(packed_size(n_)) * 8);
     }
     if (constant_) set_input_terms(trajectory.t0(), trajectory.q_d0());
+    // R and S of a split GRDE with constant input matrices: its blocks copied once.
+    fixed_RS_ = blocks_ && constant_ && shift_ == 0.0;
+    if (fixed_RS_) {
+      if (!six_.empty()) copy_RS_blocks(six_);
+      else copy_RS_blocks(any_);
+    }
   }
 
   int n() const { return n_; }
@@ -237,7 +243,9 @@ class RiccatiProblem {
     if (t == coefficients_at_) return;
     coefficients_at_ = t;
     trajectory_.q_d(t, q_d_.data(), &cursor_);
-    trajectory_.A_e(t, q_d_, A_);
+    // The GRDE's M is A_e itself: written in place (a split GRDE reads it block by block).
+    const bool direct = kind_ == RiccatiKind::Control && shift_ == 0.0;
+    trajectory_.A_e(t, q_d_, direct ? M_ : A_);
     if (!constant_) set_input_terms(t, q_d_);
     if (kind_ == RiccatiKind::ClosedLoop) {
       law_->gain(t, K_);
@@ -266,7 +274,7 @@ class RiccatiProblem {
       M_ = T_.transpose();
     } else if (transpose) {
       M_ = A_.transpose();
-    } else {
+    } else if (!direct) {
       M_ = A_;
     }
   }
@@ -280,13 +288,21 @@ class RiccatiProblem {
   };
 
   template <int B>
+  void copy_RS_blocks(std::vector<BlockWork<B>>& work) {
+    for (int b = 0; b < blocks_->count(); ++b) {
+      const int s = blocks_->start[b], k = blocks_->size[b];
+      work[static_cast<std::size_t>(b)].R = R_.block(s, s, k, k);
+      work[static_cast<std::size_t>(b)].S = S_.block(s, s, k, k);
+    }
+  }
+
+  template <int B>
   void block_rhs(std::vector<BlockWork<B>>& work, const double* x, double* dx) {
+    if (!fixed_RS_) copy_RS_blocks(work);
     for (int b = 0; b < blocks_->count(); ++b) {
       BlockWork<B>& w = work[static_cast<std::size_t>(b)];
       const int s = blocks_->start[b], k = blocks_->size[b], at = blocks_->offset[b];
       w.M = M_.block(s, s, k, k);
-      w.R = R_.block(s, s, k, k);
-      w.S = S_.block(s, s, k, k);
       unpack_symmetric(x + at, w.X);
       detail::riccati_rhs(sign_, w.M, w.R, w.S, w.X, w.T, w.G, dx + at, diagonal_S_);
     }
@@ -300,6 +316,7 @@ class RiccatiProblem {
   int n_;
   int dim_;
   const PackedBlocks* blocks_;
+  bool fixed_RS_ = false;
   std::vector<BlockWork<6>> six_;
   std::vector<BlockWork<Eigen::Dynamic>> any_;
   std::vector<double> full_piece_;
