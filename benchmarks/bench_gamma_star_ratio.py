@@ -11,7 +11,8 @@ Problems:
 - "fleet k": k copies of the paper's ship (`FleetModel`), gamma* of the fleet is the ship's.
 
 For each: `gamma_star` with the default options (rtol 1e-7, 2 threads) and one `solve_grde` at
-2 gamma* (the default solver), side by side in interleaved rounds, medians; the same gamma*
+2 gamma* (the default solver), side by side in interleaved rounds, medians, and the same ratio in
+right-hand sides (`GammaStarResult.rhs_evals`, independent of the machine's load); the same gamma*
 with `escape_norm = 1e6` (the default before the escape test switched to W at 1e3 times the
 solution's scale) to show what the switch buys. The target of the speed issue: gamma* at most
 1000 solves. Wall-clock, the load average printed before and after.
@@ -79,16 +80,21 @@ def main(argv=None) -> int:
             times["gamma_star escape_norm 1e6"].append(seconds(lambda: hc.gamma_star(tr, Q, Qf, old)))
             times["solve_grde"].append(seconds(lambda: hc.solve_grde(tr, Q, Qf, 2.0 * star.gamma_star)))
         median = {key: statistics.median(values) for key, values in times.items()}
+        solve_rhs = hc.solve_grde(tr, Q, Qf, 2.0 * star.gamma_star).stats().rhs_evals
         row = {"problem": name, "n": tr.n(), "gamma_star": star.gamma_star, "evaluations": len(star.trials),
                "gamma_star_escape_norm_1e6": star_old.gamma_star, "median_s": median,
                "ratio": median["gamma_star"] / median["solve_grde"],
-               "ratio_escape_norm_1e6": median["gamma_star escape_norm 1e6"] / median["solve_grde"]}
+               "ratio_escape_norm_1e6": median["gamma_star escape_norm 1e6"] / median["solve_grde"],
+               "rhs_evals": star.rhs_evals, "rhs_evals_escape_norm_1e6": star_old.rhs_evals,
+               "solve_rhs_evals": solve_rhs}
         rows.append(row)
         print(f"{name:<11} n={tr.n():<3} gamma* {star.gamma_star:.9f} ({len(star.trials)} gammas): "
               f"{1e3 * median['gamma_star']:8.1f} ms = {row['ratio']:6.0f} solves "
-              f"(one solve {1e3 * median['solve_grde']:.3f} ms); escape_norm 1e6: "
+              f"(one solve {1e3 * median['solve_grde']:.3f} ms); right-hand sides {star.rhs_evals} = "
+              f"{star.rhs_evals / solve_rhs:.0f} solves; escape_norm 1e6: "
               f"{1e3 * median['gamma_star escape_norm 1e6']:8.1f} ms = {row['ratio_escape_norm_1e6']:6.0f} solves, "
-              f"gamma* {star_old.gamma_star:.9f}", flush=True)
+              f"{star_old.rhs_evals / solve_rhs:.0f} solves' right-hand sides, gamma* {star_old.gamma_star:.9f}",
+              flush=True)
     load_end = os.getloadavg()
     print(f"load average {load_start[0]:.2f} before, {load_end[0]:.2f} after; {args.rounds} rounds, medians")
     if args.json:

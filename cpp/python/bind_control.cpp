@@ -2134,7 +2134,7 @@ Examples
       .def("__repr__", [](const GammaStarResult& r) {
         return str_cat("GammaStarResult(gamma_star=", r.gamma_star, ", bracket=[", r.lower, ", ", r.upper,
                        "], binding='", to_string(r.binding), "', t_escape_lower=", r.t_escape_lower,
-                       ", evaluations=", r.trials.size(), ")");
+                       ", evaluations=", r.trials.size(), ", rhs_evals=", r.rhs_evals, ")");
       });
 
   m.def("gamma_star",

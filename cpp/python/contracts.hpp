@@ -197,6 +197,8 @@ several threads at once (it keeps no state between calls).)contract"},
     {"Dopri5::kFacMin", R"contract(smallest step ratio)contract"},
     {"Dopri5::update_stiffness", R"contract(Hairer's test on the accepted step (k1_ now holds f(t + h, y_new), k6_ the 6th stage at
 t + h from ytmp_, ynew_ was copied to y: compare with the stage-6 argument).)contract"},
+    {"EscapeTest", R"contract(An escape test's answer with its work: the first escape time (NaN: none) and the right-hand
+sides of the Riccati equations it evaluated (the continuation on W included).)contract"},
     {"EstimatorSeries", R"contract(The estimator's series of an output-feedback run (paper §4), on the same output grid.)contract"},
     {"EstimatorSeries::coupling_violation_t", R"contract(first output time with rho(Sigma Z) >= gamma^2, if any)contract"},
     {"EstimatorSeries::q_hat", R"contract(estimate of the error q_e (n))contract"},
@@ -268,6 +270,7 @@ condition that binds, and every gamma tried.)contract"},
     {"GammaStarResult::converged", R"contract(false: max_evaluations reached first)contract"},
     {"GammaStarResult::gamma_star", R"contract(the upper end of the final bracket: the smallest gamma known to pass)contract"},
     {"GammaStarResult::lower", R"contract(final bracket: lower fails (0 when every gamma > 0 passes))contract"},
+    {"GammaStarResult::rhs_evals", R"contract(the search's cost: the trials' right-hand sides, summed)contract"},
     {"GammaStarResult::t_escape_lower", R"contract(where the lower end fails)contract"},
     {"GammaStarResult::trials", R"contract(every gamma tried, in the order evaluated)contract"},
     {"GammaStarResult::upper", R"contract(final bracket: upper passes (= gamma_star))contract"},
@@ -275,6 +278,9 @@ condition that binds, and every gamma tried.)contract"},
     {"GammaTrial::condition", R"contract(what failed; None if passed)contract"},
     {"GammaTrial::gamma", R"contract(the gamma tried)contract"},
     {"GammaTrial::passed", R"contract(no condition failed on [t0, tf])contract"},
+    {"GammaTrial::rhs_evals", R"contract(right-hand sides of the Riccati equations its test evaluated (the
+output-feedback search: of the solves that completed; 0 for the
+discrete designs, which solve no ODE))contract"},
     {"GammaTrial::t_escape", R"contract(failure time (escape, coupling violation, or where a solution too
 close to its escape could not be integrated), NaN if passed)contract"},
     {"GeneratedFunction::GeneratedFunction", R"contract(Resolves the function `name` of the library, reads its inputs' and outputs' sizes and
@@ -1485,6 +1491,7 @@ open-loop-unstable vehicle's growth acts over one interval only (second construc
 A Trajectory is immutable once made: its const functions
 keep no state (lookups take caller-owned cursors), so one trajectory may be read from several
 threads at once (run_scenarios shares one between runs, study.hpp).)contract"},
+    {"controller_escape_test", R"contract(controller_escape_time with its work.)contract"},
     {"controller_escape_time", R"contract(The same two for any state-feedback controller of the trajectory's model (the ship
 baselines, a law written in Python), linearized along the trajectory: K(t) = -du/dq at
 (t, q_d(t)) from controller.control_jacobian (central differences unless it has its own).
@@ -1549,6 +1556,7 @@ solve_discrete_output_feedback. The recursions are exact: options.solver is not 
     {"gamma_star_output_feedback", R"contract(The smallest gamma for the output-feedback design: no conjugate point of the GRDE, the
 filter Riccati equation (36) with A_e(t) bounded and positive definite from Sigma0, and
 rho(Sigma Z) < gamma^2 on [t0, tf]. binding names the condition that limits it.)contract"},
+    {"grde_escape_test", R"contract(grde_escape_time with its work (gamma_star reports the cost of its search from it).)contract"},
     {"grde_escape_time", R"contract(The first finite escape of Z (integrating the GRDE backward from tf): a conjugate point
 on [t0, tf] (paper eq. 14), or NaN when there is none. Nothing is stored; the same input
 checks as solve_grde. The escape is located on the inverse W = Z^-1, which is smooth
@@ -1575,6 +1583,7 @@ Model sections ([model], [plant]) are read and written through the table of mode
 (io/model_kinds.hpp).)contract"},
     {"is_baseline", R"contract(True for the ship baselines (cascade, backstepping): laws without a Riccati design of their own.)contract"},
     {"l2_norm", R"contract(sqrt of the trapezoid integral of the squared row norms of series over times t.)contract"},
+    {"law_escape_test", R"contract(law_escape_time with its work.)contract"},
     {"law_escape_time", R"contract(The closed loop of a state-feedback law: u = u_d - kappa(t) K(t) (q - q_d), K = B_e' Z(t) of
 `law` (a design at any gamma: the H-infinity law at its own gamma, the LQR law at gamma = inf),
 linearized along the design's trajectory, with x = q - q_d and the weighted error z,

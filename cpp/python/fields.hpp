@@ -271,7 +271,8 @@ template <>
 struct Fields<GammaTrial> {
   static constexpr auto list =
       std::make_tuple(field("gamma", &GammaTrial::gamma), field("passed", &GammaTrial::passed),
-                      field("t_escape", &GammaTrial::t_escape), field("condition", &GammaTrial::condition));
+                      field("t_escape", &GammaTrial::t_escape), field("condition", &GammaTrial::condition),
+                      field("rhs_evals", &GammaTrial::rhs_evals));
 };
 template <>
 struct Fields<GammaStarResult> {
@@ -279,7 +280,7 @@ struct Fields<GammaStarResult> {
       field("gamma_star", &GammaStarResult::gamma_star), field("lower", &GammaStarResult::lower),
       field("upper", &GammaStarResult::upper), field("t_escape_lower", &GammaStarResult::t_escape_lower),
       field("binding", &GammaStarResult::binding), field("converged", &GammaStarResult::converged),
-      field("trials", &GammaStarResult::trials));
+      field("trials", &GammaStarResult::trials), field("rhs_evals", &GammaStarResult::rhs_evals));
 };
 template <>
 struct Fields<Certificates> {

@@ -3711,6 +3711,10 @@ class GammaTrial:
         close to its escape could not be integrated), NaN if passed
     condition : GammaCondition
         what failed; None if passed
+    rhs_evals : int
+        right-hand sides of the Riccati equations its test evaluated (the
+        output-feedback search: of the solves that completed; 0 for the
+        discrete designs, which solve no ODE)
     
     Examples
     --------
@@ -3721,7 +3725,7 @@ class GammaTrial:
     (1.0, False, <GammaCondition.grde: 1>, 7.56)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('gamma', 'passed', 't_escape', 'condition')
+    __match_args__: typing.ClassVar[tuple] = ('gamma', 'passed', 't_escape', 'condition', 'rhs_evals')
     def __eq__(self, arg0: GammaTrial) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -3744,6 +3748,13 @@ class GammaTrial:
     def passed(self) -> bool:
         """
         no condition failed on [t0, tf]
+        """
+    @property
+    def rhs_evals(self) -> int:
+        """
+        right-hand sides of the Riccati equations its test evaluated (the
+        output-feedback search: of the solves that completed; 0 for the
+        discrete designs, which solve no ODE)
         """
     @property
     def t_escape(self) -> float:
@@ -3772,6 +3783,8 @@ class GammaStarResult:
         false: max_evaluations reached first
     trials : list of GammaTrial
         every gamma tried, in the order evaluated
+    rhs_evals : int
+        the search's cost: the trials' right-hand sides, summed
     
     Examples
     --------
@@ -3782,7 +3795,7 @@ class GammaStarResult:
     (1.3346, <GammaCondition.grde: 1>, True)
     """
     __hash__: typing.ClassVar[None] = None
-    __match_args__: typing.ClassVar[tuple] = ('gamma_star', 'lower', 'upper', 't_escape_lower', 'binding', 'converged', 'trials')
+    __match_args__: typing.ClassVar[tuple] = ('gamma_star', 'lower', 'upper', 't_escape_lower', 'binding', 'converged', 'trials', 'rhs_evals')
     def __eq__(self, arg0: GammaStarResult) -> bool:
         ...
     def __getstate__(self) -> tuple:
@@ -3810,6 +3823,11 @@ class GammaStarResult:
     def lower(self) -> float:
         """
         final bracket: lower fails (0 when every gamma > 0 passes)
+        """
+    @property
+    def rhs_evals(self) -> int:
+        """
+        the search's cost: the trials' right-hand sides, summed
         """
     @property
     def t_escape_lower(self) -> float:

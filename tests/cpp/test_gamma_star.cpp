@@ -539,6 +539,27 @@ TEST_F(PaperGammaStar, TrialsAreMonotoneAndConsistent) {
   EXPECT_TRUE(r.trials[1].passed);
 }
 
+TEST_F(PaperGammaStar, ItsCostIsTheTrialsAndAFewSolvesEach) {
+  // Each trial counts the right-hand sides its escape test evaluated; the result sums them.
+  const GammaStarResult& r = *result_;
+  long sum = 0;
+  for (const hinf::GammaTrial& t : r.trials) {
+    EXPECT_GT(t.rhs_evals, 0);
+    sum += t.rhs_evals;
+  }
+  EXPECT_EQ(r.rhs_evals, sum);
+  // Budget: a test near gamma* continues on W (escape_norm) instead of following Z into its
+  // peak, so no trial costs much more than a whole solve at a safe gamma: 10 solves each.
+  const auto safe = hinf::solve_grde(trajectory_, Mat::Identity(6, 6), Mat::Identity(6, 6), 2.0 * r.gamma_star);
+  const long solve = safe->stats().rhs_evals;
+  long largest = 0;
+  for (const hinf::GammaTrial& t : r.trials) largest = std::max(largest, t.rhs_evals);
+  std::printf("[gamma* cost] %zu trials, %ld right-hand sides (%.1f solves at 2 gamma*, the largest trial %.1f)\n",
+              r.trials.size(), r.rhs_evals, static_cast<double>(r.rhs_evals) / solve,
+              static_cast<double>(largest) / solve);
+  EXPECT_LE(largest, 10 * solve);
+}
+
 TEST_F(PaperGammaStar, BracketAgainstTheInverseRiccatiEquation) {
   // The search's accuracy is 1e-6 (analysis.hpp). An RK4 of W = Z^-1 (h = 0.0025 s; halving h
   // changes lambda_min(W) by less than 1e-15, and the sampled minimum is converged): 1e-6 below

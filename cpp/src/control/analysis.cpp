@@ -85,6 +85,7 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
   auto run = [&](const std::vector<double>& gammas) {
     std::vector<GammaTrial> trials = evaluate(test, gammas);
     r.trials.insert(r.trials.end(), trials.begin(), trials.end());
+    for (const GammaTrial& t : trials) r.rhs_evals += t.rhs_evals;
     return trials;
   };
   GammaTrial low, high;  // low fails, high passes
@@ -167,6 +168,12 @@ GammaStarResult bisect(const Test& test, const GammaStarOptions& o) {
 
 GammaTrial fail(double gamma, double t, GammaCondition condition) { return GammaTrial{gamma, false, t, condition}; }
 GammaTrial pass(double gamma) { return GammaTrial{gamma, true, NAN, GammaCondition::None}; }
+// The trial of an escape test (binding Grde), with its work.
+GammaTrial trial(double gamma, const EscapeTest& test) {
+  GammaTrial t = std::isnan(test.t_escape) ? pass(gamma) : fail(gamma, test.t_escape, GammaCondition::Grde);
+  t.rhs_evals = test.rhs_evals;
+  return t;
+}
 
 template <int N>
 double rho_at(const RiccatiSolution& Z, const FilterRiccatiSolution& Sigma, double t) {
@@ -205,8 +212,7 @@ GammaStarResult gamma_star(const TrajectoryPtr& trajectory, const Mat& Q, const 
   options.validate();
   grde_escape_time(trajectory, Q, Qf, std::numeric_limits<double>::infinity(), options.solver);  // input checks
   return bisect([&](double gamma) {
-    const double t = grde_escape_time(trajectory, Q, Qf, gamma, options.solver);
-    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+    return trial(gamma, grde_escape_test(trajectory, Q, Qf, gamma, options.solver));
   }, options);
 }
 
@@ -215,8 +221,7 @@ GammaStarResult law_gain(const RiccatiSolutionPtr& law, const Mat& Q, const Mat&
   options.validate();
   law_escape_time(law, Q, Qf, std::numeric_limits<double>::infinity(), kappa, options.solver);  // input checks
   return bisect([&](double gamma) {
-    const double t = law_escape_time(law, Q, Qf, gamma, kappa, options.solver);
-    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+    return trial(gamma, law_escape_test(law, Q, Qf, gamma, kappa, options.solver));
   }, options);
 }
 
@@ -228,8 +233,7 @@ GammaStarResult controller_gain(const TrajectoryPtr& trajectory, Controller& con
   GammaStarOptions serial = options;
   serial.threads = 1;
   return bisect([&](double gamma) {
-    const double t = controller_escape_time(trajectory, controller, Q, Qf, gamma, options.solver);
-    return std::isnan(t) ? pass(gamma) : fail(gamma, t, GammaCondition::Grde);
+    return trial(gamma, controller_escape_test(trajectory, controller, Q, Qf, gamma, options.solver));
   }, serial);
 }
 
@@ -288,20 +292,26 @@ GammaStarResult gamma_star_output_feedback(const TrajectoryPtr& trajectory, cons
       // such a gamma cannot be certified, so it fails with "grde" as the binding condition.
       return fail(gamma, e.t(), GammaCondition::Grde);
     }
+    // The work counted: the solves that completed.
+    auto with_work = [](GammaTrial trial, long rhs_evals) {
+      trial.rhs_evals = rhs_evals;
+      return trial;
+    };
     try {
       Sigma = solve_filter_riccati(trajectory, N, Q, gamma, Sigma0, options.solver);
     } catch (const ConjugatePointError& e) {
-      return fail(gamma, e.t_escape(), GammaCondition::Filter);
+      return with_work(fail(gamma, e.t_escape(), GammaCondition::Filter), Z->stats().rhs_evals);
     } catch (const SolverError& e) {
-      return fail(gamma, e.t(), GammaCondition::Filter);
+      return with_work(fail(gamma, e.t(), GammaCondition::Filter), Z->stats().rhs_evals);
     }
+    const long work = Z->stats().rhs_evals + Sigma->stats().rhs_evals;
     double lo = 0.0, hi = 0.0;
     Sigma->eigenvalue_bounds(lo, hi);
     // Sigma >= 0 may decay to about zero (no process noise); below zero beyond round-off it lost
     // definiteness.
-    if (!(lo >= -kSemidefiniteTolerance * std::abs(hi))) return fail(gamma, NAN, GammaCondition::Filter);
+    if (!(lo >= -kSemidefiniteTolerance * std::abs(hi))) return with_work(fail(gamma, NAN, GammaCondition::Filter), work);
     const auto [rho, t] = max_rho_sigma_z(*Z, *Sigma);
-    return rho < gamma * gamma ? pass(gamma) : fail(gamma, t, GammaCondition::Coupling);
+    return with_work(rho < gamma * gamma ? pass(gamma) : fail(gamma, t, GammaCondition::Coupling), work);
   }, options);
 }
 

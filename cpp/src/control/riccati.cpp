@@ -140,6 +140,8 @@ class RiccatiProblem {
   }
 
   int n() const { return n_; }
+  // Right-hand sides evaluated so far.
+  const long& rhs_evals() const { return rhs_evals_; }
   // The numbers in the integrator's state: packed_size(n), or the blocks' when split.
   int dim() const { return dim_; }
   const PackedBlocks* blocks() const { return blocks_; }
@@ -166,6 +168,7 @@ class RiccatiProblem {
   }
 
   void rhs(double t, const double* x, double* dx) {
+    ++rhs_evals_;
     coefficients_at(t);
     if (!blocks_) {
       unpack_symmetric(x, X_);
@@ -317,6 +320,7 @@ class RiccatiProblem {
   int dim_;
   const PackedBlocks* blocks_;
   bool fixed_RS_ = false;
+  long rhs_evals_ = 0;
   std::vector<BlockWork<6>> six_;
   std::vector<BlockWork<Eigen::Dynamic>> any_;
   std::vector<double> full_piece_;
@@ -477,6 +481,15 @@ void blame_model_if_not_finite(const Trajectory& trajectory, std::initializer_li
 
 bool is_too_much_work(const SolverError& e) { return e.flag().find("TOO_MUCH_WORK") != std::string::npos; }
 
+// Adds a count to *total when it goes out of scope, also when an escape or a failure is thrown.
+struct CountInto {
+  const long& count;
+  long* total;
+  ~CountInto() {
+    if (total) *total += count;
+  }
+};
+
 // Where, between t_from and t_end, does the solution X of the Riccati problem escape to
 // infinity (a conjugate point, paper eq. 14)? X_from = X(t_from) is large (or could not be
 // integrated further). Returns the first escape time, or NaN if X stays finite up to t_end.
@@ -492,9 +505,10 @@ bool is_too_much_work(const SolverError& e) { return e.flag().find("TOO_MUCH_WOR
 template <int N>
 double escape_after(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma, const Mat& N_inv,
                     const ClosedLoopLaw* law, const Mat& X_from, double t_from, double t_end, double c,
-                    const SolverOptions& options, const PackedBlocks* blocks) {
+                    const SolverOptions& options, const PackedBlocks* blocks, long* rhs_evals) {
   const int n = static_cast<int>(X_from.rows());
   RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law, c, blocks);
+  const CountInto count{problem.rhs_evals(), rhs_evals};
   const Mat shifted = 0.5 * (X_from + X_from.transpose()) + c * Mat::Identity(n, n);
   const Eigen::LLT<Mat> llt(shifted);
   if (llt.info() != Eigen::Success) return t_from;  // X_from has an eigenvalue <= -c: past an escape
@@ -535,11 +549,12 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
                                                              const Mat& Q, double gamma, const Mat& N_inv,
                                                              const ClosedLoopLaw* law, const Mat& X_start,
                                                              const SolverOptions& options, bool store,
-                                                             const PackedBlocks* blocks) {
+                                                             const PackedBlocks* blocks, long* rhs_evals) {
   const int n = static_cast<int>(X_start.rows());
   const double t_start = start_of(trajectory, kind), t_end = end_of(trajectory, kind);
   const double t0 = trajectory.t0(), tf = trajectory.tf();
   RiccatiProblem<N> problem(trajectory, kind, Q, gamma, N_inv, law, 0.0, blocks);
+  const CountInto count{problem.rhs_evals(), rhs_evals};
   const int p = problem.dim();
   std::vector<double> x(static_cast<std::size_t>(p));
   problem.pack(X_start, x.data());
@@ -560,7 +575,7 @@ std::pair<PiecewisePolynomial, SolveStats> integrate_riccati(const Trajectory& t
     Mat X(n, n);
     problem.unpack(x.data(), X);
     const double t_escape =
-        escape_after<N>(trajectory, kind, Q, gamma, N_inv, law, X, t_last, t_end, scale, options, blocks);
+        escape_after<N>(trajectory, kind, Q, gamma, N_inv, law, X, t_last, t_end, scale, options, blocks, rhs_evals);
     if (!std::isnan(t_escape)) {
       blame_model_if_not_finite(trajectory, {t_last, t_escape});
       throw_escape(kind, t_escape, gamma, t0, tf, "");
@@ -680,32 +695,35 @@ struct Solved {
   std::vector<int> blocks;
 };
 
+// rhs_evals: the right-hand sides evaluated are added to it.
 Solved solve(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma, const Mat& N_inv,
-             const Mat& X_start, const SolverOptions& options, bool store = true, const ClosedLoopLaw* law = nullptr) {
+             const Mat& X_start, const SolverOptions& options, bool store = true, const ClosedLoopLaw* law = nullptr,
+             long* rhs_evals = nullptr) {
   const PackedBlocks blocks(riccati_blocks(trajectory, kind, Q, X_start, options));
   if (blocks.count() > 1) {
     auto [X, stats] = integrate_riccati<Eigen::Dynamic>(trajectory, kind, Q, gamma, N_inv, law, X_start, options,
-                                                        store, &blocks);
+                                                        store, &blocks, rhs_evals);
     return {std::move(X), stats, blocks.size};
   }
   auto [X, stats] = detail::with_state_size(trajectory.n(), [&](auto size) {
     return integrate_riccati<decltype(size)::value>(trajectory, kind, Q, gamma, N_inv, law, X_start, options, store,
-                                                    nullptr);
+                                                    nullptr, rhs_evals);
   });
   return {std::move(X), stats, {}};
 }
 
 // Escape time of an integration without storage, NaN when there is none.
-double escape_or_nan(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
-                     const Mat& N_inv, const Mat& X_start, const SolverOptions& options,
-                     const ClosedLoopLaw* law = nullptr) {
-  if (std::isinf(gamma)) return NAN;  // S >= 0: no finite escape
+EscapeTest escape_or_nan(const Trajectory& trajectory, RiccatiKind kind, const Mat& Q, double gamma,
+                         const Mat& N_inv, const Mat& X_start, const SolverOptions& options,
+                         const ClosedLoopLaw* law = nullptr) {
+  EscapeTest test;
+  if (std::isinf(gamma)) return test;  // S >= 0: no finite escape
   try {
-    solve(trajectory, kind, Q, gamma, N_inv, X_start, options, /*store=*/false, law);
+    solve(trajectory, kind, Q, gamma, N_inv, X_start, options, /*store=*/false, law, &test.rhs_evals);
   } catch (const ConjugatePointError& e) {
-    return e.t_escape();
+    test.t_escape = e.t_escape();
   }
-  return NAN;
+  return test;
 }
 
 void check_gamma(double gamma) {
@@ -882,18 +900,24 @@ FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, c
   return std::make_shared<const FilterRiccatiSolution>(trajectory, gamma, std::move(dense), stats, blocks);
 }
 
-double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
-                        const SolverOptions& options) {
+EscapeTest grde_escape_test(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
+                            const SolverOptions& options) {
   check_grde_input(trajectory, Q, Qf, gamma, options);
   return escape_or_nan(*trajectory, RiccatiKind::Control, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
                        options);
+}
+
+double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
+                        const SolverOptions& options) {
+  return grde_escape_test(trajectory, Q, Qf, gamma, options).t_escape;
 }
 
 double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const Mat& Q, double gamma,
                           const Mat& Sigma0, const SolverOptions& options) {
   const Mat N_inv = check_filter_input(trajectory, N, Q, gamma, Sigma0, options);
   return escape_or_nan(*trajectory, RiccatiKind::Filter, symmetrized(Q), gamma, N_inv, symmetrized(Sigma0),
-                       options);
+                       options)
+      .t_escape;
 }
 
 namespace {
@@ -908,12 +932,17 @@ void check_law_input(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf,
 
 }  // namespace
 
-double law_escape_time(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma, const Signal& kappa,
-                       const SolverOptions& options) {
+EscapeTest law_escape_test(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma,
+                           const Signal& kappa, const SolverOptions& options) {
   check_law_input(law, Q, Qf, gamma, kappa, options);
   const ClosedLoopLaw closed = design_law(*law, kappa);
   return escape_or_nan(law->trajectory(), RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf),
                        options, &closed);
+}
+
+double law_escape_time(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma, const Signal& kappa,
+                       const SolverOptions& options) {
+  return law_escape_test(law, Q, Qf, gamma, kappa, options).t_escape;
 }
 
 std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf,
@@ -939,12 +968,17 @@ void check_controller_input(const TrajectoryPtr& trajectory, const Controller& c
 
 }  // namespace
 
-double controller_escape_time(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
-                              double gamma, const SolverOptions& options) {
+EscapeTest controller_escape_test(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q,
+                                  const Mat& Qf, double gamma, const SolverOptions& options) {
   check_controller_input(trajectory, controller, Q, Qf, gamma, options);
   const ClosedLoopLaw closed = controller_law(*trajectory, controller);
   return escape_or_nan(*trajectory, RiccatiKind::ClosedLoop, symmetrized(Q), gamma, Mat(), symmetrized(Qf), options,
                        &closed);
+}
+
+double controller_escape_time(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
+                              double gamma, const SolverOptions& options) {
+  return controller_escape_test(trajectory, controller, Q, Qf, gamma, options).t_escape;
 }
 
 std::shared_ptr<const SymmetricSolution> solve_controller_riccati(const TrajectoryPtr& trajectory,

@@ -63,6 +63,9 @@ struct GammaTrial {
   double t_escape = NAN;  // failure time (escape, coupling violation, or where a solution too
                           // close to its escape could not be integrated), NaN if passed
   GammaCondition condition = GammaCondition::None;  // what failed; None if passed
+  long rhs_evals = 0;  // right-hand sides of the Riccati equations its test evaluated (the
+                       // output-feedback search: of the solves that completed; 0 for the
+                       // discrete designs, which solve no ODE)
 };
 
 // The result of a gamma* search: gamma* (the final bracket's upper end), the bracket, the
@@ -75,6 +78,7 @@ struct GammaStarResult {
   GammaCondition binding = GammaCondition::None;  // the condition that fails at the lower end
   bool converged = false;       // false: max_evaluations reached first
   std::vector<GammaTrial> trials;  // every gamma tried, in the order evaluated
+  long rhs_evals = 0;  // the search's cost: the trials' right-hand sides, summed
 };
 
 // gamma* of the state-feedback design (trajectory, Q, Qf, horizon).

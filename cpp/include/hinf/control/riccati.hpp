@@ -185,6 +185,15 @@ FilterRiccatiSolutionPtr solve_filter_riccati(const TrajectoryPtr& trajectory, c
 // there, so no escape between solver steps is missed.
 double grde_escape_time(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
                         const SolverOptions& options = {});
+// An escape test's answer with its work: the first escape time (NaN: none) and the right-hand
+// sides of the Riccati equations it evaluated (the continuation on W included).
+struct EscapeTest {
+  double t_escape = NAN;
+  long rhs_evals = 0;
+};
+// grde_escape_time with its work (gamma_star reports the cost of its search from it).
+EscapeTest grde_escape_test(const TrajectoryPtr& trajectory, const Mat& Q, const Mat& Qf, double gamma,
+                            const SolverOptions& options = {});
 // The same for the filter Riccati equation (36) (forward from Sigma0, A = A_e(t)).
 double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const Mat& Q, double gamma,
                           const Mat& Sigma0, const SolverOptions& options = {});
@@ -200,6 +209,9 @@ double filter_escape_time(const TrajectoryPtr& trajectory, const Mat& N, const M
 // nothing is stored. Q symmetric positive semidefinite, Qf positive definite, gamma > 0, kappa > 0.
 double law_escape_time(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma,
                        const Signal& kappa = Signal(1.0), const SolverOptions& options = {});
+// law_escape_time with its work.
+EscapeTest law_escape_test(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf, double gamma,
+                           const Signal& kappa = Signal(1.0), const SolverOptions& options = {});
 // P of that equation at gamma, stored: the law's worst-case disturbance is w = gamma^-2 D_e' P x.
 // ConjugatePointError when gamma is at or below the law's gain.
 std::shared_ptr<const SymmetricSolution> solve_law_riccati(const RiccatiSolutionPtr& law, const Mat& Q, const Mat& Qf,
@@ -213,6 +225,9 @@ class Controller;  // controller.hpp
 // Calls the controller from this thread only. InputError for a controller of other sizes.
 double controller_escape_time(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q, const Mat& Qf,
                               double gamma, const SolverOptions& options = {});
+// controller_escape_time with its work.
+EscapeTest controller_escape_test(const TrajectoryPtr& trajectory, Controller& controller, const Mat& Q,
+                                  const Mat& Qf, double gamma, const SolverOptions& options = {});
 // P at gamma for that controller, stored (its worst case is w = gamma^-2 D_e' P x).
 std::shared_ptr<const SymmetricSolution> solve_controller_riccati(const TrajectoryPtr& trajectory,
                                                                   Controller& controller, const Mat& Q, const Mat& Qf,
