@@ -5,9 +5,9 @@
 
 Problems:
 - "paper_fig1": the Figure-1 design (scenarios/paper_fig1.toml), horizon 40 s;
-- "sb10fd": SLICOT's SB10FD example system (n = 6, two unstable modes; its documentation's data,
-  also slycot's test of sb10fd), state-feedback part: w = the first three inputs, u = the last
-  two, Q = C1'C1 (C1: the first three outputs), Qf = 1e-9 I, horizon 14.35 s;
+- "sb10fd": SLICOT's SB10FD example system, its state-feedback part
+  (tests/data/sb10fd_state_feedback.toml: w = the first three inputs, u = the last two,
+  Q = C1'C1, Qf = 1e-9 I, horizon 14.35 s);
 - "fleet k": k copies of the paper's ship (`FleetModel`), gamma* of the fleet is the ship's.
 
 For each: `gamma_star` with the default options (rtol 1e-7, 2 threads) and one `solve_grde` at
@@ -26,6 +26,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before NumPy: no spinning 
 
 import argparse  # noqa: E402
 import json  # noqa: E402
+import pathlib  # noqa: E402
 import statistics  # noqa: E402
 import time  # noqa: E402
 
@@ -33,13 +34,7 @@ import numpy as np  # noqa: E402
 
 import hinf_cpp as hc  # noqa: E402
 
-SB10FD_A = np.array([[-1.0, 0.0, 4.0, 5.0, -3.0, -2.0], [-2.0, 4.0, -7.0, -2.0, 0.0, 3.0],
-                     [-6.0, 9.0, -5.0, 0.0, 2.0, -1.0], [-8.0, 4.0, 7.0, -1.0, -3.0, 0.0],
-                     [2.0, 5.0, 8.0, -9.0, 1.0, -4.0], [3.0, -5.0, 8.0, 0.0, 2.0, -6.0]])
-SB10FD_B = np.array([[-3.0, -4.0, -2.0, 1.0, 0.0], [2.0, 0.0, 1.0, -5.0, 2.0], [-5.0, -7.0, 0.0, 7.0, -2.0],
-                     [4.0, -6.0, 1.0, 1.0, -2.0], [-3.0, 9.0, -8.0, 0.0, 5.0], [1.0, -2.0, 3.0, -6.0, -2.0]])
-SB10FD_C1 = np.array([[1.0, -1.0, 2.0, -4.0, 0.0, -3.0], [-3.0, 0.0, 5.0, -1.0, 1.0, 1.0],
-                      [-7.0, 5.0, 0.0, -8.0, 2.0, -2.0]])
+SB10FD = pathlib.Path(__file__).resolve().parents[1] / "tests" / "data" / "sb10fd_state_feedback.toml"
 
 
 def problems() -> dict:
@@ -47,9 +42,8 @@ def problems() -> dict:
     out = {}
     sc = hc.load_scenario(hc.scenario_path("paper_fig1"))
     out["paper_fig1"] = (hc.Trajectory(sc.model, sc.desired_q0, sc.desired_u, sc.t0, sc.tf), sc.Q, sc.Qf)
-    model = hc.LinearModel(SB10FD_A, SB10FD_B[:, 3:], SB10FD_B[:, :3])
-    out["sb10fd"] = (hc.Trajectory(model, np.zeros(6), [0.0, 0.0], 0.0, 14.35), SB10FD_C1.T @ SB10FD_C1,
-                     1e-9 * np.eye(6))
+    sb = hc.load_scenario(str(SB10FD))
+    out["sb10fd"] = (hc.Trajectory(sb.model, sb.desired_q0, sb.desired_u, sb.t0, sb.tf), sb.Q, sb.Qf)
     for k in (2, 8):
         fleet = hc.FleetModel(sc.model, k)
         out[f"fleet {k}"] = (hc.Trajectory(fleet, np.tile(sc.desired_q0, k), list(sc.desired_u.channels()) * k, sc.t0, sc.tf),

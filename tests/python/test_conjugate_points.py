@@ -22,6 +22,7 @@ Per random system (seeded: one master seed, each system its own seed, reported o
 from __future__ import annotations
 
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -337,25 +338,18 @@ def test_filter_escape_time_against_the_reference(first):
     assert not failures, "\n".join(failures)
 
 
-# SLICOT's SB10FD example system (n = 6, two unstable modes; the data of SB10FD's documentation,
-# also slycot's test of sb10fd): its state-feedback part as a GRDE, w = the first three inputs,
-# u = the last two, Q = C1'C1 with C1 the first three outputs, Qf = 1e-9 I, horizon 14.35 s.
+# SLICOT's SB10FD example system, its state-feedback part (tests/data/sb10fd_state_feedback.toml).
 # Just above gamma* its Z has a peak of ~1e6 times its scale, which a solve that follows Z
 # itself crosses in ~1e5 steps (and misplaced gamma* by 1.4e-7): the escape test continues on
 # W = c (Z + c I)^-1 from escape_norm times the scale.
-SB10FD_A = np.array([[-1.0, 0.0, 4.0, 5.0, -3.0, -2.0], [-2.0, 4.0, -7.0, -2.0, 0.0, 3.0],
-                     [-6.0, 9.0, -5.0, 0.0, 2.0, -1.0], [-8.0, 4.0, 7.0, -1.0, -3.0, 0.0],
-                     [2.0, 5.0, 8.0, -9.0, 1.0, -4.0], [3.0, -5.0, 8.0, 0.0, 2.0, -6.0]])
-SB10FD_B = np.array([[-3.0, -4.0, -2.0, 1.0, 0.0], [2.0, 0.0, 1.0, -5.0, 2.0], [-5.0, -7.0, 0.0, 7.0, -2.0],
-                     [4.0, -6.0, 1.0, 1.0, -2.0], [-3.0, 9.0, -8.0, 0.0, 5.0], [1.0, -2.0, 3.0, -6.0, -2.0]])
-SB10FD_C1 = np.array([[1.0, -1.0, 2.0, -4.0, 0.0, -3.0], [-3.0, 0.0, 5.0, -1.0, 1.0, 1.0],
-                      [-7.0, 5.0, 0.0, -8.0, 2.0, -2.0]])
+SB10FD = pathlib.Path(__file__).resolve().parents[1] / "data" / "sb10fd_state_feedback.toml"
 
 
 def test_gamma_star_of_the_sb10fd_state_feedback_problem():
-    A, B, D = SB10FD_A, SB10FD_B[:, 3:], SB10FD_B[:, :3]
-    Q, Qf, T = SB10FD_C1.T @ SB10FD_C1, 1e-9 * np.eye(6), 14.35
-    tr = hc.Trajectory(hc.LinearModel(A, B, D), np.zeros(6), [0.0, 0.0], 0.0, T)
+    sc = hc.load_scenario(SB10FD)
+    A, B, D = sc.model.A(), sc.model.B(), sc.model.process_D()
+    Q, Qf, T = sc.Q, sc.Qf, sc.tf
+    tr = hc.Trajectory(sc.model, sc.desired_q0, sc.desired_u, sc.t0, sc.tf)
     result = hc.gamma_star(tr, Q, Qf)
     star = result.gamma_star
     # The Hamiltonian reference: a conjugate point 1e-6 below, none 1e-6 above (GAMMA_RTOL).
