@@ -38,7 +38,7 @@ bool PackedBlocks::all_of_size(int k) const {
 }
 
 void PackedBlocks::pack(const Mat& X, double* stored) const {
-  for (int b = 0; b < count(); ++b) pack_symmetric(Mat(X.block(start[b], start[b], size[b], size[b])), stored + offset[b]);
+  for (int b = 0; b < count(); ++b) pack_symmetric(X.block(start[b], start[b], size[b], size[b]), stored + offset[b]);
 }
 
 void PackedBlocks::unpack(const double* stored, Mat& X) const {
@@ -128,7 +128,6 @@ class RiccatiProblem {
       if (blocks_->all_of_size(6)) six_.resize(static_cast<std::size_t>(blocks_->count()));
       else
         for (int k : blocks_->size) any_.emplace_back(k);
-      full_piece_.resize(static_cast<std::size_t>(packed_size(n_)) * 8);
     }
     if (constant_) set_input_terms(trajectory.t0(), trajectory.q_d0());
     // R and S of a split GRDE with constant input matrices: its blocks copied once.
